@@ -1,0 +1,1 @@
+"""The pythonfmu side: the slave class and its model description."""

@@ -1,0 +1,22 @@
+"""Exact physics of the Cardan joint: pure Python + numpy, no FMI import.
+
+Angles in rad, speeds in rad/s, torques in N.m. `psi` is the input-pin angle
+(input angle + yoke phase), `beta` the bend angle. `joint_response` holds every
+closed form and works on Python scalars (through `math`, cheap enough for one
+call per FMU step) and on numpy arrays (broadcast, no Python loops);
+`CardanJoint` steps the joint in time as the FMU does.
+"""
+
+from .model import CardanJoint
+from .quantities import (cardan_error, crosspiece_angular_velocity, crosspiece_quaternion,
+                         degree_of_unevenness, max_cardan_error, output_acceleration,
+                         output_angle, output_speed, roll_angle, speed_ratio)
+from .response import JointResponse, joint_response
+from .revolutions import RevolutionAngle, advance, split_angle
+
+__all__ = [
+    "CardanJoint", "JointResponse", "RevolutionAngle", "advance", "cardan_error",
+    "crosspiece_angular_velocity", "crosspiece_quaternion", "degree_of_unevenness",
+    "joint_response", "max_cardan_error", "output_acceleration", "output_angle",
+    "output_speed", "roll_angle", "speed_ratio", "split_angle",
+]

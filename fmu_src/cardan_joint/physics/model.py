@@ -1,0 +1,164 @@
+"""The joint as a stepped system: the state the FMU keeps between steps.
+
+`CardanJoint` holds the inputs, parameters, the input angle (as exact
+revolutions, see `revolutions`) and the time; `step` advances them exactly for
+inputs that are polynomial over the step, or refuses the step with a message
+and changes nothing; `outputs` evaluates the closed forms for the current
+values. Pure Python: the FMU maps its variables onto this object.
+"""
+
+import math
+from operator import itemgetter
+
+from .. import variables as table
+from .response import JointResponse, joint_response
+from .revolutions import RevolutionAngle, advance, split_angle
+
+_FROM_RESPONSE = itemgetter(*(JointResponse._fields.index(name) for name in table.OUTPUTS[2:]))
+_STATE_FIELDS = ("time", "turns", "fraction", "fraction_error")
+
+
+class CardanJoint:
+    def __init__(self, **values):
+        unknown = set(values) - set(table.INPUTS) - set(table.PARAMETERS)
+        if unknown:
+            raise TypeError(f"unknown joint variable(s): {', '.join(sorted(unknown))}")
+        for name, value in {**table.start_values(), **values}.items():
+            setattr(self, name, float(value))
+        self.start(0.0)
+
+    # --- set-up ------------------------------------------------------------
+
+    def start(self, time: float) -> None:
+        """Put the input angle at `input_angle_start` and the clock at `time`.
+
+        Parameters are fixed from here on (as in FMI): they are checked here,
+        once, and a change takes effect at the next `start`.
+        """
+        self.time = float(time)
+        self._parameter_problem = self.parameter_problem()
+        self._angle = split_angle(self.input_angle_start if not self._parameter_problem else 0.0)
+
+    def parameter_problem(self):
+        """Why the parameters cannot run, or None."""
+        for name in table.PARAMETERS:
+            value = getattr(self, name)
+            if not math.isfinite(value):
+                return f"parameter {name} = {value!r} is not a finite number"
+        for name in ("crosspiece_inertia_1", "crosspiece_inertia_2", "crosspiece_inertia_3"):
+            value = getattr(self, name)
+            if value < 0.0:
+                return f"parameter {name} = {value!r} kg.m2 is negative; it must be >= 0"
+        guard = self.max_bend_angle
+        if not 0.0 < guard < table.HALF_PI:
+            return (f"parameter max_bend_angle = {guard!r} rad ({guard * table.DEG:.6g} deg) "
+                    f"must lie strictly between 0 and pi/2 (90 deg, where the joint locks)")
+        return None
+
+    # --- stepping ----------------------------------------------------------
+
+    def input_problem(self, step_size: float = 0.0):
+        """Why the inputs cannot be used over [time, time + step_size], or None."""
+        # Fast path for the common case, once per FMU step: x - x == 0 only for
+        # finite x, and the bend angle is checked at both ends of the step.
+        beta, rate, acc = self.bend_angle, self.bend_angle_rate, self.bend_angle_acceleration
+        total = self.input_speed + self.input_acceleration + beta + rate + acc + self.load_torque
+        guard = self.max_bend_angle
+        if (total - total == 0.0 and abs(beta) < guard
+                and abs(beta + step_size * (rate + 0.5 * acc * step_size)) < guard
+                and (rate * acc >= 0.0 or -rate / acc >= step_size)):
+            return None
+        return self._explain_input_problem(step_size)
+
+    def _explain_input_problem(self, step_size):
+        for name in table.INPUTS:
+            value = getattr(self, name)
+            if not math.isfinite(value):
+                return f"input {name} = {value!r} is not a finite number"
+        guard = self.max_bend_angle
+        worst_time, worst = self._largest_bend(step_size)
+        if abs(worst) >= guard:
+            where = ("" if worst_time == 0.0 else
+                     f" (reached {worst_time:.6g} s into the step through bend_angle_rate"
+                     f" = {self.bend_angle_rate!r} rad/s and bend_angle_acceleration"
+                     f" = {self.bend_angle_acceleration!r} rad/s2)")
+            return (f"input bend_angle = {worst!r} rad ({worst * table.DEG:.6g} deg){where}"
+                    f" is not below the limit max_bend_angle = {guard!r} rad"
+                    f" ({guard * table.DEG:.6g} deg)")
+        return None
+
+    def _largest_bend(self, step_size):
+        """(time into the step, bend angle) of the largest |bend angle| over the step."""
+        beta, rate, acc = self.bend_angle, self.bend_angle_rate, self.bend_angle_acceleration
+        candidates = [(0.0, beta)]
+        if step_size > 0.0:
+            candidates.append((step_size, beta + step_size * (rate + 0.5 * acc * step_size)))
+            if acc != 0.0 and 0.0 < -rate / acc < step_size:
+                vertex = -rate / acc
+                candidates.append((vertex, beta + vertex * (rate + 0.5 * acc * vertex)))
+        return max(candidates, key=lambda c: abs(c[1]))
+
+    def step_problem(self, step_size: float):
+        if not (math.isfinite(step_size) and step_size > 0.0):
+            return f"communication step size = {step_size!r} s must be a finite number > 0"
+        return self._parameter_problem or self.input_problem(step_size)
+
+    def step(self, step_size: float):
+        """Advance by `step_size`; return None, or the reason the step was refused
+        (then nothing has changed)."""
+        problem = self.step_problem(step_size)
+        if problem:
+            return problem
+        h = step_size
+        speed, acceleration = self.input_speed, self.input_acceleration
+        self._angle = advance(self._angle, h * (speed + 0.5 * acceleration * h))
+        self.input_speed = speed + acceleration * h
+        rate, bend_acceleration = self.bend_angle_rate, self.bend_angle_acceleration
+        self.bend_angle += h * (rate + 0.5 * bend_acceleration * h)
+        self.bend_angle_rate = rate + bend_acceleration * h
+        self.time += h
+        return None
+
+    # --- outputs -----------------------------------------------------------
+
+    @property
+    def input_angle(self) -> float:
+        return float(self._angle)
+
+    @property
+    def revolution_angle(self) -> RevolutionAngle:
+        return self._angle
+
+    def response(self) -> JointResponse:
+        angle = self._angle
+        return joint_response(
+            angle.fraction + (angle.fraction_error + self.yoke_phase), self.bend_angle,
+            self.input_speed, self.input_acceleration, self.bend_angle_rate,
+            self.bend_angle_acceleration,
+            (self.crosspiece_inertia_1, self.crosspiece_inertia_2, self.crosspiece_inertia_3),
+            self.load_torque, angle.parity_sign)
+
+    def outputs(self) -> tuple:
+        """Values of `variables.OUTPUTS`, in order; raises nothing for valid inputs."""
+        r = self.response()
+        input_angle = float(self._angle)
+        # Two roundings at most: within one ulp of gamma2 however many turns.
+        return (input_angle, input_angle + r[0]) + _FROM_RESPONSE(r)
+
+    # --- state -------------------------------------------------------------
+
+    def state(self) -> dict:
+        """Everything that defines the joint, as JSON-serialisable values."""
+        values = {name: getattr(self, name) for name in table.INPUTS + table.PARAMETERS}
+        a = self._angle
+        values.update(time=self.time, turns=a.turns, fraction=a.fraction,
+                      fraction_error=a.fraction_error)
+        return values
+
+    def restore(self, state: dict) -> None:
+        for name in table.INPUTS + table.PARAMETERS:
+            setattr(self, name, float(state[name]))
+        self.time = float(state["time"])
+        self._angle = RevolutionAngle(int(state["turns"]), float(state["fraction"]),
+                                      float(state["fraction_error"]))
+        self._parameter_problem = self.parameter_problem()

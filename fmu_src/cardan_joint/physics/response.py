@@ -1,0 +1,132 @@
+"""Every closed form of the joint (PHYSICS.md), evaluated in one pass.
+
+This one function is the single home of the equations: the FMU calls it once
+per step on floats (through `math`), design sweeps call it on numpy arrays, and
+the single-quantity functions of `quantities` pick from it. Written over local
+variables because the FMU's step cost is dominated by Python overhead.
+
+Notation: psi = input angle + yoke phase (input-pin angle), b = bend angle,
+D = 1 - sin^2 b cos^2 psi (>= cos^2 b, so nothing is singular below 90 deg).
+
+Frames. Input pin p1 = (cos psi, sin psi, 0); output pin p2 = unit(z2 x p1)
+= (-cos b sin psi, cos b cos psi, sin b sin psi) / sqrt(D); p3 = p1 x p2
+= (sin b sin^2 psi, -sin b sin psi cos psi, cos b) / sqrt(D). So the crosspiece
+matrix R = [p1 p2 p3] = Rz(psi) Rx(rho), with roll rho = atan(tan b sin psi).
+
+Crosspiece angular velocity. The cross turns with the input yoke about z plus
+about p1, and with the output yoke (omega2 about z2, b' about the hinge axis y)
+plus about p2. Projected on p2, p3 the first gives Omega2, Omega3; projected on
+p1 the second gives Omega1.
+
+Torque path. Yoke k pushes on the cross only normal to its pin:
+tau1 = M2 p2 + B p3, tau2 = M1 p1 + Dd p3, with B + Dd = M3; the output shaft
+takes -tau2 . z2 = T_L, and p3 . z2 = sqrt(D), p1 . z2 = sin b cos psi. Each
+secondary couple lies along one known direction (z x p1, resp. z2 x p2).
+"""
+
+from typing import Any, NamedTuple
+
+from ._backend import namespace
+
+
+class JointResponse(NamedTuple):
+    """Field names are the FMU's output names (PHYSICS.md), plus three extras."""
+    cardan_error: Any
+    speed_ratio: Any
+    output_speed: Any
+    output_acceleration: Any
+    crosspiece_angular_velocity_1: Any
+    crosspiece_angular_velocity_2: Any
+    crosspiece_angular_velocity_3: Any
+    crosspiece_torque_1: Any
+    crosspiece_torque_2: Any
+    crosspiece_torque_3: Any
+    crosspiece_kinetic_energy: Any
+    crosspiece_quaternion_0: Any
+    crosspiece_quaternion_1: Any
+    crosspiece_quaternion_2: Any
+    crosspiece_quaternion_3: Any
+    input_torque: Any
+    input_yoke_moment: Any
+    output_yoke_moment: Any
+    # Extras: the torque tau2 . y the output yoke exerts about the bend hinge
+    # (b' times it is the power that enters through the bending), and dOmega/dt.
+    hinge_torque: Any
+    crosspiece_angular_acceleration_1: Any
+    crosspiece_angular_acceleration_2: Any
+    crosspiece_angular_acceleration_3: Any
+
+
+def joint_response(psi, bend_angle, input_speed, input_acceleration=0.0,
+                   bend_angle_rate=0.0, bend_angle_acceleration=0.0,
+                   inertia=(0.0, 0.0, 0.0), load_torque=0.0,
+                   quaternion_sign=1.0) -> JointResponse:
+    """All outputs at input-pin angle `psi`.
+
+    Scalars or numpy arrays (broadcast) for every argument, including the three
+    principal inertias. The quaternion has period 4 pi in psi: a caller passing
+    psi reduced modulo 2 pi gives `quaternion_sign` = (-1)^(whole revolutions).
+    """
+    xp = namespace(psi, bend_angle)
+    w1, a1 = input_speed, input_acceleration
+    rb, ab = bend_angle_rate, bend_angle_acceleration
+
+    # Pose. Half angles first: the quaternion needs them, and sin/cos psi follow
+    # from them without two more trigonometric calls.
+    sh = xp.sin(0.5 * psi)
+    ch = xp.cos(0.5 * psi)
+    s = 2.0 * sh * ch
+    c = (ch - sh) * (ch + sh)
+    sb = xp.sin(bend_angle)
+    cb = xp.cos(bend_angle)
+    sc = s * c
+    sbc = sb * c                      # p1 . z2
+    sbs = sb * s
+    D = 1.0 - sbc * sbc
+    rD = xp.sqrt(D)
+
+    # Kinematics. 1 - cos b is written sin^2 b / (1 + cos b) for full relative
+    # precision at small bend; the atan's denominator stays positive below
+    # 90 deg, so the cardan error never jumps branch.
+    cardan_error = xp.atan(sb * sb / (1.0 + cb) * sc / (cb * c * c + s * s))
+    speed_ratio = cb / D
+    w2 = (w1 * cb + rb * sb * sc) / D
+    D_rate = 2.0 * sbc * (sbs * w1 - cb * c * rb)
+    a2 = (a1 * cb - w1 * rb * sb + ab * sb * sc + rb * rb * cb * sc
+          + rb * w1 * sb * (c - s) * (c + s) - w2 * D_rate) / D
+
+    # Crosspiece angular velocity and its rate, components in C.
+    W1 = w2 * sbc + rb * s
+    W2 = w1 * sbs / rD
+    W3 = w1 * cb / rD
+    half_log_rate = 0.5 * D_rate / D
+    dW1 = a2 * sbc + w2 * (cb * rb * c - sbs * w1) + ab * s + rb * c * w1
+    dW2 = (a1 * sbs + w1 * cb * rb * s + w1 * w1 * sbc) / rD - W2 * half_log_rate
+    dW3 = (a1 * cb - w1 * sb * rb) / rD - W3 * half_log_rate
+
+    # Euler's equations and kinetic energy.
+    I1, I2, I3 = inertia
+    M1 = I1 * dW1 + (I3 - I2) * W2 * W3
+    M2 = I2 * dW2 + (I1 - I3) * W3 * W1
+    M3 = I3 * dW3 + (I2 - I1) * W1 * W2
+    energy = 0.5 * (I1 * W1 * W1 + I2 * W2 * W2 + I3 * W3 * W3)
+
+    # Quaternion of Rz(psi) Rx(rho); |rho| < 90 deg, so the half-angle formulas
+    # need no branch.
+    cos_half_rho = xp.sqrt(0.5 * (1.0 + cb / rD))
+    sin_half_rho = sbs / rD / (2.0 * cos_half_rho)
+    qc = quaternion_sign * ch
+    qs = quaternion_sign * sh
+
+    # Yoke reactions.
+    Dd = -(load_torque + M1 * sbc) / rD
+    B = M3 - Dd
+    input_torque = (M2 * sbs + B * cb) / rD
+    input_moment = abs(B * sbs - M2 * cb) / rD
+    output_moment = abs(Dd * sbc - M1 * rD)
+    hinge_torque = M1 * s - Dd * sb * sc / rD
+
+    return JointResponse(
+        cardan_error, speed_ratio, w2, a2, W1, W2, W3, M1, M2, M3, energy,
+        qc * cos_half_rho, qc * sin_half_rho, qs * sin_half_rho, qs * cos_half_rho,
+        input_torque, input_moment, output_moment, hinge_torque, dW1, dW2, dW3)

@@ -1,0 +1,144 @@
+"""The one table of the FMU's variables: names, causality, units, limits, starts.
+
+Registration, the model description (units, display units, min/max,
+variability, initial, ModelStructure dependencies), the physics model's default
+values and the README's variable table are all generated from `VARIABLES`.
+Pure data: no FMI import, so the physics can read its defaults from here.
+"""
+
+import math
+from dataclasses import dataclass
+from typing import Optional
+
+DEG = 180.0 / math.pi
+RPM = 30.0 / math.pi
+
+
+@dataclass(frozen=True)
+class Unit:
+    name: str
+    exponents: tuple          # ((base unit, exponent), ...) of FMI's BaseUnit
+    display: tuple = ()       # ((display unit, factor), ...): display = factor * value
+
+
+UNITS = {u.name: u for u in (
+    Unit("rad", (("rad", 1),), (("deg", DEG),)),
+    Unit("rad/s", (("rad", 1), ("s", -1)), (("rpm", RPM), ("deg/s", DEG))),
+    Unit("rad/s2", (("rad", 1), ("s", -2)), (("rpm/s", RPM), ("deg/s2", DEG))),
+    Unit("N.m", (("kg", 1), ("m", 2), ("s", -2))),
+    Unit("kg.m2", (("kg", 1), ("m", 2))),
+    Unit("J", (("kg", 1), ("m", 2), ("s", -2))),
+    Unit("1", ()),
+)}
+
+# Inputs each output depends on directly (FMI ModelStructure "dependencies").
+# Declaring them lets a master see that speed flows downstream without the load,
+# so closing the torque loop through `load_torque` is no algebraic loop for speeds.
+_POSE = ("bend_angle",)
+_SPEED = ("input_speed", "bend_angle", "bend_angle_rate")
+_ACCELERATION = ("input_speed", "input_acceleration", "bend_angle", "bend_angle_rate",
+                 "bend_angle_acceleration")
+_TORQUE = _ACCELERATION + ("load_torque",)
+
+
+@dataclass(frozen=True)
+class Variable:
+    name: str
+    causality: str            # "input", "parameter" or "output"
+    unit: str
+    description: str
+    start: Optional[float] = None
+    display_unit: Optional[str] = None
+    min: Optional[float] = None
+    max: Optional[float] = None
+    depends_on: tuple = ()    # outputs only
+
+    @property
+    def variability(self) -> str:
+        return "fixed" if self.causality == "parameter" else "continuous"
+
+    @property
+    def initial(self) -> Optional[str]:
+        return {"parameter": "exact", "output": "calculated"}.get(self.causality)
+
+
+HALF_PI = 0.5 * math.pi
+_IN, _PAR, _OUT = "input", "parameter", "output"
+
+VARIABLES = (
+    # Inputs: polynomial in time over a step (speed with its acceleration, bend
+    # angle with its rate and acceleration); the start values run a default demo.
+    Variable("input_speed", _IN, "rad/s", "Input shaft speed omega1", 10.0, "rpm"),
+    Variable("input_acceleration", _IN, "rad/s2", "Input shaft acceleration a1 = d(omega1)/dt",
+             0.0, "rpm/s"),
+    Variable("bend_angle", _IN, "rad", "Bend angle beta between the shafts (0 = straight)",
+             math.pi / 6, "deg", -HALF_PI, HALF_PI),
+    Variable("bend_angle_rate", _IN, "rad/s", "Bend angle rate d(beta)/dt", 0.0, "deg/s"),
+    Variable("bend_angle_acceleration", _IN, "rad/s2", "Bend angle acceleration d2(beta)/dt2",
+             0.0, "deg/s2"),
+    Variable("load_torque", _IN, "N.m", "Load torque T_L the driven machine takes from the "
+             "output shaft", 0.0),
+    # Parameters.
+    Variable("yoke_phase", _PAR, "rad", "Input-yoke pin angle from the bend plane at zero "
+             "input angle (0: Wikipedia/maker/Tataru convention; 90 deg: Mityushov & Misyura)",
+             0.0, "deg"),
+    Variable("input_angle_start", _PAR, "rad", "Input shaft angle gamma1 at the start time",
+             0.0, "deg"),
+    Variable("crosspiece_inertia_1", _PAR, "kg.m2", "Crosspiece principal moment of inertia "
+             "about the input-yoke pin", 0.026, None, 0.0),
+    Variable("crosspiece_inertia_2", _PAR, "kg.m2", "Crosspiece principal moment of inertia "
+             "about the output-yoke pin", 0.026, None, 0.0),
+    Variable("crosspiece_inertia_3", _PAR, "kg.m2", "Crosspiece principal moment of inertia "
+             "about the normal of the cross", 0.026, None, 0.0),
+    Variable("max_bend_angle", _PAR, "rad", "Largest |bend angle| accepted; a step reaching "
+             "it is refused (the joint locks at 90 deg)", 80.0 / DEG, "deg", 0.0, HALF_PI),
+    # Outputs.
+    Variable("input_angle", _OUT, "rad", "Input shaft angle gamma1", display_unit="deg"),
+    Variable("output_angle", _OUT, "rad", "Output shaft angle gamma2 = gamma1 + cardan error "
+             "(continuous)", display_unit="deg", depends_on=_POSE),
+    Variable("output_speed", _OUT, "rad/s", "Output shaft speed omega2", display_unit="rpm",
+             depends_on=_SPEED),
+    Variable("output_acceleration", _OUT, "rad/s2", "Output shaft acceleration a2",
+             display_unit="rpm/s", depends_on=_ACCELERATION),
+    Variable("cardan_error", _OUT, "rad", "Cardan error gamma2 - gamma1", display_unit="deg",
+             depends_on=_POSE),
+    Variable("speed_ratio", _OUT, "1", "Speed ratio cos(beta)/D = omega2/omega1 at constant "
+             "bend angle", min=0.0, depends_on=_POSE),
+    Variable("crosspiece_angular_velocity_1", _OUT, "rad/s", "Crosspiece angular velocity "
+             "about the input-yoke pin", display_unit="rpm", depends_on=_SPEED),
+    Variable("crosspiece_angular_velocity_2", _OUT, "rad/s", "Crosspiece angular velocity "
+             "about the output-yoke pin", display_unit="rpm", depends_on=_SPEED),
+    Variable("crosspiece_angular_velocity_3", _OUT, "rad/s", "Crosspiece angular velocity "
+             "about the cross normal", display_unit="rpm", depends_on=_SPEED),
+    Variable("crosspiece_torque_1", _OUT, "N.m", "Resultant torque on the crosspiece (Euler), "
+             "input-pin component", depends_on=_ACCELERATION),
+    Variable("crosspiece_torque_2", _OUT, "N.m", "Resultant torque on the crosspiece (Euler), "
+             "output-pin component", depends_on=_ACCELERATION),
+    Variable("crosspiece_torque_3", _OUT, "N.m", "Resultant torque on the crosspiece (Euler), "
+             "normal component", depends_on=_ACCELERATION),
+    Variable("crosspiece_kinetic_energy", _OUT, "J", "Crosspiece kinetic energy", min=0.0,
+             depends_on=_SPEED),
+    Variable("crosspiece_quaternion_0", _OUT, "1", "Crosspiece orientation quaternion, scalar "
+             "part", min=-1.0, max=1.0, depends_on=_POSE),
+    Variable("crosspiece_quaternion_1", _OUT, "1", "Crosspiece orientation quaternion, x part",
+             min=-1.0, max=1.0, depends_on=_POSE),
+    Variable("crosspiece_quaternion_2", _OUT, "1", "Crosspiece orientation quaternion, y part",
+             min=-1.0, max=1.0, depends_on=_POSE),
+    Variable("crosspiece_quaternion_3", _OUT, "1", "Crosspiece orientation quaternion, z part",
+             min=-1.0, max=1.0, depends_on=_POSE),
+    Variable("input_torque", _OUT, "N.m", "Torque T1 the input shaft must supply",
+             depends_on=_TORQUE),
+    Variable("input_yoke_moment", _OUT, "N.m", "Secondary couple on the input yoke (bending "
+             "moment normal to the input shaft)", min=0.0, depends_on=_TORQUE),
+    Variable("output_yoke_moment", _OUT, "N.m", "Secondary couple on the output yoke (bending "
+             "moment normal to the output shaft)", min=0.0, depends_on=_TORQUE),
+)
+
+BY_NAME = {v.name: v for v in VARIABLES}
+INPUTS = tuple(v.name for v in VARIABLES if v.causality == _IN)
+PARAMETERS = tuple(v.name for v in VARIABLES if v.causality == _PAR)
+OUTPUTS = tuple(v.name for v in VARIABLES if v.causality == _OUT)
+
+
+def start_values() -> dict:
+    return {v.name: v.start for v in VARIABLES if v.start is not None}
