@@ -82,7 +82,9 @@ def joint_response(psi, bend_angle, input_speed, input_acceleration=0.0,
     sc = s * c
     sbc = sb * c                      # p1 . z2
     sbs = sb * s
-    D = 1.0 - sbc * sbc
+    # D = 1 - (sin b cos psi)^2, written as a sum of squares: no cancellation
+    # near the lock-up, where D -> cos^2 b.
+    D = cb * cb + sbs * sbs
     rD = xp.sqrt(D)
 
     # Kinematics. 1 - cos b is written sin^2 b / (1 + cos b) for full relative

@@ -28,8 +28,9 @@ class RevolutionAngle(NamedTuple):
 
     def __float__(self) -> float:
         product, product_error = _two_product(float(self.turns), TWO_PI_HI)
-        return product + (self.fraction + (product_error + self.fraction_error
-                                           + self.turns * TWO_PI_LO))
+        total, sum_error = _two_sum(product, self.fraction)
+        return total + (sum_error + product_error + self.fraction_error
+                        + self.turns * TWO_PI_LO)
 
 
 def _two_sum(a, b):

@@ -1,0 +1,40 @@
+"""Session fixtures: the FMU is built once, by the same command a user runs."""
+
+import shutil
+import subprocess
+import sys
+from pathlib import Path
+
+import pytest
+
+ROOT = Path(__file__).resolve().parents[1]
+
+
+def build_fmu(dest: Path, *args: str) -> Path:
+    """Run build_fmu.py in its own process, as a user would."""
+    result = subprocess.run([sys.executable, str(ROOT / "build_fmu.py"), "--dest", str(dest), *args],
+                            capture_output=True, text=True, cwd=ROOT)
+    assert result.returncode == 0, result.stdout + result.stderr
+    name = next((a.split("=", 1)[1] for a in args if a.startswith("--name=")), "UniversalJoint")
+    return dest / f"{name}.fmu"
+
+
+@pytest.fixture(scope="session")
+def fmu_path(tmp_path_factory) -> Path:
+    return build_fmu(tmp_path_factory.mktemp("fmu"))
+
+
+@pytest.fixture(scope="session")
+def unzipped_fmu(fmu_path, tmp_path_factory):
+    from fmpy import extract
+
+    directory = extract(str(fmu_path), unzipdir=str(tmp_path_factory.mktemp("unzipped")))
+    yield directory
+    shutil.rmtree(directory, ignore_errors=True)
+
+
+@pytest.fixture(scope="session")
+def model_description(fmu_path):
+    from fmpy import read_model_description
+
+    return read_model_description(str(fmu_path))

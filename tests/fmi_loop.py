@@ -1,0 +1,41 @@
+"""A minimal co-simulation master on FMPy's low-level FMU2Slave API, for tests."""
+
+from fmpy.fmi2 import FMU2Slave
+
+
+class JointInstance:
+    """One FMU instance with name-based access to its Real variables."""
+
+    def __init__(self, model_description, unzipped, name="joint", start_values=None,
+                 start_time=0.0, logger=None):
+        self.references = {v.name: v.valueReference for v in model_description.modelVariables}
+        self.outputs = [v.name for v in model_description.modelVariables
+                        if v.causality == "output"]
+        kwargs = {} if logger is None else {"logger": logger}
+        self.fmu = FMU2Slave(guid=model_description.guid, unzipDirectory=unzipped,
+                             modelIdentifier=model_description.coSimulation.modelIdentifier,
+                             instanceName=name, **kwargs)
+        self.fmu.instantiate(loggingOn=logger is not None)
+        self.fmu.setupExperiment(startTime=start_time)
+        self.fmu.enterInitializationMode()
+        if start_values:
+            self.set(**start_values)
+        self.fmu.exitInitializationMode()
+        self.time = start_time
+
+    def set(self, **values):
+        self.fmu.setReal([self.references[n] for n in values], list(values.values()))
+
+    def get(self, *names):
+        return dict(zip(names, self.fmu.getReal([self.references[n] for n in names])))
+
+    def get_outputs(self):
+        return self.get(*self.outputs)
+
+    def step(self, step_size):
+        self.fmu.doStep(currentCommunicationPoint=self.time, communicationStepSize=step_size)
+        self.time += step_size
+
+    def close(self):
+        self.fmu.terminate()
+        self.fmu.freeInstance()
