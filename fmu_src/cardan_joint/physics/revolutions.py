@@ -52,17 +52,23 @@ def _two_product(a, b):
     return p, ((a_hi * b_hi - p) + a_hi * b_lo + a_lo * b_hi) + a_lo * b_lo
 
 
+def _shift(turns, fraction, error, whole):
+    """Move `whole` turns from the fraction to the counter, exactly."""
+    product, product_error = _two_product(float(whole), TWO_PI_HI)
+    fraction, sum_error = _two_sum(fraction, -product)
+    return turns + whole, fraction, error + sum_error - product_error - whole * TWO_PI_LO
+
+
 def _normalized(turns: int, fraction: float, error: float) -> RevolutionAngle:
-    # Two passes: the first may leave the fraction a rounding off [0, 2 pi).
-    for _ in range(2):
-        whole = math.floor(fraction / TWO_PI)
-        if whole == 0:
-            break
-        product, product_error = _two_product(float(whole), TWO_PI_HI)
-        fraction, sum_error = _two_sum(fraction, -product)
-        error += sum_error - product_error - whole * TWO_PI_LO
-        turns += whole
+    # Invariant: 0 <= fraction <= TWO_PI_HI, the error term carrying the rest
+    # (a true value just below 2 pi may round its leading part up to TWO_PI_HI).
     fraction, error = _two_sum(fraction, error)
+    if not 0.0 <= fraction <= TWO_PI_HI:
+        turns, fraction, error = _shift(turns, fraction, error, math.floor(fraction / TWO_PI_HI))
+        fraction, error = _two_sum(fraction, error)
+        if fraction < 0.0 or fraction > TWO_PI_HI:   # the floor landed one off
+            turns, fraction, error = _shift(turns, fraction, error, -1 if fraction < 0.0 else 1)
+            fraction, error = _two_sum(fraction, error)
     return RevolutionAngle(turns, fraction, error)
 
 
