@@ -142,3 +142,14 @@ OUTPUTS = tuple(v.name for v in VARIABLES if v.causality == _OUT)
 
 def start_values() -> dict:
     return {v.name: v.start for v in VARIABLES if v.start is not None}
+
+
+def markdown_table() -> str:
+    """The README's variable table (a test keeps the README in step with it)."""
+    rows = ["| name | causality | unit (display) | start | description |",
+            "|---|---|---|---|---|"]
+    for v in VARIABLES:
+        unit = v.unit + (f" ({v.display_unit})" if v.display_unit else "")
+        start = "" if v.start is None else f"{v.start:.6g}"
+        rows.append(f"| `{v.name}` | {v.causality} | {unit} | {start} | {v.description} |")
+    return "\n".join(rows) + "\n"

@@ -1,0 +1,75 @@
+"""Run the UniversalJoint FMU with FMPy, and fail loudly.
+
+Plain `fmpy.simulate_fmu` stops silently when the FMU refuses a step (it
+returns the result up to there), and pythonfmu drops the FMU's messages unless
+debug logging is on. `simulate` turns debug logging on, collects the messages,
+and raises `SimulationError` naming the variable, value, limit and time when
+the run did not reach its stop time.
+"""
+
+import warnings
+from pathlib import Path
+
+import numpy as np
+
+DEFAULT_FMU = Path("dist") / "UniversalJoint.fmu"
+_STATUS = {0: "ok", 1: "warning", 2: "discard", 3: "error", 4: "fatal", 5: "pending"}
+
+
+class SimulationError(RuntimeError):
+    """The FMU refused a step or reported an error; `messages` holds its log."""
+
+    def __init__(self, text, messages, result):
+        super().__init__(text)
+        self.messages = messages
+        self.result = result
+
+
+def inputs_from_constants(constants: dict, stop_time: float) -> np.ndarray:
+    """A structured input signal holding each value constant over [0, stop_time]."""
+    signal = np.zeros(2, dtype=[("time", float)] + [(name, float) for name in constants])
+    signal["time"] = (0.0, stop_time)
+    for name, value in constants.items():
+        signal[name] = value
+    return signal
+
+
+def simulate(fmu=DEFAULT_FMU, stop_time=None, output_interval=None, inputs=None,
+             start_values=None, output=None, **fmpy_options):
+    """Co-simulate the FMU; return FMPy's structured result array.
+
+    `inputs`: an FMPy structured array (field "time" plus input names), or a
+    dict of constant input values. `output_interval` is the communication step.
+    Raises SimulationError if the FMU refused a step or logged an error.
+    """
+    from fmpy import read_model_description, simulate_fmu
+
+    fmu = str(fmu)
+    if not Path(fmu).exists():
+        raise FileNotFoundError(f"{fmu} does not exist: build it with `python build_fmu.py`")
+    experiment = read_model_description(fmu).defaultExperiment
+    stop_time = float(experiment.stopTime) if stop_time is None else stop_time
+    output_interval = (float(experiment.stepSize) if output_interval is None else output_interval)
+    if isinstance(inputs, dict):
+        inputs = inputs_from_constants(inputs, stop_time)
+
+    messages = []
+
+    def collect(component, instance, status, category, message):
+        messages.append((_STATUS.get(status, str(status)), category.decode(errors="replace"),
+                         message.decode(errors="replace")))
+
+    result = simulate_fmu(fmu, stop_time=stop_time, output_interval=output_interval, input=inputs,
+                          start_values=start_values or {}, output=output, debug_logging=True,
+                          logger=collect, **fmpy_options)
+    problems = [m for m in messages if m[0] in ("discard", "error", "fatal")]
+    reached = float(result["time"][-1]) if len(result) else float("nan")
+    if problems or not reached >= stop_time - 1e-9 * max(1.0, abs(stop_time)):
+        detail = "\n  ".join(f"{status}: {text}" for status, _, text in problems) or \
+            "(the FMU gave no reason)"
+        raise SimulationError(f"the FMU stopped at t = {reached!r} s of {stop_time!r} s:\n  {detail}",
+                              messages, result)
+    for status, _, text in messages:
+        if status == "warning":
+            warnings.warn(f"UniversalJoint: {text}", RuntimeWarning, stacklevel=2)
+    return result

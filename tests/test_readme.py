@@ -1,0 +1,22 @@
+"""The README's commands and tables stay true."""
+
+from pathlib import Path
+
+from cardan_joint.variables import markdown_table
+
+ROOT = Path(__file__).resolve().parents[1]
+README = (ROOT / "README.md").read_text()
+TEST_COMMAND = ('python3 -m venv .venv && .venv/bin/pip install -e ".[test]" '
+                '&& .venv/bin/python -m pytest')
+
+
+def test_variable_table_is_generated_from_the_metadata_table():
+    begin, end = "<!-- variables:begin -->\n", "<!-- variables:end -->"
+    assert README.split(begin)[1].split(end)[0] == markdown_table()
+
+
+def test_ci_runs_the_readmes_test_command():
+    assert f"    {TEST_COMMAND}\n" in README
+    ci = (ROOT / ".ci" / "run").read_text()
+    assert TEST_COMMAND.replace("pip install -e", "pip install -q -e").replace(
+        "pytest", "pytest -q") in ci
