@@ -18,5 +18,4 @@ def test_variable_table_is_generated_from_the_metadata_table():
 def test_ci_runs_the_readmes_test_command():
     assert f"    {TEST_COMMAND}\n" in README
     ci = (ROOT / ".ci" / "run").read_text()
-    assert TEST_COMMAND.replace("pip install -e", "pip install -q -e").replace(
-        "pytest", "pytest -q") in ci
+    assert f"\n{TEST_COMMAND}\n" in ci
