@@ -1,21 +1,34 @@
 """A minimal co-simulation master on FMPy's low-level FMU2Slave API, for tests."""
 
-from fmpy.fmi2 import FMU2Slave
+from fmpy.fmi2 import (FMU2Slave, defaultCallbacks, fmi2CallbackFunctions,
+                       fmi2CallbackLoggerTYPE)
+
+
+def logging_callbacks(sink):
+    """FMI callbacks whose logger appends (status, category, message) to `sink`."""
+    callbacks = fmi2CallbackFunctions()
+    callbacks.logger = fmi2CallbackLoggerTYPE(
+        lambda env, instance, status, category, message: sink.append(
+            (status, category.decode(), message.decode())))
+    callbacks.allocateMemory = defaultCallbacks.allocateMemory
+    callbacks.freeMemory = defaultCallbacks.freeMemory
+    return callbacks
 
 
 class JointInstance:
     """One FMU instance with name-based access to its Real variables."""
 
     def __init__(self, model_description, unzipped, name="joint", start_values=None,
-                 start_time=0.0, logger=None):
+                 start_time=0.0, messages=None):
         self.references = {v.name: v.valueReference for v in model_description.modelVariables}
         self.outputs = [v.name for v in model_description.modelVariables
                         if v.causality == "output"]
-        kwargs = {} if logger is None else {"logger": logger}
         self.fmu = FMU2Slave(guid=model_description.guid, unzipDirectory=unzipped,
                              modelIdentifier=model_description.coSimulation.modelIdentifier,
-                             instanceName=name, **kwargs)
-        self.fmu.instantiate(loggingOn=logger is not None)
+                             instanceName=name)
+        # Kept on the instance: ctypes callbacks must outlive the FMU.
+        self.callbacks = None if messages is None else logging_callbacks(messages)
+        self.fmu.instantiate(callbacks=self.callbacks, loggingOn=messages is not None)
         self.fmu.setupExperiment(startTime=start_time)
         self.fmu.enterInitializationMode()
         if start_values:
@@ -35,6 +48,16 @@ class JointInstance:
     def step(self, step_size):
         self.fmu.doStep(currentCommunicationPoint=self.time, communicationStepSize=step_size)
         self.time += step_size
+
+    def try_step(self, step_size):
+        """Step; return the FMI status (a refused step leaves the time where it was)."""
+        from fmpy.fmi1 import FMICallException
+
+        try:
+            self.step(step_size)
+            return 0
+        except FMICallException as refusal:
+            return refusal.status
 
     def close(self):
         self.fmu.terminate()

@@ -68,16 +68,19 @@ _IN, _PAR, _OUT = "input", "parameter", "output"
 VARIABLES = (
     # Inputs: polynomial in time over a step (speed with its acceleration, bend
     # angle with its rate and acceleration); the start values run a default demo.
-    Variable("input_speed", _IN, "rad/s", "Input shaft speed omega1", 10.0, "rpm"),
+    # Their ranges are physical bounds, generous for any driveline, that keep every
+    # output finite; a step with an input outside them is refused.
+    Variable("input_speed", _IN, "rad/s", "Input shaft speed omega1", 10.0, "rpm", -1e5, 1e5),
     Variable("input_acceleration", _IN, "rad/s2", "Input shaft acceleration a1 = d(omega1)/dt",
-             0.0, "rpm/s"),
+             0.0, "rpm/s", -1e8, 1e8),
     Variable("bend_angle", _IN, "rad", "Bend angle beta between the shafts (0 = straight)",
              math.pi / 6, "deg", -HALF_PI, HALF_PI),
-    Variable("bend_angle_rate", _IN, "rad/s", "Bend angle rate d(beta)/dt", 0.0, "deg/s"),
+    Variable("bend_angle_rate", _IN, "rad/s", "Bend angle rate d(beta)/dt", 0.0, "deg/s",
+             -1e3, 1e3),
     Variable("bend_angle_acceleration", _IN, "rad/s2", "Bend angle acceleration d2(beta)/dt2",
-             0.0, "deg/s2"),
+             0.0, "deg/s2", -1e6, 1e6),
     Variable("load_torque", _IN, "N.m", "Load torque T_L the driven machine takes from the "
-             "output shaft", 0.0),
+             "output shaft", 0.0, None, -1e9, 1e9),
     # Parameters.
     Variable("yoke_phase", _PAR, "rad", "Input-yoke pin angle from the bend plane at zero "
              "input angle (0: Wikipedia/maker/Tataru convention; 90 deg: Mityushov & Misyura)",
@@ -85,11 +88,11 @@ VARIABLES = (
     Variable("input_angle_start", _PAR, "rad", "Input shaft angle gamma1 at the start time",
              0.0, "deg"),
     Variable("crosspiece_inertia_1", _PAR, "kg.m2", "Crosspiece principal moment of inertia "
-             "about the input-yoke pin", 0.026, None, 0.0),
+             "about the input-yoke pin", 0.026, None, 0.0, 1e6),
     Variable("crosspiece_inertia_2", _PAR, "kg.m2", "Crosspiece principal moment of inertia "
-             "about the output-yoke pin", 0.026, None, 0.0),
+             "about the output-yoke pin", 0.026, None, 0.0, 1e6),
     Variable("crosspiece_inertia_3", _PAR, "kg.m2", "Crosspiece principal moment of inertia "
-             "about the normal of the cross", 0.026, None, 0.0),
+             "about the normal of the cross", 0.026, None, 0.0, 1e6),
     Variable("max_bend_angle", _PAR, "rad", "Largest |bend angle| accepted; a step reaching "
              "it is refused (the joint locks at 90 deg)", 80.0 / DEG, "deg", 0.0, HALF_PI),
     # Outputs.

@@ -24,6 +24,7 @@ _KNOWN = table.INPUTS + table.PARAMETERS
 _FIRST_OUTPUT = len(_KNOWN)
 assert tuple(v.name for v in table.VARIABLES) == _KNOWN + table.OUTPUTS, \
     "the slave's value references assume inputs, then parameters, then outputs"
+assert table.OUTPUTS[0] == "input_angle", "held outputs keep the first one, the state, live"
 _INPUT_REFERENCES = range(len(table.INPUTS))
 _NAN_OUTPUTS = (math.nan,) * len(table.OUTPUTS)
 
@@ -51,7 +52,7 @@ class CardanJointSlave(Fmi2Slave):
         self._start_time = 0.0
         self._initialized = False
         self._outputs = None            # cached outputs; None = recompute on next read
-        self._outputs_held = _NAN_OUTPUTS
+        self._outputs_held = _NAN_OUTPUTS if self._joint.parameter_problem() else self._joint.outputs()
         self._inputs_checked = False
         self._last_message = None
         for name in table.INPUTS + table.PARAMETERS + table.OUTPUTS:
@@ -131,7 +132,8 @@ class CardanJointSlave(Fmi2Slave):
             if problem:
                 self._report(f"t = {joint.time!r} s: {problem}; outputs are held at the "
                              f"last valid inputs", Fmi2Status.warning)
-                return self._outputs_held
+                # The input angle is state, not a function of the inputs: always current.
+                return (joint.input_angle,) + self._outputs_held[1:]
             self._inputs_checked = True
         self._outputs = self._outputs_held = joint.outputs()
         return self._outputs

@@ -14,6 +14,15 @@ from .. import variables as table
 from .response import JointResponse, joint_response
 from .revolutions import RevolutionAngle, advance, split_angle
 
+_INPUT_RANGES = tuple((name, table.BY_NAME[name].min, table.BY_NAME[name].max,
+                       table.BY_NAME[name].unit) for name in table.INPUTS
+                      if table.BY_NAME[name].min is not None and name != "bend_angle")
+_SPEED_LIMIT = table.BY_NAME["input_speed"].max
+_ACCELERATION_LIMIT = table.BY_NAME["input_acceleration"].max
+_RATE_LIMIT = table.BY_NAME["bend_angle_rate"].max
+_BEND_ACCELERATION_LIMIT = table.BY_NAME["bend_angle_acceleration"].max
+_LOAD_LIMIT = table.BY_NAME["load_torque"].max
+_MAX_INCREMENT = 1e15
 _FROM_RESPONSE = itemgetter(*(JointResponse._fields.index(name) for name in table.OUTPUTS[2:]))
 _STATE_FIELDS = ("time", "turns", "fraction", "fraction_error")
 
@@ -46,9 +55,9 @@ class CardanJoint:
             if not math.isfinite(value):
                 return f"parameter {name} = {value!r} is not a finite number"
         for name in ("crosspiece_inertia_1", "crosspiece_inertia_2", "crosspiece_inertia_3"):
-            value = getattr(self, name)
-            if value < 0.0:
-                return f"parameter {name} = {value!r} kg.m2 is negative; it must be >= 0"
+            value, limit = getattr(self, name), table.BY_NAME[name].max
+            if not 0.0 <= value <= limit:
+                return (f"parameter {name} = {value!r} kg.m2 must be >= 0 and <= {limit!r}")
         guard = self.max_bend_angle
         if not 0.0 < guard < table.HALF_PI:
             return (f"parameter max_bend_angle = {guard!r} rad ({guard * table.DEG:.6g} deg) "
@@ -61,10 +70,13 @@ class CardanJoint:
         """Why the inputs cannot be used over [time, time + step_size], or None."""
         # Fast path for the common case, once per FMU step: x - x == 0 only for
         # finite x, and the bend angle is checked at both ends of the step.
+        # NaN fails every comparison, so it always takes the slow path.
         beta, rate, acc = self.bend_angle, self.bend_angle_rate, self.bend_angle_acceleration
-        total = self.input_speed + self.input_acceleration + beta + rate + acc + self.load_torque
         guard = self.max_bend_angle
-        if (total - total == 0.0 and abs(beta) < guard
+        if (abs(self.input_speed) <= _SPEED_LIMIT
+                and abs(self.input_acceleration) <= _ACCELERATION_LIMIT
+                and abs(rate) <= _RATE_LIMIT and abs(acc) <= _BEND_ACCELERATION_LIMIT
+                and abs(self.load_torque) <= _LOAD_LIMIT and abs(beta) < guard
                 and abs(beta + step_size * (rate + 0.5 * acc * step_size)) < guard
                 and (rate * acc >= 0.0 or -rate / acc >= step_size)):
             return None
@@ -75,6 +87,11 @@ class CardanJoint:
             value = getattr(self, name)
             if not math.isfinite(value):
                 return f"input {name} = {value!r} is not a finite number"
+        for name, low, high, unit in _INPUT_RANGES:
+            value = getattr(self, name)
+            if not low <= value <= high:
+                return (f"input {name} = {value!r} {unit} is outside its physical range "
+                        f"[{low!r}, {high!r}] {unit}")
         guard = self.max_bend_angle
         worst_time, worst = self._largest_bend(step_size)
         if abs(worst) >= guard:
@@ -111,7 +128,15 @@ class CardanJoint:
             return problem
         h = step_size
         speed, acceleration = self.input_speed, self.input_acceleration
-        self._angle = advance(self._angle, h * (speed + 0.5 * acceleration * h))
+        increment = h * (speed + 0.5 * acceleration * h)
+        # Beyond 1e15 rad a float has no fractional digits left: the pin's position
+        # after such a step is undefined, and the exact turn arithmetic would overflow.
+        if not (abs(increment) <= _MAX_INCREMENT and abs(speed + acceleration * h) <= _SPEED_LIMIT):
+            return (f"input_speed = {speed!r} rad/s with input_acceleration = {acceleration!r} "
+                    f"rad/s2 over a step of {h!r} s overflows: the input angle would advance by "
+                    f"{increment!r} rad (limit {_MAX_INCREMENT!r} rad per step) and the speed "
+                    f"reach {speed + acceleration * h!r} rad/s (limit {_SPEED_LIMIT!r} rad/s)")
+        self._angle = advance(self._angle, increment)
         self.input_speed = speed + acceleration * h
         rate, bend_acceleration = self.bend_angle_rate, self.bend_angle_acceleration
         self.bend_angle += h * (rate + 0.5 * bend_acceleration * h)

@@ -1,0 +1,279 @@
+"""Issue 4: bad input is refused with a clear message and loses nothing;
+rollback, serialization, reset, many instances, several builds in one process."""
+
+import math
+import subprocess
+import sys
+
+import numpy as np
+import pytest
+
+from cardan_joint import variables as table
+from cardan_joint.physics import CardanJoint
+from cardan_joint.simulate import SimulationError, simulate
+from conftest import build_fmu
+from fmi_loop import JointInstance
+
+DISCARD = 2
+GOOD = dict(input_speed=12.0, input_acceleration=3.0, bend_angle=0.4, bend_angle_rate=0.05,
+            bend_angle_acceleration=-0.1, load_torque=80.0)
+GUARD = table.BY_NAME["max_bend_angle"].start
+
+BAD_INPUTS = {
+    "bend angle at the guard": (dict(bend_angle=GUARD), 0.01, ["bend_angle", "max_bend_angle"]),
+    "bend angle beyond the guard": (dict(bend_angle=-1.5), 0.01, ["bend_angle = -1.5", "max_bend_angle"]),
+    "bend rate reaching the guard within the step": (
+        dict(bend_angle=1.3, bend_angle_rate=20.0), 0.01, ["bend_angle", "bend_angle_rate = 20.0",
+                                                           "max_bend_angle"]),
+    "NaN input speed": (dict(input_speed=math.nan), 0.01, ["input_speed = nan", "finite"]),
+    "infinite input acceleration": (dict(input_acceleration=math.inf), 0.01,
+                                    ["input_acceleration = inf"]),
+    "NaN bend angle rate": (dict(bend_angle_rate=math.nan), 0.01, ["bend_angle_rate = nan"]),
+    "infinite load torque": (dict(load_torque=-math.inf), 0.01, ["load_torque = -inf"]),
+    "negative step": ({}, -0.01, ["step size = -0.01", "> 0"]),
+    "zero step": ({}, 0.0, ["step size = 0.0", "> 0"]),
+    "NaN step": ({}, math.nan, ["step size = nan"]),
+    "speed beyond its physical range": (dict(input_speed=1e308), 0.01,
+                                        ["input_speed = 1e+308", "physical range", "100000.0"]),
+    "step overflowing the input angle": (dict(bend_angle_rate=0.0, bend_angle_acceleration=0.0),
+                                         1e305, ["input_speed = ", "overflows",
+                                                     "limit 1e+15 rad per step"]),
+}
+
+
+def all_reals(joint):
+    return joint.get(*joint.references)
+
+
+@pytest.mark.parametrize("case", BAD_INPUTS)
+def test_bad_input_is_refused_named_and_loses_nothing(model_description, unzipped_fmu, case):
+    bad, step, expected_words = BAD_INPUTS[case]
+    messages = []
+    joint = JointInstance(model_description, unzipped_fmu, name="victim", messages=messages)
+    twin = JointInstance(model_description, unzipped_fmu, name="twin")
+    try:
+        for j in (joint, twin):
+            j.set(**GOOD)
+            for _ in range(5):
+                j.step(0.01)
+        before = all_reals(joint)
+        joint.set(**bad)
+        assert joint.try_step(step) == DISCARD
+        refusal = [m for m in messages if m[0] == DISCARD][-1][2]
+        for word in expected_words + [f"t = {0.05!r} s"]:
+            assert word in refusal, (word, refusal)
+        # Nothing lost: the state is the last good point's. Outputs are held where
+        # the inputs are invalid now; inputs valid at this instant (a rate that only
+        # reaches the guard within the step) show through, as feedthrough demands.
+        after = all_reals(joint)
+        assert after["input_angle"] == before["input_angle"]
+        if "within the step" not in case:
+            assert [after[n] for n in table.OUTPUTS] == [before[n] for n in table.OUTPUTS]
+        # The master fixes its inputs and retries: bit for bit as if nothing happened.
+        for j in (joint, twin):
+            j.set(**GOOD)
+            for _ in range(5):
+                j.step(0.01)
+        assert joint.get_outputs() == twin.get_outputs()
+    finally:
+        joint.close()
+        twin.close()
+
+
+@pytest.mark.parametrize("parameter, value, words", [
+    ("max_bend_angle", 1.6, ["max_bend_angle = 1.6", "pi/2"]),
+    ("max_bend_angle", 0.0, ["max_bend_angle = 0.0"]),
+    ("crosspiece_inertia_2", -0.01, ["crosspiece_inertia_2 = -0.01", ">= 0"]),
+    ("yoke_phase", math.nan, ["yoke_phase = nan", "finite"]),
+    ("input_angle_start", math.inf, ["input_angle_start = inf"]),
+])
+def test_bad_parameters_refuse_every_step_and_say_why(model_description, unzipped_fmu,
+                                                      parameter, value, words):
+    messages = []
+    joint = JointInstance(model_description, unzipped_fmu, start_values={parameter: value},
+                          messages=messages)
+    try:
+        assert any(all(w in m[2] for w in words) for m in messages if m[0] == 3)   # error at init
+        for _ in range(3):
+            assert joint.try_step(0.01) == DISCARD
+        assert all(w in messages[-1][2] for w in words)
+    finally:
+        joint.close()                          # terminate and free stay safe
+
+
+def test_parameters_cannot_change_after_initialization(model_description, unzipped_fmu):
+    messages = []
+    joint = JointInstance(model_description, unzipped_fmu, messages=messages)
+    try:
+        joint.set(crosspiece_inertia_1=5.0)
+        assert joint.get("crosspiece_inertia_1")["crosspiece_inertia_1"] == 0.026
+        assert "crosspiece_inertia_1 = 5.0 ignored" in messages[-1][2]
+        assert joint.try_step(0.01) == 0
+    finally:
+        joint.close()
+
+
+def test_plain_simulate_fmu_shows_the_message_on_the_terminal(fmu_path):
+    script = ("import numpy as np\nfrom fmpy import simulate_fmu\n"
+              "u = np.array([(0.0, 0.5), (0.5, 0.5), (0.5, 1.5), (1.0, 1.5)],"
+              " dtype=[('time', float), ('bend_angle', float)])\n"
+              f"r = simulate_fmu({str(fmu_path)!r}, stop_time=1.0, output_interval=0.1, input=u)\n"
+              "print('stopped at', r['time'][-1])\n")
+    run = subprocess.run([sys.executable, "-c", script], capture_output=True, text=True, timeout=120)
+    assert run.returncode == 0
+    assert "stopped at 0.5" in run.stdout                 # FMPy stops early, silently
+    assert "input bend_angle = 1.5 rad" in run.stderr     # ... but the FMU says why
+    assert "max_bend_angle" in run.stderr and "t = 0.5 s" in run.stderr
+
+
+def test_simulate_entry_point_raises_with_the_message(fmu_path):
+    u = np.array([(0.0, 0.5), (0.5, 0.5), (0.5, 1.5), (1.0, 1.5)],
+                 dtype=[("time", float), ("bend_angle", float)])
+    with pytest.raises(SimulationError, match=r"input bend_angle = 1.5 rad .* max_bend_angle") as error:
+        simulate(fmu_path, stop_time=1.0, output_interval=0.1, inputs=u)
+    assert error.value.result["time"][-1] == 0.5
+
+
+def test_state_rollback_is_bit_for_bit_after_ten_thousand_steps(model_description, unzipped_fmu):
+    rng = np.random.default_rng(3)
+    inputs = [dict(input_speed=rng.uniform(5, 50), input_acceleration=rng.uniform(-5, 5),
+                   bend_angle=rng.uniform(-1, 1), load_torque=rng.uniform(-50, 50))
+              for _ in range(10_000)]
+    joint = JointInstance(model_description, unzipped_fmu)
+
+    def run():
+        trace = []
+        for u in inputs:
+            joint.set(**u)
+            joint.fmu.doStep(currentCommunicationPoint=0.0, communicationStepSize=1e-3)
+            trace.append(tuple(joint.get_outputs().values()))
+        return trace
+
+    try:
+        for _ in range(7):
+            joint.step(1e-3)
+        saved = joint.fmu.getFMUstate()
+        serialized = joint.fmu.serializeFMUstate(saved)
+        first = run()
+        other = joint.fmu.getFMUstate()          # a second, independent copy
+        joint.fmu.setFMUstate(saved)
+        assert run() == first
+        joint.fmu.setFMUstate(other)
+        assert tuple(joint.get_outputs().values()) == first[-1]
+        # A serialized state restores in a fresh instance.
+        fresh = JointInstance(model_description, unzipped_fmu, name="fresh")
+        try:
+            state = fresh.fmu.deSerializeFMUstate(serialized)
+            fresh.fmu.setFMUstate(state)
+            fresh.fmu.freeFMUstate(state)
+            joint, original = fresh, joint
+            assert run() == first
+            joint = original
+        finally:
+            fresh.close()
+        joint.fmu.freeFMUstate(saved)
+        joint.fmu.freeFMUstate(other)
+    finally:
+        joint.close()
+
+
+def test_state_includes_the_revolution_counter(model_description, unzipped_fmu):
+    joint = JointInstance(model_description, unzipped_fmu, start_values={"input_speed": 5000.0})
+    try:
+        saved = joint.fmu.getFMUstate()
+        angle = joint.get("input_angle", "crosspiece_quaternion_0")
+        for _ in range(10):
+            joint.step(0.1)                     # ~80 revolutions
+        joint.fmu.setFMUstate(saved)
+        assert joint.get("input_angle", "crosspiece_quaternion_0") == angle
+        joint.fmu.freeFMUstate(saved)
+    finally:
+        joint.close()
+
+
+def test_reset_returns_to_the_start_values(model_description, unzipped_fmu):
+    fresh = JointInstance(model_description, unzipped_fmu, name="fresh")
+    joint = JointInstance(model_description, unzipped_fmu, start_values={"bend_angle": 1.0})
+    try:
+        for _ in range(20):
+            joint.step(0.01)
+        joint.fmu.reset()
+        assert all_reals(joint) == all_reals(fresh)
+        joint.fmu.setupExperiment(startTime=0.0)
+        joint.fmu.enterInitializationMode()
+        joint.fmu.exitInitializationMode()
+        joint.time = 0.0
+        for j in (joint, fresh):
+            for _ in range(20):
+                j.step(0.01)
+        assert all_reals(joint) == all_reals(fresh)
+    finally:
+        joint.close()
+        fresh.close()
+
+
+def test_a_hundred_instances_in_one_process_are_independent(model_description, unzipped_fmu):
+    joints, models = [], []
+    try:
+        for k in range(100):
+            start = dict(bend_angle=-1.2 + 0.024 * k, yoke_phase=0.05 * k, input_speed=1.0 + k,
+                         crosspiece_inertia_3=0.001 * k)
+            joints.append(JointInstance(model_description, unzipped_fmu, name=f"joint{k}",
+                                        start_values=start))
+            models.append(CardanJoint(**start))
+        for step in range(30):
+            for k in np.random.default_rng(step).permutation(100):   # interleaved, shuffled
+                joints[k].set(load_torque=float(step * k))
+                models[k].load_torque = float(step * k)
+                joints[k].step(0.003)
+                models[k].step(0.003)
+        for joint, model in zip(joints, models):
+            assert list(joint.get_outputs().values()) == list(model.outputs())
+    finally:
+        for joint in joints:
+            joint.close()
+
+
+def test_builds_with_other_names_and_defaults_coexist_in_one_process(tmp_path, model_description,
+                                                                   unzipped_fmu):
+    from fmpy import extract, read_model_description
+
+    other = build_fmu(tmp_path, "--name=OtherJoint", "--set", "bend_angle=0.2",
+                      "--set", "max_bend_angle=0.3")
+    same_name = build_fmu(tmp_path / "b", "--set", "bend_angle=0.7")
+    loaded = []
+    try:
+        for path in (other, same_name):
+            md = read_model_description(str(path))
+            loaded.append(JointInstance(md, extract(str(path)), name=path.stem))
+        default = JointInstance(model_description, unzipped_fmu, name="default")
+        loaded.append(default)
+        bends = [j.get("bend_angle")["bend_angle"] for j in loaded]
+        assert bends == [0.2, 0.7, table.BY_NAME["bend_angle"].start]
+        # Each runs its own guard: 0.35 rad is beyond OtherJoint's 0.3, within the others' 80 deg.
+        loaded[0].set(bend_angle=0.35)
+        assert loaded[0].try_step(0.01) == DISCARD
+        loaded[1].set(bend_angle=0.35)
+        assert loaded[1].try_step(0.01) == 0
+    finally:
+        for joint in loaded:
+            joint.close()
+
+
+def test_libcosim_and_fmpy_agree_on_a_ten_second_run(fmu_path):
+    pytest.importorskip("libcosimpy")
+    from fmpy import simulate_fmu
+
+    from cardan_joint.cosim import run_libcosim
+
+    inputs = dict(input_speed=10.0, input_acceleration=0.0, bend_angle=0.5, bend_angle_rate=0.0,
+                  bend_angle_acceleration=0.0, load_torque=40.0)
+    names = list(table.OUTPUTS)
+    cosim = run_libcosim(fmu_path, 10.0, 1e-3, inputs, names)
+    fmpy = simulate_fmu(str(fmu_path), stop_time=10.0, output_interval=1e-3, start_values=inputs,
+                        output=names)
+    assert len(cosim["time"]) == len(fmpy) == 10_001
+    np.testing.assert_allclose(cosim["time"], fmpy["time"], rtol=0, atol=1e-12)
+    for name in names:
+        scale = np.max(np.abs(fmpy[name])) or 1.0
+        assert np.max(np.abs(cosim[name] - fmpy[name])) <= 1e-9 * scale, name
