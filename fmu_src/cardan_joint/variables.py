@@ -149,10 +149,13 @@ def start_values() -> dict:
 
 def markdown_table() -> str:
     """The README's variable table (a test keeps the README in step with it)."""
-    rows = ["| name | causality | unit (display) | start | description |",
-            "|---|---|---|---|---|"]
+    rows = ["| name | causality | unit (display) | start | range | description |",
+            "|---|---|---|---|---|---|"]
     for v in VARIABLES:
         unit = v.unit + (f" ({v.display_unit})" if v.display_unit else "")
         start = "" if v.start is None else f"{v.start:.6g}"
-        rows.append(f"| `{v.name}` | {v.causality} | {unit} | {start} | {v.description} |")
+        low = "" if v.min is None else f"{v.min:.6g}"
+        high = "" if v.max is None else f"{v.max:.6g}"
+        span = f"[{low}, {high}]" if (low or high) else ""
+        rows.append(f"| `{v.name}` | {v.causality} | {unit} | {start} | {span} | {v.description} |")
     return "\n".join(rows) + "\n"
