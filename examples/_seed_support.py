@@ -1,0 +1,86 @@
+"""Plumbing shared by the seed examples (examples/seed_*.py): command line, CSV, figures.
+
+Every plotted number comes from co-simulating the FMU (`run`); the seeds'
+formulas appear only as reference marks drawn over the FMU's curves.
+"""
+
+import argparse
+import math
+from pathlib import Path
+
+import numpy as np
+
+from cardan_joint.simulate import DEFAULT_FMU, simulate
+
+DEG = 180.0 / math.pi
+# Dark enough on white for thin lines, distinct for up to six bend angles.
+COLORS = ("tab:blue", "tab:orange", "tab:green", "tab:red", "tab:purple", "tab:brown")
+
+
+def parse_args(doc, argv):
+    parser = argparse.ArgumentParser(description=doc.splitlines()[0])
+    parser.add_argument("--fmu", default=str(DEFAULT_FMU), help="the FMU to co-simulate")
+    parser.add_argument("--out", default=str(Path("results") / "seeds"),
+                        help="folder for the PNGs and CSVs")
+    parser.add_argument("--quick", action="store_true",
+                        help="coarse sampling and fewer runs (for the tests)")
+    args = parser.parse_args(argv)
+    args.out = Path(args.out)
+    args.out.mkdir(parents=True, exist_ok=True)
+    return args
+
+
+def run(fmu, stop_time, output_interval, output=None, **start_values):
+    """One co-simulation of the FMU (a fresh instance) with constant inputs and parameters.
+
+    `output`: the variables to record (FMPy's default: all outputs); inputs can be
+    recorded too, and read back as the FMU holds them.
+    """
+    return simulate(fmu, stop_time=stop_time, output_interval=output_interval,
+                    start_values=start_values, output=output)
+
+
+def pyplot():
+    import matplotlib
+    matplotlib.use("Agg")
+    import matplotlib.pyplot as plt
+    plt.rcParams.update({"axes.grid": True, "grid.alpha": 0.3, "legend.fontsize": 8,
+                         "legend.framealpha": 0.9})
+    return plt
+
+
+class Outputs:
+    """Writes the figures and their data, and remembers what it wrote for the summary."""
+
+    def __init__(self, folder: Path):
+        self.folder = folder
+        self.paths = []
+
+    def csv(self, name, columns: dict):
+        path = self.folder / f"{name}.csv"
+        # Full double precision: the tests check the seeds' numbers to 1e-9 from these files.
+        np.savetxt(path, np.column_stack([np.asarray(c, dtype=float) for c in columns.values()]),
+                   delimiter=",", header=",".join(columns), comments="", fmt="%.17g")
+        self.paths.append(path)
+        return path
+
+    def figure(self, name, fig):
+        path = self.folder / f"{name}.png"
+        fig.savefig(path, dpi=100)
+        import matplotlib.pyplot as plt
+        plt.close(fig)
+        self.paths.append(path)
+        return path
+
+    def report(self):
+        for path in self.paths:
+            print(f"wrote {path}")
+
+
+def parabola_peak(x, y):
+    """Abscissa and height of the sampled maximum, refined through its two neighbours."""
+    k = int(np.clip(np.argmax(y), 1, len(y) - 2))
+    (x0, x1, _), (y0, y1, y2) = x[k - 1:k + 2], y[k - 1:k + 2]
+    curvature = y0 - 2 * y1 + y2
+    shift = 0.5 * (y0 - y2) / curvature if curvature else 0.0
+    return x1 + shift * (x1 - x0), y1 - 0.25 * (y0 - y2) * shift
