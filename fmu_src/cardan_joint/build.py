@@ -19,8 +19,9 @@ from pathlib import Path
 from . import variables as table
 
 PACKAGE_DIR = Path(__file__).resolve().parent
-SCRIPT = PACKAGE_DIR.parent / "UniversalJoint.py"
+SCRIPT = PACKAGE_DIR / "fmu" / "UniversalJoint.py"            # the pythonfmu script template
 RUNTIME = ("__init__.py", "variables.py", "physics", "fmu")   # what the FMU needs at run time
+_NOT_SHIPPED = shutil.ignore_patterns("__pycache__", SCRIPT.name)
 DEFAULT_NAME = "UniversalJoint"
 
 
@@ -31,13 +32,14 @@ class BuildError(RuntimeError):
 def _runtime_files():
     for entry in RUNTIME:
         path = PACKAGE_DIR / entry
-        yield from (sorted(p for p in path.rglob("*.py")) if path.is_dir() else [path])
+        yield from (sorted(p for p in path.rglob("*.py") if p != SCRIPT)
+                    if path.is_dir() else [path])
 
 
 def _fingerprint(model_name: str, start_values: dict) -> str:
     digest = hashlib.sha256()
     for path in [SCRIPT, *_runtime_files()]:
-        digest.update(str(path.relative_to(PACKAGE_DIR.parent)).encode())
+        digest.update(str(path.relative_to(PACKAGE_DIR)).encode())
         digest.update(path.read_bytes())
     digest.update(json.dumps([model_name, sorted(start_values.items())]).encode())
     return digest.hexdigest()[:12]
@@ -59,7 +61,7 @@ def _stage(workdir: Path, model_name: str, start_values: dict, fingerprint: str)
     for entry in RUNTIME:
         source = PACKAGE_DIR / entry
         if source.is_dir():
-            shutil.copytree(source, target / entry, ignore=shutil.ignore_patterns("__pycache__"))
+            shutil.copytree(source, target / entry, ignore=_NOT_SHIPPED)
         else:
             shutil.copy2(source, target / entry)
     script = SCRIPT.read_text()
