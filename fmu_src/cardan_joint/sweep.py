@@ -20,11 +20,12 @@ import argparse
 import contextlib
 import io
 import math
-import shutil
+import os
 import sys
 import tempfile
 import time
-from dataclasses import asdict, dataclass, field
+from dataclasses import asdict, dataclass
+from typing import Optional
 from pathlib import Path
 
 RPM = math.pi / 30
@@ -56,7 +57,7 @@ class SweepSpec:
     load_torque: float = 0.0              # [N.m]
     revolutions: int = 2
     steps_per_revolution: int = 720       # 0.5 deg per communication step
-    max_bend_angle_deg: float = None      # None: the FMU's own guard
+    max_bend_angle_deg: Optional[float] = None   # None: the FMU's own guard
 
     def tasks(self):
         """One task per (bend angle, speed): its cases, one per distribution."""
@@ -69,14 +70,6 @@ class Case:
     bend_angle_deg: float
     input_speed_rpm: float
     inertia_distribution: str
-
-
-@dataclass
-class SweepTiming:
-    mode: str
-    seconds: float
-    startup_seconds: float = 0.0
-    notes: list = field(default_factory=list)
 
 
 # --- one case -------------------------------------------------------------
@@ -150,28 +143,34 @@ def run_task(fmu, spec: SweepSpec, cases) -> list:
 # --- the sweep --------------------------------------------------------------
 
 class TextProgress:
-    """A one-line progress bar on stderr (no dependency)."""
+    """A progress bar on stderr (no dependency): redrawn in place on a terminal,
+    a line every 10 % in a log."""
 
     def __init__(self, total, label="", width=30, stream=None):
         self.total, self.label, self.width = max(total, 1), label, width
         self.stream = stream or sys.stderr
+        self.interactive = getattr(self.stream, "isatty", lambda: False)()
+        self.granularity = 1 if self.interactive else 10
         self.done = 0
         self._shown = -1
         self.update(0)
 
     def update(self, advance=1):
         self.done = min(self.done + advance, self.total)
-        percent = int(100 * self.done / self.total)
-        if percent != self._shown:
+        percent = 100 * self.done // self.total
+        shown = percent - percent % self.granularity
+        if shown != self._shown:
             filled = self.width * self.done // self.total
-            self.stream.write(f"\r{self.label}[{'#' * filled}{' ' * (self.width - filled)}] "
-                              f"{percent:3d}% ({self.done}/{self.total})")
+            bar = (f"{self.label}[{'#' * filled}{' ' * (self.width - filled)}] "
+                   f"{percent:3d}% ({self.done}/{self.total})")
+            self.stream.write(f"\r{bar}" if self.interactive else f"{bar}\n")
             self.stream.flush()
-            self._shown = percent
+            self._shown = shown
 
     def close(self):
-        self.stream.write("\n")
-        self.stream.flush()
+        if self.interactive:
+            self.stream.write("\n")
+            self.stream.flush()
 
 
 def run_serial(fmu, spec: SweepSpec, progress=True):
@@ -191,23 +190,31 @@ def run_serial(fmu, spec: SweepSpec, progress=True):
 
 def local_cluster(n_workers=2):
     """Worker processes, one thread each: each runs FMUs in its own Python."""
+    import dask
     from dask.distributed import LocalCluster
 
-    return LocalCluster(n_workers=n_workers, threads_per_worker=1, processes=True,
-                        dashboard_address=None)
+    # The workers' statistical profiler samples the task thread every 10 ms and
+    # fights it for the GIL, which every FMI call releases and retakes: it cost
+    # the co-simulations about 20 % of their CPU time.
+    with dask.config.set({"distributed.worker.profile.enabled": False}):
+        return LocalCluster(n_workers=n_workers, threads_per_worker=1, processes=True,
+                            dashboard_address=None)
 
 
 def run_dask(fmu, spec: SweepSpec, client, progress=True):
     """Every task on the client's cluster; returns the table (a DataFrame)."""
-    from dask.distributed import progress as dask_progress
+    from dask.distributed import as_completed
 
     fmu = str(Path(fmu).resolve())
     tasks = spec.tasks()
-    futures = client.map(run_task, [fmu] * len(tasks), [spec] * len(tasks), tasks,
-                         key=[f"cardan-sweep-{k}" for k in range(len(tasks))], pure=False)
+    # pure=False: fresh keys every run, so a repeated sweep is computed again
+    # rather than served from the cluster's memory.
+    futures = client.map(run_task, [fmu] * len(tasks), [spec] * len(tasks), tasks, pure=False)
     if progress:
-        dask_progress(futures)
-        sys.stderr.write("\n")
+        bar = TextProgress(len(futures), "dask   ")
+        for _ in as_completed(futures):
+            bar.update()
+        bar.close()
     rows = [row for result in client.gather(futures) for row in result]
     return to_table(rows, spec)
 
@@ -310,7 +317,7 @@ def plot_heatmaps(table, spec: SweepSpec, path):
         fig.colorbar(image, ax=ax, shrink=0.9)
         for i, j in zip(*np.nonzero(beyond)):
             ax.add_patch(Rectangle((j - 0.5, i - 0.5), 1, 1, fill=False, hatch="///",
-                                   edgecolor="white", linewidth=0))
+                                   edgecolor="0.55", linewidth=0))   # seen on dark and light
         for i, j in zip(*np.nonzero(failed)):
             ax.add_patch(Rectangle((j - 0.5, i - 0.5), 1, 1, color="0.75"))
             ax.text(j, i, "failed", ha="center", va="center", fontsize=6, rotation=90)
@@ -319,11 +326,17 @@ def plot_heatmaps(table, spec: SweepSpec, path):
         ax.set_xlabel("bend angle [deg]")
         ax.set_ylabel("input speed [rpm]")
         ax.set_title(title, fontsize=9)
-    axes.flat[0].legend(handles=[Patch(facecolor="none", edgecolor="k", hatch="///",
-                                       label=f"output acceleration > {ACCELERATION_LIMIT:g} "
-                                             "rad/s$^2$"),
-                                 Patch(color="0.75", label="failed run")],
-                        loc="upper left", fontsize=7, framealpha=0.9)
+    handles = [Patch(facecolor="none", edgecolor="0.55", hatch="///",
+                     label=f"output acceleration > {ACCELERATION_LIMIT:g} rad/s$^2$\n"
+                           "(beyond the usual driveline limit)"),
+               Patch(color="0.75", label="failed run (see the table's message)")]
+    spare = list(axes.flat[len(panels):])
+    if spare:
+        spare[0].set_visible(True)
+        spare[0].axis("off")
+        spare[0].legend(handles=handles, loc="center", fontsize=9, frameon=False)
+    else:
+        fig.legend(handles=handles, loc="lower center", ncol=2, fontsize=8)
     fig.suptitle(f"Cardan joint design sweep: I0 = {spec.total_inertia:g} kg.m$^2$, "
                  f"load {spec.load_torque:g} N.m, constant speed and bend", fontsize=11)
     fig.tight_layout()
@@ -383,8 +396,8 @@ def timed(function, *args, **kwargs):
 
 
 def compare(fmu, spec, scheduler=None, n_workers=2, repeat=1, progress=True):
-    """Run on Dask and serially `repeat` times; return (table, [(dask s, serial s)],
-    cluster start-up s). Raises AssertionError if the tables differ."""
+    """Run on Dask and serially `repeat` times; return (table, [(dask s, serial s,
+    load average)], cluster start-up s). Raises AssertionError if the tables differ."""
     import pandas as pd
 
     (client, cluster), startup = timed(connect, scheduler, n_workers)
@@ -393,10 +406,12 @@ def compare(fmu, spec, scheduler=None, n_workers=2, repeat=1, progress=True):
         warm_up(client)
         run_task(str(Path(fmu).resolve()), spec, spec.tasks()[0][:1])   # warm this process too
         for _ in range(repeat):
+            # Other jobs on the machine skew wall times: record the load too.
+            load = os.getloadavg()[0]
             on_dask, dask_seconds = timed(run_dask, fmu, spec, client, progress)
             serial, serial_seconds = timed(run_serial, fmu, spec, progress)
             pd.testing.assert_frame_equal(on_dask, serial, check_exact=True)
-            timings.append((dask_seconds, serial_seconds))
+            timings.append((dask_seconds, serial_seconds, load))
     finally:
         client.close()
         if cluster is not None:
@@ -423,9 +438,10 @@ def main(argv=None, prog=None) -> int:
                                           progress)
         where = args.scheduler or f"LocalCluster of {args.workers} worker processes"
         print(f"Dask ({where}) and serial tables identical; cluster start-up {startup:.1f} s")
-        for k, (on_dask, serial) in enumerate(timings, 1):
-            print(f"  run {k}: Dask {on_dask:.1f} s, serial {serial:.1f} s, "
-                  f"speed-up {serial / on_dask:.2f} (with start-up {serial / (on_dask + startup):.2f})")
+        for k, (on_dask, serial, load) in enumerate(timings, 1):
+            print(f"  run {k}: Dask {on_dask:.1f} s, serial {serial:.1f} s, speed-up "
+                  f"{serial / on_dask:.2f} (with start-up {serial / (on_dask + startup):.2f}); "
+                  f"load average before {load:.1f} on {os.cpu_count()} CPUs")
     elif args.serial:
         table, seconds = timed(run_serial, fmu, spec, progress)
         print(f"serial: {seconds:.1f} s")

@@ -1,0 +1,288 @@
+"""The `cardan-joint` command: build, simulate and sweep the UniversalJoint FMU.
+
+    cardan-joint build [--dest DIR] [--name MODEL] [--set NAME=VALUE ...]
+    cardan-joint simulate [--set NAME=VALUE ...] [--input inputs.csv] [--stop-time S]
+                          [--step S] [--output run.csv] [--plot run.png] [--plot-variables ...]
+    cardan-joint sweep [--serial | --scheduler tcp://host:8786 | --compare] [...]
+
+Every failure a user can cause (an unknown variable, a malformed CSV, a step
+the FMU refuses, a missing FMU) ends in a one-paragraph message on stderr and
+a non-zero exit status, never a traceback.
+"""
+
+import argparse
+import contextlib
+import csv
+import io
+import math
+import sys
+from pathlib import Path
+
+from . import variables as table
+
+PROG = "cardan-joint"
+DEFAULT_PLOT_VARIABLES = ("output_speed", "output_acceleration", "cardan_error", "input_torque")
+# Runs with fewer steps finish before a progress bar would help.
+PROGRESS_MIN_STEPS = 20_000
+
+
+class UsageError(Exception):
+    """Bad command-line input: the message names what is wrong."""
+
+
+# --- simulate: turning arguments into FMPy inputs ---------------------------
+
+def parse_assignments(pairs):
+    """--set NAME=VALUE ... -> (constant inputs, parameter start values)."""
+    inputs, parameters = {}, {}
+    for pair in pairs:
+        name, sep, text = pair.partition("=")
+        name = name.strip()
+        if not sep:
+            raise UsageError(f"--set takes NAME=VALUE, got {pair!r}")
+        kind = _settable_kind(name, f"--set {pair}")
+        try:
+            value = float(text)
+        except ValueError:
+            raise UsageError(f"--set {pair}: {text.strip()!r} is not a number") from None
+        (inputs if kind == "input" else parameters)[name] = value
+    return inputs, parameters
+
+
+def _settable_kind(name, where):
+    variable = table.BY_NAME.get(name)
+    if variable is None:
+        raise UsageError(f"{where}: unknown variable {name!r}; inputs are "
+                         f"{', '.join(table.INPUTS)}; parameters are {', '.join(table.PARAMETERS)}")
+    if variable.causality not in ("input", "parameter"):
+        raise UsageError(f"{where}: {name!r} is an {variable.causality}; only inputs and "
+                         f"parameters can be set")
+    return variable.causality
+
+
+def read_input_csv(path):
+    """A CSV with a `time` column and input-name columns -> FMPy's structured array."""
+    import numpy as np
+
+    path = Path(path)
+    if not path.is_file():
+        raise UsageError(f"input file {path} does not exist")
+    with open(path, newline="") as stream:
+        rows = [row for row in csv.reader(stream) if row and any(cell.strip() for cell in row)]
+    if not rows:
+        raise UsageError(f"{path} is empty")
+    header = [cell.strip() for cell in rows[0]]
+    if "time" not in header:
+        raise UsageError(f"{path}: no 'time' column (columns: {', '.join(header)})")
+    for name in header:
+        if name != "time" and _settable_kind(name, f"{path}, column {name!r}") != "input":
+            raise UsageError(f"{path}, column {name!r}: a parameter is fixed for the run; "
+                             f"set it with --set {name}=VALUE")
+    if len(set(header)) != len(header):
+        raise UsageError(f"{path}: a column name appears twice")
+    signal = np.zeros(len(rows) - 1, dtype=[(name, float) for name in header])
+    for line, row in enumerate(rows[1:], start=2):
+        if len(row) != len(header):
+            raise UsageError(f"{path}, line {line}: {len(row)} values for {len(header)} columns")
+        for name, cell in zip(header, row):
+            try:
+                signal[line - 2][name] = float(cell)
+            except ValueError:
+                raise UsageError(f"{path}, line {line}, column {name!r}: {cell.strip()!r} is "
+                                 f"not a number") from None
+    if len(signal) < 1:
+        raise UsageError(f"{path} has a header but no rows")
+    times = signal["time"]
+    if not np.all(np.isfinite(times)) or np.any(np.diff(times) < 0):
+        raise UsageError(f"{path}: the time column must be finite and non-decreasing")
+    return signal
+
+
+def input_signal(constants, csv_signal, defaults, stop_time):
+    """Every input of the FMU as one signal: CSV columns as given, the others
+    constant (from --set, else the FMU's start values), so no input is left unset."""
+    import numpy as np
+
+    given = set(csv_signal.dtype.names) - {"time"} if csv_signal is not None else set()
+    clash = sorted(given & set(constants))
+    if clash:
+        raise UsageError(f"{', '.join(clash)} given both by --set and in the input CSV")
+    times = (csv_signal["time"] if csv_signal is not None
+             else np.array([0.0, max(stop_time, 0.0)]))
+    signal = np.zeros(len(times), dtype=[("time", float)] + [(n, float) for n in table.INPUTS])
+    signal["time"] = times
+    for name in table.INPUTS:
+        signal[name] = (csv_signal[name] if name in given
+                        else constants.get(name, defaults.get(name, 0.0)))
+    return signal
+
+
+def _start_values(fmu):
+    from fmpy import read_model_description
+
+    description = read_model_description(str(fmu))
+    return ({v.name: float(v.start) for v in description.modelVariables if v.start is not None},
+            description.defaultExperiment)
+
+
+# --- simulate: output -------------------------------------------------------
+
+def write_result_csv(result, path):
+    path = Path(path)
+    path.parent.mkdir(parents=True, exist_ok=True)
+    with open(path, "w", newline="") as stream:
+        writer = csv.writer(stream)
+        writer.writerow(result.dtype.names)
+        writer.writerows((repr(float(x)) for x in row) for row in result)
+
+
+def plot_result(result, names, path, title):
+    import matplotlib
+    matplotlib.use("Agg")
+    import matplotlib.pyplot as plt
+
+    fig, axes = plt.subplots(len(names), 1, figsize=(9, 2.2 + 2.0 * len(names)), sharex=True,
+                             squeeze=False)
+    for ax, name in zip(axes[:, 0], names):
+        ax.plot(result["time"], result[name], lw=0.9)
+        ax.set_ylabel(f"{name}\n[{table.BY_NAME[name].unit}]", fontsize=8)
+        ax.grid(alpha=0.3)
+    axes[0, 0].set_title(title, fontsize=9)
+    axes[-1, 0].set_xlabel("time [s]")
+    fig.tight_layout()
+    fig.savefig(path, dpi=100)
+    plt.close(fig)
+
+
+def _progress_callback(stop_time, step, show):
+    if not show:
+        return None, None
+    from .sweep import TextProgress
+
+    bar = TextProgress(max(1, round(stop_time / step)), "simulate ")
+
+    def step_finished(time, recorder):
+        bar.update(round(time / step) - bar.done)
+        return True
+
+    return step_finished, bar
+
+
+def simulate_command(args):
+    from .simulate import simulate
+
+    fmu = Path(args.fmu)
+    if not fmu.is_file():
+        raise UsageError(f"{fmu} does not exist: build it with `{PROG} build`")
+    constants, parameters = parse_assignments(args.set)
+    csv_signal = read_input_csv(args.input) if args.input else None
+    starts, experiment = _start_values(fmu)
+    stop_time = (args.stop_time if args.stop_time is not None
+                 else float(csv_signal["time"][-1]) if csv_signal is not None
+                 else float(experiment.stopTime))
+    step = args.step
+    if not (math.isfinite(stop_time) and stop_time > 0):
+        raise UsageError(f"--stop-time {stop_time!r} must be a number > 0")
+    if not (math.isfinite(step) and 0 < step <= stop_time):
+        raise UsageError(f"--step {step!r} must be > 0 and at most the stop time {stop_time!r}")
+    unknown = [n for n in args.plot_variables if n not in table.BY_NAME]
+    if unknown:
+        raise UsageError(f"--plot-variables: unknown variable(s) {', '.join(unknown)}")
+    signal = input_signal(constants, csv_signal, starts, stop_time)
+    steps = round(stop_time / step)
+    show = not args.no_progress and (args.progress or steps >= PROGRESS_MIN_STEPS)
+    step_finished, bar = _progress_callback(stop_time, step, show)
+    # The FMU repeats its refusals on stderr; the error message below already
+    # carries them, so they are shown only when the run succeeds (warnings).
+    fmu_messages = io.StringIO()
+    try:
+        with contextlib.redirect_stderr(fmu_messages):
+            result = simulate(fmu, stop_time=stop_time, output_interval=step, inputs=signal,
+                              start_values=parameters,
+                              output=list(table.INPUTS + table.OUTPUTS),
+                              step_finished=step_finished)
+    finally:
+        if bar:
+            bar.close()
+    sys.stderr.write(fmu_messages.getvalue())
+    output = Path(args.output)
+    plot = Path(args.plot) if args.plot else output.with_suffix(".png")
+    write_result_csv(result, output)
+    plot.parent.mkdir(parents=True, exist_ok=True)
+    plot_result(result, args.plot_variables, plot,
+                f"{fmu.name}: {steps} steps of {step:g} s")
+    print(f"wrote {output} ({len(result)} rows) and {plot}")
+    return 0
+
+
+# --- the command ------------------------------------------------------------
+
+def _parser():
+    parser = argparse.ArgumentParser(prog=PROG, description="Build, simulate and sweep the "
+                                     "exact Cardan joint FMU (UniversalJoint).")
+    commands = parser.add_subparsers(dest="command", required=True, metavar="COMMAND")
+    commands.add_parser("build", add_help=False,
+                        help="build and validate the FMU (options: cardan-joint build --help)")
+    commands.add_parser("sweep", add_help=False,
+                        help="design sweep on Dask or serially (options: cardan-joint sweep --help)")
+    run = commands.add_parser("simulate", help="co-simulate the FMU with FMPy",
+                              description="Co-simulate the FMU from constant inputs (--set) "
+                              "and/or an input CSV; write an output CSV and a PNG plot. Inputs "
+                              "hold over each step with their rates: give input_acceleration "
+                              "and bend_angle_rate columns with speed and bend angle columns "
+                              "for an exact run.")
+    from .simulate import DEFAULT_FMU
+    run.add_argument("--fmu", default=str(DEFAULT_FMU), help="FMU file (default %(default)s)")
+    run.add_argument("--set", action="append", default=[], metavar="NAME=VALUE",
+                     help="constant input or parameter value, e.g. --set bend_angle=0.3 "
+                          "(SI units: rad, rad/s, N.m, kg.m2)")
+    run.add_argument("--input", metavar="CSV",
+                     help="input CSV: a 'time' column and input-name columns")
+    run.add_argument("--stop-time", type=float, default=None,
+                     help="[s] (default: the CSV's last time, else the FMU's default experiment)")
+    run.add_argument("--step", type=float, default=1e-3,
+                     help="communication step [s] (default %(default)s)")
+    run.add_argument("--output", default="results/simulation.csv",
+                     help="output CSV (default %(default)s)")
+    run.add_argument("--plot", default=None, help="plot PNG (default: the output CSV's name, .png)")
+    run.add_argument("--plot-variables", nargs="+", default=list(DEFAULT_PLOT_VARIABLES),
+                     metavar="NAME", help="variables to plot (default: %(default)s)")
+    progress = run.add_mutually_exclusive_group()
+    progress.add_argument("--progress", action="store_true",
+                          help=f"always show a progress bar (default: from {PROGRESS_MIN_STEPS} "
+                               "steps on)")
+    progress.add_argument("--no-progress", action="store_true")
+    return parser
+
+
+def main(argv=None) -> int:
+    argv = list(sys.argv[1:] if argv is None else argv)
+    parser = _parser()
+    args, rest = parser.parse_known_args(argv)
+    try:
+        if args.command == "build":
+            from .build import main as build_main
+            return build_main(rest)
+        if args.command == "sweep":
+            from .sweep import main as sweep_main
+            return sweep_main(rest, prog=f"{PROG} sweep")
+        if rest:
+            parser.error(f"unrecognized arguments: {' '.join(rest)}")
+        return simulate_command(args)
+    except UsageError as error:
+        print(f"{PROG} {args.command}: {error}", file=sys.stderr)
+        return 2
+    except KeyboardInterrupt:
+        print(f"{PROG} {args.command}: interrupted", file=sys.stderr)
+        return 130
+    except Exception as error:       # noqa: BLE001 - the user gets a message, not a traceback
+        from .simulate import SimulationError
+
+        what = "the FMU refused a step" if isinstance(error, SimulationError) else \
+            type(error).__name__
+        print(f"{PROG} {args.command}: {what}: {error}", file=sys.stderr)
+        return 1
+
+
+if __name__ == "__main__":
+    sys.exit(main())

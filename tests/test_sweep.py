@@ -1,0 +1,75 @@
+"""Design sweeps: Dask and serial runs agree exactly; failures are reported."""
+
+import math
+
+import pytest
+
+from cardan_joint import sweep
+
+TINY = sweep.SweepSpec(bend_angles_deg=(10.0, 85.0), input_speeds_rpm=(1000.0, 3000.0),
+                       distributions=("T1", "T2"), revolutions=1, steps_per_revolution=72)
+
+
+@pytest.fixture(scope="module")
+def client():
+    client, cluster = sweep.connect(None, n_workers=2)
+    yield client
+    client.close()
+    cluster.close()
+
+
+@pytest.fixture(scope="module")
+def serial(fmu_path):
+    return sweep.run_serial(fmu_path, TINY, progress=False)
+
+
+def test_dask_and_serial_tables_are_identical(client, fmu_path, serial):
+    import pandas as pd
+
+    assert len(client.scheduler_info()["workers"]) == 2
+    on_dask = sweep.run_dask(fmu_path, TINY, client, progress=False)
+    pd.testing.assert_frame_equal(on_dask, serial, check_exact=True)
+
+
+def test_every_case_has_a_row_in_the_specs_order(serial):
+    assert len(serial) == 8
+    assert list(serial["inertia_distribution"][:2]) == ["T1", "T2"]
+    assert list(serial["bend_angle_deg"]) == sorted(serial["bend_angle_deg"])
+
+
+def test_a_bend_beyond_the_guard_is_reported_failed_with_the_fmus_message(serial):
+    failed = serial[serial["bend_angle_deg"] == 85.0]
+    assert len(failed) == 4
+    assert (failed["status"] == sweep.FAILED).all()
+    for message in failed["message"]:
+        assert "bend_angle" in message and "max_bend_angle" in message
+    assert failed["peak_output_acceleration"].isna().all()
+
+
+def test_successful_cases_carry_the_joints_numbers(serial):
+    ok = serial[serial["status"] == sweep.OK]
+    assert len(ok) == 4 and (ok["message"] == "").all()
+    beta = math.radians(10)
+    # Sampled every 5 deg, the speed's extremes (pin in and normal to the bend
+    # plane) are hit: the fluctuation is the single joint's tan b sin b.
+    assert ok["speed_fluctuation"].to_numpy() == pytest.approx(math.tan(beta) * math.sin(beta),
+                                                              rel=1e-9)
+    # Output acceleration does not depend on the crosspiece; its torque does.
+    t1, t2 = ok[ok["inertia_distribution"] == "T1"], ok[ok["inertia_distribution"] == "T2"]
+    assert t1["peak_output_acceleration"].to_numpy() == pytest.approx(
+        t2["peak_output_acceleration"].to_numpy(), rel=1e-12)
+    assert (t1["peak_crosspiece_torque"].to_numpy() != t2["peak_crosspiece_torque"].to_numpy()).all()
+    assert list(ok["beyond_acceleration_limit"]) == list(ok["peak_output_acceleration"] > 1000.0)
+
+
+def test_a_missing_fmu_fails_the_tasks_cases_with_a_message(tmp_path):
+    rows = sweep.run_task(str(tmp_path / "missing.fmu"), TINY, TINY.tasks()[0])
+    assert [r["status"] for r in rows] == [sweep.FAILED] * 2
+    assert "not found" in rows[0]["message"]
+
+
+def test_table_and_heatmap_are_written(serial, tmp_path):
+    written = sweep.write_table(serial, tmp_path / "tiny")
+    assert written[0].name == "tiny.csv" and written[0].stat().st_size > 0
+    sweep.plot_heatmaps(serial, TINY, tmp_path / "tiny.png")
+    assert (tmp_path / "tiny.png").stat().st_size > 0
