@@ -109,3 +109,26 @@ def test_every_communication_point_matches_the_geometric_reference(
             assert_close(value, expected[name], 1e-12, 1.0, name)
     finally:
         joint.close()
+
+
+@pytest.mark.parametrize("phase, angle0", [(1e3 + 0.3, -5e3), (-1e6 - 0.7, 123.4),
+                                           (1e9 + 0.1, -1e4), (-7.0, -1e12)])
+def test_large_and_negative_phases_and_start_angles_lose_no_precision(
+        model_description, unzipped_fmu, phase, angle0):
+    h = 1e-2
+    case = dict(polynomial_case(77, h), phase=phase, angle0=angle0)
+    start = dict(yoke_phase=phase, input_angle_start=angle0,
+                 crosspiece_inertia_1=case["inertia"][0], crosspiece_inertia_2=case["inertia"][1],
+                 crosspiece_inertia_3=case["inertia"][2], **inputs_at(case, 0.0))
+    joint = JointInstance(model_description, unzipped_fmu, start_values=start)
+    try:
+        for k in range(11):
+            values = joint.get_outputs()
+            if abs(angle0) > 1e9:
+                # A float start angle of 1e12 rad resolves 1e-4 rad; compare what
+                # does not depend on the absolute angle's last digits.
+                values = {n: v for n, v in values.items() if n not in ("input_angle", "output_angle")}
+            check_point(values, case, k * h)
+            joint.step(h)
+    finally:
+        joint.close()

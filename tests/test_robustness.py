@@ -84,7 +84,8 @@ def test_bad_input_is_refused_named_and_loses_nothing(model_description, unzippe
 @pytest.mark.parametrize("parameter, value, words", [
     ("max_bend_angle", 1.6, ["max_bend_angle = 1.6", "pi/2"]),
     ("max_bend_angle", 0.0, ["max_bend_angle = 0.0"]),
-    ("crosspiece_inertia_2", -0.01, ["crosspiece_inertia_2 = -0.01", ">= 0"]),
+    ("crosspiece_inertia_2", -0.01, ["crosspiece_inertia_2 = -0.01", "range [0.0, "]),
+    ("input_angle_start", 1e18, ["input_angle_start = 1e+18", "range"]),
     ("yoke_phase", math.nan, ["yoke_phase = nan", "finite"]),
     ("input_angle_start", math.inf, ["input_angle_start = inf"]),
 ])
@@ -184,7 +185,7 @@ def test_state_includes_the_revolution_counter(model_description, unzipped_fmu):
         saved = joint.fmu.getFMUstate()
         angle = joint.get("input_angle", "crosspiece_quaternion_0")
         for _ in range(10):
-            joint.step(0.1)                     # ~80 revolutions
+            joint.step(0.1)                     # ~800 revolutions
         joint.fmu.setFMUstate(saved)
         assert joint.get("input_angle", "crosspiece_quaternion_0") == angle
         joint.fmu.freeFMUstate(saved)
@@ -278,3 +279,116 @@ def test_libcosim_and_fmpy_agree_on_a_ten_second_run(fmu_path):
     for name in names:
         scale = np.max(np.abs(fmpy[name])) or 1.0
         assert np.max(np.abs(cosim[name] - fmpy[name])) <= 1e-9 * scale, name
+
+
+def test_calls_for_other_types_and_bad_references_are_errors_not_fatal(model_description,
+                                                                      unzipped_fmu):
+    messages = []
+    joint = JointInstance(model_description, unzipped_fmu, messages=messages)
+    try:
+        assert joint.fmu.getInteger([0]) == [0]
+        assert joint.fmu.getBoolean([0]) == [False]
+        joint.fmu.setInteger([0], [1])
+        joint.fmu.setBoolean([0], [True])
+        assert math.isnan(joint.fmu.getReal([9999])[0])
+        assert any("no Real variable has value reference 9999" in m[2] for m in messages)
+        assert any("no Integer variables" in m[2] for m in messages)
+        assert joint.try_step(0.01) == 0        # still alive and well
+    finally:
+        joint.close()
+
+
+def test_a_garbage_serialized_state_is_refused_and_changes_nothing(model_description,
+                                                                   unzipped_fmu):
+    messages = []
+    joint = JointInstance(model_description, unzipped_fmu, messages=messages)
+    try:
+        joint.step(0.05)
+        before = all_reals(joint)
+        state = joint.fmu.deSerializeFMUstate(b"not a state at all")
+        joint.fmu.setFMUstate(state)
+        joint.fmu.freeFMUstate(state)
+        assert "fmi2SetFMUstate ignored" in messages[-1][2]
+        assert all_reals(joint) == before
+        joint.step(0.05)
+    finally:
+        joint.close()
+
+
+def test_outputs_in_initialization_mode_see_the_parameters_at_once(model_description,
+                                                                   unzipped_fmu):
+    from fmpy.fmi2 import FMU2Slave
+
+    fmu = FMU2Slave(guid=model_description.guid, unzipDirectory=unzipped_fmu,
+                    modelIdentifier="UniversalJoint", instanceName="init")
+    ref = {v.name: v.valueReference for v in model_description.modelVariables}
+    fmu.instantiate()
+    try:
+        fmu.setupExperiment(startTime=3.0)
+        fmu.enterInitializationMode()
+        fmu.setReal([ref["input_angle_start"], ref["yoke_phase"]], [1.0, 0.5])
+        in_init = fmu.getReal([ref["input_angle"], ref["output_angle"], ref["crosspiece_quaternion_0"]])
+        fmu.exitInitializationMode()
+        after = fmu.getReal([ref["input_angle"], ref["output_angle"], ref["crosspiece_quaternion_0"]])
+        assert in_init == after
+        model = CardanJoint(input_angle_start=1.0, yoke_phase=0.5)
+        assert in_init == list(model.outputs()[:2]) + [model.response().crosspiece_quaternion_0]
+        fmu.terminate()
+    finally:
+        fmu.freeInstance()
+
+
+def test_invalid_load_holds_only_the_outputs_that_depend_on_it(model_description, unzipped_fmu):
+    joint = JointInstance(model_description, unzipped_fmu)
+    try:
+        joint.set(**GOOD)
+        held = joint.get_outputs()
+        joint.set(load_torque=math.nan, input_speed=20.0)
+        now = joint.get_outputs()
+        model = CardanJoint(**{**GOOD, "input_speed": 20.0})
+        expected = dict(zip(table.OUTPUTS, model.outputs()))
+        for name in table.OUTPUTS:
+            if "load_torque" in table.BY_NAME[name].depends_on:
+                assert now[name] == held[name], name          # held: depends on the NaN
+            else:
+                assert now[name] == expected[name], name      # follows the valid inputs
+        assert now["output_speed"] != held["output_speed"]
+    finally:
+        joint.close()
+
+
+def test_the_slave_survives_a_host_without_stderr(monkeypatch):
+    from cardan_joint.fmu.slave import CardanJointSlave
+
+    slave = CardanJointSlave(instance_name="no-stderr")
+    monkeypatch.setattr(sys, "stderr", None)
+    slave.set_real([0], [math.nan])
+    assert slave.do_step(0.0, 0.01) is False
+    assert len(slave.get_real(list(range(len(table.VARIABLES))))) == len(table.VARIABLES)
+    assert any("input_speed = nan" in m.msg for m in slave.log_queue)
+
+
+def test_a_refused_step_leaves_the_clock_alone():
+    from cardan_joint.fmu.slave import CardanJointSlave
+
+    slave = CardanJointSlave(instance_name="clock")
+    slave.setup_experiment(0.0)
+    slave.exit_initialization_mode()
+    assert slave.do_step(0.0, 0.5) is True
+    saved = slave._get_fmu_state()
+    slave.set_real([2], [1.5])                          # beyond the guard
+    assert slave.do_step(123.0, 0.5) is False
+    assert slave._get_fmu_state()["joint"]["time"] == saved["joint"]["time"] == 0.5
+
+
+@pytest.mark.parametrize("setting, words", [("bend_angle=2.0", "bend_angle = 2.0"),
+                                             ("bend_angle=abc", "abc"),
+                                             ("nonsense=1", "nonsense")])
+def test_build_refuses_bad_start_values_with_a_message(tmp_path, setting, words):
+    from conftest import ROOT
+
+    run = subprocess.run([sys.executable, str(ROOT / "build_fmu.py"), "--dest", str(tmp_path),
+                          "--set", setting], capture_output=True, text=True, timeout=120)
+    assert run.returncode != 0
+    assert words in run.stderr and "Traceback" not in run.stderr
+    assert not list(tmp_path.glob("*.fmu"))

@@ -111,6 +111,8 @@ def test_fmu_matches_the_multibody_reactions_along_a_driven_trajectory(model_des
             for name in ("input_torque", "input_yoke_moment", "output_yoke_moment"):
                 assert abs(out[name] - state[name]) <= 1e-9 * scale, (name, t, out[name], state[name])
             assert math.isclose(out["output_speed"], state["output_speed"], rel_tol=1e-12)
+            assert abs(out["output_acceleration"] - state["output_acceleration"]) <= 1e-9 * (
+                abs(state["output_acceleration"]) + omega1 * omega1)
             if k < n:
                 joint.step(h)
     finally:

@@ -46,12 +46,20 @@ def _fingerprint(model_name: str, start_values: dict) -> str:
 
 
 def _check_start_values(start_values: dict) -> dict:
+    from .physics.model import CardanJoint
+
     settable = set(table.INPUTS) | set(table.PARAMETERS)
     unknown = sorted(set(start_values) - settable)
     if unknown:
         raise BuildError(f"cannot set start value of {', '.join(unknown)}: "
                          f"only inputs and parameters have start values")
-    return {name: float(value) for name, value in start_values.items()}
+    values = {name: float(value) for name, value in start_values.items()}
+    # An FMU whose defaults cannot run would only fail later, in someone's master.
+    joint = CardanJoint(**values)
+    problem = joint.parameter_problem() or joint.input_problem()
+    if problem:
+        raise BuildError(f"invalid start values: {problem}")
+    return values
 
 
 def _stage(workdir: Path, model_name: str, start_values: dict, fingerprint: str) -> Path:
@@ -114,9 +122,12 @@ def _parse_start_values(pairs):
     values = {}
     for pair in pairs:
         name, sep, value = pair.partition("=")
+        try:
+            values[name.strip()] = float(value)
+        except ValueError:
+            sep = ""
         if not sep:
-            raise BuildError(f"--set takes NAME=VALUE, got {pair!r}")
-        values[name.strip()] = float(value)
+            raise BuildError(f"--set takes NAME=VALUE with a number, got {pair!r}")
     return values
 
 

@@ -82,11 +82,12 @@ VARIABLES = (
     Variable("load_torque", _IN, "N.m", "Load torque T_L the driven machine takes from the "
              "output shaft", 0.0, None, -1e9, 1e9),
     # Parameters.
+    # Angles beyond 1e15 rad have no fractional digits left in a float.
     Variable("yoke_phase", _PAR, "rad", "Input-yoke pin angle from the bend plane at zero "
              "input angle (0: Wikipedia/maker/Tataru convention; 90 deg: Mityushov & Misyura)",
-             0.0, "deg"),
+             0.0, "deg", -1e15, 1e15),
     Variable("input_angle_start", _PAR, "rad", "Input shaft angle gamma1 at the start time",
-             0.0, "deg"),
+             0.0, "deg", -1e15, 1e15),
     Variable("crosspiece_inertia_1", _PAR, "kg.m2", "Crosspiece principal moment of inertia "
              "about the input-yoke pin", 0.026, None, 0.0, 1e6),
     Variable("crosspiece_inertia_2", _PAR, "kg.m2", "Crosspiece principal moment of inertia "

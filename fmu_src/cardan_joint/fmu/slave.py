@@ -1,19 +1,22 @@
 """The pythonfmu slave: maps FMI variables onto `physics.CardanJoint`.
 
 No equation lives here. What does live here is the FMI plumbing that pythonfmu
-0.7.0 gets wrong for a robust component: no Python exception may reach its C
-layer (it turns into fmi2Fatal), a refused step returns False (fmi2Discard)
-with the joint untouched, the complete state (including the revolution
-counter) is saved for fmi2GetFMUstate, and every refusal is also written to
-stderr because pythonfmu drops log messages unless debug logging is on.
+0.7.0 gets wrong for a robust component: any Python exception reaching its C
+layer becomes fmi2Fatal, so every method it calls catches everything; a
+refused step returns False (fmi2Discard) with the joint untouched; the
+complete state (including the revolution counter) is saved for
+fmi2GetFMUstate; and every problem is also written to stderr, because
+pythonfmu drops log messages unless debug logging is on.
 """
 
+import json
 import math
 import sys
+from operator import attrgetter
 
 from pythonfmu import Fmi2Causality, Fmi2Slave, Fmi2Variability, Real
-from pythonfmu.enums import Fmi2Initial, Fmi2Status
 from pythonfmu.default_experiment import DefaultExperiment
+from pythonfmu.enums import Fmi2Initial, Fmi2Status
 
 from .. import __version__
 from .. import variables as table
@@ -21,12 +24,15 @@ from ..physics.model import CardanJoint
 from .model_description import complete
 
 _KNOWN = table.INPUTS + table.PARAMETERS
+_NAMES = _KNOWN + table.OUTPUTS
 _FIRST_OUTPUT = len(_KNOWN)
-assert tuple(v.name for v in table.VARIABLES) == _KNOWN + table.OUTPUTS, \
+assert tuple(v.name for v in table.VARIABLES) == _NAMES, \
     "the slave's value references assume inputs, then parameters, then outputs"
 assert table.OUTPUTS[0] == "input_angle", "held outputs keep the first one, the state, live"
 _INPUT_REFERENCES = range(len(table.INPUTS))
 _NAN_OUTPUTS = (math.nan,) * len(table.OUTPUTS)
+_OUTPUT_DEPENDENCIES = tuple(frozenset(table.BY_NAME[n].depends_on) for n in table.OUTPUTS)
+_inputs_of = attrgetter(*table.INPUTS)
 
 
 class CardanJointSlave(Fmi2Slave):
@@ -52,10 +58,12 @@ class CardanJointSlave(Fmi2Slave):
         self._start_time = 0.0
         self._initialized = False
         self._outputs = None            # cached outputs; None = recompute on next read
-        self._outputs_held = _NAN_OUTPUTS if self._joint.parameter_problem() else self._joint.outputs()
         self._inputs_checked = False
         self._last_message = None
-        for name in table.INPUTS + table.PARAMETERS + table.OUTPUTS:
+        self._outputs_held, self._inputs_held = _NAN_OUTPUTS, _inputs_of(self._joint)
+        if not (self._joint.parameter_problem() or self._joint.input_problem()):
+            self._outputs_held = self._joint.outputs()
+        for name in _NAMES:
             self._register(table.BY_NAME[name])
 
     def _register(self, variable):
@@ -78,26 +86,42 @@ class CardanJointSlave(Fmi2Slave):
     def _report(self, message: str, status: Fmi2Status) -> None:
         self.log(message, status)
         if message != self._last_message:
+            self._last_message = message
             # pythonfmu forwards log messages only with debug logging on, so a user
             # of plain fmpy.simulate_fmu would never learn why the run stopped.
-            sys.stderr.write(f"[{self.modelName} {self.instance_name}] "
-                             f"{status.name.upper()}: {message}\n")
-            sys.stderr.flush()
-            self._last_message = message
+            # A host without a usable stderr must not turn this into fmi2Fatal.
+            try:
+                sys.stderr.write(f"[{self.modelName} {self.instance_name}] "
+                                 f"{status.name.upper()}: {message}\n")
+                sys.stderr.flush()
+            except Exception:
+                pass
 
     def _fault(self, where: str, error: BaseException) -> None:
-        self._report(f"internal error in {where}: {type(error).__name__}: {error}",
-                     Fmi2Status.error)
+        try:
+            self._report(f"internal error in {where}: {type(error).__name__}: {error}",
+                         Fmi2Status.error)
+        except Exception:
+            pass
 
     # --- life cycle ----------------------------------------------------------
 
     def setup_experiment(self, start_time, stop_time=None, tolerance=None):
-        self._start_time = start_time
+        try:
+            self._start_time = float(start_time)
+            self._restart()
+        except Exception as error:
+            self._fault("setup_experiment", error)
+
+    def _restart(self):
+        """Re-apply the start time and parameters (before initialization ends)."""
+        self._joint.start(self._start_time)
+        self._outputs = None
+        self._inputs_checked = False
 
     def exit_initialization_mode(self):
         try:
-            self._joint.start(self._start_time)
-            self._outputs = None
+            self._restart()
             self._initialized = True
             problem = self._joint.parameter_problem()
             if problem:
@@ -109,9 +133,11 @@ class CardanJointSlave(Fmi2Slave):
     def do_step(self, current_time, step_size):
         try:
             joint = self._joint
+            time = joint.time
             joint.time = current_time
             problem = joint.step(step_size)
             if problem:
+                joint.time = time
                 self._report(f"t = {current_time!r} s: {problem}; step of {step_size!r} s "
                              f"refused, the joint stays at t = {current_time!r} s",
                              Fmi2Status.discard)
@@ -130,13 +156,33 @@ class CardanJointSlave(Fmi2Slave):
         if not self._inputs_checked:
             problem = joint.parameter_problem() or joint.input_problem()
             if problem:
-                self._report(f"t = {joint.time!r} s: {problem}; outputs are held at the "
-                             f"last valid inputs", Fmi2Status.warning)
-                # The input angle is state, not a function of the inputs: always current.
-                return (joint.input_angle,) + self._outputs_held[1:]
+                self._report(f"t = {joint.time!r} s: {problem}; outputs that depend on it "
+                             f"are held at the last valid inputs", Fmi2Status.warning)
+                return self._held_outputs(joint)
             self._inputs_checked = True
         self._outputs = self._outputs_held = joint.outputs()
+        self._inputs_held = _inputs_of(joint)
         return self._outputs
+
+    def _held_outputs(self, joint):
+        """Outputs with invalid inputs: each output that depends on an invalid input
+        keeps its last valid value, the others (and the input angle, the state)
+        follow the valid inputs, as the declared dependencies promise."""
+        live = (joint.input_angle,) + self._outputs_held[1:]
+        if joint.parameter_problem():
+            return live
+        invalid = joint.invalid_inputs()
+        current = _inputs_of(joint)
+        try:
+            for name, held in zip(table.INPUTS, self._inputs_held):
+                if name in invalid:
+                    setattr(joint, name, held)
+            fresh = joint.outputs()
+        finally:
+            for name, value in zip(table.INPUTS, current):
+                setattr(joint, name, value)
+        return tuple(live[i] if dependencies & invalid else fresh[i]
+                     for i, dependencies in enumerate(_OUTPUT_DEPENDENCIES))
 
     def get_real(self, vrs):
         try:
@@ -145,22 +191,33 @@ class CardanJointSlave(Fmi2Slave):
             return [outputs[vr - _FIRST_OUTPUT] if vr >= _FIRST_OUTPUT
                     else getattr(joint, _KNOWN[vr]) for vr in vrs]
         except Exception as error:
-            self._fault("get_real", error)
+            bad = [vr for vr in vrs if not 0 <= vr < len(_NAMES)]
+            if bad:
+                self._report(f"get_real: no Real variable has value reference {bad[0]}",
+                             Fmi2Status.error)
+            else:
+                self._fault("get_real", error)
             return [math.nan] * len(vrs)
 
     def set_real(self, vrs, values):
         try:
             joint = self._joint
+            parameters_changed = False
             for vr, value in zip(vrs, values):
-                if vr >= _FIRST_OUTPUT or vr < 0:
+                if not 0 <= vr < _FIRST_OUTPUT:
                     self._report(f"set_real on {self._name_of(vr)} ignored: only inputs and "
                                  f"parameters can be set", Fmi2Status.error)
-                elif vr not in _INPUT_REFERENCES and self._initialized:
+                elif vr in _INPUT_REFERENCES:
+                    setattr(joint, _KNOWN[vr], float(value))
+                elif self._initialized:
                     self._report(f"parameter {_KNOWN[vr]} = {value!r} ignored: fixed "
                                  f"parameters cannot change after initialization",
                                  Fmi2Status.error)
                 else:
                     setattr(joint, _KNOWN[vr], float(value))
+                    parameters_changed = True
+            if parameters_changed:
+                self._restart()        # outputs in initialization mode see them at once
             self._outputs = None
             self._inputs_checked = False
         except Exception as error:
@@ -168,8 +225,34 @@ class CardanJointSlave(Fmi2Slave):
 
     @staticmethod
     def _name_of(vr):
-        names = _KNOWN + table.OUTPUTS
-        return names[vr] if 0 <= vr < len(names) else f"value reference {vr}"
+        return _NAMES[vr] if 0 <= vr < len(_NAMES) else f"value reference {vr}"
+
+    # The FMU has Real variables only; pythonfmu's typed accessors would raise
+    # (fmi2Fatal) on any other call, so these refuse politely instead.
+    def _no_such_variables(self, kind, vrs):
+        self._report(f"the FMU has no {kind} variables (value references {list(vrs)})",
+                     Fmi2Status.error)
+
+    def get_integer(self, vrs):
+        self._no_such_variables("Integer", vrs)
+        return [0] * len(vrs)
+
+    def get_boolean(self, vrs):
+        self._no_such_variables("Boolean", vrs)
+        return [False] * len(vrs)
+
+    def get_string(self, vrs):
+        self._no_such_variables("String", vrs)
+        return [""] * len(vrs)
+
+    def set_integer(self, vrs, values):
+        self._no_such_variables("Integer", vrs)
+
+    def set_boolean(self, vrs, values):
+        self._no_such_variables("Boolean", vrs)
+
+    def set_string(self, vrs, values):
+        self._no_such_variables("String", vrs)
 
     # --- FMU state -----------------------------------------------------------
 
@@ -177,18 +260,45 @@ class CardanJointSlave(Fmi2Slave):
         try:
             return {"joint": self._joint.state(), "start_time": self._start_time,
                     "initialized": self._initialized,
-                    "outputs_held": list(self._outputs_held)}
+                    "outputs_held": list(self._outputs_held),
+                    "inputs_held": list(self._inputs_held)}
         except Exception as error:
             self._fault("fmi2GetFMUstate", error)
-            return {}
+            return {"invalid_state": f"fmi2GetFMUstate failed: {error}"}
 
     def _set_fmu_state(self, state):
         try:
-            self._joint.restore(state["joint"])
-            self._start_time = state["start_time"]
-            self._initialized = state["initialized"]
-            self._outputs_held = tuple(state["outputs_held"])
+            if "invalid_state" in state:
+                raise ValueError(state["invalid_state"])
+            held_outputs = tuple(float(v) for v in state["outputs_held"])
+            held_inputs = tuple(float(v) for v in state["inputs_held"])
+            if len(held_outputs) != len(table.OUTPUTS) or len(held_inputs) != len(table.INPUTS):
+                raise ValueError("the state is from another version of the FMU")
+            self._joint.restore(state["joint"])           # all or nothing
+            self._start_time = float(state["start_time"])
+            self._initialized = bool(state["initialized"])
+            self._outputs_held, self._inputs_held = held_outputs, held_inputs
+        except Exception as error:
+            self._report(f"fmi2SetFMUstate ignored, the joint keeps its state: "
+                         f"{type(error).__name__}: {error}", Fmi2Status.error)
+        finally:
             self._outputs = None
             self._inputs_checked = False
+
+    @staticmethod
+    def _fmu_state_to_bytes(state):
+        try:
+            return json.dumps(state).encode("utf-8")
         except Exception as error:
-            self._fault("fmi2SetFMUstate", error)
+            return json.dumps({"invalid_state": f"serialization failed: {error}"}).encode()
+
+    @staticmethod
+    def _fmu_state_from_bytes(data):
+        # Returning a marked state instead of raising: fmi2SetFMUstate then says why.
+        try:
+            state = json.loads(data.decode("utf-8"))
+            if not isinstance(state, dict):
+                raise ValueError("not a serialized UniversalJoint state")
+            return state
+        except Exception as error:
+            return {"invalid_state": f"fmi2DeSerializeFMUstate got no valid state: {error}"}

@@ -14,9 +14,14 @@ from .. import variables as table
 from .response import JointResponse, joint_response
 from .revolutions import RevolutionAngle, advance, split_angle
 
-_INPUT_RANGES = tuple((name, table.BY_NAME[name].min, table.BY_NAME[name].max,
-                       table.BY_NAME[name].unit) for name in table.INPUTS
-                      if table.BY_NAME[name].min is not None and name != "bend_angle")
+def _ranges(names, *excluded):
+    return tuple((n, table.BY_NAME[n].min, table.BY_NAME[n].max, table.BY_NAME[n].unit)
+                 for n in names if table.BY_NAME[n].min is not None and n not in excluded)
+
+
+# The bend angle's own limit is the max_bend_angle parameter, checked apart.
+_INPUT_RANGES = _ranges(table.INPUTS, "bend_angle")
+_PARAMETER_RANGES = _ranges(table.PARAMETERS, "max_bend_angle")
 _SPEED_LIMIT = table.BY_NAME["input_speed"].max
 _ACCELERATION_LIMIT = table.BY_NAME["input_acceleration"].max
 _RATE_LIMIT = table.BY_NAME["bend_angle_rate"].max
@@ -24,7 +29,6 @@ _BEND_ACCELERATION_LIMIT = table.BY_NAME["bend_angle_acceleration"].max
 _LOAD_LIMIT = table.BY_NAME["load_torque"].max
 _MAX_INCREMENT = 1e15
 _FROM_RESPONSE = itemgetter(*(JointResponse._fields.index(name) for name in table.OUTPUTS[2:]))
-_STATE_FIELDS = ("time", "turns", "fraction", "fraction_error")
 
 
 class CardanJoint:
@@ -46,7 +50,11 @@ class CardanJoint:
         """
         self.time = float(time)
         self._parameter_problem = self.parameter_problem()
-        self._angle = split_angle(self.input_angle_start if not self._parameter_problem else 0.0)
+        valid = not self._parameter_problem
+        self._angle = split_angle(self.input_angle_start if valid else 0.0)
+        # The phase is reduced to whole turns plus a fraction too, so a large or
+        # negative phase costs no precision; its turns enter the quaternion's sign.
+        self._phase = split_angle(self.yoke_phase if valid else 0.0)
 
     def parameter_problem(self):
         """Why the parameters cannot run, or None."""
@@ -54,10 +62,11 @@ class CardanJoint:
             value = getattr(self, name)
             if not math.isfinite(value):
                 return f"parameter {name} = {value!r} is not a finite number"
-        for name in ("crosspiece_inertia_1", "crosspiece_inertia_2", "crosspiece_inertia_3"):
-            value, limit = getattr(self, name), table.BY_NAME[name].max
-            if not 0.0 <= value <= limit:
-                return (f"parameter {name} = {value!r} kg.m2 must be >= 0 and <= {limit!r}")
+        for name, low, high, unit in _PARAMETER_RANGES:
+            value = getattr(self, name)
+            if not low <= value <= high:
+                return (f"parameter {name} = {value!r} {unit} is outside its range "
+                        f"[{low!r}, {high!r}] {unit}")
         guard = self.max_bend_angle
         if not 0.0 < guard < table.HALF_PI:
             return (f"parameter max_bend_angle = {guard!r} rad ({guard * table.DEG:.6g} deg) "
@@ -68,9 +77,9 @@ class CardanJoint:
 
     def input_problem(self, step_size: float = 0.0):
         """Why the inputs cannot be used over [time, time + step_size], or None."""
-        # Fast path for the common case, once per FMU step: x - x == 0 only for
-        # finite x, and the bend angle is checked at both ends of the step.
-        # NaN fails every comparison, so it always takes the slow path.
+        # Fast path for the common case, once per FMU step: every range at once and
+        # the bend angle at both ends of the step. NaN fails every comparison, so
+        # it always takes the slow path, which names the first problem.
         beta, rate, acc = self.bend_angle, self.bend_angle_rate, self.bend_angle_acceleration
         guard = self.max_bend_angle
         if (abs(self.input_speed) <= _SPEED_LIMIT
@@ -103,6 +112,16 @@ class CardanJoint:
                     f" is not below the limit max_bend_angle = {guard!r} rad"
                     f" ({guard * table.DEG:.6g} deg)")
         return None
+
+    def invalid_inputs(self) -> set:
+        """Names of the inputs unusable at this instant (non-finite, out of range,
+        bend angle at or beyond the guard)."""
+        invalid = {name for name in table.INPUTS if not math.isfinite(getattr(self, name))}
+        invalid |= {name for name, low, high, _ in _INPUT_RANGES
+                    if not low <= getattr(self, name) <= high}
+        if not abs(self.bend_angle) < self.max_bend_angle:
+            invalid.add("bend_angle")
+        return invalid
 
     def _largest_bend(self, step_size):
         """(time into the step, bend angle) of the largest |bend angle| over the step."""
@@ -155,13 +174,14 @@ class CardanJoint:
         return self._angle
 
     def response(self) -> JointResponse:
-        angle = self._angle
+        angle, phase = self._angle, self._phase
+        psi = angle.fraction + (phase.fraction + (angle.fraction_error + phase.fraction_error))
+        sign = -1.0 if (angle.turns + phase.turns) & 1 else 1.0
         return joint_response(
-            angle.fraction + (angle.fraction_error + self.yoke_phase), self.bend_angle,
-            self.input_speed, self.input_acceleration, self.bend_angle_rate,
-            self.bend_angle_acceleration,
+            psi, self.bend_angle, self.input_speed, self.input_acceleration,
+            self.bend_angle_rate, self.bend_angle_acceleration,
             (self.crosspiece_inertia_1, self.crosspiece_inertia_2, self.crosspiece_inertia_3),
-            self.load_torque, angle.parity_sign)
+            self.load_torque, sign)
 
     def outputs(self) -> tuple:
         """Values of `variables.OUTPUTS`, in order; raises nothing for valid inputs."""
@@ -181,9 +201,12 @@ class CardanJoint:
         return values
 
     def restore(self, state: dict) -> None:
-        for name in table.INPUTS + table.PARAMETERS:
-            setattr(self, name, float(state[name]))
-        self.time = float(state["time"])
-        self._angle = RevolutionAngle(int(state["turns"]), float(state["fraction"]),
-                                      float(state["fraction_error"]))
-        self._parameter_problem = self.parameter_problem()
+        """Take a `state()`; all or nothing (a malformed state raises and changes nothing)."""
+        values = {name: float(state[name]) for name in table.INPUTS + table.PARAMETERS}
+        time = float(state["time"])
+        angle = RevolutionAngle(int(state["turns"]), float(state["fraction"]),
+                                float(state["fraction_error"]))
+        for name, value in values.items():
+            setattr(self, name, value)
+        self.start(time)
+        self._angle = angle
