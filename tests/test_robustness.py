@@ -34,7 +34,7 @@ BAD_INPUTS = {
     "zero step": ({}, 0.0, ["step size = 0.0", "> 0"]),
     "NaN step": ({}, math.nan, ["step size = nan"]),
     "speed beyond its physical range": (dict(input_speed=1e308), 0.01,
-                                        ["input_speed = 1e+308", "physical range", "100000.0"]),
+                                        ["input_speed = 1e+308", "outside its range", "100000.0"]),
     "step overflowing the input angle": (dict(bend_angle_rate=0.0, bend_angle_acceleration=0.0),
                                          1e305, ["input_speed = ", "overflows",
                                                      "rad per step"]),

@@ -56,17 +56,24 @@ class CardanJoint:
         # negative phase costs no precision; its turns enter the quaternion's sign.
         self._phase = split_angle(self.yoke_phase if valid else 0.0)
 
-    def parameter_problem(self):
-        """Why the parameters cannot run, or None."""
-        for name in table.PARAMETERS:
+    def _value_problem(self, kind, names, ranges):
+        """The first of `names` that is not finite or outside its range, explained."""
+        for name in names:
             value = getattr(self, name)
             if not math.isfinite(value):
-                return f"parameter {name} = {value!r} is not a finite number"
-        for name, low, high, unit in _PARAMETER_RANGES:
+                return f"{kind} {name} = {value!r} is not a finite number"
+        for name, low, high, unit in ranges:
             value = getattr(self, name)
             if not low <= value <= high:
-                return (f"parameter {name} = {value!r} {unit} is outside its range "
+                return (f"{kind} {name} = {value!r} {unit} is outside its range "
                         f"[{low!r}, {high!r}] {unit}")
+        return None
+
+    def parameter_problem(self):
+        """Why the parameters cannot run, or None."""
+        problem = self._value_problem("parameter", table.PARAMETERS, _PARAMETER_RANGES)
+        if problem:
+            return problem
         guard = self.max_bend_angle
         if not 0.0 < guard < table.HALF_PI:
             return (f"parameter max_bend_angle = {guard!r} rad ({guard * table.DEG:.6g} deg) "
@@ -92,15 +99,9 @@ class CardanJoint:
         return self._explain_input_problem(step_size)
 
     def _explain_input_problem(self, step_size):
-        for name in table.INPUTS:
-            value = getattr(self, name)
-            if not math.isfinite(value):
-                return f"input {name} = {value!r} is not a finite number"
-        for name, low, high, unit in _INPUT_RANGES:
-            value = getattr(self, name)
-            if not low <= value <= high:
-                return (f"input {name} = {value!r} {unit} is outside its physical range "
-                        f"[{low!r}, {high!r}] {unit}")
+        problem = self._value_problem("input", table.INPUTS, _INPUT_RANGES)
+        if problem:
+            return problem
         guard = self.max_bend_angle
         worst_time, worst = self._largest_bend(step_size)
         if abs(worst) >= guard:
