@@ -1,0 +1,45 @@
+"""benchmarks/run_benchmarks.py runs end to end and writes its tables.
+
+A smoke test only: `--quick` sizes measure nothing, so nothing here looks at a
+time or at whether a goal is met.
+"""
+
+import subprocess
+import sys
+from pathlib import Path
+
+ROOT = Path(__file__).resolve().parents[1]
+SCRIPT = ROOT / "benchmarks" / "run_benchmarks.py"
+
+SUMMARY_ROWS = (
+    "| 1. FMU2Slave loop (set 6, doStep, get 20) vs plain floor,",
+    "| 1. FMU2Slave loop vs bare floor (stricter),",
+    "| 1. `simulate_fmu` (inputs set every step, 20 outputs recorded) vs plain floor,",
+    "| 2. FMU output angle error after 1 s,",
+    "| 2. RK4 (Tătaru's ODE) angle error ÷ FMU's at 1e-2 s,",
+    "| 2. cost per step at 1e-4 s: RK4 in Python vs FMU under `simulate_fmu` |",
+    "| 3. `joint_response` on numpy arrays, one call on",
+    "| 3. the same in blocks of",
+    "| 3. ceiling: the array path's 5 trigonometric calls alone",
+    "| 4. FMU2Slave loop per step at",
+    "| 4. memory:",
+)
+
+
+def test_quick_run_writes_every_row(fmu_path, tmp_path):
+    output = tmp_path / "results.md"
+    run = subprocess.run([sys.executable, str(SCRIPT), "--quick", "--output", str(output),
+                          "--fmu", str(fmu_path)],
+                         capture_output=True, text=True, cwd=ROOT, timeout=600)
+    assert run.returncode == 0, run.stdout + run.stderr
+    text = output.read_text()
+    assert text.strip() == run.stdout.strip()       # printed and written alike
+    lines = text.splitlines()
+    assert "| benchmark | result | goal | met |" in lines
+    for row in SUMMARY_ROWS:
+        matches = [line for line in lines if line.startswith(row)]
+        assert len(matches) == 1, row
+        assert matches[0].count(" | ") == 3, matches[0]
+    for bend in ("2π/7", "2π/5"):
+        for step in ("1e-01", "1e-02", "1e-03", "1e-04"):
+            assert sum(line.startswith(f"| {bend} | {step} |") for line in lines) == 1
