@@ -262,7 +262,13 @@ def main(argv=None) -> int:
     try:
         if args.command == "build":
             from .build import main as build_main
-            return build_main(rest)
+            # build.main's parser names itself after argv[0]: make its usage
+            # line read as this subcommand.
+            program, sys.argv[0] = sys.argv[0], f"{PROG} build"
+            try:
+                return build_main(rest)
+            finally:
+                sys.argv[0] = program
         if args.command == "sweep":
             from .sweep import main as sweep_main
             return sweep_main(rest, prog=f"{PROG} sweep")

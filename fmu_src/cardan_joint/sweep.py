@@ -395,23 +395,53 @@ def timed(function, *args, **kwargs):
     return value, time.perf_counter() - start
 
 
+def _machine_busy_seconds():
+    """CPU-seconds the whole machine has been busy so far (Linux), or None."""
+    try:
+        with open("/proc/stat") as stream:
+            fields = [int(x) for x in stream.readline().split()[1:9]]
+    except (OSError, ValueError):
+        return None
+    user, nice, system, _idle, _iowait, irq, softirq, steal = fields
+    return (user + nice + system + irq + softirq + steal) / os.sysconf("SC_CLK_TCK")
+
+
+def _own_cpu_seconds(client):
+    return time.process_time() + sum(client.run(time.process_time).values())
+
+
+def _measured(function, client, local, *args):
+    """(value, wall s, CPUs other processes kept busy meanwhile or None).
+
+    Other jobs on the machine skew wall times; on a LocalCluster the machine's
+    busy time minus this process's and the workers' tells how much."""
+    busy, own = _machine_busy_seconds(), _own_cpu_seconds(client)
+    value, seconds = timed(function, *args)
+    if busy is None or not local:
+        return value, seconds, None
+    others = (_machine_busy_seconds() - busy) - (_own_cpu_seconds(client) - own)
+    return value, seconds, max(others, 0.0) / seconds
+
+
 def compare(fmu, spec, scheduler=None, n_workers=2, repeat=1, progress=True):
     """Run on Dask and serially `repeat` times; return (table, [(dask s, serial s,
-    load average)], cluster start-up s). Raises AssertionError if the tables differ."""
+    CPUs used by other processes during each)], cluster start-up s).
+    Raises AssertionError if the tables differ."""
     import pandas as pd
 
     (client, cluster), startup = timed(connect, scheduler, n_workers)
+    local = cluster is not None
     timings = []
     try:
         warm_up(client)
         run_task(str(Path(fmu).resolve()), spec, spec.tasks()[0][:1])   # warm this process too
         for _ in range(repeat):
-            # Other jobs on the machine skew wall times: record the load too.
-            load = os.getloadavg()[0]
-            on_dask, dask_seconds = timed(run_dask, fmu, spec, client, progress)
-            serial, serial_seconds = timed(run_serial, fmu, spec, progress)
+            on_dask, dask_seconds, dask_others = _measured(run_dask, client, local, fmu, spec,
+                                                           client, progress)
+            serial, serial_seconds, serial_others = _measured(run_serial, client, local, fmu,
+                                                              spec, progress)
             pd.testing.assert_frame_equal(on_dask, serial, check_exact=True)
-            timings.append((dask_seconds, serial_seconds, load))
+            timings.append((dask_seconds, serial_seconds, (dask_others, serial_others)))
     finally:
         client.close()
         if cluster is not None:
@@ -438,10 +468,12 @@ def main(argv=None, prog=None) -> int:
                                           progress)
         where = args.scheduler or f"LocalCluster of {args.workers} worker processes"
         print(f"Dask ({where}) and serial tables identical; cluster start-up {startup:.1f} s")
-        for k, (on_dask, serial, load) in enumerate(timings, 1):
+        for k, (on_dask, serial, others) in enumerate(timings, 1):
+            load = ("" if None in others else f"; other processes kept {others[0]:.2f} and "
+                    f"{others[1]:.2f} of {os.cpu_count()} CPUs busy")
             print(f"  run {k}: Dask {on_dask:.1f} s, serial {serial:.1f} s, speed-up "
-                  f"{serial / on_dask:.2f} (with start-up {serial / (on_dask + startup):.2f}); "
-                  f"load average before {load:.1f} on {os.cpu_count()} CPUs")
+                  f"{serial / on_dask:.2f} (with start-up {serial / (on_dask + startup):.2f})"
+                  f"{load}")
     elif args.serial:
         table, seconds = timed(run_serial, fmu, spec, progress)
         print(f"serial: {seconds:.1f} s")
