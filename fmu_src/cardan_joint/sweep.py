@@ -485,7 +485,7 @@ def main(argv=None, prog=None) -> int:
             client.close()
             if cluster is not None:
                 cluster.close()
-        print(f"Dask: {seconds:.1f} s (+ {startup:.1f} s cluster start-up)")
+        print(f"Dask: {seconds:.1f} s (+ {startup:.1f} s to start or reach the cluster)")
     out = Path(args.out)
     written = write_table(table, out / args.name)
     figure = out / f"{args.name}.png"

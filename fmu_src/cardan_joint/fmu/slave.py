@@ -33,6 +33,9 @@ _INPUT_REFERENCES = range(len(table.INPUTS))
 _NAN_OUTPUTS = (math.nan,) * len(table.OUTPUTS)
 _OUTPUT_DEPENDENCIES = tuple(frozenset(table.BY_NAME[n].depends_on) for n in table.OUTPUTS)
 _inputs_of = attrgetter(*table.INPUTS)
+# What FMPy and most masters pass every step: all inputs, all outputs, in order.
+_ALL_INPUTS = list(_INPUT_REFERENCES)
+_ALL_OUTPUTS = list(range(_FIRST_OUTPUT, len(_NAMES)))
 
 
 class CardanJointSlave(Fmi2Slave):
@@ -187,6 +190,8 @@ class CardanJointSlave(Fmi2Slave):
     def get_real(self, vrs):
         try:
             outputs = self._outputs or self._current_outputs()
+            if vrs == _ALL_OUTPUTS:
+                return list(outputs)
             joint = self._joint
             return [outputs[vr - _FIRST_OUTPUT] if vr >= _FIRST_OUTPUT
                     else getattr(joint, _KNOWN[vr]) for vr in vrs]
@@ -202,6 +207,12 @@ class CardanJointSlave(Fmi2Slave):
     def set_real(self, vrs, values):
         try:
             joint = self._joint
+            if vrs == _ALL_INPUTS:
+                for name, value in zip(table.INPUTS, values):
+                    setattr(joint, name, float(value))
+                self._outputs = None
+                self._inputs_checked = False
+                return
             parameters_changed = False
             for vr, value in zip(vrs, values):
                 if not 0 <= vr < _FIRST_OUTPUT:

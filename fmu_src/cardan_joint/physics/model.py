@@ -11,7 +11,9 @@ import math
 from operator import itemgetter
 
 from .. import variables as table
-from .response import JointResponse, joint_response
+# The kernel itself: the FMU's once-per-step call on floats skips the array dispatch.
+from .response import JointResponse
+from .response import _response as joint_response_kernel
 from .revolutions import RevolutionAngle, advance, split_angle
 
 def _ranges(names, *excluded):
@@ -178,11 +180,10 @@ class CardanJoint:
         angle, phase = self._angle, self._phase
         psi = angle.fraction + (phase.fraction + (angle.fraction_error + phase.fraction_error))
         sign = -1.0 if (angle.turns + phase.turns) & 1 else 1.0
-        return joint_response(
+        return joint_response_kernel(
             psi, self.bend_angle, self.input_speed, self.input_acceleration,
-            self.bend_angle_rate, self.bend_angle_acceleration,
-            (self.crosspiece_inertia_1, self.crosspiece_inertia_2, self.crosspiece_inertia_3),
-            self.load_torque, sign)
+            self.bend_angle_rate, self.bend_angle_acceleration, self.crosspiece_inertia_1,
+            self.crosspiece_inertia_2, self.crosspiece_inertia_3, self.load_torque, sign)
 
     def outputs(self) -> tuple:
         """Values of `variables.OUTPUTS`, in order; raises nothing for valid inputs."""

@@ -8,6 +8,7 @@ exact, so the input angle does not drift however long the run.
 """
 
 import math
+from functools import lru_cache
 from typing import NamedTuple
 
 TWO_PI = 2.0 * math.pi
@@ -27,10 +28,17 @@ class RevolutionAngle(NamedTuple):
         return -1.0 if self.turns & 1 else 1.0
 
     def __float__(self) -> float:
-        product, product_error = _two_product(float(self.turns), TWO_PI_HI)
+        product, product_error, low = _whole_turns(self.turns)
         total, sum_error = _two_sum(product, self.fraction)
-        return total + (sum_error + product_error + self.fraction_error
-                        + self.turns * TWO_PI_LO)
+        return total + (sum_error + product_error + self.fraction_error + low)
+
+
+@lru_cache(maxsize=8)
+def _whole_turns(turns):
+    """turns * 2 pi as (product, its rounding error, turns * TWO_PI_LO): changes
+    once a revolution, read every step."""
+    product, product_error = _two_product(float(turns), TWO_PI_HI)
+    return product, product_error, turns * TWO_PI_LO
 
 
 def _two_sum(a, b):
@@ -69,7 +77,10 @@ def _normalized(turns: int, fraction: float, error: float) -> RevolutionAngle:
         if fraction < 0.0 or fraction > TWO_PI_HI:   # the floor landed one off
             turns, fraction, error = _shift(turns, fraction, error, -1 if fraction < 0.0 else 1)
             fraction, error = _two_sum(fraction, error)
-    return RevolutionAngle(turns, fraction, error)
+    return _new_tuple(RevolutionAngle, (turns, fraction, error))
+
+
+_new_tuple = tuple.__new__
 
 
 def split_angle(angle: float) -> RevolutionAngle:
