@@ -4,13 +4,14 @@ Every plotted number comes from co-simulating the FMU (`run`); the seeds'
 formulas appear only as reference marks drawn over the FMU's curves.
 """
 
-import argparse
 import math
 from pathlib import Path
 
 import numpy as np
 
-from cardan_joint.simulate import DEFAULT_FMU, simulate
+from cardan_joint.simulate import simulate
+
+from _support import example_parser, output_folder
 
 DEG = 180.0 / math.pi
 # Dark enough on white for thin lines, distinct for up to six bend angles.
@@ -18,15 +19,11 @@ COLORS = ("tab:blue", "tab:orange", "tab:green", "tab:red", "tab:purple", "tab:b
 
 
 def parse_args(doc, argv):
-    parser = argparse.ArgumentParser(description=doc.splitlines()[0])
-    parser.add_argument("--fmu", default=str(DEFAULT_FMU), help="the FMU to co-simulate")
-    parser.add_argument("--out", default=str(Path("results") / "seeds"),
-                        help="folder for the PNGs and CSVs")
+    parser = example_parser(doc, str(Path("results") / "seeds"))
     parser.add_argument("--quick", action="store_true",
                         help="coarse sampling and fewer runs (for the tests)")
     args = parser.parse_args(argv)
-    args.out = Path(args.out)
-    args.out.mkdir(parents=True, exist_ok=True)
+    args.out = output_folder(args)
     return args
 
 

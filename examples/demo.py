@@ -7,14 +7,14 @@ back, against a 200 N.m load. Writes results/demo.csv and results/demo.png.
     python build_fmu.py && python examples/demo.py
 """
 
-import argparse
 import math
-from pathlib import Path
 
 import numpy as np
 
 from cardan_joint import variables as table
-from cardan_joint.simulate import DEFAULT_FMU, simulate
+from cardan_joint.simulate import simulate
+
+from _support import example_parser, output_folder, save_figure
 
 RPM = math.pi / 30
 
@@ -63,19 +63,14 @@ def plot(result, inputs, path):
     axes[3].legend(loc="upper left", ncol=3, fontsize=8)
     for ax in axes:
         ax.grid(alpha=0.3)
-    fig.tight_layout()
-    fig.savefig(path, dpi=110)
-    plt.close(fig)
+    save_figure(fig, path)
 
 
 def main(argv=None):
-    parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
-    parser.add_argument("--fmu", default=str(DEFAULT_FMU))
-    parser.add_argument("--out", default="results")
+    parser = example_parser(__doc__)
     parser.add_argument("--stop-time", type=float, default=2.0)
     args = parser.parse_args(argv)
-    out = Path(args.out)
-    out.mkdir(parents=True, exist_ok=True)
+    out = output_folder(args)
     inputs = demo_inputs(args.stop_time)
     result = simulate(args.fmu, stop_time=args.stop_time, output_interval=1e-3, inputs=inputs,
                       start_values={"crosspiece_inertia_1": 0.004, "crosspiece_inertia_2": 0.004,

@@ -58,16 +58,16 @@ Writes results/driveshaft_steps.csv (step dependence), results/driveshaft_phase.
 (yoke phase error sweep) and results/driveshaft.png.
 """
 
-import argparse
 import csv
 import math
 import shutil
-from pathlib import Path
 
 import numpy as np
 
 from cardan_joint.physics import quantities
 from cardan_joint.simulate import DEFAULT_FMU
+
+from _support import example_parser, output_folder, save_figure
 
 COUPLINGS = ("lead", "hold", "angle")
 ARRANGEMENTS = {"Z": -1.0, "W": 1.0}       # sign of joint 2's bend angle
@@ -277,15 +277,11 @@ def plot(steps_rows, phase_rows, bend_angle, input_speed, phase_step, path):
     right.set_title("Yoke phase error on the intermediate shaft", fontsize=10)
     right.legend(fontsize=8, loc="lower right")
     right.grid(alpha=0.3, which="both")
-    fig.tight_layout()
-    fig.savefig(path, dpi=110)
-    plt.close(fig)
+    save_figure(fig, path)
 
 
 def main(argv=None):
-    parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
-    parser.add_argument("--fmu", default=str(DEFAULT_FMU))
-    parser.add_argument("--out", default="results")
+    parser = example_parser(__doc__)
     parser.add_argument("--bend-angle", type=float, default=30.0, help="deg (default 30)")
     parser.add_argument("--input-speed", type=float, default=10.0, help="rad/s (default 10)")
     parser.add_argument("--revolutions", type=int, default=2,
@@ -298,8 +294,7 @@ def main(argv=None):
                         default=[0, 0.1, 0.25, 0.5, 1, 2, 3, 4, 5, 6, 7, 8, 9, 10],
                         help="yoke phase errors of joint 2 [deg]")
     args = parser.parse_args(argv)
-    out = Path(args.out)
-    out.mkdir(parents=True, exist_ok=True)
+    out = output_folder(args)
     bend = math.radians(args.bend_angle)
     speed = args.input_speed
     single = single_joint_fluctuation(bend)

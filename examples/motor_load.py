@@ -15,14 +15,14 @@ The master (FMPy's low-level API) closes the driveline around the FMU:
     python examples/motor_load.py            -> results/motor_load.{csv,png}
 """
 
-import argparse
 import math
 import shutil
-from pathlib import Path
 
 import numpy as np
 
 from cardan_joint.simulate import DEFAULT_FMU
+
+from _support import example_parser, output_folder, save_figure
 
 DEFAULTS = dict(bend_angle=math.radians(30.0), yoke_phase=0.0, inertia=(0.004, 0.004, 0.008),
                 J_motor=0.05, J_load=0.5, motor_torque=60.0, external_torque=10.0,
@@ -143,20 +143,15 @@ def plot(rows, p, path, revolutions=4):
     for ax in axes:
         ax.grid(alpha=0.3)
         ax.legend(loc="upper right", fontsize=8)
-    fig.tight_layout()
-    fig.savefig(path, dpi=110)
-    plt.close(fig)
+    save_figure(fig, path)
 
 
 def main(argv=None):
-    parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
-    parser.add_argument("--fmu", default=str(DEFAULT_FMU))
-    parser.add_argument("--out", default="results")
+    parser = example_parser(__doc__)
     parser.add_argument("--stop-time", type=float, default=1.0)
     parser.add_argument("--step", type=float, default=1e-3)
     args = parser.parse_args(argv)
-    out = Path(args.out)
-    out.mkdir(parents=True, exist_ok=True)
+    out = output_folder(args)
     rows = run(args.fmu, args.stop_time, args.step)
     names = list(rows)
     np.savetxt(out / "motor_load.csv", np.column_stack([rows[n] for n in names]), delimiter=",",
