@@ -193,10 +193,16 @@ def local_cluster(n_workers=2):
     import dask
     from dask.distributed import LocalCluster
 
-    # The workers' statistical profiler samples the task thread every 10 ms and
-    # fights it for the GIL, which every FMI call releases and retakes: it cost
-    # the co-simulations about 20 % of their CPU time.
-    with dask.config.set({"distributed.worker.profile.enabled": False}):
+    # On a machine with as many CPUs as workers every background wake-up is
+    # taken from the co-simulations. The workers' statistical profiler samples
+    # the task thread every 10 ms and fights it for the GIL, which every FMI call
+    # releases and retakes (about 20 % of their CPU time); the 20 ms event-loop
+    # tick (only a blocked-loop watchdog) cost the scheduler in this process
+    # about 1 CPU-s per sweep.
+    quiet = {"distributed.worker.profile.enabled": False,
+             "distributed.admin.tick.interval": "1s",
+             "distributed.admin.system-monitor.interval": "5s"}
+    with dask.config.set(quiet):
         return LocalCluster(n_workers=n_workers, threads_per_worker=1, processes=True,
                             dashboard_address=None)
 
@@ -406,47 +412,58 @@ def _machine_busy_seconds():
     return (user + nice + system + irq + softirq + steal) / os.sysconf("SC_CLK_TCK")
 
 
-def _own_cpu_seconds(client):
-    return time.process_time() + sum(client.run(time.process_time).values())
+def _measured(function, *args, client=None):
+    """(value, wall s, CPUs that other processes kept busy meanwhile or None).
 
+    Other jobs on the machine skew wall times; the machine's busy time minus
+    this process's (and the local workers') tells how much."""
+    def own():
+        workers = sum(client.run(time.process_time).values()) if client else 0.0
+        return time.process_time() + workers
 
-def _measured(function, client, local, *args):
-    """(value, wall s, CPUs other processes kept busy meanwhile or None).
-
-    Other jobs on the machine skew wall times; on a LocalCluster the machine's
-    busy time minus this process's and the workers' tells how much."""
-    busy, own = _machine_busy_seconds(), _own_cpu_seconds(client)
+    busy, mine = _machine_busy_seconds(), own()
     value, seconds = timed(function, *args)
-    if busy is None or not local:
+    if busy is None:
         return value, seconds, None
-    others = (_machine_busy_seconds() - busy) - (_own_cpu_seconds(client) - own)
+    others = (_machine_busy_seconds() - busy) - (own() - mine)
     return value, seconds, max(others, 0.0) / seconds
 
 
-def compare(fmu, spec, scheduler=None, n_workers=2, repeat=1, progress=True):
-    """Run on Dask and serially `repeat` times; return (table, [(dask s, serial s,
-    CPUs used by other processes during each)], cluster start-up s).
-    Raises AssertionError if the tables differ."""
-    import pandas as pd
-
+def _dask_run(fmu, spec, scheduler, n_workers, progress):
+    """(table, sweep s, start-up s, others' CPUs): a fresh cluster per run,
+    closed before the serial run so its scheduler cannot slow that run down."""
     (client, cluster), startup = timed(connect, scheduler, n_workers)
-    local = cluster is not None
-    timings = []
     try:
         warm_up(client)
-        run_task(str(Path(fmu).resolve()), spec, spec.tasks()[0][:1])   # warm this process too
-        for _ in range(repeat):
-            on_dask, dask_seconds, dask_others = _measured(run_dask, client, local, fmu, spec,
-                                                           client, progress)
-            serial, serial_seconds, serial_others = _measured(run_serial, client, local, fmu,
-                                                              spec, progress)
-            pd.testing.assert_frame_equal(on_dask, serial, check_exact=True)
-            timings.append((dask_seconds, serial_seconds, (dask_others, serial_others)))
+        table, seconds, others = _measured(run_dask, fmu, spec, client, progress,
+                                           client=client if cluster is not None else None)
     finally:
         client.close()
         if cluster is not None:
             cluster.close()
-    return on_dask, timings, startup
+    return table, seconds, startup, others if cluster is not None else None
+
+
+def compare(fmu, spec, scheduler=None, n_workers=2, repeat=1, progress=True):
+    """Run serially and on Dask `repeat` times; return (table, timings), each
+    timing a dict of wall times, cluster start-up and the CPUs that other
+    processes kept busy. Raises AssertionError if the tables differ.
+
+    The serial run goes first, with no cluster in this process: a LocalCluster's
+    scheduler lives in this process, and its event loop, kept busy by the
+    workers, took about a quarter more CPU from a serial run beside it."""
+    import pandas as pd
+
+    run_task(str(Path(fmu).resolve()), spec, spec.tasks()[0][:1])   # imports, as workers do
+    timings = []
+    for _ in range(repeat):
+        serial, serial_seconds, serial_others = _measured(run_serial, fmu, spec, progress)
+        on_dask, dask_seconds, startup, dask_others = _dask_run(fmu, spec, scheduler, n_workers,
+                                                                progress)
+        pd.testing.assert_frame_equal(on_dask, serial, check_exact=True)
+        timings.append({"dask": dask_seconds, "serial": serial_seconds, "startup": startup,
+                        "others_dask": dask_others, "others_serial": serial_others})
+    return on_dask, timings
 
 
 def main(argv=None, prog=None) -> int:
@@ -464,16 +481,16 @@ def main(argv=None, prog=None) -> int:
     print(f"{cases} co-simulations in {len(spec.tasks())} tasks, "
           f"{spec.revolutions * spec.steps_per_revolution} steps each")
     if args.compare:
-        table, timings, startup = compare(fmu, spec, args.scheduler, args.workers, args.repeat,
-                                          progress)
+        table, timings = compare(fmu, spec, args.scheduler, args.workers, args.repeat, progress)
         where = args.scheduler or f"LocalCluster of {args.workers} worker processes"
-        print(f"Dask ({where}) and serial tables identical; cluster start-up {startup:.1f} s")
-        for k, (on_dask, serial, others) in enumerate(timings, 1):
-            load = ("" if None in others else f"; other processes kept {others[0]:.2f} and "
-                    f"{others[1]:.2f} of {os.cpu_count()} CPUs busy")
-            print(f"  run {k}: Dask {on_dask:.1f} s, serial {serial:.1f} s, speed-up "
-                  f"{serial / on_dask:.2f} (with start-up {serial / (on_dask + startup):.2f})"
-                  f"{load}")
+        print(f"Dask ({where}) and serial tables identical")
+        for k, t in enumerate(timings, 1):
+            load = ("" if None in (t["others_dask"], t["others_serial"]) else
+                    f"; other processes kept {t['others_serial']:.2f} and {t['others_dask']:.2f}"
+                    f" of {os.cpu_count()} CPUs busy")
+            print(f"  run {k}: serial {t['serial']:.1f} s, Dask {t['dask']:.1f} s, speed-up "
+                  f"{t['serial'] / t['dask']:.2f} ({t['serial'] / (t['dask'] + t['startup']):.2f}"
+                  f" counting {t['startup']:.1f} s of cluster start-up){load}")
     elif args.serial:
         table, seconds = timed(run_serial, fmu, spec, progress)
         print(f"serial: {seconds:.1f} s")
