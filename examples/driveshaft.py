@@ -124,20 +124,22 @@ class ExtractedFMU:
 
 
 def cosimulate(fmu: ExtractedFMU, bend_angle=math.radians(30), input_speed=10.0, step=1e-3,
-               revolutions=2, arrangement="Z", phase_error=0.0, coupling="hold"):
-    """Run the driveshaft over whole input revolutions at constant input speed.
+               revolutions=2, arrangement="Z", phase_error=0.0, coupling="hold",
+               input_acceleration=0.0):
+    """Run the driveshaft for `revolutions` of the input at its initial speed.
 
-    Returns a dict of arrays: time, intermediate_speed (joint 1's output),
-    output_speed (joint 2's, at the communication points with consistent
-    inputs) and output_speed_at_step_end (joint 2's before its inputs are
-    refreshed).
+    Joint 1's input speed is prescribed: input_speed + input_acceleration * t
+    (constant by default). Returns a dict of arrays: time, input_speed,
+    intermediate_speed (joint 1's output), output_speed (joint 2's, at the
+    communication points with consistent inputs) and output_speed_at_step_end
+    (joint 2's before its inputs are refreshed).
     """
     if coupling not in COUPLINGS:
         raise ValueError(f"coupling must be one of {COUPLINGS}, got {coupling!r}")
     steps = int(round(revolutions * 2 * math.pi / input_speed / step))
     joint1 = Joint(fmu.directory, fmu.model_description, "joint1",
                    {"bend_angle": bend_angle, "yoke_phase": 0.0, "input_angle_start": 0.0,
-                    "input_speed": input_speed, "input_acceleration": 0.0})
+                    "input_speed": input_speed, "input_acceleration": input_acceleration})
     # Joint 2's input shaft starts where joint 1's output shaft is.
     (start_angle,) = joint1.get("output_angle")
     joint2 = Joint(fmu.directory, fmu.model_description, "joint2",
@@ -146,7 +148,8 @@ def cosimulate(fmu: ExtractedFMU, bend_angle=math.radians(30), input_speed=10.0,
     intermediate, output, output_at_end = [], [], []
     try:
         for k in range(steps + 1):
-            joint1.set(input_speed=input_speed, input_acceleration=0.0)
+            joint1.set(input_speed=input_speed + input_acceleration * k * step,
+                       input_acceleration=input_acceleration)
             speed, acceleration, angle = joint1.get("output_speed", "output_acceleration",
                                                     "output_angle")
             # Set for every coupling: the sample below then sees consistent inputs at t.
@@ -168,7 +171,9 @@ def cosimulate(fmu: ExtractedFMU, bend_angle=math.radians(30), input_speed=10.0,
     finally:
         joint1.close()
         joint2.close()
-    return {"time": step * np.arange(steps + 1), "intermediate_speed": np.array(intermediate),
+    time = step * np.arange(steps + 1)
+    return {"time": time, "input_speed": input_speed + input_acceleration * time,
+            "intermediate_speed": np.array(intermediate),
             "output_speed": np.array(output),
             "output_speed_at_step_end": np.array(output_at_end)}
 
