@@ -64,7 +64,7 @@ class CardanJointSlave(Fmi2Slave):
         self._inputs_checked = False
         self._last_message = None
         self._outputs_held, self._inputs_held = _NAN_OUTPUTS, _inputs_of(self._joint)
-        if not (self._joint.parameter_problem() or self._joint.input_problem()):
+        if not (self._joint.parameter_fault or self._joint.input_problem()):
             self._outputs_held = self._joint.outputs()
         for name in _NAMES:
             self._register(table.BY_NAME[name])
@@ -126,7 +126,7 @@ class CardanJointSlave(Fmi2Slave):
         try:
             self._restart()
             self._initialized = True
-            problem = self._joint.parameter_problem()
+            problem = self._joint.parameter_fault
             if problem:
                 self._report(f"{problem}; every step will be refused until it is fixed",
                              Fmi2Status.error)
@@ -157,7 +157,7 @@ class CardanJointSlave(Fmi2Slave):
     def _current_outputs(self):
         joint = self._joint
         if not self._inputs_checked:
-            problem = joint.parameter_problem() or joint.input_problem()
+            problem = joint.parameter_fault or joint.input_problem()
             if problem:
                 self._report(f"t = {joint.time!r} s: {problem}; outputs that depend on it "
                              f"are held at the last valid inputs", Fmi2Status.warning)
@@ -172,7 +172,7 @@ class CardanJointSlave(Fmi2Slave):
         keeps its last valid value, the others (and the input angle, the state)
         follow the valid inputs, as the declared dependencies promise."""
         live = (joint.input_angle,) + self._outputs_held[1:]
-        if joint.parameter_problem():
+        if joint.parameter_fault:
             return live
         invalid = joint.invalid_inputs()
         current = _inputs_of(joint)

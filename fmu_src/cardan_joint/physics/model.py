@@ -24,6 +24,8 @@ def _ranges(names, *excluded):
 # The bend angle's own limit is the max_bend_angle parameter, checked apart.
 _INPUT_RANGES = _ranges(table.INPUTS, "bend_angle")
 _PARAMETER_RANGES = _ranges(table.PARAMETERS, "max_bend_angle")
+# The fast path of `input_problem` checks |x| <= max, so the ranges must be symmetric.
+assert all(low == -high for _, low, high, _ in _INPUT_RANGES), "input ranges must be symmetric"
 _SPEED_LIMIT = table.BY_NAME["input_speed"].max
 _ACCELERATION_LIMIT = table.BY_NAME["input_acceleration"].max
 _RATE_LIMIT = table.BY_NAME["bend_angle_rate"].max
@@ -51,25 +53,28 @@ class CardanJoint:
         once, and a change takes effect at the next `start`.
         """
         self.time = float(time)
-        self._parameter_problem = self.parameter_problem()
-        valid = not self._parameter_problem
+        self.parameter_fault = self.parameter_problem()     # fixed until the next start
+        valid = not self.parameter_fault
         self._angle = split_angle(self.input_angle_start if valid else 0.0)
         # The phase is reduced to whole turns plus a fraction too, so a large or
         # negative phase costs no precision; its turns enter the quaternion's sign.
         self._phase = split_angle(self.yoke_phase if valid else 0.0)
 
-    def _value_problem(self, kind, names, ranges):
-        """The first of `names` that is not finite or outside its range, explained."""
+    def _bad_values(self, kind, names, ranges):
+        """(name, explanation) of each of `names` not finite or outside its range."""
         for name in names:
             value = getattr(self, name)
             if not math.isfinite(value):
-                return f"{kind} {name} = {value!r} is not a finite number"
+                yield name, f"{kind} {name} = {value!r} is not a finite number"
         for name, low, high, unit in ranges:
             value = getattr(self, name)
-            if not low <= value <= high:
-                return (f"{kind} {name} = {value!r} {unit} is outside its range "
-                        f"[{low!r}, {high!r}] {unit}")
-        return None
+            if math.isfinite(value) and not low <= value <= high:
+                yield name, (f"{kind} {name} = {value!r} {unit} is outside its range "
+                             f"[{low!r}, {high!r}] {unit}")
+
+    def _value_problem(self, kind, names, ranges):
+        """The first bad value, explained, or None."""
+        return next((text for _, text in self._bad_values(kind, names, ranges)), None)
 
     def parameter_problem(self):
         """Why the parameters cannot run, or None."""
@@ -119,9 +124,7 @@ class CardanJoint:
     def invalid_inputs(self) -> set:
         """Names of the inputs unusable at this instant (non-finite, out of range,
         bend angle at or beyond the guard)."""
-        invalid = {name for name in table.INPUTS if not math.isfinite(getattr(self, name))}
-        invalid |= {name for name, low, high, _ in _INPUT_RANGES
-                    if not low <= getattr(self, name) <= high}
+        invalid = {name for name, _ in self._bad_values("input", table.INPUTS, _INPUT_RANGES)}
         if not abs(self.bend_angle) < self.max_bend_angle:
             invalid.add("bend_angle")
         return invalid
@@ -140,7 +143,7 @@ class CardanJoint:
     def step_problem(self, step_size: float):
         if not (math.isfinite(step_size) and step_size > 0.0):
             return f"communication step size = {step_size!r} s must be a finite number > 0"
-        return self._parameter_problem or self.input_problem(step_size)
+        return self.parameter_fault or self.input_problem(step_size)
 
     def step(self, step_size: float):
         """Advance by `step_size`; return None, or the reason the step was refused
@@ -171,10 +174,6 @@ class CardanJoint:
     @property
     def input_angle(self) -> float:
         return float(self._angle)
-
-    @property
-    def revolution_angle(self) -> RevolutionAngle:
-        return self._angle
 
     def response(self) -> JointResponse:
         angle, phase = self._angle, self._phase

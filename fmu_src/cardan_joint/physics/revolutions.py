@@ -22,11 +22,6 @@ class RevolutionAngle(NamedTuple):
     fraction: float
     fraction_error: float = 0.0
 
-    @property
-    def parity_sign(self) -> float:
-        """(-1)^turns: the sign of anything with period 4 pi, such as a quaternion."""
-        return -1.0 if self.turns & 1 else 1.0
-
     def __float__(self) -> float:
         product, product_error, low = _whole_turns(self.turns)
         total, sum_error = _two_sum(product, self.fraction)
