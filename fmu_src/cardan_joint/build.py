@@ -1,10 +1,12 @@
-"""Build the UniversalJoint FMU with pythonfmu and refuse it unless FMPy validates it.
+"""Build the project's FMUs with pythonfmu and refuse them unless FMPy validates them.
 
-Every build ships its own copy of the runtime part of `cardan_joint` (physics,
-variable table, slave) under a name derived from a hash of that code and of
-the build's settings, and names the slave module after the same hash: two
-different FMUs of this project loaded in one process can then never run each
-other's code (Python keeps one module per name per process).
+Which models exist, their script templates and start-value checks are in
+`models.py`. Every build ships its own copy of the runtime part of
+`cardan_joint` (physics, variable tables, slaves) under a name derived from a
+hash of that code and of the build's settings, and names the slave module
+after the same hash: two different FMUs of this project loaded in one process
+can then never run each other's code (Python keeps one module per name per
+process).
 """
 
 import argparse
@@ -16,97 +18,122 @@ import sys
 import tempfile
 from pathlib import Path
 
-from . import variables as table
+from .models import MODELS, Model, StartValueError, model as find_model
 
 PACKAGE_DIR = Path(__file__).resolve().parent
-SCRIPT = PACKAGE_DIR / "fmu" / "UniversalJoint.py"            # the pythonfmu script template
-RUNTIME = ("__init__.py", "variables.py", "physics", "fmu")   # what the FMU needs at run time
-_NOT_SHIPPED = shutil.ignore_patterns("__pycache__", SCRIPT.name)
-DEFAULT_NAME = "UniversalJoint"
+# What an FMU needs at run time: the rest of the package runs in the host only.
+RUNTIME = ("__init__.py", "variables.py", "physics", "fmu")
+DEFAULT_MODEL = "UniversalJoint"
+FMI_VERSIONS = (2, 3)
 
 
 class BuildError(RuntimeError):
     pass
 
 
-def _runtime_files():
+def _runtime_files(script: Path):
     for entry in RUNTIME:
         path = PACKAGE_DIR / entry
-        yield from (sorted(p for p in path.rglob("*.py") if p != SCRIPT)
+        yield from (sorted(p for p in path.rglob("*.py") if p != script)
                     if path.is_dir() else [path])
 
 
-def _fingerprint(model_name: str, start_values: dict) -> str:
+def _fingerprint(script: Path, model_name: str, start_values: dict, settings: dict) -> str:
     digest = hashlib.sha256()
-    for path in [SCRIPT, *_runtime_files()]:
+    for path in [script, *_runtime_files(script)]:
         digest.update(str(path.relative_to(PACKAGE_DIR)).encode())
         digest.update(path.read_bytes())
-    digest.update(json.dumps([model_name, sorted(start_values.items())]).encode())
+    digest.update(json.dumps([model_name, sorted(start_values.items()),
+                              sorted(settings.items())]).encode())
     return digest.hexdigest()[:12]
 
 
-def _check_start_values(start_values: dict) -> dict:
-    from .physics.model import CardanJoint
-
-    settable = set(table.INPUTS) | set(table.PARAMETERS)
-    unknown = sorted(set(start_values) - settable)
-    if unknown:
-        raise BuildError(f"cannot set start value of {', '.join(unknown)}: "
-                         f"only inputs and parameters have start values")
+def _check_start_values(spec: Model, start_values: dict, settings: dict) -> dict:
     values = {name: float(value) for name, value in start_values.items()}
-    # An FMU whose defaults cannot run would only fail later, in someone's master.
-    joint = CardanJoint(**values)
-    problem = joint.parameter_problem() or joint.input_problem()
-    if problem:
-        raise BuildError(f"invalid start values: {problem}")
+    try:
+        spec.check_start_values(values, settings)
+    except StartValueError as error:
+        raise BuildError(str(error)) from None
     return values
 
 
-def _stage(workdir: Path, model_name: str, start_values: dict, fingerprint: str) -> Path:
+def _rewrite(script: str, pattern: str, replacement: str, what: str, required: bool) -> str:
+    script, count = re.subn(pattern, lambda _: replacement, script, count=1, flags=re.M)
+    if count != 1 and required:
+        raise BuildError(f"the script template no longer has the {what} line the build rewrites")
+    return script
+
+
+def _stage(workdir: Path, script_template: Path, model_name: str, start_values: dict,
+           settings: dict, fingerprint: str) -> Path:
     package = f"cardan_joint_{fingerprint}"
     target = workdir / package
     target.mkdir()
+    not_shipped = shutil.ignore_patterns("__pycache__")
     for entry in RUNTIME:
         source = PACKAGE_DIR / entry
         if source.is_dir():
-            shutil.copytree(source, target / entry, ignore=_NOT_SHIPPED)
+            shutil.copytree(source, target / entry, ignore=not_shipped)
         else:
             shutil.copy2(source, target / entry)
-    script = SCRIPT.read_text()
-    script = script.replace("from cardan_joint.", f"from {package}.")
-    script, classes = re.subn(r"^class UniversalJoint\(CardanJointSlave\):",
-                              f"class {model_name}(CardanJointSlave):", script, flags=re.M)
-    script, overrides = re.subn(r"^    start_overrides = \{\}$",
-                                f"    start_overrides = {start_values!r}", script, flags=re.M)
-    if classes != 1 or overrides != 1:
-        raise BuildError(f"{SCRIPT} no longer has the lines the build rewrites")
-    script_path = workdir / f"universal_joint_{fingerprint}.py"
+    script = script_template.read_text().replace("from cardan_joint.", f"from {package}.")
+    base = re.search(r"^class \w+\((\w+)\):", script, flags=re.M)
+    if base is None:
+        raise BuildError(f"{script_template} has no slave class for the build to rename")
+    script = _rewrite(script, r"^class \w+\(\w+\):", f"class {model_name}({base.group(1)}):",
+                      "class", True)
+    script = _rewrite(script, r"^    start_overrides = \{\}$",
+                      f"    start_overrides = {start_values!r}", "start_overrides", True)
+    script = _rewrite(script, r"^    build_settings = \{\}$",
+                      f"    build_settings = {settings!r}", "build_settings", bool(settings))
+    script_path = workdir / f"{script_template.stem.lower()}_{fingerprint}.py"
     script_path.write_text(script)
     return script_path
 
 
-def build(dest="dist", model_name: str = DEFAULT_NAME, start_values: dict = None,
-          validate: bool = True) -> Path:
-    """Build `<dest>/<model_name>.fmu`; raise BuildError unless FMPy validates it."""
-    from pythonfmu import FmuBuilder
+def _fmu_builder(fmi_version: int):
+    if fmi_version == 2:
+        from pythonfmu import FmuBuilder
+    else:
+        from pythonfmu3 import FmuBuilder
+    return FmuBuilder
 
+
+def build(dest="dist", model_name: str = None, start_values: dict = None,
+          validate: bool = True, model: str = DEFAULT_MODEL, settings: dict = None,
+          fmi_version: int = 2) -> Path:
+    """Build `<dest>/<model_name>.fmu` (FMI 3: `<dest>/fmi3/<model_name>.fmu`);
+    raise BuildError unless FMPy validates it."""
+    try:
+        spec = find_model(model)
+    except StartValueError as error:
+        raise BuildError(str(error)) from None
+    settings = {**spec.default_settings, **(settings or {})}
+    model_name = model_name or spec.default_name(settings)
     if not re.fullmatch(r"[A-Za-z_][A-Za-z0-9_]*", model_name):
         raise BuildError(f"model name {model_name!r} must be a Python identifier")
-    start_values = _check_start_values(start_values or {})
-    dest = Path(dest).resolve()
+    if fmi_version not in spec.scripts:
+        raise BuildError(f"{model} is built for FMI {', '.join(map(str, spec.scripts))} only, "
+                         f"not FMI {fmi_version}")
+    script_template = spec.scripts[fmi_version]
+    start_values = _check_start_values(spec, start_values or {}, settings)
+    dest = Path(dest).resolve() / ("fmi3" if fmi_version == 3 else "")
     dest.mkdir(parents=True, exist_ok=True)
-    fingerprint = _fingerprint(model_name, start_values)
+    fingerprint = _fingerprint(script_template, model_name, start_values, settings)
+    builder = _fmu_builder(fmi_version)
     with tempfile.TemporaryDirectory(prefix="cardan_joint_build_") as workdir:
-        script = _stage(Path(workdir), model_name, start_values, fingerprint)
+        script = _stage(Path(workdir), script_template, model_name, start_values, settings,
+                        fingerprint)
         package_dir = script.parent / f"cardan_joint_{fingerprint}"
         try:
-            fmu = FmuBuilder.build_FMU(script, dest=dest, project_files=[package_dir])
+            fmu = builder.build_FMU(script, dest=dest, project_files=[package_dir])
         finally:
-            # pythonfmu imported the staged module; drop it so a second build in
-            # this process cannot pick up the first one's code.
-            for name in list(sys.modules):
-                if name.startswith((f"cardan_joint_{fingerprint}", script.stem)):
-                    del sys.modules[name]
+            # pythonfmu imported the staged script and package: drop them, so a
+            # second build in this process cannot pick up this one's code. (Third-
+            # party modules they imported stay: numpy cannot be imported twice.)
+            for name in [n for n in sys.modules if n.split(".")[0] in (package_dir.name,
+                                                                         script.stem)]:
+                del sys.modules[name]
     fmu = Path(fmu)
     if validate:
         from fmpy.validation import validate_fmu
@@ -131,16 +158,22 @@ def _parse_start_values(pairs):
     return values
 
 
-def main(argv=None) -> int:
-    parser = argparse.ArgumentParser(description="Build and validate the UniversalJoint FMU.")
+def main(argv=None, prog=None) -> int:
+    parser = argparse.ArgumentParser(prog=prog, description="Build and validate an FMU of this "
+                                     "project (default: the UniversalJoint FMU).")
+    parser.add_argument("--model", default=DEFAULT_MODEL, choices=sorted(MODELS),
+                        help="which model to build (default: %(default)s)")
+    parser.add_argument("--fmi-version", type=int, default=2, choices=FMI_VERSIONS,
+                        help="FMI version (default: 2; FMI 3 goes to DEST/fmi3/)")
     parser.add_argument("--dest", default="dist", help="output folder (default: dist)")
-    parser.add_argument("--name", default=DEFAULT_NAME,
-                        help="model name and FMU file name (default: UniversalJoint)")
+    parser.add_argument("--name", default=None,
+                        help="model name and FMU file name (default: the model's own name)")
     parser.add_argument("--set", action="append", default=[], metavar="NAME=VALUE",
                         help="start value of an input or parameter, e.g. --set bend_angle=0.2")
     args = parser.parse_args(argv)
     try:
-        fmu = build(args.dest, args.name, _parse_start_values(args.set))
+        fmu = build(args.dest, args.name, _parse_start_values(args.set), model=args.model,
+                    fmi_version=args.fmi_version)
     except BuildError as error:
         print(f"build_fmu: {error}", file=sys.stderr)
         return 1
