@@ -22,7 +22,7 @@ from .models import MODELS, Model, StartValueError, model as find_model
 
 PACKAGE_DIR = Path(__file__).resolve().parent
 # What an FMU needs at run time: the rest of the package runs in the host only.
-RUNTIME = ("__init__.py", "variables.py", "physics", "fmu")
+RUNTIME = ("__init__.py", "variables.py", "propshaft_variables.py", "physics", "fmu")
 DEFAULT_MODEL = "UniversalJoint"
 FMI_VERSIONS = (2, 3)
 
@@ -170,10 +170,18 @@ def main(argv=None, prog=None) -> int:
                         help="model name and FMU file name (default: the model's own name)")
     parser.add_argument("--set", action="append", default=[], metavar="NAME=VALUE",
                         help="start value of an input or parameter, e.g. --set bend_angle=0.2")
+    parser.add_argument("--joints", type=int, default=None, metavar="N",
+                        help="Propshaft only: number of joints, 2 (Propshaft, the default), "
+                             "3 or 4 (Propshaft3, Propshaft4)")
     args = parser.parse_args(argv)
+    settings = {}
+    if args.joints is not None:
+        if "joints" not in MODELS[args.model].default_settings:
+            parser.error(f"--joints does not apply to {args.model}")
+        settings["joints"] = args.joints
     try:
         fmu = build(args.dest, args.name, _parse_start_values(args.set), model=args.model,
-                    fmi_version=args.fmi_version)
+                    settings=settings, fmi_version=args.fmi_version)
     except BuildError as error:
         print(f"build_fmu: {error}", file=sys.stderr)
         return 1

@@ -34,6 +34,30 @@ def _check_joint_start_values(values: Mapping[str, float], settings: Mapping) ->
         raise StartValueError(f"invalid start values: {problem}")
 
 
+def _check_propshaft_start_values(values: Mapping[str, float], settings: Mapping) -> None:
+    from .physics.propshaft import Propshaft
+    from .propshaft_variables import JOINTS, propshaft_table
+
+    joints = settings.get("joints")
+    if joints not in JOINTS:
+        raise StartValueError(f"--joints {joints!r}: the Propshaft is built for "
+                              f"{', '.join(map(str, JOINTS))} joints")
+    table = propshaft_table(joints)
+    unknown = sorted(set(values) - set(table.INPUTS) - set(table.PARAMETERS))
+    if unknown:
+        raise StartValueError(f"cannot set start value of {', '.join(unknown)}: only inputs "
+                              f"and parameters of the {joints}-joint Propshaft have start values")
+    propshaft = Propshaft(joints, **values)
+    problem = propshaft.parameter_problem() or propshaft.input_problem()
+    if problem:
+        raise StartValueError(f"invalid start values: {problem}")
+
+
+def _propshaft_name(settings: Mapping) -> str:
+    joints = settings.get("joints", 2)
+    return "Propshaft" if joints == 2 else f"Propshaft{joints}"
+
+
 @dataclass(frozen=True)
 class Model:
     """How to build one model.
@@ -59,6 +83,13 @@ MODELS: Dict[str, Model] = {
         key="UniversalJoint",
         scripts={2: FMU_DIR / "UniversalJoint.py"},
         check_start_values=_check_joint_start_values,
+    ),
+    "Propshaft": Model(
+        key="Propshaft",
+        scripts={2: FMU_DIR / "Propshaft.py"},
+        check_start_values=_check_propshaft_start_values,
+        default_settings={"joints": 2},
+        name_for=_propshaft_name,
     ),
 }
 

@@ -138,21 +138,45 @@ VARIABLES = (
              "moment normal to the output shaft)", min=0.0, depends_on=_TORQUE),
 )
 
+class VariableTable:
+    """One model's variables with the lookups every wrapper needs; this module
+    is itself the UniversalJoint's table (same attribute names), other models
+    build one (e.g. `propshaft_variables.propshaft_table`)."""
+
+    def __init__(self, variables):
+        self.VARIABLES = tuple(variables)
+        self.BY_NAME = {v.name: v for v in self.VARIABLES}
+        self.INPUTS = _names(self.VARIABLES, _IN)
+        self.PARAMETERS = _names(self.VARIABLES, _PAR)
+        self.OUTPUTS = _names(self.VARIABLES, _OUT)
+        self.UNITS = UNITS
+
+    def start_values(self) -> dict:
+        return start_values(self.VARIABLES)
+
+    def markdown_table(self) -> str:
+        return markdown_table(self.VARIABLES)
+
+
+def _names(variables, causality):
+    return tuple(v.name for v in variables if v.causality == causality)
+
+
 BY_NAME = {v.name: v for v in VARIABLES}
-INPUTS = tuple(v.name for v in VARIABLES if v.causality == _IN)
-PARAMETERS = tuple(v.name for v in VARIABLES if v.causality == _PAR)
-OUTPUTS = tuple(v.name for v in VARIABLES if v.causality == _OUT)
+INPUTS = _names(VARIABLES, _IN)
+PARAMETERS = _names(VARIABLES, _PAR)
+OUTPUTS = _names(VARIABLES, _OUT)
 
 
-def start_values() -> dict:
-    return {v.name: v.start for v in VARIABLES if v.start is not None}
+def start_values(variables=VARIABLES) -> dict:
+    return {v.name: v.start for v in variables if v.start is not None}
 
 
-def markdown_table() -> str:
-    """The README's variable table (a test keeps the README in step with it)."""
+def markdown_table(variables=VARIABLES) -> str:
+    """A README's variable table (a test keeps each README in step with its table)."""
     rows = ["| name | causality | unit (display) | start | range | description |",
             "|---|---|---|---|---|---|"]
-    for v in VARIABLES:
+    for v in variables:
         unit = v.unit + (f" ({v.display_unit})" if v.display_unit else "")
         start = "" if v.start is None else f"{v.start:.6g}"
         low = "" if v.min is None else f"{v.min:.6g}"

@@ -23,19 +23,24 @@ from .. import variables as table
 from ..physics.model import CardanJoint
 from .model_description import complete
 
-_KNOWN = table.INPUTS + table.PARAMETERS
-_NAMES = _KNOWN + table.OUTPUTS
-_FIRST_OUTPUT = len(_KNOWN)
-assert tuple(v.name for v in table.VARIABLES) == _NAMES, \
-    "the slave's value references assume inputs, then parameters, then outputs"
-assert table.OUTPUTS[0] == "input_angle", "held outputs keep the first one, the state, live"
-_INPUT_REFERENCES = range(len(table.INPUTS))
-_NAN_OUTPUTS = (math.nan,) * len(table.OUTPUTS)
-_OUTPUT_DEPENDENCIES = tuple(frozenset(table.BY_NAME[n].depends_on) for n in table.OUTPUTS)
-_inputs_of = attrgetter(*table.INPUTS)
-# What FMPy and most masters pass every step: all inputs, all outputs, in order.
-_ALL_INPUTS = list(_INPUT_REFERENCES)
-_ALL_OUTPUTS = list(range(_FIRST_OUTPUT, len(_NAMES)))
+class _References:
+    """Value references of one variable table: inputs, then parameters, then outputs."""
+
+    def __init__(self, table):
+        self.known = table.INPUTS + table.PARAMETERS
+        self.names = self.known + table.OUTPUTS
+        self.first_output = len(self.known)
+        assert tuple(v.name for v in table.VARIABLES) == self.names, \
+            "the slave's value references assume inputs, then parameters, then outputs"
+        assert table.OUTPUTS[0] == "input_angle", "held outputs keep the first one, the state, live"
+        self.inputs = range(len(table.INPUTS))
+        self.nan_outputs = (math.nan,) * len(table.OUTPUTS)
+        self.output_dependencies = tuple(frozenset(table.BY_NAME[n].depends_on)
+                                         for n in table.OUTPUTS)
+        self.inputs_of = attrgetter(*table.INPUTS)
+        # What FMPy and most masters pass every step: all inputs, all outputs, in order.
+        self.all_inputs = list(self.inputs)
+        self.all_outputs = list(range(self.first_output, len(self.names)))
 
 
 class CardanJointSlave(Fmi2Slave):
@@ -54,20 +59,37 @@ class CardanJointSlave(Fmi2Slave):
     }
     # Start values that differ from the table's, written in by the build script.
     start_overrides: dict = {}
+    # The model's variable table; a subclass for another model sets it (and
+    # `_new_model`), the value references follow.
+    table = table
+    _refs = _References(table)
+
+    def __init_subclass__(cls, **kwargs):
+        super().__init_subclass__(**kwargs)
+        cls._refs = _References(cls.table)
+
+    def _new_model(self):
+        """The physics object the slave maps its variables onto."""
+        return CardanJoint(**self.start_overrides)
+
+    def _initialization_warnings(self):
+        """Messages logged as warnings when initialization ends (none for the joint)."""
+        return ()
 
     def __init__(self, **kwargs):
         super().__init__(**kwargs)
-        self._joint = CardanJoint(**self.start_overrides)
+        refs = self._refs
+        self._joint = self._new_model()
         self._start_time = 0.0
         self._initialized = False
         self._outputs = None            # cached outputs; None = recompute on next read
         self._inputs_checked = False
         self._last_message = None
-        self._outputs_held, self._inputs_held = _NAN_OUTPUTS, _inputs_of(self._joint)
+        self._outputs_held, self._inputs_held = refs.nan_outputs, refs.inputs_of(self._joint)
         if not (self._joint.parameter_fault or self._joint.input_problem()):
             self._outputs_held = self._joint.outputs()
-        for name in _NAMES:
-            self._register(table.BY_NAME[name])
+        for name in refs.names:
+            self._register(self.table.BY_NAME[name])
 
     def _register(self, variable):
         causality = Fmi2Causality[variable.causality]
@@ -82,7 +104,7 @@ class CardanJointSlave(Fmi2Slave):
     def to_xml(self, model_options=None):
         options = {"canGetAndSetFMUstate": True, "canSerializeFMUstate": True,
                    **(model_options or {})}
-        return complete(super().to_xml(options))
+        return complete(super().to_xml(options), self.table)
 
     # --- messages ------------------------------------------------------------
 
@@ -130,6 +152,8 @@ class CardanJointSlave(Fmi2Slave):
             if problem:
                 self._report(f"{problem}; every step will be refused until it is fixed",
                              Fmi2Status.error)
+            for message in self._initialization_warnings():
+                self._report(message, Fmi2Status.warning)
         except Exception as error:
             self._fault("exit_initialization_mode", error)
 
@@ -164,7 +188,7 @@ class CardanJointSlave(Fmi2Slave):
                 return self._held_outputs(joint)
             self._inputs_checked = True
         self._outputs = self._outputs_held = joint.outputs()
-        self._inputs_held = _inputs_of(joint)
+        self._inputs_held = self._refs.inputs_of(joint)
         return self._outputs
 
     def _held_outputs(self, joint):
@@ -175,28 +199,30 @@ class CardanJointSlave(Fmi2Slave):
         if joint.parameter_fault:
             return live
         invalid = joint.invalid_inputs()
-        current = _inputs_of(joint)
+        inputs = self.table.INPUTS
+        current = self._refs.inputs_of(joint)
         try:
-            for name, held in zip(table.INPUTS, self._inputs_held):
+            for name, held in zip(inputs, self._inputs_held):
                 if name in invalid:
                     setattr(joint, name, held)
             fresh = joint.outputs()
         finally:
-            for name, value in zip(table.INPUTS, current):
+            for name, value in zip(inputs, current):
                 setattr(joint, name, value)
         return tuple(live[i] if dependencies & invalid else fresh[i]
-                     for i, dependencies in enumerate(_OUTPUT_DEPENDENCIES))
+                     for i, dependencies in enumerate(self._refs.output_dependencies))
 
     def get_real(self, vrs):
         try:
             outputs = self._outputs or self._current_outputs()
-            if vrs == _ALL_OUTPUTS:
+            refs = self._refs
+            if vrs == refs.all_outputs:
                 return list(outputs)
-            joint = self._joint
-            return [outputs[vr - _FIRST_OUTPUT] if vr >= _FIRST_OUTPUT
-                    else getattr(joint, _KNOWN[vr]) for vr in vrs]
+            joint, first = self._joint, refs.first_output
+            return [outputs[vr - first] if vr >= first else getattr(joint, refs.known[vr])
+                    for vr in vrs]
         except Exception as error:
-            bad = [vr for vr in vrs if not 0 <= vr < len(_NAMES)]
+            bad = [vr for vr in vrs if not 0 <= vr < len(self._refs.names)]
             if bad:
                 self._report(f"get_real: no Real variable has value reference {bad[0]}",
                              Fmi2Status.error)
@@ -206,26 +232,27 @@ class CardanJointSlave(Fmi2Slave):
 
     def set_real(self, vrs, values):
         try:
-            joint = self._joint
-            if vrs == _ALL_INPUTS:
-                for name, value in zip(table.INPUTS, values):
+            joint, refs = self._joint, self._refs
+            known = refs.known
+            if vrs == refs.all_inputs:
+                for name, value in zip(self.table.INPUTS, values):
                     setattr(joint, name, float(value))
                 self._outputs = None
                 self._inputs_checked = False
                 return
             parameters_changed = False
             for vr, value in zip(vrs, values):
-                if not 0 <= vr < _FIRST_OUTPUT:
+                if not 0 <= vr < refs.first_output:
                     self._report(f"set_real on {self._name_of(vr)} ignored: only inputs and "
                                  f"parameters can be set", Fmi2Status.error)
-                elif vr in _INPUT_REFERENCES:
-                    setattr(joint, _KNOWN[vr], float(value))
+                elif vr in refs.inputs:
+                    setattr(joint, known[vr], float(value))
                 elif self._initialized:
-                    self._report(f"parameter {_KNOWN[vr]} = {value!r} ignored: fixed "
+                    self._report(f"parameter {known[vr]} = {value!r} ignored: fixed "
                                  f"parameters cannot change after initialization",
                                  Fmi2Status.error)
                 else:
-                    setattr(joint, _KNOWN[vr], float(value))
+                    setattr(joint, known[vr], float(value))
                     parameters_changed = True
             if parameters_changed:
                 self._restart()        # outputs in initialization mode see them at once
@@ -234,9 +261,9 @@ class CardanJointSlave(Fmi2Slave):
         except Exception as error:
             self._fault("set_real", error)
 
-    @staticmethod
-    def _name_of(vr):
-        return _NAMES[vr] if 0 <= vr < len(_NAMES) else f"value reference {vr}"
+    def _name_of(self, vr):
+        names = self._refs.names
+        return names[vr] if 0 <= vr < len(names) else f"value reference {vr}"
 
     # The FMU has Real variables only; pythonfmu's typed accessors would raise
     # (fmi2Fatal) on any other call, so these refuse politely instead.
@@ -283,7 +310,8 @@ class CardanJointSlave(Fmi2Slave):
                 raise ValueError(state["invalid_state"])
             held_outputs = tuple(float(v) for v in state["outputs_held"])
             held_inputs = tuple(float(v) for v in state["inputs_held"])
-            if len(held_outputs) != len(table.OUTPUTS) or len(held_inputs) != len(table.INPUTS):
+            if (len(held_outputs) != len(self.table.OUTPUTS)
+                    or len(held_inputs) != len(self.table.INPUTS)):
                 raise ValueError("the state is from another version of the FMU")
             self._joint.restore(state["joint"])           # all or nothing
             self._start_time = float(state["start_time"])
@@ -309,7 +337,7 @@ class CardanJointSlave(Fmi2Slave):
         try:
             state = json.loads(data.decode("utf-8"))
             if not isinstance(state, dict):
-                raise ValueError("not a serialized UniversalJoint state")
+                raise ValueError("not a serialized FMU state of this project")
             return state
         except Exception as error:
             return {"invalid_state": f"fmi2DeSerializeFMUstate got no valid state: {error}"}

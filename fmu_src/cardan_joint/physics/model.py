@@ -14,11 +14,12 @@ from .. import variables as table
 # The kernel itself: the FMU's once-per-step call on floats skips the array dispatch.
 from .response import JointResponse
 from .response import _response as joint_response_kernel
-from .revolutions import RevolutionAngle, advance, split_angle
+from .revolutions import RevolutionAngle, split_angle
+from .values import ValueChecks, advance_input, value_ranges
+
 
 def _ranges(names, *excluded):
-    return tuple((n, table.BY_NAME[n].min, table.BY_NAME[n].max, table.BY_NAME[n].unit)
-                 for n in names if table.BY_NAME[n].min is not None and n not in excluded)
+    return value_ranges(table.BY_NAME, names, *excluded)
 
 
 # The bend angle's own limit is the max_bend_angle parameter, checked apart.
@@ -31,11 +32,10 @@ _ACCELERATION_LIMIT = table.BY_NAME["input_acceleration"].max
 _RATE_LIMIT = table.BY_NAME["bend_angle_rate"].max
 _BEND_ACCELERATION_LIMIT = table.BY_NAME["bend_angle_acceleration"].max
 _LOAD_LIMIT = table.BY_NAME["load_torque"].max
-_MAX_INCREMENT = 1e15
 _FROM_RESPONSE = itemgetter(*(JointResponse._fields.index(name) for name in table.OUTPUTS[2:]))
 
 
-class CardanJoint:
+class CardanJoint(ValueChecks):
     def __init__(self, **values):
         unknown = set(values) - set(table.INPUTS) - set(table.PARAMETERS)
         if unknown:
@@ -59,22 +59,6 @@ class CardanJoint:
         # The phase is reduced to whole turns plus a fraction too, so a large or
         # negative phase costs no precision; its turns enter the quaternion's sign.
         self._phase = split_angle(self.yoke_phase if valid else 0.0)
-
-    def _bad_values(self, kind, names, ranges):
-        """(name, explanation) of each of `names` not finite or outside its range."""
-        for name in names:
-            value = getattr(self, name)
-            if not math.isfinite(value):
-                yield name, f"{kind} {name} = {value!r} is not a finite number"
-        for name, low, high, unit in ranges:
-            value = getattr(self, name)
-            if math.isfinite(value) and not low <= value <= high:
-                yield name, (f"{kind} {name} = {value!r} {unit} is outside its range "
-                             f"[{low!r}, {high!r}] {unit}")
-
-    def _value_problem(self, kind, names, ranges):
-        """The first bad value, explained, or None."""
-        return next((text for _, text in self._bad_values(kind, names, ranges)), None)
 
     def parameter_problem(self):
         """Why the parameters cannot run, or None."""
@@ -152,17 +136,11 @@ class CardanJoint:
         if problem:
             return problem
         h = step_size
-        speed, acceleration = self.input_speed, self.input_acceleration
-        increment = h * (speed + 0.5 * acceleration * h)
-        # Beyond 1e15 rad a float has no fractional digits left: the pin's position
-        # after such a step is undefined, and the exact turn arithmetic would overflow.
-        if not (abs(increment) <= _MAX_INCREMENT and abs(speed + acceleration * h) <= _SPEED_LIMIT):
-            return (f"input_speed = {speed!r} rad/s with input_acceleration = {acceleration!r} "
-                    f"rad/s2 over a step of {h!r} s overflows: the input angle would advance by "
-                    f"{increment!r} rad (limit {_MAX_INCREMENT!r} rad per step) and the speed "
-                    f"reach {speed + acceleration * h!r} rad/s (limit {_SPEED_LIMIT!r} rad/s)")
-        self._angle = advance(self._angle, increment)
-        self.input_speed = speed + acceleration * h
+        advanced = advance_input(self._angle, self.input_speed, self.input_acceleration, h,
+                                 _SPEED_LIMIT)
+        if isinstance(advanced, str):
+            return advanced
+        self._angle, self.input_speed = advanced
         rate, bend_acceleration = self.bend_angle_rate, self.bend_angle_acceleration
         self.bend_angle += h * (rate + 0.5 * bend_acceleration * h)
         self.bend_angle_rate = rate + bend_acceleration * h

@@ -1,0 +1,28 @@
+"""The Propshaft FMU's slave: the joint's slave (every FMI rule, state and
+refusal) mapped onto `physics.propshaft.Propshaft` and the Propshaft's table."""
+
+from ..physics.propshaft import Propshaft
+from ..propshaft_variables import propshaft_table
+from .slave import CardanJointSlave
+
+
+class PropshaftSlave(CardanJointSlave):
+    description = ("Propshaft of several exact Cardan joints in 3-D: working angles from "
+                   "side and top views, yoke phasing, intermediate shaft inertia, input "
+                   "torque, speed-ratio fluctuation and the joint makers' angle checks")
+    # Written in by the build script: {"joints": N}.
+    build_settings: dict = {}
+    table = propshaft_table(2)
+
+    joints = 2
+
+    def __init_subclass__(cls, **kwargs):
+        cls.joints = int(cls.build_settings.get("joints", 2))
+        cls.table = propshaft_table(cls.joints)
+        super().__init_subclass__(**kwargs)
+
+    def _new_model(self):
+        return Propshaft(self.joints, **self.start_overrides)
+
+    def _initialization_warnings(self):
+        return self._joint.warnings()

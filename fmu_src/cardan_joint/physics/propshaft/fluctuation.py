@@ -1,0 +1,111 @@
+"""Speed-ratio fluctuation of a propshaft, its equivalent single-joint angle,
+and the yoke phasing that minimizes it.
+
+At constant input speed omega_0 = 1 the chain gives the ratio r = omega_N/omega_0
+as the output speed and dr/dgamma_0 as the output acceleration, both in closed
+form. Every joint's ratio has period pi in its pin angle, and gamma_k(gamma_0 +
+pi) = gamma_k(gamma_0) + pi, so r has period pi: one half revolution holds
+every extremum. The extrema are the sign changes of dr/dgamma_0, bracketed on a
+fine grid and bisected to the float resolution of the angle; r is stationary
+there, so its value is exact to rounding.
+"""
+
+import math
+
+import numpy as np
+
+from .chain import chain
+from .geometry import Layout, plane_angle, wrapped
+
+_GRID = 1024            # samples per half revolution; extrema closer than pi/1024 merge
+_BISECTIONS = 60        # pi/1024 / 2**60 is far below the float spacing of an angle
+
+
+def ratio_and_slope(geometry: Layout, angle):
+    """(omega_N/omega_0, its derivative in gamma_0) at input angle(s) `angle`."""
+    state = chain(geometry, angle, 1.0, 0.0)
+    return state.speeds[-1], state.accelerations[-1]
+
+
+def speed_ratio_extrema(geometry: Layout):
+    """(min, max) of omega_N/omega_0 over one input revolution at constant input speed."""
+    grid = np.linspace(0.0, math.pi, _GRID + 1)
+    ratio, slope = ratio_and_slope(geometry, grid)
+    candidates = [ratio]
+    change = np.nonzero(np.sign(slope[:-1]) * np.sign(slope[1:]) < 0)[0]
+    if change.size:
+        low, high = grid[change], grid[change + 1]
+        low_slope = slope[change]
+        for _ in range(_BISECTIONS):
+            middle = 0.5 * (low + high)
+            middle_slope = ratio_and_slope(geometry, middle)[1]
+            same = np.sign(middle_slope) == np.sign(low_slope)
+            low = np.where(same, middle, low)
+            high = np.where(same, high, middle)
+        candidates.append(ratio_and_slope(geometry, 0.5 * (low + high))[0])
+    values = np.concatenate(candidates)
+    return float(values.min()), float(values.max())
+
+
+def speed_ratio_fluctuation(geometry: Layout) -> float:
+    """max - min of omega_N/omega_0 over one input revolution at constant input speed."""
+    low, high = speed_ratio_extrema(geometry)
+    return high - low
+
+
+def equivalent_angle(fluctuation: float) -> float:
+    """The single-joint angle beta whose fluctuation tan(beta) sin(beta) equals
+    `fluctuation`: sin^2 b / cos b = f gives cos b = 2 / (f + sqrt(f^2 + 4)), and
+    sin b = sqrt(f cos b) keeps full precision at small f."""
+    if not fluctuation > 0.0:
+        return 0.0
+    cosine = 2.0 / (fluctuation + math.sqrt(fluctuation * fluctuation + 4.0))
+    return math.atan2(math.sqrt(fluctuation * cosine), cosine)
+
+
+def best_phasing(geometry: Layout, rounds: int = 2):
+    """(phasings phi_1..phi_{N-1}, the fluctuation they leave).
+
+    Two joints: phi = the signed angle between the joint planes about the
+    intermediate shaft, modulo pi (to [0, pi)): the second joint's pin then sits
+    where it undoes the first (Fischer & Paul's zero "relative phase angle"),
+    exact cancellation for equal working angles, the least residual otherwise
+    (tests check it against a brute-force search). More joints: no closed form;
+    each phasing in turn is searched on a grid over [0, pi) and refined by golden
+    section, the others held, for `rounds` sweeps (a local optimum).
+    """
+    count = len(geometry.phases)
+    if count == 1:
+        phase = wrapped(plane_angle(geometry, 1)) % math.pi
+        best = geometry.with_phases((phase,))
+        return best.phases, speed_ratio_fluctuation(best)
+    phases = list(geometry.phases)
+    for _ in range(rounds):
+        for k in range(count):
+            phases[k] = _best_single(geometry, phases, k)
+    best = geometry.with_phases(phases)
+    return best.phases, speed_ratio_fluctuation(best)
+
+
+def _best_single(geometry, phases, k, grid=48, iterations=40):
+    def cost(value):
+        trial = list(phases)
+        trial[k] = value
+        return speed_ratio_fluctuation(geometry.with_phases(trial))
+
+    step = math.pi / grid
+    start = min((i * step for i in range(grid)), key=cost)
+    low, high = start - step, start + step
+    golden = (math.sqrt(5.0) - 1.0) / 2.0
+    x1, x2 = high - golden * (high - low), low + golden * (high - low)
+    f1, f2 = cost(x1), cost(x2)
+    for _ in range(iterations):
+        if f1 < f2:
+            high, x2, f2 = x2, x1, f1
+            x1 = high - golden * (high - low)
+            f1 = cost(x1)
+        else:
+            low, x1, f1 = x1, x2, f2
+            x2 = low + golden * (high - low)
+            f2 = cost(x2)
+    return (x1 if f1 < f2 else x2) % math.pi

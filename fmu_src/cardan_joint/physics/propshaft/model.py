@@ -1,0 +1,188 @@
+"""The propshaft as a stepped system: what the Propshaft FMU keeps between steps.
+
+Same contract as `physics.model.CardanJoint` (the slave drives both): inputs
+and parameters as attributes, the input angle as exact revolutions, `step`
+advances exactly for inputs polynomial over the step or refuses with a message
+and changes nothing, `outputs` evaluates the closed forms. The geometry is
+fixed at `start`; the fluctuation search runs once, at the first output read.
+"""
+
+import math
+
+from ...propshaft_variables import propshaft_table
+from ..revolutions import RevolutionAngle, split_angle
+from ..values import ValueChecks, advance_input, value_ranges
+from .chain import chain
+from .checks import angle_warnings
+from .fluctuation import equivalent_angle, speed_ratio_fluctuation
+from .geometry import HALF_PI, TWO_PI, layout
+
+
+class Propshaft(ValueChecks):
+    def __init__(self, joints: int = 2, **values):
+        self.table = table = propshaft_table(joints)
+        self.joints = joints
+        unknown = set(values) - set(table.INPUTS) - set(table.PARAMETERS)
+        if unknown:
+            raise TypeError(f"unknown propshaft variable(s): {', '.join(sorted(unknown))}")
+        for name, value in {**table.start_values(), **values}.items():
+            setattr(self, name, float(value))
+        by_name = table.BY_NAME
+        self._input_ranges = value_ranges(by_name, table.INPUTS)
+        assert all(low == -high for _, low, high, _ in self._input_ranges), "symmetric ranges"
+        self._limits = tuple((name, high) for name, _, high, _ in self._input_ranges)
+        self._parameter_ranges = value_ranges(by_name, table.PARAMETERS, "max_working_angle")
+        self._speed_limit = by_name["input_speed"].max
+        self._sides = tuple(f"shaft_{k}_side_angle" for k in range(joints + 1))
+        self._tops = tuple(f"shaft_{k}_top_angle" for k in range(joints + 1))
+        self._phases = tuple(f"shaft_{k}_yoke_phase" for k in range(1, joints))
+        self._inertias = tuple(f"shaft_{k}_inertia" for k in range(1, joints))
+        self.start(0.0)
+
+    # --- set-up ------------------------------------------------------------
+
+    def start(self, time: float) -> None:
+        """Put the input angle at `input_angle_start`, the clock at `time`, and fix the
+        geometry (parameters are fixed from here on, as in FMI)."""
+        self.time = float(time)
+        self.parameter_fault = self._angle_problem()
+        valid = not self.parameter_fault
+        self._angle = split_angle(self.input_angle_start if valid else 0.0)
+        self._fluctuation = None
+        if not valid:
+            return
+        self._inertia = tuple(getattr(self, n) for n in self._inertias)
+        self._crosspiece = (self.crosspiece_inertia_1, self.crosspiece_inertia_2,
+                            self.crosspiece_inertia_3)
+        self.layout = self._geometry()
+        self.parameter_fault = self._working_angle_problem(self.layout)
+        if self.parameter_fault:
+            return
+        # Shaft angles start on the branch nearest the input angle (the contract).
+        offsets = chain(self.layout, self._angle.fraction, 0.0, 0.0,
+                        angle_error=self._angle.fraction_error).offsets
+        self._shifts = tuple(TWO_PI * round(o / TWO_PI) for o in offsets)
+
+    def _angle_problem(self):
+        problem = self._value_problem("parameter", self.table.PARAMETERS,
+                                      self._parameter_ranges)
+        if problem:
+            return problem
+        for name in self._sides + self._tops:
+            value = getattr(self, name)
+            if not abs(value) < HALF_PI:
+                return (f"parameter {name} = {value!r} rad must lie strictly between -pi/2 "
+                        f"and pi/2 (a shaft cannot point across the driveline)")
+        guard = self.max_working_angle
+        if not 0.0 < guard < HALF_PI:
+            return (f"parameter max_working_angle = {guard!r} rad ({math.degrees(guard):.6g} "
+                    f"deg) must lie strictly between 0 and pi/2 (90 deg, where a joint locks)")
+        return None
+
+    def _geometry(self):
+        return layout([getattr(self, n) for n in self._sides],
+                      [getattr(self, n) for n in self._tops],
+                      [getattr(self, n) for n in self._phases])
+
+    def _working_angle_problem(self, geometry):
+        guard = self.max_working_angle
+        for k, beta in enumerate(geometry.working_angles, start=1):
+            if not beta < guard:
+                return (f"joint {k} working angle = {beta!r} rad ({math.degrees(beta):.6g} deg, "
+                        f"from the angles of shafts {k - 1} and {k}) is not below the limit "
+                        f"max_working_angle = {guard!r} rad ({math.degrees(guard):.6g} deg)")
+        return None
+
+    def parameter_problem(self):
+        """Why the parameters cannot run, or None (checks the current values)."""
+        return self._angle_problem() or self._working_angle_problem(self._geometry())
+
+    # --- stepping ----------------------------------------------------------
+
+    def input_problem(self, step_size: float = 0.0):
+        """Why the inputs cannot be used over the next step, or None."""
+        if all(abs(getattr(self, name)) <= high for name, high in self._limits):
+            return None
+        return self._value_problem("input", self.table.INPUTS, self._input_ranges)
+
+    def invalid_inputs(self) -> set:
+        return {name for name, _ in self._bad_values("input", self.table.INPUTS,
+                                                       self._input_ranges)}
+
+    def step_problem(self, step_size: float):
+        if not (math.isfinite(step_size) and step_size > 0.0):
+            return f"communication step size = {step_size!r} s must be a finite number > 0"
+        return self.parameter_fault or self.input_problem(step_size)
+
+    def step(self, step_size: float):
+        """Advance by `step_size`; return None, or why the step was refused (then
+        nothing has changed)."""
+        problem = self.step_problem(step_size)
+        if problem:
+            return problem
+        advanced = advance_input(self._angle, self.input_speed, self.input_acceleration,
+                                 step_size, self._speed_limit)
+        if isinstance(advanced, str):
+            return advanced
+        self._angle, self.input_speed = advanced
+        self.time += step_size
+        return None
+
+    # --- outputs -----------------------------------------------------------
+
+    @property
+    def input_angle(self) -> float:
+        return float(self._angle)
+
+    def _chain(self, fraction, error):
+        return chain(self.layout, fraction, self.input_speed, self.input_acceleration,
+                     self._crosspiece, self._inertia, self.load_torque, error)
+
+    def fluctuation(self) -> float:
+        if self._fluctuation is None:
+            self._fluctuation = speed_ratio_fluctuation(self.layout)
+        return self._fluctuation
+
+    def outputs(self) -> tuple:
+        """Values of the table's outputs, in order; raises nothing for valid inputs."""
+        angle = self._angle
+        state = self._chain(angle.fraction, angle.fraction_error)
+        gamma0 = float(angle)
+        angles = [gamma0 + (o - shift) for o, shift in zip(state.offsets, self._shifts)]
+        values = [gamma0]
+        for k in range(self.joints - 1):
+            values += [angles[k], state.speeds[k], state.accelerations[k]]
+        fluctuation = self.fluctuation()
+        return (*values, angles[-1], state.speeds[-1], state.accelerations[-1],
+                state.input_torque, state.kinetic_energy, *self.layout.working_angles,
+                fluctuation, equivalent_angle(fluctuation))
+
+    def warnings(self):
+        """The industry's angle checks at the current input speed (never refusals)."""
+        if self.parameter_fault:
+            return ()
+        return angle_warnings(self.layout.working_angles, self.fluctuation(),
+                              self.input_speed)[0]
+
+    # --- state -------------------------------------------------------------
+
+    def state(self) -> dict:
+        """Everything that defines the propshaft, as JSON-serialisable values."""
+        names = self.table.INPUTS + self.table.PARAMETERS
+        values = {name: getattr(self, name) for name in names}
+        a = self._angle
+        values.update(time=self.time, turns=a.turns, fraction=a.fraction,
+                      fraction_error=a.fraction_error)
+        return values
+
+    def restore(self, state: dict) -> None:
+        """Take a `state()`; all or nothing (a malformed state raises and changes nothing)."""
+        values = {name: float(state[name])
+                  for name in self.table.INPUTS + self.table.PARAMETERS}
+        time = float(state["time"])
+        angle = RevolutionAngle(int(state["turns"]), float(state["fraction"]),
+                                float(state["fraction_error"]))
+        for name, value in values.items():
+            setattr(self, name, value)
+        self.start(time)
+        self._angle = angle
