@@ -46,3 +46,21 @@ def model_description(fmu_path):
     from fmpy import read_model_description
 
     return read_model_description(str(fmu_path))
+
+
+@pytest.fixture(scope="session")
+def propshaft_fmu_path(tmp_path_factory) -> Path:
+    """dist/Propshaft.fmu as `build_fmu.py --model Propshaft` writes it."""
+    dest = tmp_path_factory.mktemp("propshaft")
+    build_fmu(dest, "--model", "Propshaft")
+    return dest / "Propshaft.fmu"
+
+
+@pytest.fixture(scope="session")
+def propshaft_unzipped(propshaft_fmu_path, tmp_path_factory):
+    from fmpy import extract
+
+    directory = extract(str(propshaft_fmu_path),
+                        unzipdir=str(tmp_path_factory.mktemp("propshaft_unzipped")))
+    yield directory
+    shutil.rmtree(directory, ignore_errors=True)
