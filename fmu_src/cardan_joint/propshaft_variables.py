@@ -80,14 +80,17 @@ def _outputs(joints):
 def propshaft_table(joints: int = 2) -> VariableTable:
     if joints not in JOINTS:
         raise ValueError(f"joints = {joints!r}: the Propshaft is built for {JOINTS} joints")
-    inputs = [joint.BY_NAME[name] for name in ("input_speed", "input_acceleration",
-                                                "load_torque")]
+    inputs = [replace(joint.BY_NAME["input_speed"], description="Input shaft speed omega_0"),
+              replace(joint.BY_NAME["input_acceleration"], description="Input shaft "
+                      "acceleration alpha_0 = d(omega_0)/dt"),
+              joint.BY_NAME["load_torque"]]
     parameters = _geometry(joints) + [
         *(replace(joint.BY_NAME[f"crosspiece_inertia_{i}"], description=f"Every joint's "
                   f"crosspiece: principal moment of inertia about {axis}")
           for i, axis in ((1, "the pin its input-side yoke holds"), (2, "the other pin"),
                           (3, "the normal of the cross"))),
-        joint.BY_NAME["input_angle_start"],
+        replace(joint.BY_NAME["input_angle_start"], description="Input shaft angle gamma_0 "
+                "at the start time"),
         Variable("max_working_angle", _PAR, "rad", "Largest working angle accepted; a layout "
                  "reaching it is refused", 30.0 / DEG, "deg", 0.0, HALF_PI)]
     return VariableTable(inputs + parameters + _outputs(joints))
