@@ -180,3 +180,26 @@ def test_joints_option_names_and_validates_the_build(tmp_path):
     names = [v.name for v in read_model_description(str(tmp_path / "Propshaft3.fmu"))
              .modelVariables]
     assert "shaft_2_yoke_phase" in names and "joint_3_working_angle" in names
+
+
+def test_the_worked_layout_example_cancels_at_the_helpers_phasing(propshaft_fmu_path, tmp_path,
+                                                                   capsys):
+    import importlib.util
+    import sys
+    from pathlib import Path
+
+    examples = str(Path(__file__).resolve().parents[1] / "examples")
+    sys.path.insert(0, examples)
+    try:
+        spec = importlib.util.spec_from_file_location("propshaft_layout_example",
+                                                      Path(examples) / "propshaft_layout.py")
+        module = importlib.util.module_from_spec(spec)
+        spec.loader.exec_module(module)
+    finally:
+        sys.path.remove(examples)
+    module.main(["--fmu", str(propshaft_fmu_path), "--out", str(tmp_path)])
+    text = capsys.readouterr().out
+    assert (tmp_path / "propshaft_layout.png").stat().st_size > 10_000
+    assert "Phasing 0: speed-ratio fluctuation 0.006079" in text
+    assert "exceeds 0.0027" in text
+    assert "Best phasing 102.704 deg: fluctuation 1.39e-05" in text

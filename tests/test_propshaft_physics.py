@@ -231,3 +231,34 @@ def test_state_round_trip():
     shaft.step(1.0)
     shaft.restore(saved)
     assert shaft.outputs() == before
+
+
+def test_bad_steps_and_unknown_names_are_refused():
+    shaft = Propshaft(2)
+    for h in (0.0, -0.1, math.nan):
+        assert "step size" in shaft.step(h) and shaft.time == 0.0
+    with pytest.raises(TypeError, match="bend_angle"):
+        Propshaft(2, bend_angle=0.1)
+
+
+@pytest.mark.parametrize("settings, values, words", [
+    ({"joints": 5}, {}, ["--joints 5", "2, 3, 4"]),
+    ({"joints": 2}, {"shaft_2_yoke_phase": 0.1}, ["shaft_2_yoke_phase", "2-joint"]),
+    ({"joints": 3}, {"shaft_1_side_angle": 0.6}, ["joint 1 working angle", "max_working_angle"]),
+    ({"joints": 2}, {"input_speed": math.inf}, ["input_speed = inf"]),
+])
+def test_the_build_refuses_propshaft_start_values_that_cannot_run(settings, values, words):
+    from cardan_joint.models import StartValueError, model
+
+    with pytest.raises(StartValueError) as refusal:
+        model("Propshaft").check_start_values(values, settings)
+    for word in words:
+        assert word in str(refusal.value)
+
+
+def test_joints_applies_to_the_propshaft_only(capsys):
+    from cardan_joint.build import main
+
+    with pytest.raises(SystemExit):
+        main(["--joints", "3"])
+    assert "--joints does not apply to UniversalJoint" in capsys.readouterr().err

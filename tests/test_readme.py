@@ -19,3 +19,11 @@ def test_ci_runs_the_readmes_test_command():
     assert f"    {TEST_COMMAND}\n" in README
     ci = (ROOT / ".ci" / "run").read_text()
     assert f"\n{TEST_COMMAND}\n" in ci
+
+
+def test_propshaft_variable_table_is_generated_from_its_metadata():
+    from cardan_joint.propshaft_variables import propshaft_table
+
+    text = (ROOT / "docs" / "Propshaft" / "README.md").read_text()
+    begin, end = "<!-- variables:begin -->\n", "<!-- variables:end -->"
+    assert text.split(begin)[1].split(end)[0] == propshaft_table(2).markdown_table()
