@@ -14,8 +14,8 @@ from .. import variables as table
 # The kernel itself: the FMU's once-per-step call on floats skips the array dispatch.
 from .response import JointResponse
 from .response import _response as joint_response_kernel
-from .revolutions import RevolutionAngle, split_angle
-from .values import ValueChecks, advance_input, value_ranges
+from .revolutions import split_angle
+from .values import SavedState, ValueChecks, advance_input, value_ranges
 
 
 def _ranges(names, *excluded):
@@ -35,7 +35,9 @@ _LOAD_LIMIT = table.BY_NAME["load_torque"].max
 _FROM_RESPONSE = itemgetter(*(JointResponse._fields.index(name) for name in table.OUTPUTS[2:]))
 
 
-class CardanJoint(ValueChecks):
+class CardanJoint(ValueChecks, SavedState):
+    table = table
+
     def __init__(self, **values):
         unknown = set(values) - set(table.INPUTS) - set(table.PARAMETERS)
         if unknown:
@@ -168,24 +170,3 @@ class CardanJoint(ValueChecks):
         input_angle = float(self._angle)
         # Two roundings at most: within one ulp of gamma2 however many turns.
         return (input_angle, input_angle + r[0]) + _FROM_RESPONSE(r)
-
-    # --- state -------------------------------------------------------------
-
-    def state(self) -> dict:
-        """Everything that defines the joint, as JSON-serialisable values."""
-        values = {name: getattr(self, name) for name in table.INPUTS + table.PARAMETERS}
-        a = self._angle
-        values.update(time=self.time, turns=a.turns, fraction=a.fraction,
-                      fraction_error=a.fraction_error)
-        return values
-
-    def restore(self, state: dict) -> None:
-        """Take a `state()`; all or nothing (a malformed state raises and changes nothing)."""
-        values = {name: float(state[name]) for name in table.INPUTS + table.PARAMETERS}
-        time = float(state["time"])
-        angle = RevolutionAngle(int(state["turns"]), float(state["fraction"]),
-                                float(state["fraction_error"]))
-        for name, value in values.items():
-            setattr(self, name, value)
-        self.start(time)
-        self._angle = angle

@@ -1,9 +1,10 @@
-"""Checks of variable values and the input shaft's exact advance, shared by
-every stepped model (the joint, the propshaft): one wording for every refusal."""
+"""Checks of variable values, the input shaft's exact advance and the saved
+state, shared by every stepped model (the joint, the propshaft): one wording
+for every refusal, one state format."""
 
 import math
 
-from .revolutions import advance
+from .revolutions import RevolutionAngle, advance
 
 # Beyond 1e15 rad a float has no fractional digits left: the pin's position
 # after such a step is undefined, and the exact turn arithmetic would overflow.
@@ -46,3 +47,28 @@ def advance_input(angle, speed, acceleration, h, speed_limit):
                 f"{increment!r} rad (limit {MAX_INCREMENT!r} rad per step) and the speed "
                 f"reach {speed + acceleration * h!r} rad/s (limit {speed_limit!r} rad/s)")
     return advance(angle, increment), speed + acceleration * h
+
+
+class SavedState:
+    """state()/restore() of a model with a variable `table`, a clock and an input
+    angle kept as exact revolutions; `start(time)` re-derives everything else."""
+
+    def state(self) -> dict:
+        """Everything that defines the model, as JSON-serialisable values."""
+        values = {name: getattr(self, name) for name in self.table.INPUTS + self.table.PARAMETERS}
+        a = self._angle
+        values.update(time=self.time, turns=a.turns, fraction=a.fraction,
+                      fraction_error=a.fraction_error)
+        return values
+
+    def restore(self, state: dict) -> None:
+        """Take a `state()`; all or nothing (a malformed state raises and changes nothing)."""
+        values = {name: float(state[name])
+                  for name in self.table.INPUTS + self.table.PARAMETERS}
+        time = float(state["time"])
+        angle = RevolutionAngle(int(state["turns"]), float(state["fraction"]),
+                                float(state["fraction_error"]))
+        for name, value in values.items():
+            setattr(self, name, value)
+        self.start(time)
+        self._angle = angle

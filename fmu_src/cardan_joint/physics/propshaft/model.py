@@ -10,15 +10,15 @@ fixed at `start`; the fluctuation search runs once, at the first output read.
 import math
 
 from ...propshaft_variables import propshaft_table
-from ..revolutions import RevolutionAngle, split_angle
-from ..values import ValueChecks, advance_input, value_ranges
+from ..revolutions import split_angle
+from ..values import SavedState, ValueChecks, advance_input, value_ranges
 from .chain import chain
 from .checks import angle_warnings
 from .fluctuation import equivalent_angle, speed_ratio_fluctuation
 from .geometry import HALF_PI, TWO_PI, layout
 
 
-class Propshaft(ValueChecks):
+class Propshaft(ValueChecks, SavedState):
     def __init__(self, joints: int = 2, **values):
         self.table = table = propshaft_table(joints)
         self.joints = joints
@@ -163,26 +163,3 @@ class Propshaft(ValueChecks):
             return ()
         return angle_warnings(self.layout.working_angles, self.fluctuation(),
                               self.input_speed)[0]
-
-    # --- state -------------------------------------------------------------
-
-    def state(self) -> dict:
-        """Everything that defines the propshaft, as JSON-serialisable values."""
-        names = self.table.INPUTS + self.table.PARAMETERS
-        values = {name: getattr(self, name) for name in names}
-        a = self._angle
-        values.update(time=self.time, turns=a.turns, fraction=a.fraction,
-                      fraction_error=a.fraction_error)
-        return values
-
-    def restore(self, state: dict) -> None:
-        """Take a `state()`; all or nothing (a malformed state raises and changes nothing)."""
-        values = {name: float(state[name])
-                  for name in self.table.INPUTS + self.table.PARAMETERS}
-        time = float(state["time"])
-        angle = RevolutionAngle(int(state["turns"]), float(state["fraction"]),
-                                float(state["fraction_error"]))
-        for name, value in values.items():
-            setattr(self, name, value)
-        self.start(time)
-        self._angle = angle
