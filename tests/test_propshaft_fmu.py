@@ -203,3 +203,36 @@ def test_the_worked_layout_example_cancels_at_the_helpers_phasing(propshaft_fmu_
     assert "Phasing 0: speed-ratio fluctuation 0.006079" in text
     assert "exceeds 0.0027" in text
     assert "Best phasing 102.704 deg: fluctuation 1.39e-05" in text
+
+
+def test_the_fmu_reports_cancellation_only_at_the_right_phasing(description, propshaft_unzipped):
+    from cardan_joint.physics.propshaft import best_phasing, layout
+
+    side, top = [0.0, D(-4.0), D(-1.0)], [0.0, 0.0, D(3.5)]
+    geometry = layout(side, top, [0.0])
+    assert abs(geometry.working_angles[0] - geometry.working_angles[1]) > 1e-3
+    # Make the working angles equal: turn shaft 2 about shaft 1 onto a cone of beta_1.
+    d1 = np.array(geometry.directions[1])
+    d2 = np.array(geometry.directions[2])
+    beta = geometry.working_angles[0]
+    normal = np.cross(d1, d2) / np.linalg.norm(np.cross(d1, d2))
+    d2 = d1 * math.cos(beta) + np.cross(normal, d1) * math.sin(beta)
+    side[2], top[2] = math.atan(d2[2] / d2[0]), math.atan(d2[1] / d2[0])
+    phases, _ = best_phasing(layout(side, top, [0.0]))
+    values = {f"shaft_{k}_side_angle": side[k] for k in range(3)}
+    values.update({f"shaft_{k}_top_angle": top[k] for k in range(3)})
+    results = {}
+    for phase in (0.0, phases[0]):
+        shaft = JointInstance(description, propshaft_unzipped,
+                              start_values=dict(values, shaft_1_yoke_phase=phase))
+        try:
+            results[phase] = shaft.get("speed_ratio_fluctuation", "equivalent_angle")
+        finally:
+            shaft.close()
+    assert results[phases[0]]["speed_ratio_fluctuation"] < 1e-12
+    assert results[0.0]["speed_ratio_fluctuation"] > 1e-3
+    default = JointInstance(description, propshaft_unzipped)     # a coplanar Z layout
+    try:
+        assert default.get("speed_ratio_fluctuation")["speed_ratio_fluctuation"] < 1e-12
+    finally:
+        default.close()

@@ -21,6 +21,7 @@ from .geometry import HALF_PI, TWO_PI, layout
 class Propshaft(ValueChecks, SavedState):
     def __init__(self, joints: int = 2, **values):
         self.table = table = propshaft_table(joints)
+        self._fluctuation = None
         self.joints = joints
         unknown = set(values) - set(table.INPUTS) - set(table.PARAMETERS)
         if unknown:
@@ -48,7 +49,6 @@ class Propshaft(ValueChecks, SavedState):
         self.parameter_fault = self._angle_problem()
         valid = not self.parameter_fault
         self._angle = split_angle(self.input_angle_start if valid else 0.0)
-        self._fluctuation = None
         if not valid:
             return
         self._inertia = tuple(getattr(self, n) for n in self._inertias)
@@ -139,9 +139,11 @@ class Propshaft(ValueChecks, SavedState):
                      self._crosspiece, self._inertia, self.load_torque, error)
 
     def fluctuation(self) -> float:
-        if self._fluctuation is None:
-            self._fluctuation = speed_ratio_fluctuation(self.layout)
-        return self._fluctuation
+        # Kept with its geometry: a restart (setup, initialization, state restore)
+        # with unchanged parameters does not search again.
+        if self._fluctuation is None or self._fluctuation[0] != self.layout:
+            self._fluctuation = (self.layout, speed_ratio_fluctuation(self.layout))
+        return self._fluctuation[1]
 
     def outputs(self) -> tuple:
         """Values of the table's outputs, in order; raises nothing for valid inputs."""
