@@ -138,13 +138,23 @@ def main(argv=None) -> int:
                         help="model name and FMU file name (default: UniversalJoint)")
     parser.add_argument("--set", action="append", default=[], metavar="NAME=VALUE",
                         help="start value of an input or parameter, e.g. --set bend_angle=0.2")
+    parser.add_argument("--cross-check", action="store_true",
+                        help="also write DEST/cross-check/fmus/2.0/cs/linux64/... with the "
+                             "reference run (fmi-cross-check layout; default model only)")
     args = parser.parse_args(argv)
+    if args.cross_check and (args.name != DEFAULT_NAME or args.set):
+        parser.error("--cross-check takes the default model: its reference run assumes the "
+                     "default name and start values (no --name, no --set)")
     try:
         fmu = build(args.dest, args.name, _parse_start_values(args.set))
     except BuildError as error:
         print(f"build_fmu: {error}", file=sys.stderr)
         return 1
     print(f"built and validated {fmu}")
+    if args.cross_check:
+        from .cross_check import write_cross_check
+
+        print(f"wrote {write_cross_check(Path(args.dest) / 'cross-check', fmu)}")
     return 0
 
 

@@ -5,7 +5,7 @@ Plain script (not a pytest file):
     /work/main/.venv/bin/python tests/reference/check_references.py
 
 Checks only the references against themselves, against physical identities
-and against the contract's own statements in PHYSICS.md (section E).  It never
+and against the contract's own statements in docs/UniversalJoint/README.md (section E).  It never
 touches the production code.  Exits non-zero on failure.
 """
 
@@ -287,7 +287,7 @@ def section_d_multibody():
 
 
 def section_e_contract():
-    """The references against PHYSICS.md's own closed forms / numbers.
+    """The references against docs/UniversalJoint/README.md's own closed forms / numbers.
 
     (Contract cross-check; the references do not use these formulas.)
     """
