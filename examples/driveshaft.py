@@ -3,7 +3,7 @@
 Joint 1 turns at a prescribed input speed; joint 2's input is the intermediate
 shaft, i.e. joint 1's output speed and acceleration. With equal bend angles and
 the intermediate shaft's yokes in one plane (joint 2's yoke_phase = 90 deg when
-joint 1's is 0, PHYSICS.md) the output turns exactly with the input.
+joint 1's is 0, docs/UniversalJoint/README.md) the output turns exactly with the input.
 
 Arrangements. Joint 2's frame has z' along joint 1's output shaft
 z2 = (sin b, 0, cos b) and the same hinge axis y, so x' = (cos b, 0, -sin b).
@@ -60,67 +60,17 @@ Writes results/driveshaft_steps.csv (step dependence), results/driveshaft_phase.
 
 import csv
 import math
-import shutil
 
 import numpy as np
 
+from cardan_joint.instance import ExtractedFMU
 from cardan_joint.physics import quantities
-from cardan_joint.simulate import DEFAULT_FMU
 
 from _support import example_parser, output_folder, save_figure
 
 COUPLINGS = ("lead", "hold", "angle")
 ARRANGEMENTS = {"Z": -1.0, "W": 1.0}       # sign of joint 2's bend angle
 ROUNDING = 1e-12
-
-
-class Joint:
-    """One FMU instance on FMPy's low-level API, with Real access by name."""
-
-    def __init__(self, fmu_dir, model_description, name, start_values):
-        from fmpy.fmi2 import FMU2Slave
-
-        self.references = {v.name: v.valueReference for v in model_description.modelVariables}
-        self.fmu = FMU2Slave(guid=model_description.guid, unzipDirectory=fmu_dir,
-                             modelIdentifier=model_description.coSimulation.modelIdentifier,
-                             instanceName=name)
-        self.fmu.instantiate()
-        self.fmu.setupExperiment(startTime=0.0)
-        self.fmu.enterInitializationMode()
-        self.set(**start_values)
-        self.fmu.exitInitializationMode()
-        self.time = 0.0
-
-    def set(self, **values):
-        self.fmu.setReal([self.references[n] for n in values], list(values.values()))
-
-    def get(self, *names):
-        return self.fmu.getReal([self.references[n] for n in names])
-
-    def step(self, step_size):
-        # FMPy raises FMICallException when the FMU refuses (fmi2Discard).
-        self.fmu.doStep(currentCommunicationPoint=self.time, communicationStepSize=step_size)
-        self.time += step_size
-
-    def close(self):
-        self.fmu.terminate()
-        self.fmu.freeInstance()
-
-
-class ExtractedFMU:
-    """The FMU unzipped once: every instance of a run loads the same directory."""
-
-    def __init__(self, fmu=DEFAULT_FMU):
-        from fmpy import extract, read_model_description
-
-        self.model_description = read_model_description(str(fmu))
-        self.directory = extract(str(fmu))
-
-    def __enter__(self):
-        return self
-
-    def __exit__(self, *exc):
-        shutil.rmtree(self.directory, ignore_errors=True)
 
 
 def cosimulate(fmu: ExtractedFMU, bend_angle=math.radians(30), input_speed=10.0, step=1e-3,
@@ -137,40 +87,38 @@ def cosimulate(fmu: ExtractedFMU, bend_angle=math.radians(30), input_speed=10.0,
     if coupling not in COUPLINGS:
         raise ValueError(f"coupling must be one of {COUPLINGS}, got {coupling!r}")
     steps = int(round(revolutions * 2 * math.pi / input_speed / step))
-    joint1 = Joint(fmu.directory, fmu.model_description, "joint1",
-                   {"bend_angle": bend_angle, "yoke_phase": 0.0, "input_angle_start": 0.0,
-                    "input_speed": input_speed, "input_acceleration": input_acceleration})
+    joint1 = fmu.instance("joint1", start_values={
+        "bend_angle": bend_angle, "yoke_phase": 0.0, "input_angle_start": 0.0,
+        "input_speed": input_speed, "input_acceleration": input_acceleration})
     # Joint 2's input shaft starts where joint 1's output shaft is.
-    (start_angle,) = joint1.get("output_angle")
-    joint2 = Joint(fmu.directory, fmu.model_description, "joint2",
-                   {"bend_angle": ARRANGEMENTS[arrangement] * bend_angle,
-                    "yoke_phase": math.pi / 2 + phase_error, "input_angle_start": start_angle})
+    (start_angle,) = joint1.values("output_angle")
+    joint2 = fmu.instance("joint2", start_values={
+        "bend_angle": ARRANGEMENTS[arrangement] * bend_angle,
+        "yoke_phase": math.pi / 2 + phase_error, "input_angle_start": start_angle})
     intermediate, output, output_at_end = [], [], []
-    try:
+    with joint1, joint2:
         for k in range(steps + 1):
             joint1.set(input_speed=input_speed + input_acceleration * k * step,
                        input_acceleration=input_acceleration)
-            speed, acceleration, angle = joint1.get("output_speed", "output_acceleration",
-                                                    "output_angle")
+            speed, acceleration, angle = joint1.values("output_speed", "output_acceleration",
+                                                       "output_angle")
             # Set for every coupling: the sample below then sees consistent inputs at t.
             joint2.set(input_speed=speed, input_acceleration=acceleration)
             intermediate.append(speed)
-            output.append(joint2.get("output_speed")[0])
+            output.append(joint2.values("output_speed")[0])
             if k == steps:
                 break
             joint1.step(step)
             if coupling == "lead":
-                joint2.set(**dict(zip(("input_speed", "input_acceleration"),
-                                      joint1.get("output_speed", "output_acceleration"))))
+                lead = joint1.get("output_speed", "output_acceleration")
+                joint2.set(input_speed=lead["output_speed"],
+                           input_acceleration=lead["output_acceleration"])
             elif coupling == "angle":
-                (next_angle,) = joint1.get("output_angle")
+                (next_angle,) = joint1.values("output_angle")
                 joint2.set(input_acceleration=2.0 * ((next_angle - angle) - speed * step)
                            / (step * step))
             joint2.step(step)
-            output_at_end.append(joint2.get("output_speed")[0])
-    finally:
-        joint1.close()
-        joint2.close()
+            output_at_end.append(joint2.values("output_speed")[0])
     time = step * np.arange(steps + 1)
     return {"time": time, "input_speed": input_speed + input_acceleration * time,
             "intermediate_speed": np.array(intermediate),

@@ -16,7 +16,6 @@ The master (FMPy's low-level API) closes the driveline around the FMU:
 """
 
 import math
-import shutil
 
 import numpy as np
 
@@ -35,29 +34,14 @@ class Driveline:
     """The FMU instance plus the master's closure of the motor and load sides."""
 
     def __init__(self, fmu_path, p):
-        from fmpy import extract, read_model_description
-        from fmpy.fmi2 import FMU2Slave
+        from cardan_joint.instance import JointInstance
 
         self.p = p
-        md = read_model_description(str(fmu_path))
-        self.unzipped = extract(str(fmu_path))
-        self.ref = {v.name: v.valueReference for v in md.modelVariables}
-        self.fmu = FMU2Slave(guid=md.guid, unzipDirectory=self.unzipped,
-                             modelIdentifier=md.coSimulation.modelIdentifier, instanceName="joint")
-        self.fmu.instantiate()
-        self.fmu.setupExperiment(startTime=0.0)
-        self.fmu.enterInitializationMode()
         i1, i2, i3 = p["inertia"]
-        self._set(bend_angle=p["bend_angle"], yoke_phase=p["yoke_phase"],
-                  crosspiece_inertia_1=i1, crosspiece_inertia_2=i2, crosspiece_inertia_3=i3,
-                  input_speed=p["speed0"])
-        self.fmu.exitInitializationMode()
-
-    def _set(self, **values):
-        self.fmu.setReal([self.ref[n] for n in values], list(values.values()))
-
-    def get(self, *names):
-        return dict(zip(names, self.fmu.getReal([self.ref[n] for n in names])))
+        self.joint = JointInstance.open(fmu_path, start_values=dict(
+            bend_angle=p["bend_angle"], yoke_phase=p["yoke_phase"], crosspiece_inertia_1=i1,
+            crosspiece_inertia_2=i2, crosspiece_inertia_3=i3, input_speed=p["speed0"]))
+        self._set, self.get = self.joint.set, self.joint.get
 
     def _torque_residual(self, speed, acceleration):
         """J_motor a1 - (T_motor - T1(a1)), with the load fed back for this a1."""
@@ -79,21 +63,22 @@ class Driveline:
         return acceleration
 
     def heun_step(self, time, speed, h):
+        joint = self.joint
+        joint.time = time
         a_start = self.close_loop(speed)
-        saved = self.fmu.getFMUstate()
-        self.fmu.doStep(currentCommunicationPoint=time, communicationStepSize=h)
+        saved = joint.get_state()
+        joint.step(h)
         a_end = self.close_loop(speed + a_start * h)
-        self.fmu.setFMUstate(saved)
-        self.fmu.freeFMUstate(saved)
+        joint.set_state(saved)
+        joint.free_state(saved)
+        joint.time = time
         a_mean = 0.5 * (a_start + a_end)
         self._set(input_speed=speed, input_acceleration=a_mean)
-        self.fmu.doStep(currentCommunicationPoint=time, communicationStepSize=h)
+        joint.step(h)
         return speed + a_mean * h
 
     def close(self):
-        self.fmu.terminate()
-        self.fmu.freeInstance()
-        shutil.rmtree(self.unzipped, ignore_errors=True)
+        self.joint.close()
 
 
 def run(fmu_path=DEFAULT_FMU, stop_time=1.0, h=1e-3, **overrides):

@@ -6,7 +6,7 @@ two input revolutions; one FMU run per inertia distribution.
 The paper's frame is not the FMU's. Its quaternion (4), with the roll law (3)
 gamma = pi/2 - atan(tan(alpha) cos(theta)), puts its crosspiece axis 1 along the
 input-yoke pin (opposite sense), axis 2 along the cross normal and axis 3 along
-the output-yoke pin; the FMU (PHYSICS.md) has 1 = input pin, 2 = output pin,
+the output-yoke pin; the FMU (docs/UniversalJoint/README.md) has 1 = input pin, 2 = output pin,
 3 = normal. Numerically, the paper's Omega = (-Omega1, Omega3, Omega2) of the
 FMU, and its equations (5) hold only in that order. So this script gives the
 FMU the paper's inertias on the paper's axes (I1 -> input pin, I2 -> normal,
@@ -14,7 +14,7 @@ I3 -> output pin) and plots every vector in the paper's frame, the quaternion
 as well (a constant change of fixed and body frames of the FMU's quaternion).
 The paper's M3 = 0 for I1 = I3 = I2/2 is then the FMU's output-pin torque
 vanishing for a flat cross (normal moment = sum of the pin moments).
-PHYSICS.md reads the paper's indices as the FMU's axes instead (its M3 = 0
+docs/UniversalJoint/README.md reads the paper's indices as the FMU's axes instead (its M3 = 0
 when I2 = I1 + I3, equally true of the FMU); the energy figure shows that
 reading beside the paper's for comparison.
 
@@ -60,7 +60,7 @@ def fmu_inertia(paper_inertia):
 
 
 def physics_md_inertia(paper_inertia):
-    """PHYSICS.md's reading: the paper's index k taken as the FMU's axis k."""
+    """docs/UniversalJoint/README.md's reading: the paper's index k taken as the FMU's axis k."""
     return {f"crosspiece_inertia_{k}": value for k, value in enumerate(paper_inertia, start=1)}
 
 
@@ -210,7 +210,7 @@ def main(argv=None):
     axes[0].set_title("Fig. 5: orientation quaternion of the crosspiece (paper's frames)",
                       fontsize=10)
     axes[1].set_ylabel("quaternion, FMU frame [-]")
-    axes[1].set_title("The FMU's crosspiece_quaternion_0..3 (PHYSICS.md: R = Rz($\\psi$) Rx($\\rho$))",
+    axes[1].set_title("The FMU's crosspiece_quaternion_0..3 (model page: R = Rz($\\psi$) Rx($\\rho$))",
                       fontsize=10)
     axes[1].set_xlabel("time t [s]")
     for ax in axes:
@@ -256,7 +256,7 @@ def main(argv=None):
     for ax, runs, title in (
             (axes[0], energies, "Fig. 8: kinetic energy, the paper's axes (2 = cross normal, "
                                 "3 = output pin)"),
-            (axes[1], energies_physics_md, "The same numbers on PHYSICS.md's axes "
+            (axes[1], energies_physics_md, "The same numbers on the model page's axes "
                                            "(2 = output pin, 3 = cross normal)")):
         for name, r in runs.items():
             ax.plot(t, r["crosspiece_kinetic_energy"] * 1e3, color=colors[name], lw=1.5,
@@ -292,7 +292,7 @@ def main(argv=None):
     for name in DISTRIBUTIONS:
         e, e_md = (runs[name]["crosspiece_kinetic_energy"] for runs in (energies, energies_physics_md))
         print(f"{name}: energy {e.min() * 1e3:.4f}..{e.max() * 1e3:.4f} mJ, mean {e.mean() * 1e3:.4f}"
-              f" mJ (PHYSICS.md reading {e_md.min() * 1e3:.4f}..{e_md.max() * 1e3:.4f} mJ)")
+              f" mJ (model page reading {e_md.min() * 1e3:.4f}..{e_md.max() * 1e3:.4f} mJ)")
 
 
 if __name__ == "__main__":

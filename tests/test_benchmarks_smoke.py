@@ -1,4 +1,4 @@
-"""benchmarks/run_benchmarks.py runs end to end and writes its tables.
+"""`python -m benchmarks` (the benchmarks package) runs end to end and writes its tables.
 
 A smoke test only: `--quick` sizes measure nothing, so nothing here looks at a
 time or at whether a goal is met.
@@ -9,7 +9,6 @@ import sys
 from pathlib import Path
 
 ROOT = Path(__file__).resolve().parents[1]
-SCRIPT = ROOT / "benchmarks" / "run_benchmarks.py"
 
 SUMMARY_ROWS = (
     "| 1. FMU2Slave loop (set 6, doStep, get 20) vs plain floor,",
@@ -28,7 +27,7 @@ SUMMARY_ROWS = (
 
 def test_quick_run_writes_every_row(fmu_path, tmp_path):
     output = tmp_path / "results.md"
-    run = subprocess.run([sys.executable, str(SCRIPT), "--quick", "--output", str(output),
+    run = subprocess.run([sys.executable, "-m", "benchmarks", "--quick", "--output", str(output),
                           "--fmu", str(fmu_path)],
                          capture_output=True, text=True, cwd=ROOT, timeout=600)
     assert run.returncode == 0, run.stdout + run.stderr
@@ -43,3 +42,19 @@ def test_quick_run_writes_every_row(fmu_path, tmp_path):
     for bend in ("2π/7", "2π/5"):
         for step in ("1e-01", "1e-02", "1e-03", "1e-04"):
             assert sum(line.startswith(f"| {bend} | {step} |") for line in lines) == 1
+
+
+def test_the_floor_builder_makes_an_fmu_with_the_joints_variables(model_description, tmp_path):
+    from fmpy import read_model_description
+
+    build = subprocess.run([sys.executable, "-c", "import sys; from benchmarks.floor import "
+                            "build_floor_fmu; print(build_floor_fmu(sys.argv[1], 'bare'))",
+                            str(tmp_path)], capture_output=True, text=True, cwd=ROOT, timeout=300)
+    assert build.returncode == 0, build.stderr
+    floor = read_model_description(build.stdout.strip())
+
+    def signature(description):
+        return [(v.name, v.causality, v.variability, v.initial, v.start)
+                for v in description.modelVariables]
+
+    assert signature(floor) == signature(model_description)

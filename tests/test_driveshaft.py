@@ -7,6 +7,8 @@ from pathlib import Path
 
 import pytest
 
+from cardan_joint.instance import ExtractedFMU
+
 ROOT = Path(__file__).resolve().parents[1]
 
 
@@ -28,7 +30,7 @@ def driveshaft():
 
 @pytest.fixture(scope="module")
 def fmu(driveshaft, fmu_path):
-    with driveshaft.ExtractedFMU(fmu_path) as extracted:
+    with ExtractedFMU(fmu_path) as extracted:
         yield extracted
 
 

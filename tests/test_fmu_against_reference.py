@@ -9,7 +9,7 @@ import mpmath
 import numpy as np
 import pytest
 
-from fmi_loop import JointInstance
+from cardan_joint.instance import JointInstance
 from reference.geometry import geometric_reference
 from tolerance import assert_close
 

@@ -4,7 +4,7 @@ from fmpy.validation import validate_fmu
 
 from cardan_joint import variables as table
 
-# PHYSICS.md's interface table, in its order.
+# docs/UniversalJoint/README.md's interface table, in its order.
 PHYSICS_NAMES = {
     "input": ["input_speed", "input_acceleration", "bend_angle", "bend_angle_rate",
               "bend_angle_acceleration", "load_torque"],

@@ -6,7 +6,7 @@ import numpy as np
 import pytest
 from fmpy import simulate_fmu
 
-from fmi_loop import JointInstance
+from cardan_joint.instance import JointInstance
 from test_seeds import DISTRIBUTIONS, MAKER_TABLE, truncated
 
 

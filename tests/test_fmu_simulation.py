@@ -8,8 +8,8 @@ import numpy as np
 from fmpy import simulate_fmu
 
 from cardan_joint import variables as table
+from cardan_joint.instance import JointInstance
 from cardan_joint.physics import CardanJoint, cardan_error
-from fmi_loop import JointInstance
 
 
 def test_default_experiment_runs_with_plain_simulate_fmu(fmu_path, model_description):

@@ -8,8 +8,8 @@ from hypothesis import HealthCheck, given, settings
 from hypothesis import strategies as st
 
 from cardan_joint import variables as table
+from cardan_joint.instance import JointInstance
 from cardan_joint.physics import CardanJoint
-from fmi_loop import JointInstance
 
 DISCARD = 2
 nasty = st.sampled_from([math.nan, math.inf, -math.inf, 1e308, -1e308, 1.5707963267948966,
@@ -27,7 +27,7 @@ actions = st.lists(st.one_of(
 def test_random_sequences_never_corrupt_the_joint(model_description, unzipped_fmu, sequence):
     joint = JointInstance(model_description, unzipped_fmu, name="fuzz")
     mirror = CardanJoint()
-    saved = joint.fmu.getFMUstate()
+    saved = joint.get_state()
     saved_mirror = mirror.state()
     try:
         for action in sequence:
@@ -36,7 +36,7 @@ def test_random_sequences_never_corrupt_the_joint(model_description, unzipped_fm
                 joint.set(**{name: value})
                 setattr(mirror, name, value)
             elif action[0] == "rollback":
-                joint.fmu.setFMUstate(saved)
+                joint.set_state(saved)
                 mirror.restore(saved_mirror)
             else:
                 before = joint.get("input_angle")
@@ -46,13 +46,13 @@ def test_random_sequences_never_corrupt_the_joint(model_description, unzipped_fm
                 if problem:
                     assert joint.get("input_angle") == before
                 else:
-                    joint.fmu.freeFMUstate(saved)
-                    saved, saved_mirror = joint.fmu.getFMUstate(), mirror.state()
+                    joint.free_state(saved)
+                    saved, saved_mirror = joint.get_state(), mirror.state()
             if mirror.input_problem() is None:
                 outputs = list(joint.get_outputs().values())
                 assert outputs == list(mirror.outputs())
                 assert all(math.isfinite(v) for v in outputs)
             assert joint.get("input_angle")["input_angle"] == mirror.input_angle
     finally:
-        joint.fmu.freeFMUstate(saved)
+        joint.free_state(saved)
         joint.close()

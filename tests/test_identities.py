@@ -1,4 +1,4 @@
-"""PHYSICS.md's identities as properties over random bend angles, phases and rates,
+"""docs/UniversalJoint/README.md's identities as properties over random bend angles, phases and rates,
 and scalar/array agreement of the vectorized physics."""
 
 import math

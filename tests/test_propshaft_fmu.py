@@ -9,7 +9,7 @@ import numpy as np
 import pytest
 
 from conftest import build_fmu
-from fmi_loop import JointInstance
+from cardan_joint.instance import JointInstance
 from reference.propshaft import PropshaftReference
 from tolerance import assert_close
 

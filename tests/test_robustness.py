@@ -9,10 +9,10 @@ import numpy as np
 import pytest
 
 from cardan_joint import variables as table
+from cardan_joint.instance import JointInstance
 from cardan_joint.physics import CardanJoint
 from cardan_joint.simulate import SimulationError, simulate
 from conftest import build_fmu
-from fmi_loop import JointInstance
 
 DISCARD = 2
 GOOD = dict(input_speed=12.0, input_acceleration=3.0, bend_angle=0.4, bend_angle_rate=0.05,
@@ -154,27 +154,27 @@ def test_state_rollback_is_bit_for_bit_after_ten_thousand_steps(model_descriptio
     try:
         for _ in range(7):
             joint.step(1e-3)
-        saved = joint.fmu.getFMUstate()
-        serialized = joint.fmu.serializeFMUstate(saved)
+        saved = joint.get_state()
+        serialized = joint.serialize_state(saved)
         first = run()
-        other = joint.fmu.getFMUstate()          # a second, independent copy
-        joint.fmu.setFMUstate(saved)
+        other = joint.get_state()          # a second, independent copy
+        joint.set_state(saved)
         assert run() == first
-        joint.fmu.setFMUstate(other)
+        joint.set_state(other)
         assert tuple(joint.get_outputs().values()) == first[-1]
         # A serialized state restores in a fresh instance.
         fresh = JointInstance(model_description, unzipped_fmu, name="fresh")
         try:
-            state = fresh.fmu.deSerializeFMUstate(serialized)
-            fresh.fmu.setFMUstate(state)
-            fresh.fmu.freeFMUstate(state)
+            state = fresh.deserialize_state(serialized)
+            fresh.set_state(state)
+            fresh.free_state(state)
             joint, original = fresh, joint
             assert run() == first
             joint = original
         finally:
             fresh.close()
-        joint.fmu.freeFMUstate(saved)
-        joint.fmu.freeFMUstate(other)
+        joint.free_state(saved)
+        joint.free_state(other)
     finally:
         joint.close()
 
@@ -182,13 +182,13 @@ def test_state_rollback_is_bit_for_bit_after_ten_thousand_steps(model_descriptio
 def test_state_includes_the_revolution_counter(model_description, unzipped_fmu):
     joint = JointInstance(model_description, unzipped_fmu, start_values={"input_speed": 5000.0})
     try:
-        saved = joint.fmu.getFMUstate()
+        saved = joint.get_state()
         angle = joint.get("input_angle", "crosspiece_quaternion_0")
         for _ in range(10):
             joint.step(0.1)                     # ~800 revolutions
-        joint.fmu.setFMUstate(saved)
+        joint.set_state(saved)
         assert joint.get("input_angle", "crosspiece_quaternion_0") == angle
-        joint.fmu.freeFMUstate(saved)
+        joint.free_state(saved)
     finally:
         joint.close()
 
@@ -305,9 +305,9 @@ def test_a_garbage_serialized_state_is_refused_and_changes_nothing(model_descrip
     try:
         joint.step(0.05)
         before = all_reals(joint)
-        state = joint.fmu.deSerializeFMUstate(b"not a state at all")
-        joint.fmu.setFMUstate(state)
-        joint.fmu.freeFMUstate(state)
+        state = joint.deserialize_state(b"not a state at all")
+        joint.set_state(state)
+        joint.free_state(state)
         assert "fmi2SetFMUstate ignored" in messages[-1][2]
         assert all_reals(joint) == before
         joint.step(0.05)
@@ -317,25 +317,15 @@ def test_a_garbage_serialized_state_is_refused_and_changes_nothing(model_descrip
 
 def test_outputs_in_initialization_mode_see_the_parameters_at_once(model_description,
                                                                    unzipped_fmu):
-    from fmpy.fmi2 import FMU2Slave
-
-    fmu = FMU2Slave(guid=model_description.guid, unzipDirectory=unzipped_fmu,
-                    modelIdentifier="UniversalJoint", instanceName="init")
-    ref = {v.name: v.valueReference for v in model_description.modelVariables}
-    fmu.instantiate()
-    try:
-        fmu.setupExperiment(startTime=3.0)
-        fmu.enterInitializationMode()
-        fmu.setReal([ref["input_angle_start"], ref["yoke_phase"]], [1.0, 0.5])
-        in_init = fmu.getReal([ref["input_angle"], ref["output_angle"], ref["crosspiece_quaternion_0"]])
-        fmu.exitInitializationMode()
-        after = fmu.getReal([ref["input_angle"], ref["output_angle"], ref["crosspiece_quaternion_0"]])
-        assert in_init == after
+    outputs = ("input_angle", "output_angle", "crosspiece_quaternion_0")
+    with JointInstance(model_description, unzipped_fmu, name="init", start_time=3.0,
+                       exit_initialization=False) as joint:
+        joint.set(input_angle_start=1.0, yoke_phase=0.5)
+        in_init = joint.values(*outputs)
+        joint.exit_initialization_mode()
+        assert in_init == joint.values(*outputs)
         model = CardanJoint(input_angle_start=1.0, yoke_phase=0.5)
         assert in_init == list(model.outputs()[:2]) + [model.response().crosspiece_quaternion_0]
-        fmu.terminate()
-    finally:
-        fmu.freeInstance()
 
 
 def test_invalid_load_holds_only_the_outputs_that_depend_on_it(model_description, unzipped_fmu):

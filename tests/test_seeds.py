@@ -1,4 +1,4 @@
-"""The seeds' reference numbers (PHYSICS.md) reproduced by the physics package.
+"""The seeds' reference numbers (docs/UniversalJoint/README.md) reproduced by the physics package.
 tests/test_fmu_seeds.py reproduces the same numbers through the FMU."""
 
 import math
@@ -24,7 +24,7 @@ def test_maker_table(bend_deg, error_deg, at_deg):
     best = minimize_scalar(lambda g: -cardan_error(g, beta), bounds=(0.0, math.pi / 2),
                            method="bounded", options={"xatol": 1e-12})
     peak = math.degrees(cardan_error(best.x, beta))
-    # PHYSICS.md calls the table truncated; that holds for 10 deg (0.43857 -> 0.438)
+    # docs/UniversalJoint/README.md calls the table truncated; that holds for 10 deg (0.43857 -> 0.438)
     # but 20 deg (1.78168) is printed rounded (1.782). Either 3-decimal reading
     # of our value must give the maker's number.
     assert error_deg in (truncated(peak), round(peak, 3))
@@ -36,7 +36,7 @@ def test_maker_table(bend_deg, error_deg, at_deg):
 
 
 def test_maker_ten_degrees_against_40_digit_arithmetic():
-    # PHYSICS.md quotes 0.43857 deg; the maker's own formula gives 0.4385614 deg
+    # docs/UniversalJoint/README.md quotes 0.43857 deg; the maker's own formula gives 0.4385614 deg
     # (computed here at 40 digits), which the page prints truncated as 0.438.
     import mpmath
     with mpmath.workdps(40):

@@ -10,8 +10,8 @@ import pytest
 from hypothesis import given, settings
 from hypothesis import strategies as st
 
+from cardan_joint.instance import JointInstance
 from cardan_joint.physics import joint_response
-from fmi_loop import JointInstance
 from reference.multibody import simulate_multibody, state_quantities
 from symbolic import derived
 

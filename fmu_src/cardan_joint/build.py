@@ -173,12 +173,20 @@ def main(argv=None, prog=None) -> int:
     parser.add_argument("--joints", type=int, default=None, metavar="N",
                         help="Propshaft only: number of joints, 2 (Propshaft, the default), "
                              "3 or 4 (Propshaft3, Propshaft4)")
+    parser.add_argument("--cross-check", action="store_true",
+                        help="also write DEST/cross-check/fmus/2.0/cs/linux64/... with the "
+                             "reference run (fmi-cross-check layout; default model only)")
     args = parser.parse_args(argv)
     settings = {}
     if args.joints is not None:
         if "joints" not in MODELS[args.model].default_settings:
             parser.error(f"--joints does not apply to {args.model}")
         settings["joints"] = args.joints
+    if args.cross_check and (args.model != DEFAULT_MODEL or args.fmi_version != 2
+                             or args.name not in (None, DEFAULT_MODEL) or args.set):
+        parser.error("--cross-check takes the default model: its reference run assumes the "
+                     "default FMI 2 UniversalJoint with its start values (no --model, "
+                     "--fmi-version, --name or --set)")
     try:
         fmu = build(args.dest, args.name, _parse_start_values(args.set), model=args.model,
                     settings=settings, fmi_version=args.fmi_version)
@@ -186,6 +194,10 @@ def main(argv=None, prog=None) -> int:
         print(f"build_fmu: {error}", file=sys.stderr)
         return 1
     print(f"built and validated {fmu}")
+    if args.cross_check:
+        from .cross_check import write_cross_check
+
+        print(f"wrote {write_cross_check(Path(args.dest) / 'cross-check', fmu)}")
     return 0
 
 

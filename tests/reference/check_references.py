@@ -1,39 +1,47 @@
 """Internal-consistency checks of the reference implementations.
 
-Plain script (not a pytest file):
-
-    /work/main/.venv/bin/python tests/reference/check_references.py
-
 Checks only the references against themselves, against physical identities
-and against the contract's own statements in PHYSICS.md (section E).  It never
-touches the production code.  Exits non-zero on failure.
+and against the contract's own statements in docs/UniversalJoint/README.md
+(section E). It never touches the production code. Collected by pytest through
+tests/test_reference_checks.py (section D on a shorter horizon); the full run,
+with the worst error of every check, from any directory and interpreter that
+has the test dependencies:
+
+    python tests/reference/check_references.py
+
+Exits non-zero on failure.
 """
 
 import math
-import os
 import sys
 import time
+from pathlib import Path
 
 import numpy as np
 from mpmath import mp, mpf
 
-sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+if __package__ in (None, ""):
+    # Run as a script: import `reference` as the package the tests import.
+    sys.path.insert(0, str(Path(__file__).resolve().parents[1]))
 
-from geometry import (KEYS, construct, geometric_reference,  # noqa: E402
-                      geometric_reference_mp)
-from multibody import (geometry_derivatives, simulate_multibody,  # noqa: E402
-                       state_quantities)
-
-FAILURES = []
-WORST = {}
+from reference.geometry import (KEYS, construct, geometric_reference,  # noqa: E402
+                                geometric_reference_mp)
+from reference.multibody import geometry_derivatives, simulate_multibody  # noqa: E402
 
 
-def check(name, err, tol):
-    """Record a check: err (a non-negative number) must be <= tol."""
-    err = float(err)
-    WORST[name] = max(WORST.get(name, 0.0), err)
-    if not (err <= tol):
-        FAILURES.append("%s: %.3e > %.1e" % (name, err, tol))
+class Checks:
+    """Called as check(name, err, tol): err (a non-negative number) must be <= tol.
+    Keeps the failures and the worst error per check name."""
+
+    def __init__(self):
+        self.failures = []
+        self.worst = {}
+
+    def __call__(self, name, err, tol):
+        err = float(err)
+        self.worst[name] = max(self.worst.get(name, 0.0), err)
+        if not (err <= tol):
+            self.failures.append("%s: %.3e > %.1e" % (name, err, tol))
 
 
 def poly(c0, c1=0.0, c2=0.0):
@@ -67,7 +75,7 @@ CASES = [
 ]
 
 
-def section_a_precision():
+def section_a_precision(check):
     """dps=40 vs dps=60: the returned values agree far below 1e-13."""
     worst = 0.0
     times = []
@@ -88,7 +96,7 @@ def section_a_precision():
           % (1e3 * np.mean(times), 1e3 * max(times)))
 
 
-def section_b_identities():
+def section_b_identities(check):
     """Physical identities of the geometric reference."""
     for t, ip, bp, ph, inert, TL in CASES:
         ia, dia = poly(*ip)
@@ -153,7 +161,7 @@ def section_b_identities():
     print("B: identities checked on %d cases" % len(CASES))
 
 
-def section_c_sweeps():
+def section_c_sweeps(check):
     """Quaternion continuity and special values; float API."""
     # identity at psi = 0, b = 0
     r = geometric_reference(0.0, lambda t: 0 * t, lambda t: 0 * t)
@@ -196,7 +204,7 @@ def section_c_sweeps():
     print("C: sweeps done")
 
 
-def section_d_multibody():
+def section_d_multibody(check, horizon=1.0):
     """Multibody simulation: energy, reaction consistency, cross-check."""
     # stencil derivatives vs mpmath.diff
     for g, b, ph in ((0.3, 0.5, 0.0), (2.1, 1.2, 0.4), (-7.0, 0.1, 1.5)):
@@ -234,7 +242,7 @@ def section_d_multibody():
              gamma1_0=-1.0, omega1_0=10.0, yoke_phase=0.25),
     ]
     for k, run in enumerate(runs):
-        te = np.linspace(0.0, 1.0, 201)
+        te = np.linspace(0.0, horizon, 201)
         t0 = time.perf_counter()
         r = simulate_multibody(te, diagnostics=True, **run)
         dt = time.perf_counter() - t0
@@ -243,8 +251,8 @@ def section_d_multibody():
         escale = max(np.max(np.abs(E)), np.max(np.abs(W)))
         eerr = np.max(np.abs(E - E[0] - W)) / escale
         check("D multibody energy balance (trajectory, rel)", eerr, 1e-10)
-        print("D: run %d: %.2f s for 1 s simulated (%d RHS calls), energy "
-              "balance %.1e relative" % (k, dt, r["nfev"], eerr))
+        print("D: run %d: %.2f s for %g s simulated (%d RHS calls), energy "
+              "balance %.1e relative" % (k, dt, horizon, r["nfev"], eerr))
         J1, J2 = run["J1"], run["J2"]
         tsc = max(np.max(np.abs(r["input_torque"])), 1e-300)
         check("D input_torque = T_motor - J1 a1",
@@ -286,8 +294,8 @@ def section_d_multibody():
               "same state: %.1e" % (k, worst))
 
 
-def section_e_contract():
-    """The references against PHYSICS.md's own closed forms / numbers.
+def section_e_contract(check):
+    """The references against docs/UniversalJoint/README.md's own closed forms / numbers.
 
     (Contract cross-check; the references do not use these formulas.)
     """
@@ -360,20 +368,22 @@ def section_e_contract():
     print("E: contract cross-checks done")
 
 
+SECTIONS = (section_a_precision, section_b_identities, section_c_sweeps,
+            section_d_multibody, section_e_contract)
+
+
 def main():
     t0 = time.perf_counter()
-    section_a_precision()
-    section_b_identities()
-    section_c_sweeps()
-    section_d_multibody()
-    section_e_contract()
+    check = Checks()
+    for section in SECTIONS:
+        section(check)
     print()
-    for k in sorted(WORST):
-        print("  %-52s worst %.2e" % (k, WORST[k]))
+    for k in sorted(check.worst):
+        print("  %-52s worst %.2e" % (k, check.worst[k]))
     print("total %.1f s" % (time.perf_counter() - t0))
-    if FAILURES:
+    if check.failures:
         print("\nFAILED:")
-        for f in FAILURES:
+        for f in check.failures:
             print("  " + f)
         sys.exit(1)
     print("\nALL CHECKS PASSED")

@@ -28,24 +28,6 @@ def output_speed(psi, beta, input_speed, bend_angle_rate=0.0):
     return joint_response(psi, beta, input_speed, 0.0, bend_angle_rate).output_speed
 
 
-def output_acceleration(psi, beta, input_speed, input_acceleration=0.0,
-                        bend_angle_rate=0.0, bend_angle_acceleration=0.0):
-    return joint_response(psi, beta, input_speed, input_acceleration, bend_angle_rate,
-                          bend_angle_acceleration).output_acceleration
-
-
-def crosspiece_quaternion(psi, beta):
-    r = joint_response(psi, beta, 0.0)
-    return (r.crosspiece_quaternion_0, r.crosspiece_quaternion_1,
-            r.crosspiece_quaternion_2, r.crosspiece_quaternion_3)
-
-
-def crosspiece_angular_velocity(psi, beta, input_speed, bend_angle_rate=0.0):
-    r = joint_response(psi, beta, input_speed, 0.0, bend_angle_rate)
-    return (r.crosspiece_angular_velocity_1, r.crosspiece_angular_velocity_2,
-            r.crosspiece_angular_velocity_3)
-
-
 def max_cardan_error(beta):
     """Amplitude of the cardan error: atan((1 - cos b) / (2 sqrt(cos b)))."""
     xp = namespace(beta)

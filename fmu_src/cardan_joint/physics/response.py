@@ -1,4 +1,4 @@
-"""Every closed form of the joint (PHYSICS.md), evaluated in one pass.
+"""Every closed form of the joint (docs/UniversalJoint/README.md), evaluated in one pass.
 
 This one function is the single home of the equations: the FMU calls it once
 per step on floats (through `math`), design sweeps call it on numpy arrays, and
@@ -34,7 +34,7 @@ _new_tuple = tuple.__new__     # skips NamedTuple's Python-level __new__ (once p
 
 
 class JointResponse(NamedTuple):
-    """Field names are the FMU's output names (PHYSICS.md), plus three extras."""
+    """Field names are the FMU's output names (docs/UniversalJoint/README.md), plus three extras."""
     cardan_error: Any
     speed_ratio: Any
     output_speed: Any

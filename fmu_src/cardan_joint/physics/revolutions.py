@@ -11,8 +11,8 @@ import math
 from functools import lru_cache
 from typing import NamedTuple
 
-TWO_PI = 2.0 * math.pi
-TWO_PI_HI = TWO_PI
+# 2 pi as a double-double: the double nearest to it and the rest.
+TWO_PI_HI = 2.0 * math.pi
 TWO_PI_LO = 2.4492935982947064e-16   # 2 pi - TWO_PI_HI
 _SPLITTER = 134217729.0              # 2**27 + 1, Dekker's split
 

@@ -1,0 +1,134 @@
+"""The UniversalJoint's reference run, in the fmi-cross-check repository layout.
+
+    fmus/2.0/cs/linux64/cardan_joint/<version>/UniversalJoint/
+        UniversalJoint.fmu
+        UniversalJoint_in.csv     inputs, linearly interpolated (all six inputs)
+        UniversalJoint_ref.opt    StartTime, StopTime, StepSize, RelTol
+        UniversalJoint_ref.csv    the reference outputs (time + 9 outputs)
+        README.md                 docs/UniversalJoint/README.md
+
+The reference is computed by the physics package (`CardanJoint` stepped as a
+co-simulation master steps the FMU), not by the FMU: a tool that reproduces it
+through the FMU checks the FMI plumbing against the equations. The same three
+files are kept in docs/UniversalJoint/ (tests/test_cross_check.py checks that
+they are current; `python -m cardan_joint.cross_check docs/UniversalJoint`
+rewrites them).
+"""
+
+from __future__ import annotations
+
+import argparse
+import shutil
+import sys
+from importlib.metadata import PackageNotFoundError, version
+from pathlib import Path
+
+import numpy as np
+
+MODEL = "UniversalJoint"
+TOOL_ID = "cardan_joint"
+DOCS = Path(__file__).resolve().parents[2] / "docs" / MODEL
+
+OPTIONS = {"StartTime": 0.0, "StopTime": 1.0, "StepSize": 1e-3, "RelTol": 1e-6}
+# Inputs linear in time, their rates given beside them, so that every step is
+# exact: the shaft runs up 20 -> 40 rad/s while the joint bends 0.2 -> 0.6 rad
+# against a constant load. Two rows: FMI tools interpolate linearly between them.
+INPUT_ROWS = (
+    # time, input_speed, input_acceleration, bend_angle, bend_angle_rate,
+    # bend_angle_acceleration, load_torque
+    (0.0, 20.0, 20.0, 0.2, 0.4, 0.0, 100.0),
+    (1.0, 40.0, 20.0, 0.6, 0.4, 0.0, 100.0),
+)
+INPUT_NAMES = ("input_speed", "input_acceleration", "bend_angle", "bend_angle_rate",
+               "bend_angle_acceleration", "load_torque")
+# At most 10 columns with the time (the cross-check rules' recommendation).
+REFERENCE_OUTPUTS = ("output_angle", "output_speed", "output_acceleration", "cardan_error",
+                     "input_torque", "input_yoke_moment", "output_yoke_moment",
+                     "crosspiece_kinetic_energy", "crosspiece_quaternion_0")
+
+
+def tool_version() -> str:
+    try:
+        return version("cardan-joint-fmu")
+    except PackageNotFoundError:          # a source tree that is not installed
+        return "0+unknown"
+
+
+def inputs() -> np.ndarray:
+    """The input signals as a structured array (FMPy's `input` format)."""
+    return np.array(list(INPUT_ROWS), dtype=[("time", float)] + [(n, float) for n in INPUT_NAMES])
+
+
+def reference() -> np.ndarray:
+    """The reference outputs at every communication point, by the physics package."""
+    from . import variables as table
+    from .physics import CardanJoint
+
+    signals = inputs()
+    start, stop, step = (OPTIONS[k] for k in ("StartTime", "StopTime", "StepSize"))
+    steps = round((stop - start) / step)
+    times = start + step * np.arange(steps + 1)
+    joint = CardanJoint()
+    joint.start(start)
+
+    def apply_inputs(time):
+        for name in INPUT_NAMES:
+            setattr(joint, name, float(np.interp(time, signals["time"], signals[name])))
+
+    # As a master records: a sample at each communication point before the
+    # inputs of the next step are set (in between, the FMU carries its inputs along).
+    apply_inputs(start)
+    rows = []
+    for k, time in enumerate(times):
+        outputs = dict(zip(table.OUTPUTS, joint.outputs()))
+        rows.append((time, *(outputs[n] for n in REFERENCE_OUTPUTS)))
+        if k == steps:
+            break
+        apply_inputs(time)
+        problem = joint.step(step)
+        if problem:
+            raise RuntimeError(f"the reference run was refused at t = {time}: {problem}")
+    return np.array(rows, dtype=[("time", float)] + [(n, float) for n in REFERENCE_OUTPUTS])
+
+
+def write_reference_files(folder: str | Path) -> list[Path]:
+    """Write <MODEL>_in.csv, <MODEL>_ref.opt and <MODEL>_ref.csv into `folder`."""
+    from fmpy.util import write_csv
+
+    folder = Path(folder)
+    folder.mkdir(parents=True, exist_ok=True)
+    paths = [folder / f"{MODEL}_in.csv", folder / f"{MODEL}_ref.opt", folder / f"{MODEL}_ref.csv"]
+    write_csv(str(paths[0]), inputs())
+    paths[1].write_text("".join(f"{key}, {value!r}\n" for key, value in OPTIONS.items()))
+    write_csv(str(paths[2]), reference())
+    return paths
+
+
+def write_cross_check(dest: str | Path, fmu_path: str | Path) -> Path:
+    """Write the model's cross-check folder under `dest`; return that folder."""
+    readme = DOCS / "README.md"
+    if not readme.is_file():
+        raise FileNotFoundError(f"{readme} not found: the cross-check folder is written from "
+                                f"a source checkout of the repository")
+    folder = (Path(dest) / "fmus" / "2.0" / "cs" / "linux64" / TOOL_ID / tool_version()
+              / MODEL)
+    folder.mkdir(parents=True, exist_ok=True)
+    shutil.copyfile(fmu_path, folder / f"{MODEL}.fmu")
+    shutil.copyfile(readme, folder / "README.md")
+    write_reference_files(folder)
+    return folder
+
+
+def main(argv=None) -> int:
+    parser = argparse.ArgumentParser(
+        description=f"Rewrite {MODEL}'s reference files (_in.csv, _ref.opt, _ref.csv).")
+    parser.add_argument("folder", nargs="?", default=str(DOCS),
+                        help=f"where to write them (default: {DOCS})")
+    args = parser.parse_args(argv)
+    for path in write_reference_files(args.folder):
+        print(f"wrote {path}")
+    return 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())

@@ -1,0 +1,197 @@
+"""One FMU instance on FMPy's low-level API, its Real variables by name.
+
+The one wrapper around FMPy's slave classes that the tests, the examples and
+the benchmarks share: instantiation and initialisation with start values,
+name-based set/get, stepping (raising or returning the status), FMU state
+pass-through, an optional sink for the FMU's log messages, and terminate/free
+on leaving a `with` block.
+
+    with JointInstance.open("dist/UniversalJoint.fmu", start_values={...}) as joint:
+        joint.step(1e-3)
+        joint.get("output_speed")
+
+    with ExtractedFMU("dist/UniversalJoint.fmu") as fmu:      # unzipped once
+        with fmu.instance("joint1") as one, fmu.instance("joint2") as two:
+            ...
+"""
+
+from __future__ import annotations
+
+import shutil
+from collections.abc import Callable, Iterable
+from pathlib import Path
+from typing import Any
+
+Message = tuple[int, str, str]          # (FMI status, category, text)
+
+
+def _fmi2_slave(model_description, unzipped: str, name: str):
+    from fmpy.fmi2 import FMU2Slave
+
+    return FMU2Slave(guid=model_description.guid, unzipDirectory=unzipped,
+                     modelIdentifier=model_description.coSimulation.modelIdentifier,
+                     instanceName=name)
+
+
+# FMI 3 (FMU3Slave) differs in its call sequence and value getters; it gets an
+# entry here, with its own adapter, once the project builds FMI 3 FMUs.
+_SLAVES = {"2.0": _fmi2_slave}
+
+
+def logging_callbacks(sink: Any):
+    """FMI 2 callbacks whose logger appends (status, category, message) to `sink`."""
+    from fmpy.fmi2 import defaultCallbacks, fmi2CallbackFunctions, fmi2CallbackLoggerTYPE
+
+    callbacks = fmi2CallbackFunctions()
+    callbacks.logger = fmi2CallbackLoggerTYPE(
+        lambda env, instance, status, category, message: sink.append(
+            (status, category.decode(), message.decode())))
+    callbacks.allocateMemory = defaultCallbacks.allocateMemory
+    callbacks.freeMemory = defaultCallbacks.freeMemory
+    return callbacks
+
+
+class JointInstance:
+    """One instance of an unzipped FMU, initialised and ready to step from `start_time`.
+
+    `messages`: a list (anything with `append`) that receives the FMU's log
+    messages as (status, category, text); giving it turns debug logging on,
+    without which pythonfmu forwards nothing. `exit_initialization=False`
+    leaves it in Initialization Mode (start values set) until
+    `exit_initialization_mode()`.
+    """
+
+    def __init__(self, model_description, unzipped, name: str = "joint",
+                 start_values: dict[str, float] | None = None, start_time: float = 0.0,
+                 messages: Any = None, exit_initialization: bool = True):
+        version = model_description.fmiVersion
+        if version not in _SLAVES:
+            raise ValueError(f"FMI version {version} of {model_description.modelName!r} is not "
+                             f"supported; supported: {', '.join(sorted(_SLAVES))}")
+        self.model_description = model_description
+        self.references = {v.name: v.valueReference for v in model_description.modelVariables}
+        self.outputs = [v.name for v in model_description.modelVariables
+                        if v.causality == "output"]
+        self.fmu = _SLAVES[version](model_description, str(unzipped), name)
+        # Kept on the instance: ctypes callbacks must outlive the FMU.
+        self.callbacks = None if messages is None else logging_callbacks(messages)
+        self._cleanup: list[Callable[[], None]] = []
+        self.fmu.instantiate(callbacks=self.callbacks, loggingOn=messages is not None)
+        self._cleanup.append(self.fmu.freeInstance)
+        try:
+            self.fmu.setupExperiment(startTime=start_time)
+            self.fmu.enterInitializationMode()
+            if start_values:
+                self.set(**start_values)
+            self.time = start_time
+            if exit_initialization:
+                self.exit_initialization_mode()
+        except BaseException:
+            self.close()
+            raise
+
+    def exit_initialization_mode(self) -> None:
+        self.fmu.exitInitializationMode()
+        self._cleanup.append(self.fmu.terminate)
+
+    @classmethod
+    def open(cls, fmu: str | Path, **arguments) -> JointInstance:
+        """An instance of an .fmu file (unzipped here, removed on close) or of an
+        unzipped FMU directory (left alone)."""
+        extracted = ExtractedFMU(fmu)
+        try:
+            joint = cls(extracted.model_description, extracted.directory, **arguments)
+        except BaseException:
+            extracted.close()
+            raise
+        joint._cleanup.insert(0, extracted.close)
+        return joint
+
+    def __enter__(self) -> JointInstance:
+        return self
+
+    def __exit__(self, *exc) -> None:
+        self.close()
+
+    def _refs(self, names: Iterable[str]) -> list[int]:
+        try:
+            return [self.references[n] for n in names]
+        except KeyError as unknown:
+            raise KeyError(f"the FMU has no variable {unknown.args[0]!r}") from None
+
+    def set(self, **values: float) -> None:
+        self.fmu.setReal(self._refs(values), list(values.values()))
+
+    def values(self, *names: str) -> list[float]:
+        """The variables' values, in the order named."""
+        return self.fmu.getReal(self._refs(names))
+
+    def get(self, *names: str) -> dict[str, float]:
+        return dict(zip(names, self.values(*names)))
+
+    def get_outputs(self) -> dict[str, float]:
+        return self.get(*self.outputs)
+
+    def step(self, step_size: float) -> None:
+        """Step from `self.time`; FMPy raises FMICallException on a refused step."""
+        self.fmu.doStep(currentCommunicationPoint=self.time, communicationStepSize=step_size)
+        self.time += step_size
+
+    def try_step(self, step_size: float) -> int:
+        """Step; return the FMI status (a refused step leaves the time where it was)."""
+        from fmpy.fmi1 import FMICallException
+
+        try:
+            self.step(step_size)
+            return 0
+        except FMICallException as refusal:
+            return refusal.status
+
+    def get_state(self):
+        return self.fmu.getFMUstate()
+
+    def set_state(self, state) -> None:
+        self.fmu.setFMUstate(state)
+
+    def free_state(self, state) -> None:
+        self.fmu.freeFMUstate(state)
+
+    def serialize_state(self, state) -> bytes:
+        return self.fmu.serializeFMUstate(state)
+
+    def deserialize_state(self, serialized: bytes):
+        return self.fmu.deSerializeFMUstate(serialized)
+
+    def close(self) -> None:
+        """Terminate and free the instance (and remove what `open` unzipped); once."""
+        if self._cleanup:
+            action = self._cleanup.pop()
+            try:
+                action()
+            finally:        # the rest runs even when one step fails
+                self.close()
+
+
+class ExtractedFMU:
+    """An FMU unzipped once, for any number of instances; a directory is used as is."""
+
+    def __init__(self, fmu: str | Path):
+        from fmpy import extract, read_model_description
+
+        self.model_description = read_model_description(str(fmu))
+        self._owned = not Path(fmu).is_dir()
+        self.directory = extract(str(fmu)) if self._owned else str(fmu)
+
+    def instance(self, name: str = "joint", **arguments) -> JointInstance:
+        return JointInstance(self.model_description, self.directory, name=name, **arguments)
+
+    def close(self) -> None:
+        if self._owned:
+            shutil.rmtree(self.directory, ignore_errors=True)
+            self._owned = False
+
+    def __enter__(self) -> ExtractedFMU:
+        return self
+
+    def __exit__(self, *exc) -> None:
+        self.close()

@@ -1,0 +1,78 @@
+"""The one FMU-instance helper: lifetime, extraction, names, log sink, FMI version."""
+
+import os
+from types import SimpleNamespace
+
+import pytest
+
+from cardan_joint.instance import ExtractedFMU, JointInstance
+
+
+def test_open_unzips_and_removes_its_copy_on_leaving_the_block(fmu_path):
+    with JointInstance.open(fmu_path, start_values={"input_speed": 3.0}) as joint:
+        unzipped = joint.fmu.unzipDirectory
+        assert os.path.isdir(unzipped)
+        joint.step(0.5)
+        assert joint.get("input_angle") == {"input_angle": 1.5}
+    assert not os.path.exists(unzipped)
+    joint.close()                               # a second close does nothing
+
+
+def test_a_directory_is_used_as_is_and_left_in_place(unzipped_fmu):
+    with ExtractedFMU(unzipped_fmu) as fmu:
+        with fmu.instance("a") as a, fmu.instance("b", start_values={"input_speed": 2.0}) as b:
+            a.step(1.0)
+            b.step(1.0)
+            assert a.values("input_angle") == [10.0]          # the FMU's default speed
+            assert b.values("input_angle") == [2.0]
+    assert os.path.isdir(unzipped_fmu)
+
+
+def test_close_frees_the_instance_even_when_terminate_fails(model_description, unzipped_fmu):
+    joint = JointInstance(model_description, unzipped_fmu)
+    freed = []
+    real_free = joint.fmu.freeInstance
+    joint._cleanup[0] = lambda: (freed.append(True), real_free())
+
+    def failing_terminate():
+        raise RuntimeError("terminate failed")
+
+    joint._cleanup[1] = failing_terminate
+    with pytest.raises(RuntimeError, match="terminate failed"):
+        joint.close()
+    assert freed == [True]
+
+
+def test_an_unknown_name_is_named(model_description, unzipped_fmu):
+    with JointInstance(model_description, unzipped_fmu) as joint:
+        with pytest.raises(KeyError, match="no variable 'input_sped'"):
+            joint.set(input_sped=1.0)
+
+
+def test_the_message_sink_receives_the_fmus_log(model_description, unzipped_fmu):
+    messages = []
+    with JointInstance(model_description, unzipped_fmu, messages=messages) as joint:
+        joint.set(bend_angle=1.5)
+        assert joint.try_step(0.1) != 0
+        assert joint.time == 0.0
+    assert any("bend_angle" in text for _, _, text in messages)
+
+
+def test_a_state_serialized_in_one_instance_restores_in_another(model_description,
+                                                                unzipped_fmu):
+    with JointInstance(model_description, unzipped_fmu, start_values={"input_speed": 7.0}) \
+            as joint, JointInstance(model_description, unzipped_fmu, name="other") as other:
+        joint.step(0.3)
+        state = joint.get_state()
+        serialized = joint.serialize_state(state)
+        joint.free_state(state)
+        restored = other.deserialize_state(serialized)
+        other.set_state(restored)
+        other.free_state(restored)
+        assert other.get_outputs() == joint.get_outputs()
+
+
+def test_an_fmi_version_without_an_adapter_is_refused_by_name(unzipped_fmu):
+    description = SimpleNamespace(fmiVersion="3.0", modelName="Future", modelVariables=[])
+    with pytest.raises(ValueError, match=r"FMI version 3.0 of 'Future' is not supported"):
+        JointInstance(description, unzipped_fmu)
