@@ -94,9 +94,11 @@ def test_an_interrupted_sweep_resumes_with_only_the_missing_cases(cluster, fmu_p
     client, _ = cluster
     total = len(TINY.cases())
 
-    def interrupt_after_two_tasks(rows, seen=[]):
-        seen.append(rows)
-        if len(seen) == 2:
+    returned = []
+
+    def interrupt_after_two_tasks(rows):
+        returned.append(rows)
+        if len(returned) == 2:
             raise KeyboardInterrupt
 
     first = sweep.CaseStore(tmp_path, TINY)
@@ -117,10 +119,17 @@ def test_an_interrupted_sweep_resumes_with_only_the_missing_cases(cluster, fmu_p
     pd.testing.assert_frame_equal(table, serial, check_exact=True)
 
 
-def test_a_store_refuses_cases_of_other_settings(tmp_path):
-    sweep.CaseStore(tmp_path, TINY)
+def test_a_store_refuses_cases_of_other_settings_or_another_fmu(tmp_path):
+    sweep.CaseStore(tmp_path / "a", TINY)
     with pytest.raises(sweep.SettingsMismatch, match="revolutions"):
-        sweep.CaseStore(tmp_path, sweep.SweepSpec(revolutions=3))
+        sweep.CaseStore(tmp_path / "a", sweep.SweepSpec(revolutions=3))
+    one, other = tmp_path / "one.fmu", tmp_path / "other.fmu"
+    one.write_bytes(b"one build")
+    other.write_bytes(b"another build")
+    sweep.CaseStore(tmp_path / "b", TINY, one)
+    sweep.CaseStore(tmp_path / "b", TINY, one)                  # the same FMU resumes
+    with pytest.raises(sweep.SettingsMismatch, match="fmu_sha256"):
+        sweep.CaseStore(tmp_path / "b", TINY, other)
 
 
 def test_killing_a_worker_mid_sweep_loses_nothing_and_repeats_nothing(cluster, fmu_path, serial,

@@ -77,10 +77,10 @@ def _print_comparison(timings, where):
               f" counting {t['startup']:.1f} s of cluster start-up){load}")
 
 
-def _open_store(folder: Path, spec, fresh):
+def _open_store(folder: Path, spec, fmu, fresh):
     if fresh and (folder / SETTINGS_FILE).is_file():
         shutil.rmtree(folder)
-    store = CaseStore(folder, spec)
+    store = CaseStore(folder, spec, fmu)
     done = len(spec.cases()) - len(store.missing(spec.cases()))
     if done:
         print(f"resuming: {done} of {len(spec.cases())} cases already in {folder} "
@@ -132,7 +132,7 @@ def main(argv=None, prog=None, default_name="design_sweep") -> int:
         _print_comparison(timings, args.scheduler or
                           f"LocalCluster of {args.workers} worker processes")
     else:
-        table = _run(args, fmu, spec, _open_store(out / f"{args.name}.cases", spec, args.fresh),
+        table = _run(args, fmu, spec, _open_store(out / f"{args.name}.cases", spec, fmu, args.fresh),
                      progress)
     stem, figure = out / args.name, out / f"{args.name}.png"
     existed = {p for p in (stem.with_suffix(".csv"), stem.with_suffix(".parquet"), figure)

@@ -8,6 +8,7 @@ missing ones. Only the process that runs the sweep writes (workers return rows),
 so a task that Dask runs again after losing a worker is still stored once.
 """
 
+import hashlib
 import json
 import os
 import uuid
@@ -36,20 +37,27 @@ def _write_atomically(path: Path, text: str):
 
 
 class CaseStore:
-    """Finished cases of one sweep, one file each, in `folder`."""
+    """Finished cases of one sweep, one file each, in `folder`.
 
-    def __init__(self, folder, spec: SweepSpec):
+    `fmu`: the FMU file, whose digest joins the settings (a rebuilt FMU with
+    other start values must not be mixed with the cases of the old one)."""
+
+    def __init__(self, folder, spec: SweepSpec, fmu=None):
         self.folder = Path(folder)
         self.folder.mkdir(parents=True, exist_ok=True)
         self.written = 0              # cases written by this object: computed in this run
-        settings = json.loads(json.dumps(spec.settings()))
+        settings = spec.settings()
+        if fmu is not None:
+            settings["fmu_sha256"] = hashlib.sha256(Path(fmu).read_bytes()).hexdigest()
+        settings = json.loads(json.dumps(settings))
         saved = self.folder / SETTINGS_FILE
         if saved.is_file():
             found = json.loads(saved.read_text())
             if found != settings:
                 raise SettingsMismatch(
                     f"{self.folder} holds cases computed with {found}, not {settings}: "
-                    f"give the sweep another name or output folder, or start it afresh")
+                    f"give the sweep another name or output folder, or start it afresh "
+                    f"(--fresh)")
         else:
             _write_atomically(saved, json.dumps(settings, indent=1))
 
