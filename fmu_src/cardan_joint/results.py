@@ -1,9 +1,10 @@
 """Reading and writing results: the one place that knows file formats.
 
 Time series (FMPy's structured result arrays, and any table of numbers) go to
-CSV in FMPy's column format, through `fmpy.util.write_csv`/`read_csv`: a quoted
-header, one column per variable, values printed as the shortest text that reads
-back to the same double. Tables with text columns (the design sweep's status
+CSV in FMPy's column format through `fmpy.util.write_csv`: a quoted header, one
+column per variable, values printed as the shortest text that reads back to the
+same double. They are read back through pandas (FMPy's reader takes a space
+after a comma for a vector column, which hand-written input files often have). Tables with text columns (the design sweep's status
 and message) go through pandas, also round-trip exact, and to Parquet when a
 Parquet engine (pyarrow) is installed.
 """
@@ -54,22 +55,35 @@ def write_csv(data: Union[np.ndarray, Mapping[str, Iterable[float]]], path: Path
 
 
 def read_csv(path: PathType) -> np.ndarray:
-    """A CSV of numbers with a header line (FMPy's format, quoted names or not) ->
-    a structured float array; raises ResultFileError naming the file and the problem."""
-    from fmpy.util import read_csv as fmpy_read_csv
+    """A CSV of numbers under a header line (FMPy's format, quoted names or not,
+    spaces after commas allowed) -> a structured float array, every value read
+    back to the same double; raises ResultFileError naming the file, and the
+    line and column of a value that is not a number."""
+    import pandas as pd
 
     path = Path(path)
     if not path.is_file():
         raise ResultFileError(f"{path} does not exist")
+    # pandas 3 reads every double back exactly by default and deprecates the
+    # option pandas 2 needs for that.
+    exact = {} if int(pd.__version__.split(".")[0]) >= 3 else {"float_precision": "round_trip"}
     try:
-        return fmpy_read_csv(str(path))
-    except IndexError:
-        raise ResultFileError(f"{path}: no header line and data rows") from None
-    except (ValueError, TypeError) as error:
-        # FMPy names the bad literal ("could not convert string to float: 'abc'")
-        # or reports a row whose length differs from the header's.
-        raise ResultFileError(f"{path}: not a table of numbers under one header line "
-                              f"({error})") from None
+        frame = pd.read_csv(path, skipinitialspace=True, **exact)
+    except (pd.errors.EmptyDataError, pd.errors.ParserError, UnicodeDecodeError) as error:
+        raise ResultFileError(f"{path}: not a table under one header line "
+                              f"({' '.join(str(error).split())})") from None
+    if frame.empty:
+        raise ResultFileError(f"{path}: a header line but no data rows")
+    columns = {}
+    for name in frame.columns:
+        numbers = pd.to_numeric(frame[name], errors="coerce")
+        wrong = numbers.isna() & frame[name].notna()
+        if wrong.any():
+            row = int(np.argmax(wrong.to_numpy()))
+            raise ResultFileError(f"{path}, line {row + 2}, column {str(name).strip()!r}: "
+                                  f"{frame[name].iloc[row]!r} is not a number")
+        columns[str(name).strip()] = numbers.to_numpy(dtype=float)
+    return structured(columns)
 
 
 def write_rows(rows: Sequence[Mapping[str, object]], path: PathType) -> Path:
