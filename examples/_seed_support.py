@@ -9,7 +9,7 @@ from pathlib import Path
 import numpy as np
 
 from cardan_joint import results
-from cardan_joint.plotting import pyplot
+from cardan_joint.plotting import pyplot  # noqa: F401 - the seed scripts import it from here
 from cardan_joint.simulate import simulate
 
 from _support import example_parser, output_folder

@@ -11,7 +11,6 @@ import warnings
 from collections import Counter
 from pathlib import Path
 
-import numpy as np
 
 DEFAULT_FMU = Path("dist") / "UniversalJoint.fmu"
 _STATUS = {0: "ok", 1: "warning", 2: "discard", 3: "error", 4: "fatal", 5: "pending"}
@@ -26,57 +25,6 @@ class SimulationError(RuntimeError):
         self.result = result
 
 
-def inputs_from_constants(constants: dict, stop_time: float) -> np.ndarray:
-    """A structured input signal holding each value constant over [0, stop_time]."""
-    signal = np.zeros(2, dtype=[("time", float)] + [(name, float) for name in constants])
-    signal["time"] = (0.0, stop_time)
-    for name, value in constants.items():
-        signal[name] = value
-    return signal
-
-
-# Inputs the FMU carries along a rate when no one sets them (see "Step semantics").
-_RATES = {"input_speed": ("input_acceleration",), "bend_angle_rate": ("bend_angle_acceleration",),
-          "bend_angle": ("bend_angle_rate", "bend_angle_acceleration")}
-
-
-def complete_inputs(inputs, starts: dict, stop_time: float, step: float) -> np.ndarray:
-    """`inputs` (dict of constants or structured array) with a signal for every
-    input of the FMU, each missing one following what the FMU would do with it
-    left unset: held at its start value, or carried along its rate. FMPy warns
-    ("missing input") for every input without a signal."""
-    names = tuple(name for name in starts if name not in _RATES) + tuple(_RATES)
-    if not isinstance(inputs, dict):
-        given = set(inputs.dtype.names)
-        moving = {n for n in names if n not in given and any(
-            r in given or starts[r] != 0.0 for r in _RATES.get(n, ()))}
-        if moving:
-            return inputs        # the FMU carries these along given rates: leave them unset
-        signal = np.zeros(len(inputs), dtype=inputs.dtype.descr +
-                          [(n, float) for n in names if n not in given])
-        for name in signal.dtype.names:
-            signal[name] = inputs[name] if name in given else starts[name]
-        return signal
-    value = {name: float(inputs.get(name, starts[name])) for name in names}
-    # Linear pieces are exact between two points; a bend angle carried by its
-    # acceleration is a parabola, given at every communication point.
-    curved = "bend_angle" not in inputs and value["bend_angle_acceleration"] != 0.0
-    t = (np.linspace(0.0, stop_time, max(1, round(stop_time / step)) + 1) if curved
-         else np.array([0.0, stop_time]))
-    signal = np.zeros(len(t), dtype=[("time", float)] + [(n, float) for n in names])
-    signal["time"] = t
-    for name in names:
-        signal[name] = value[name]
-    if "input_speed" not in inputs:
-        signal["input_speed"] = value["input_speed"] + value["input_acceleration"] * t
-    if "bend_angle_rate" not in inputs:
-        signal["bend_angle_rate"] = value["bend_angle_rate"] + value["bend_angle_acceleration"] * t
-    if "bend_angle" not in inputs:
-        signal["bend_angle"] = (value["bend_angle"] + value["bend_angle_rate"] * t
-                                + 0.5 * value["bend_angle_acceleration"] * t * t)
-    return signal
-
-
 def simulate(fmu=DEFAULT_FMU, stop_time=None, output_interval=None, inputs=None,
              start_values=None, output=None, **fmpy_options):
     """Co-simulate the FMU; return FMPy's structured result array.
@@ -86,6 +34,8 @@ def simulate(fmu=DEFAULT_FMU, stop_time=None, output_interval=None, inputs=None,
     Raises SimulationError if the FMU refused a step or logged an error.
     """
     from fmpy import read_model_description, simulate_fmu
+
+    from .inputs import complete_inputs
 
     fmu = str(fmu)
     if not Path(fmu).exists():
@@ -97,7 +47,7 @@ def simulate(fmu=DEFAULT_FMU, stop_time=None, output_interval=None, inputs=None,
     if inputs is not None:
         starts = {v.name: float((start_values or {}).get(v.name, v.start))
                   for v in description.modelVariables if v.causality == "input"}
-        inputs = complete_inputs(inputs, starts, stop_time, output_interval)
+        inputs = complete_inputs(inputs, starts, stop_time, output_interval)   # FMPy warns otherwise
 
     messages = []
 
