@@ -70,7 +70,7 @@ def run_case(fmu_dir, spec: SweepSpec, case: Case) -> dict:
     return row
 
 
-def run_task(fmu, spec: SweepSpec, cases) -> list:
+def run_task(fmu: str, spec: SweepSpec, cases) -> list:
     """Run a task's cases on one unzipped copy of the FMU (runs on a worker)."""
     from fmpy import extract
 

@@ -5,11 +5,16 @@ the table, to the store if there is one (so an interrupted sweep resumes with
 what is missing), and to the progress bar (tqdm, on stderr).
 """
 
+from os import PathLike
 from pathlib import Path
+from typing import TYPE_CHECKING, Callable, Optional
 
 from .case import run_task
 from .spec import SweepSpec
 from .store import CaseStore, to_table
+
+if TYPE_CHECKING:
+    import pandas
 
 
 class _Collector:
@@ -41,7 +46,9 @@ class _Collector:
         return to_table(rows, self.spec)
 
 
-def run_serial(fmu, spec: SweepSpec, progress=True, store: CaseStore = None, on_rows=None):
+def run_serial(fmu: PathLike, spec: SweepSpec, progress: bool = True,
+               store: Optional[CaseStore] = None,
+               on_rows: Optional[Callable[[list], None]] = None) -> "pandas.DataFrame":
     """Every task (every missing one, with a store) in this process, in order;
     returns the table (a DataFrame). `on_rows(rows)` is called after each task."""
     fmu = str(Path(fmu).resolve())
@@ -54,8 +61,9 @@ def run_serial(fmu, spec: SweepSpec, progress=True, store: CaseStore = None, on_
     return collector.table()
 
 
-def run_dask(fmu, spec: SweepSpec, client, progress=True, store: CaseStore = None,
-             on_rows=None):
+def run_dask(fmu: PathLike, spec: SweepSpec, client, progress: bool = True,
+             store: Optional[CaseStore] = None,
+             on_rows: Optional[Callable[[list], None]] = None) -> "pandas.DataFrame":
     """Every task (every missing one, with a store) on the client's cluster;
     returns the table (a DataFrame). Rows are stored here as tasks finish; a
     task lost with its worker is rerun by the scheduler and arrives once."""
@@ -76,7 +84,7 @@ def run_dask(fmu, spec: SweepSpec, client, progress=True, store: CaseStore = Non
     return collector.table()
 
 
-def local_cluster(n_workers=2):
+def local_cluster(n_workers: int = 2):
     """Worker processes, one thread each: each runs FMUs in its own Python."""
     import dask
     from dask.distributed import LocalCluster
@@ -97,7 +105,7 @@ QUIET_CLUSTER = {"distributed.worker.profile.enabled": False,
                  "distributed.admin.system-monitor.interval": "5s"}
 
 
-def connect(scheduler=None, n_workers=2):
+def connect(scheduler: Optional[str] = None, n_workers: int = 2) -> tuple:
     """(client, cluster or None): a new LocalCluster unless a scheduler address is given."""
     from dask.distributed import Client
 

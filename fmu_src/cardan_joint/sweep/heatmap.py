@@ -5,6 +5,7 @@ values, so an uneven axis (1, 2, 3, 4, 6, 8 ... 30 deg) is spaced truthfully.
 """
 
 import math
+from pathlib import Path
 
 import numpy as np
 
@@ -47,7 +48,7 @@ def _mark(ax, mask, x, y, **style):
         ax.add_patch(Rectangle((x[j], y[i]), x[j + 1] - x[j], y[i + 1] - y[i], **style))
 
 
-def plot_heatmaps(table, spec: SweepSpec, path):
+def plot_heatmaps(table, spec: SweepSpec, path) -> Path:
     """Peak output acceleration and peak crosspiece torque over bend x speed,
     hatched where the output acceleration exceeds ACCELERATION_LIMIT."""
     from matplotlib.patches import Patch

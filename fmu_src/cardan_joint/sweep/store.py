@@ -13,9 +13,13 @@ import json
 import os
 import uuid
 from pathlib import Path
+from typing import TYPE_CHECKING
 
 from .. import results
 from .spec import ACCELERATION_LIMIT, PEAKS, Case, SweepSpec
+
+if TYPE_CHECKING:
+    import pandas
 
 SETTINGS_FILE = "settings.json"
 COLUMNS = (["bend_angle_deg", "input_speed_rpm", "inertia_distribution",
@@ -78,7 +82,7 @@ class CaseStore:
                 if self._path(case).is_file()]
 
 
-def to_table(rows, spec: SweepSpec):
+def to_table(rows, spec: SweepSpec) -> "pandas.DataFrame":
     """The tidy table, in the spec's order whatever order the tasks finished in."""
     import pandas as pd
 
@@ -91,6 +95,6 @@ def to_table(rows, spec: SweepSpec):
     return table.reset_index(drop=True)
 
 
-def write_table(table, stem):
+def write_table(table, stem) -> list:
     """Write <stem>.csv, and <stem>.parquet when a Parquet engine is installed."""
     return results.write_table(table, stem)
