@@ -4,16 +4,16 @@ Every plotted number comes from co-simulating the FMU (`run`); the seeds'
 formulas appear only as reference marks drawn over the FMU's curves.
 """
 
-import math
 from pathlib import Path
 
 import numpy as np
 
+from cardan_joint import results
+from cardan_joint.plotting import pyplot  # noqa: F401 - the seed scripts import it from here
 from cardan_joint.simulate import simulate
 
 from _support import example_parser, output_folder
 
-DEG = 180.0 / math.pi
 # Dark enough on white for thin lines, distinct for up to six bend angles.
 COLORS = ("tab:blue", "tab:orange", "tab:green", "tab:red", "tab:purple", "tab:brown")
 
@@ -37,15 +37,6 @@ def run(fmu, stop_time, output_interval, output=None, **start_values):
                     start_values=start_values, output=output)
 
 
-def pyplot():
-    import matplotlib
-    matplotlib.use("Agg")
-    import matplotlib.pyplot as plt
-    plt.rcParams.update({"axes.grid": True, "grid.alpha": 0.3, "legend.fontsize": 8,
-                         "legend.framealpha": 0.9})
-    return plt
-
-
 class Outputs:
     """Writes the figures and their data, and remembers what it wrote for the summary."""
 
@@ -54,10 +45,8 @@ class Outputs:
         self.paths = []
 
     def csv(self, name, columns: dict):
-        path = self.folder / f"{name}.csv"
-        # Full double precision: the tests check the seeds' numbers to 1e-9 from these files.
-        np.savetxt(path, np.column_stack([np.asarray(c, dtype=float) for c in columns.values()]),
-                   delimiter=",", header=",".join(columns), comments="", fmt="%.17g")
+        # Round-trip precision: the tests check the seeds' numbers to 1e-9 from these files.
+        path = results.write_csv(columns, self.folder / f"{name}.csv")
         self.paths.append(path)
         return path
 

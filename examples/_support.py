@@ -1,4 +1,4 @@
-"""Plumbing shared by the examples: the command line and saving figures."""
+"""Plumbing shared by the examples: the command line (figures: cardan_joint.plotting)."""
 
 import argparse
 from pathlib import Path
@@ -18,12 +18,3 @@ def output_folder(args) -> Path:
     out = Path(args.out)
     out.mkdir(parents=True, exist_ok=True)
     return out
-
-
-def save_figure(fig, path, dpi=110):
-    import matplotlib.pyplot as plt
-
-    fig.tight_layout()
-    fig.savefig(path, dpi=dpi)
-    plt.close(fig)
-    return path

@@ -11,20 +11,21 @@ import math
 
 import numpy as np
 
+from cardan_joint import results
 from cardan_joint import variables as table
+from cardan_joint.plotting import pyplot, save_figure
 from cardan_joint.simulate import simulate
+from cardan_joint.units import RAD_PER_S_TO_RPM, RAD_TO_DEG, RPM_TO_RAD_PER_S
 
-from _support import example_parser, output_folder, save_figure
-
-RPM = math.pi / 30
+from _support import example_parser, output_folder
 
 
 def demo_inputs(stop_time=2.0, step=1e-3):
     t = np.arange(0.0, stop_time + step / 2, step)
     signal = np.zeros(len(t), dtype=[("time", float)] + [(n, float) for n in table.INPUTS])
     signal["time"] = t
-    ramp = (1500 - 300) * RPM / stop_time
-    signal["input_speed"] = 300 * RPM + ramp * t
+    ramp = (1500 - 300) * RPM_TO_RAD_PER_S / stop_time
+    signal["input_speed"] = 300 * RPM_TO_RAD_PER_S + ramp * t
     signal["input_acceleration"] = ramp
     # Bend angle 15 deg (1 - cos(pi t)): 0 -> 30 deg -> 0, with exact rate and acceleration.
     w = 2 * math.pi / stop_time
@@ -37,18 +38,15 @@ def demo_inputs(stop_time=2.0, step=1e-3):
 
 
 def plot(result, inputs, path):
-    import matplotlib
-    matplotlib.use("Agg")
-    import matplotlib.pyplot as plt
-
+    plt = pyplot()
     t = result["time"]
     fig, axes = plt.subplots(4, 1, figsize=(9, 11), sharex=True)
-    axes[0].plot(t, result["output_speed"] / RPM, lw=0.8, label="output shaft")
-    axes[0].plot(inputs["time"], inputs["input_speed"] / RPM, "k--", lw=1, label="input shaft")
+    axes[0].plot(t, result["output_speed"] * RAD_PER_S_TO_RPM, lw=0.8, label="output shaft")
+    axes[0].plot(inputs["time"], inputs["input_speed"] * RAD_PER_S_TO_RPM, "k--", lw=1, label="input shaft")
     axes[0].set_ylabel("speed [rpm]")
     axes[0].legend(loc="upper left")
     axes[0].set_title("Run-up through a Cardan joint bending 0 -> 30 -> 0 deg, 200 N.m load")
-    axes[1].plot(t, np.degrees(result["cardan_error"]), lw=0.8, color="tab:purple")
+    axes[1].plot(t, result["cardan_error"] * RAD_TO_DEG, lw=0.8, color="tab:purple")
     axes[1].set_ylabel("cardan error [deg]")
     for k, color in zip((1, 2, 3), ("tab:blue", "tab:orange", "tab:green")):
         axes[2].plot(t, result[f"crosspiece_torque_{k}"], lw=0.8, color=color, label=f"M{k}")
@@ -61,8 +59,6 @@ def plot(result, inputs, path):
     axes[3].set_xlabel("time [s]")
     axes[3].set_ylim(top=axes[3].get_ylim()[1] * 1.3)
     axes[3].legend(loc="upper left", ncol=3, fontsize=8)
-    for ax in axes:
-        ax.grid(alpha=0.3)
     save_figure(fig, path)
 
 
@@ -75,9 +71,7 @@ def main(argv=None):
     result = simulate(args.fmu, stop_time=args.stop_time, output_interval=1e-3, inputs=inputs,
                       start_values={"crosspiece_inertia_1": 0.004, "crosspiece_inertia_2": 0.004,
                                     "crosspiece_inertia_3": 0.008})
-    names = result.dtype.names
-    np.savetxt(out / "demo.csv", np.column_stack([result[n] for n in names]), delimiter=",",
-               header=",".join(names), comments="")
+    results.write_csv(result, out / "demo.csv")
     plot(result, inputs, out / "demo.png")
     swing = result["output_speed"] / np.interp(result["time"], inputs["time"], inputs["input_speed"])
     print(f"wrote {out / 'demo.csv'} ({len(result)} rows) and {out / 'demo.png'}")

@@ -11,7 +11,9 @@ the wall times and the speed-up.
     python build_fmu.py && python examples/design_sweep.py [--compare --repeat 2]
 
 Writes results/design_sweep.csv (and .parquet if pyarrow is installed) and
-results/design_sweep.png.
+results/design_sweep.png; each case is saved as it finishes in
+results/design_sweep.cases/, and running the command again after an
+interruption computes only the missing cases (--fresh to start over).
 """
 
 import sys

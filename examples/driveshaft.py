@@ -58,7 +58,6 @@ Writes results/driveshaft_steps.csv (step dependence), results/driveshaft_phase.
 (yoke phase error sweep) and results/driveshaft.png.
 """
 
-import csv
 import math
 
 import numpy as np
@@ -66,7 +65,10 @@ import numpy as np
 from cardan_joint.instance import ExtractedFMU
 from cardan_joint.physics import quantities
 
-from _support import example_parser, output_folder, save_figure
+from cardan_joint import results
+from cardan_joint.plotting import save_figure
+
+from _support import example_parser, output_folder
 
 COUPLINGS = ("lead", "hold", "angle")
 ARRANGEMENTS = {"Z": -1.0, "W": 1.0}       # sign of joint 2's bend angle
@@ -183,14 +185,6 @@ def phase_table(fmu, bend_angle, input_speed, step, revolutions, errors_deg):
     return rows
 
 
-def write_csv(rows, path):
-    fields = list(dict.fromkeys(key for row in rows for key in row))
-    with open(path, "w", newline="") as stream:
-        writer = csv.DictWriter(stream, fieldnames=fields)
-        writer.writeheader()
-        writer.writerows(rows)
-
-
 def plot(steps_rows, phase_rows, bend_angle, input_speed, phase_step, path):
     import matplotlib
     matplotlib.use("Agg")
@@ -258,8 +252,8 @@ def main(argv=None):
         steps_rows = step_table(fmu, bend, speed, args.steps, args.revolutions)
         phase_rows = phase_table(fmu, bend, speed, args.phase_step, args.revolutions,
                                  args.phase_errors)
-    write_csv(steps_rows, out / "driveshaft_steps.csv")
-    write_csv(phase_rows, out / "driveshaft_phase.csv")
+    results.write_rows(steps_rows, out / "driveshaft_steps.csv")
+    results.write_rows(phase_rows, out / "driveshaft_phase.csv")
     plot(steps_rows, phase_rows, bend, speed, args.phase_step, out / "driveshaft.png")
 
     print(f"Driveshaft, equal bend angles {args.bend_angle:g} deg, omega1 = {speed:g} rad/s, "

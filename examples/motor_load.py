@@ -21,7 +21,10 @@ import numpy as np
 
 from cardan_joint.simulate import DEFAULT_FMU
 
-from _support import example_parser, output_folder, save_figure
+from cardan_joint import results
+from cardan_joint.plotting import save_figure
+
+from _support import example_parser, output_folder
 
 DEFAULTS = dict(bend_angle=math.radians(30.0), yoke_phase=0.0, inertia=(0.004, 0.004, 0.008),
                 J_motor=0.05, J_load=0.5, motor_torque=60.0, external_torque=10.0,
@@ -138,9 +141,7 @@ def main(argv=None):
     args = parser.parse_args(argv)
     out = output_folder(args)
     rows = run(args.fmu, args.stop_time, args.step)
-    names = list(rows)
-    np.savetxt(out / "motor_load.csv", np.column_stack([rows[n] for n in names]), delimiter=",",
-               header=",".join(names), comments="")
+    results.write_csv(rows, out / "motor_load.csv")
     plot(rows, DEFAULTS, out / "motor_load.png")
     t1, tl = rows["input_torque"][-200:], rows["load_torque"][-200:]
     print(f"wrote {out / 'motor_load.csv'} and {out / 'motor_load.png'}")

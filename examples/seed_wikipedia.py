@@ -14,7 +14,9 @@ import math
 
 import numpy as np
 
-from _seed_support import COLORS, DEG, Outputs, parse_args, pyplot, run
+from cardan_joint.units import RAD_TO_DEG
+
+from _seed_support import COLORS, Outputs, parse_args, pyplot, run
 
 BENDS_DEG = (0, 10, 20, 30, 40, 50)
 INPUT_SPEED = 1.0     # rad/s, so omega2 reads as the speed ratio and time as gamma1
@@ -60,7 +62,7 @@ def main(argv=None):
         ("output_speed", "output shaft speed $\\omega_2$ [rad/s]", wikipedia_speed, 1.0,
          "Output speed vs input angle, $\\omega_1$ = 1 rad/s (Wikipedia, UJoint1)",
          "Wikipedia: $\\omega_1\\cos\\beta/(1-\\sin^2\\beta\\cos^2\\gamma_1)$"),
-        ("output_angle", "output shaft angle $\\gamma_2$ [deg]", wikipedia_angle, DEG,
+        ("output_angle", "output shaft angle $\\gamma_2$ [deg]", wikipedia_angle, RAD_TO_DEG,
          "Output angle vs input angle (Wikipedia, UJoint2)",
          "Wikipedia: atan2(sin $\\gamma_1$, cos $\\beta$ cos $\\gamma_1$)"),
         ("output_acceleration", "output shaft acceleration $a_2$ [rad/s$^2$]",
@@ -72,9 +74,9 @@ def main(argv=None):
     for field, ylabel, formula, scale, title, reference_label in figures:
         fig, ax = plt.subplots(figsize=(8, 5.2))
         for (bend_deg, r), color in zip(runs.items(), COLORS):
-            ax.plot(r["input_angle"] * DEG, r[field] * scale, color=color, lw=1.4,
+            ax.plot(r["input_angle"] * RAD_TO_DEG, r[field] * scale, color=color, lw=1.4,
                     label=f"FMU, $\\beta$ = {bend_deg}°")
-            ax.plot(marks * DEG, formula(marks, math.radians(bend_deg)) * scale, "k.", ms=4,
+            ax.plot(marks * RAD_TO_DEG, formula(marks, math.radians(bend_deg)) * scale, "k.", ms=4,
                     label=reference_label if bend_deg == BENDS_DEG[-1] else None)
         ax.set_xlabel("input shaft angle $\\gamma_1$ [deg]")
         ax.set_ylabel(ylabel)

@@ -1,11 +1,14 @@
 """The `cardan-joint` command, run as a user runs it (separate processes)."""
 
-import csv
 import subprocess
 import sys
 from pathlib import Path
 
+import numpy as np
 import pytest
+
+from cardan_joint import cli, results
+from cardan_joint import variables as table
 
 ROOT = Path(__file__).resolve().parents[1]
 
@@ -26,8 +29,7 @@ def built_fmu(tmp_path_factory):
 
 
 def read_rows(path):
-    with open(path, newline="") as stream:
-        return list(csv.DictReader(stream))
+    return results.read_csv(path)
 
 
 def test_console_script_is_installed():
@@ -97,6 +99,82 @@ def test_sweep_subcommand_runs_the_shared_sweep(built_fmu, tmp_path):
                        "--speeds", "1000", "--distributions", "T1", "--revolutions", "1",
                        "--steps-per-revolution", "36", "--out", tmp_path, "--no-progress")
     assert run.returncode == 0, run.stderr
-    rows = read_rows(tmp_path / "design_sweep.csv")
-    assert [r["status"] for r in rows] == ["ok"]
-    assert (tmp_path / "design_sweep.png").stat().st_size > 0
+    rows = results.read_table(tmp_path / "sweep.csv")         # the CLI's own name
+    assert list(rows["status"]) == ["ok"]
+    assert (tmp_path / "sweep.png").stat().st_size > 0
+    assert not (tmp_path / "design_sweep.csv").exists()       # the example's is left alone
+
+
+def test_a_refused_run_writes_what_it_computed_and_says_where_it_stopped(built_fmu, tmp_path):
+    inputs = tmp_path / "bend_ramp.csv"          # the bend reaches the 80 deg guard at 0.4 s
+    inputs.write_text("time,bend_angle,bend_angle_rate\n0,1.0,1\n1,2.0,1\n")
+    out = tmp_path / "refused.csv"
+    run = cardan_joint("simulate", "--fmu", built_fmu, "--input", inputs, "--step", "0.1",
+                       "--output", out)
+    assert run.returncode == 1
+    assert "stopped at t = 0.3 s of 1 s" in run.stderr        # rounded, not 0.30000000000000004
+    assert f"{out} (" in run.stderr and "Traceback" not in run.stderr
+    rows = read_rows(out)
+    assert rows["time"][-1] == pytest.approx(0.3) and len(rows) >= 4
+    assert out.with_suffix(".png").stat().st_size > 0
+
+
+def test_an_overwritten_output_is_named_as_replaced(built_fmu, tmp_path):
+    out = tmp_path / "again.csv"
+    args = ("simulate", "--fmu", built_fmu, "--stop-time", "0.01", "--output", out)
+    assert "(replaced)" not in cardan_joint(*args).stdout
+    assert f"{out} (replaced)" in cardan_joint(*args).stdout
+
+
+def test_every_option_has_help():
+    from cardan_joint import sweep
+
+    for parser in (cli._parser(), _sweep_parser(sweep)):
+        for action in _actions(parser):
+            assert action.help, f"{action.option_strings} has no help"
+
+
+def _sweep_parser(sweep):
+    import argparse
+
+    parser = argparse.ArgumentParser()
+    sweep.add_arguments(parser)
+    return parser
+
+
+def _actions(parser):
+    import argparse
+
+    for action in parser._actions:
+        if isinstance(action, argparse._SubParsersAction):
+            for sub in action.choices.values():
+                yield from _actions(sub)
+        elif action.option_strings:
+            yield action
+
+
+def test_the_command_leaves_argv_and_stderr_alone(built_fmu, tmp_path, monkeypatch):
+    """Run in-process, as a host would: no redirection or argv rewrite while it works."""
+    import cardan_joint.build
+    import cardan_joint.simulate
+
+    argv0, stderr = sys.argv[0], sys.stderr
+    seen = []
+
+    def fake_simulate(fmu, stop_time, output_interval, inputs, **options):
+        seen.append((sys.argv[0], sys.stderr))
+        result = np.zeros(2, dtype=[("time", float)] + [(n, float) for n in
+                                                         table.INPUTS + table.OUTPUTS])
+        result["time"] = (0.0, stop_time)
+        return result
+
+    def fake_build(argv):
+        seen.append((sys.argv[0], sys.stderr))
+        return 0
+
+    monkeypatch.setattr(cardan_joint.simulate, "simulate", fake_simulate)
+    monkeypatch.setattr(cardan_joint.build, "main", fake_build)
+    assert cli.main(["simulate", "--fmu", str(built_fmu), "--stop-time", "0.1",
+                     "--output", str(tmp_path / "s.csv"), "--no-progress"]) == 0
+    assert cli.main(["build", "--dest", str(tmp_path)]) == 0
+    assert seen == [(argv0, stderr)] * 2

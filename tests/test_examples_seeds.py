@@ -14,6 +14,8 @@ from pathlib import Path
 import numpy as np
 import pytest
 
+from cardan_joint import results
+
 ROOT = Path(__file__).resolve().parents[1]
 FIGURES = {
     "seed_wikipedia": ["seed_wikipedia_output_speed", "seed_wikipedia_output_angle",
@@ -48,7 +50,7 @@ def seed_runs(fmu_path, tmp_path_factory):
 
 
 def table(out: Path, name: str) -> np.ndarray:
-    return np.genfromtxt(out / f"{name}.csv", delimiter=",", names=True)
+    return results.read_csv(out / f"{name}.csv")
 
 
 @pytest.mark.parametrize("script", list(FIGURES))

@@ -6,6 +6,8 @@ from pathlib import Path
 
 import numpy as np
 
+from cardan_joint import results
+
 from reference.multibody import simulate_multibody
 
 ROOT = Path(__file__).resolve().parents[1]
@@ -40,5 +42,5 @@ def test_example_runs_from_the_command_line(fmu_path, tmp_path):
                             capture_output=True, text=True, timeout=300)
     assert result.returncode == 0, result.stderr
     assert (tmp_path / "motor_load.png").stat().st_size > 20_000
-    data = np.genfromtxt(tmp_path / "motor_load.csv", delimiter=",", names=True)
+    data = results.read_csv(tmp_path / "motor_load.csv")
     assert len(data) == 201 and np.all(np.isfinite(data["input_torque"]))

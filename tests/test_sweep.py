@@ -73,3 +73,28 @@ def test_table_and_heatmap_are_written(serial, tmp_path):
     assert written[0].name == "tiny.csv" and written[0].stat().st_size > 0
     sweep.plot_heatmaps(serial, TINY, tmp_path / "tiny.png")
     assert (tmp_path / "tiny.png").stat().st_size > 0
+
+
+def test_cell_edges_lie_halfway_between_uneven_grid_values():
+    np = pytest.importorskip("numpy")
+    assert sweep.cell_edges([1, 2, 3, 4, 6, 8, 30]).tolist() == [0.5, 1.5, 2.5, 3.5, 5, 7, 19,
+                                                                 41]
+    assert sweep.cell_edges([10]).tolist() == [9.5, 10.5]
+    assert np.all(np.diff(sweep.cell_edges([500, 1000, 4000])) > 0)
+
+
+def test_the_heatmap_spaces_an_uneven_bend_axis_truthfully(monkeypatch, tmp_path):
+    """Each cell spans its bend angle's true interval on a linear degree axis."""
+    from matplotlib.collections import QuadMesh
+
+    uneven = sweep.SweepSpec(bend_angles_deg=(1.0, 2.0, 10.0), input_speeds_rpm=(1000.0,),
+                             distributions=("T1",))
+    table = sweep.to_table([{"bend_angle_deg": b, "input_speed_rpm": 1000.0,
+                             "inertia_distribution": "T1", "status": "ok",
+                             "peak_output_acceleration": 10.0 * b, "peak_crosspiece_torque": b}
+                            for b in (1.0, 2.0, 10.0)], uneven)
+    figures = []
+    monkeypatch.setattr(sweep.heatmap, "save_figure", lambda fig, path, dpi: figures.append(fig))
+    sweep.plot_heatmaps(table, uneven, tmp_path / "uneven.png")
+    mesh = next(c for c in figures[0].axes[0].collections if isinstance(c, QuadMesh))
+    assert mesh.get_coordinates()[0, :, 0].tolist() == [0.5, 1.5, 6.0, 14.0]

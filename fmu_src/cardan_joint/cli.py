@@ -7,23 +7,27 @@
 
 Every failure a user can cause (an unknown variable, a malformed CSV, a step
 the FMU refuses, a missing FMU) ends in a one-paragraph message on stderr and
-a non-zero exit status, never a traceback.
+a non-zero exit status, never a traceback; a refused run still writes what it
+computed up to the refusal. The command changes no process-wide state (no
+stderr redirection, sys.argv as it found it): main() can run inside a host.
 """
 
 import argparse
-import contextlib
-import csv
-import io
 import math
 import sys
 from pathlib import Path
 
+from . import results
 from . import variables as table
 
 PROG = "cardan-joint"
 DEFAULT_PLOT_VARIABLES = ("output_speed", "output_acceleration", "cardan_error", "input_torque")
 # Runs with fewer steps finish before a progress bar would help.
 PROGRESS_MIN_STEPS = 20_000
+# Each command writes under its own name: a command never overwrites the files
+# of another command or of an example (results/demo.csv, results/design_sweep.*).
+DEFAULT_OUTPUT = "results/simulate.csv"
+SWEEP_NAME = "sweep"
 
 
 class UsageError(Exception):
@@ -64,34 +68,20 @@ def read_input_csv(path):
     """A CSV with a `time` column and input-name columns -> FMPy's structured array."""
     import numpy as np
 
-    path = Path(path)
-    if not path.is_file():
-        raise UsageError(f"input file {path} does not exist")
-    with open(path, newline="") as stream:
-        rows = [row for row in csv.reader(stream) if row and any(cell.strip() for cell in row)]
-    if not rows:
-        raise UsageError(f"{path} is empty")
-    header = [cell.strip() for cell in rows[0]]
+    try:
+        signal = results.read_csv(path)
+    except results.ResultFileError as error:
+        raise UsageError(f"input file {error}") from None
+    header = list(signal.dtype.names)
     if "time" not in header:
         raise UsageError(f"{path}: no 'time' column (columns: {', '.join(header)})")
     for name in header:
         if name != "time" and _settable_kind(name, f"{path}, column {name!r}") != "input":
             raise UsageError(f"{path}, column {name!r}: a parameter is fixed for the run; "
                              f"set it with --set {name}=VALUE")
-    if len(set(header)) != len(header):
-        raise UsageError(f"{path}: a column name appears twice")
-    signal = np.zeros(len(rows) - 1, dtype=[(name, float) for name in header])
-    for line, row in enumerate(rows[1:], start=2):
-        if len(row) != len(header):
-            raise UsageError(f"{path}, line {line}: {len(row)} values for {len(header)} columns")
-        for name, cell in zip(header, row):
-            try:
-                signal[line - 2][name] = float(cell)
-            except ValueError:
-                raise UsageError(f"{path}, line {line}, column {name!r}: {cell.strip()!r} is "
-                                 f"not a number") from None
-    if len(signal) < 1:
-        raise UsageError(f"{path} has a header but no rows")
+    for name in header:
+        if not np.all(np.isfinite(signal[name])):
+            raise UsageError(f"{path}, column {name!r}: every value must be a finite number")
     times = signal["time"]
     if not np.all(np.isfinite(times)) or np.any(np.diff(times) < 0):
         raise UsageError(f"{path}: the time column must be finite and non-decreasing")
@@ -127,49 +117,48 @@ def _start_values(fmu):
 
 # --- simulate: output -------------------------------------------------------
 
-def write_result_csv(result, path):
-    path = Path(path)
-    path.parent.mkdir(parents=True, exist_ok=True)
-    with open(path, "w", newline="") as stream:
-        writer = csv.writer(stream)
-        writer.writerow(result.dtype.names)
-        writer.writerows((repr(float(x)) for x in row) for row in result)
+def _written(path: Path, existed: bool) -> str:
+    return f"{path} (replaced)" if existed else str(path)
 
 
-def plot_result(result, names, path, title):
-    import matplotlib
-    matplotlib.use("Agg")
-    import matplotlib.pyplot as plt
+def write_outputs(result, output: Path, plot: Path, names, title) -> str:
+    """Write the result CSV and its plot; say which files existed before."""
+    existed = {p: p.exists() for p in (output, plot)}
+    results.write_csv(result, output)
+    if len(result):
+        from .plotting import plot_time_series
 
-    fig, axes = plt.subplots(len(names), 1, figsize=(9, 2.2 + 2.0 * len(names)), sharex=True,
-                             squeeze=False)
-    for ax, name in zip(axes[:, 0], names):
-        ax.plot(result["time"], result[name], lw=0.9)
-        ax.set_ylabel(f"{name}\n[{table.BY_NAME[name].unit}]", fontsize=8)
-        ax.grid(alpha=0.3)
-    axes[0, 0].set_title(title, fontsize=9)
-    axes[-1, 0].set_xlabel("time [s]")
-    fig.tight_layout()
-    fig.savefig(path, dpi=100)
-    plt.close(fig)
+        plot_time_series(result, names, plot, title)
+        return f"{_written(output, existed[output])} ({len(result)} rows) and " \
+               f"{_written(plot, existed[plot])}"
+    return f"{_written(output, existed[output])} (no rows)"
 
 
 def _progress_callback(stop_time, step, show):
     if not show:
         return None, None
-    from .sweep import TextProgress
+    from tqdm import tqdm
 
-    bar = TextProgress(max(1, round(stop_time / step)), "simulate ")
+    bar = tqdm(total=max(1, round(stop_time / step)), desc="simulate", unit="step")
 
     def step_finished(time, recorder):
-        bar.update(round(time / step) - bar.done)
+        bar.update(round(time / step) - bar.n)
         return True
 
     return step_finished, bar
 
 
+def _refusal(error, stop_time) -> str:
+    """Where a refused run stopped, rounded, and the FMU's reasons."""
+    reached = float(error.result["time"][-1]) if len(error.result) else 0.0
+    reasons = [text for status, _, text in error.messages
+               if status in ("discard", "error", "fatal")] or ["(the FMU gave no reason)"]
+    return (f"the FMU refused a step: stopped at t = {reached:.6g} s of {stop_time:.6g} s\n  "
+            + "\n  ".join(reasons))
+
+
 def simulate_command(args):
-    from .simulate import simulate
+    from .simulate import SimulationError, simulate
 
     fmu = Path(args.fmu)
     if not fmu.is_file():
@@ -192,26 +181,23 @@ def simulate_command(args):
     steps = round(stop_time / step)
     show = not args.no_progress and (args.progress or steps >= PROGRESS_MIN_STEPS)
     step_finished, bar = _progress_callback(stop_time, step, show)
-    # The FMU repeats its refusals on stderr; the error message below already
-    # carries them, so they are shown only when the run succeeds (warnings).
-    fmu_messages = io.StringIO()
+    output = Path(args.output)
+    plot = Path(args.plot) if args.plot else output.with_suffix(".png")
+    title = f"{fmu.name}: {steps} steps of {step:.6g} s"
     try:
-        with contextlib.redirect_stderr(fmu_messages):
-            result = simulate(fmu, stop_time=stop_time, output_interval=step, inputs=signal,
-                              start_values=parameters,
-                              output=list(table.INPUTS + table.OUTPUTS),
-                              step_finished=step_finished)
+        result = simulate(fmu, stop_time=stop_time, output_interval=step, inputs=signal,
+                          start_values=parameters, output=list(table.INPUTS + table.OUTPUTS),
+                          step_finished=step_finished)
+    except SimulationError as error:
+        written = write_outputs(error.result, output, plot, args.plot_variables,
+                                f"{title} (refused)")
+        print(f"{PROG} simulate: {_refusal(error, stop_time)}\n"
+              f"wrote the run up to the refusal: {written}", file=sys.stderr)
+        return 1
     finally:
         if bar:
             bar.close()
-    sys.stderr.write(fmu_messages.getvalue())
-    output = Path(args.output)
-    plot = Path(args.plot) if args.plot else output.with_suffix(".png")
-    write_result_csv(result, output)
-    plot.parent.mkdir(parents=True, exist_ok=True)
-    plot_result(result, args.plot_variables, plot,
-                f"{fmu.name}: {steps} steps of {step:g} s")
-    print(f"wrote {output} ({len(result)} rows) and {plot}")
+    print(f"wrote {write_outputs(result, output, plot, args.plot_variables, title)}")
     return 0
 
 
@@ -242,8 +228,9 @@ def _parser():
                      help="[s] (default: the CSV's last time, else the FMU's default experiment)")
     run.add_argument("--step", type=float, default=1e-3,
                      help="communication step [s] (default %(default)s)")
-    run.add_argument("--output", default="results/simulation.csv",
-                     help="output CSV (default %(default)s)")
+    run.add_argument("--output", default=DEFAULT_OUTPUT,
+                     help="output CSV (default %(default)s; an existing file is replaced, "
+                          "and the command says so)")
     run.add_argument("--plot", default=None, help="plot PNG (default: the output CSV's name, .png)")
     run.add_argument("--plot-variables", nargs="+", default=list(DEFAULT_PLOT_VARIABLES),
                      metavar="NAME", help="variables to plot (default: %(default)s)")
@@ -251,7 +238,7 @@ def _parser():
     progress.add_argument("--progress", action="store_true",
                           help=f"always show a progress bar (default: from {PROGRESS_MIN_STEPS} "
                                "steps on)")
-    progress.add_argument("--no-progress", action="store_true")
+    progress.add_argument("--no-progress", action="store_true", help="no progress bar")
     return parser
 
 
@@ -262,16 +249,10 @@ def main(argv=None) -> int:
     try:
         if args.command == "build":
             from .build import main as build_main
-            # build.main's parser names itself after argv[0]: make its usage
-            # line read as this subcommand.
-            program, sys.argv[0] = sys.argv[0], f"{PROG} build"
-            try:
-                return build_main(rest)
-            finally:
-                sys.argv[0] = program
+            return build_main(rest)
         if args.command == "sweep":
             from .sweep import main as sweep_main
-            return sweep_main(rest, prog=f"{PROG} sweep")
+            return sweep_main(rest, prog=f"{PROG} sweep", default_name=SWEEP_NAME)
         if rest:
             parser.error(f"unrecognized arguments: {' '.join(rest)}")
         return simulate_command(args)
@@ -282,11 +263,7 @@ def main(argv=None) -> int:
         print(f"{PROG} {args.command}: interrupted", file=sys.stderr)
         return 130
     except Exception as error:       # noqa: BLE001 - the user gets a message, not a traceback
-        from .simulate import SimulationError
-
-        what = "the FMU refused a step" if isinstance(error, SimulationError) else \
-            type(error).__name__
-        print(f"{PROG} {args.command}: {what}: {error}", file=sys.stderr)
+        print(f"{PROG} {args.command}: {type(error).__name__}: {error}", file=sys.stderr)
         return 1
 
 

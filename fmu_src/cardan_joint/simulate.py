@@ -8,9 +8,9 @@ the run did not reach its stop time.
 """
 
 import warnings
+from collections import Counter
 from pathlib import Path
 
-import numpy as np
 
 DEFAULT_FMU = Path("dist") / "UniversalJoint.fmu"
 _STATUS = {0: "ok", 1: "warning", 2: "discard", 3: "error", 4: "fatal", 5: "pending"}
@@ -25,15 +25,6 @@ class SimulationError(RuntimeError):
         self.result = result
 
 
-def inputs_from_constants(constants: dict, stop_time: float) -> np.ndarray:
-    """A structured input signal holding each value constant over [0, stop_time]."""
-    signal = np.zeros(2, dtype=[("time", float)] + [(name, float) for name in constants])
-    signal["time"] = (0.0, stop_time)
-    for name, value in constants.items():
-        signal[name] = value
-    return signal
-
-
 def simulate(fmu=DEFAULT_FMU, stop_time=None, output_interval=None, inputs=None,
              start_values=None, output=None, **fmpy_options):
     """Co-simulate the FMU; return FMPy's structured result array.
@@ -44,14 +35,19 @@ def simulate(fmu=DEFAULT_FMU, stop_time=None, output_interval=None, inputs=None,
     """
     from fmpy import read_model_description, simulate_fmu
 
+    from .inputs import complete_inputs
+
     fmu = str(fmu)
     if not Path(fmu).exists():
         raise FileNotFoundError(f"{fmu} does not exist: build it with `python build_fmu.py`")
-    experiment = read_model_description(fmu).defaultExperiment
+    description = read_model_description(fmu)
+    experiment = description.defaultExperiment
     stop_time = float(experiment.stopTime) if stop_time is None else stop_time
     output_interval = (float(experiment.stepSize) if output_interval is None else output_interval)
-    if isinstance(inputs, dict):
-        inputs = inputs_from_constants(inputs, stop_time)
+    if inputs is not None:
+        starts = {v.name: float((start_values or {}).get(v.name, v.start))
+                  for v in description.modelVariables if v.causality == "input"}
+        inputs = complete_inputs(inputs, starts, stop_time, output_interval)   # FMPy warns otherwise
 
     messages = []
 
@@ -69,7 +65,9 @@ def simulate(fmu=DEFAULT_FMU, stop_time=None, output_interval=None, inputs=None,
             "(the FMU gave no reason)"
         raise SimulationError(f"the FMU stopped at t = {reached!r} s of {stop_time!r} s:\n  {detail}",
                               messages, result)
-    for status, _, text in messages:
-        if status == "warning":
-            warnings.warn(f"UniversalJoint: {text}", RuntimeWarning, stacklevel=2)
+    # One warning per distinct message, however often and in whatever order it came.
+    repeats = Counter(text for status, _, text in messages if status == "warning")
+    for text, count in repeats.items():
+        suffix = f" ({count} times)" if count > 1 else ""
+        warnings.warn(f"UniversalJoint: {text}{suffix}", RuntimeWarning, stacklevel=2)
     return result

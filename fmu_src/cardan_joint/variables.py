@@ -10,8 +10,16 @@ import math
 from dataclasses import dataclass
 from typing import Optional
 
-DEG = 180.0 / math.pi
-RPM = 30.0 / math.pi
+# Conversion factors, named for their direction (X_TO_Y multiplies a value in X
+# into Y). Defined here because the FMU ships this file (build.RUNTIME), and the
+# display units below need them; everyone else imports them from `units`.
+RAD_TO_DEG = 180.0 / math.pi
+DEG_TO_RAD = math.pi / 180.0
+RAD_PER_S_TO_RPM = 30.0 / math.pi
+RPM_TO_RAD_PER_S = math.pi / 30.0
+# physics/model.py (owned by the physics package) still reads `table.DEG`:
+# kept as an alias of RAD_TO_DEG until it imports cardan_joint.units itself.
+DEG = RAD_TO_DEG
 
 
 @dataclass(frozen=True)
@@ -22,9 +30,9 @@ class Unit:
 
 
 UNITS = {u.name: u for u in (
-    Unit("rad", (("rad", 1),), (("deg", DEG),)),
-    Unit("rad/s", (("rad", 1), ("s", -1)), (("rpm", RPM), ("deg/s", DEG))),
-    Unit("rad/s2", (("rad", 1), ("s", -2)), (("rpm/s", RPM), ("deg/s2", DEG))),
+    Unit("rad", (("rad", 1),), (("deg", RAD_TO_DEG),)),
+    Unit("rad/s", (("rad", 1), ("s", -1)), (("rpm", RAD_PER_S_TO_RPM), ("deg/s", RAD_TO_DEG))),
+    Unit("rad/s2", (("rad", 1), ("s", -2)), (("rpm/s", RAD_PER_S_TO_RPM), ("deg/s2", RAD_TO_DEG))),
     Unit("N.m", (("kg", 1), ("m", 2), ("s", -2))),
     Unit("kg.m2", (("kg", 1), ("m", 2))),
     Unit("J", (("kg", 1), ("m", 2), ("s", -2))),
@@ -95,7 +103,7 @@ VARIABLES = (
     Variable("crosspiece_inertia_3", _PAR, "kg.m2", "Crosspiece principal moment of inertia "
              "about the normal of the cross", 0.026, None, 0.0, 1e6),
     Variable("max_bend_angle", _PAR, "rad", "Largest |bend angle| accepted; a step reaching "
-             "it is refused (the joint locks at 90 deg)", 80.0 / DEG, "deg", 0.0, HALF_PI),
+             "it is refused (the joint locks at 90 deg)", 80.0 * DEG_TO_RAD, "deg", 0.0, HALF_PI),
     # Outputs.
     Variable("input_angle", _OUT, "rad", "Input shaft angle gamma1", display_unit="deg"),
     Variable("output_angle", _OUT, "rad", "Output shaft angle gamma2 = gamma1 + cardan error "

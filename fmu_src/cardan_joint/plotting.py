@@ -1,0 +1,56 @@
+"""One plotting style for the examples and the command line.
+
+Variables are plotted in their display units (the variable table's: deg, rpm,
+rpm/s, ...), so a figure from `cardan-joint simulate` reads like the examples'.
+"""
+
+from pathlib import Path
+from typing import Sequence
+
+from . import variables as table
+
+
+def pyplot():
+    """matplotlib.pyplot on the file-only Agg backend, with the project's style."""
+    import matplotlib
+    matplotlib.use("Agg")
+    import matplotlib.pyplot as plt
+
+    plt.rcParams.update({"axes.grid": True, "grid.alpha": 0.3, "legend.fontsize": 8,
+                         "legend.framealpha": 0.9})
+    return plt
+
+
+def save_figure(fig, path, dpi=110) -> Path:
+    """Lay out, write and close a figure (its folder created); returns the path."""
+    import matplotlib.pyplot as plt
+
+    path = Path(path)
+    path.parent.mkdir(parents=True, exist_ok=True)
+    fig.tight_layout()
+    fig.savefig(path, dpi=dpi)
+    plt.close(fig)
+    return path
+
+
+def display(name: str):
+    """(factor, unit): a variable's SI value times factor is its value in its display unit."""
+    variable = table.BY_NAME[name]
+    if variable.display_unit:
+        factors = dict(table.UNITS[variable.unit].display)
+        return factors[variable.display_unit], variable.display_unit
+    return 1.0, variable.unit
+
+
+def plot_time_series(result, names: Sequence[str], path, title: str) -> Path:
+    """One panel per variable over time, in display units."""
+    plt = pyplot()
+    fig, axes = plt.subplots(len(names), 1, figsize=(9, 2.2 + 2.0 * len(names)), sharex=True,
+                             squeeze=False)
+    for ax, name in zip(axes[:, 0], names):
+        factor, unit = display(name)
+        ax.plot(result["time"], result[name] * factor, lw=0.9)
+        ax.set_ylabel(f"{name}\n[{unit}]", fontsize=8)
+    axes[0, 0].set_title(title, fontsize=9)
+    axes[-1, 0].set_xlabel("time [s]")
+    return save_figure(fig, path, dpi=100)
