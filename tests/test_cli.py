@@ -168,7 +168,7 @@ def test_the_command_leaves_argv_and_stderr_alone(built_fmu, tmp_path, monkeypat
         result["time"] = (0.0, stop_time)
         return result
 
-    def fake_build(argv):
+    def fake_build(argv, prog=None):
         seen.append((sys.argv[0], sys.stderr))
         return 0
 

@@ -249,7 +249,7 @@ def main(argv=None) -> int:
     try:
         if args.command == "build":
             from .build import main as build_main
-            return build_main(rest)
+            return build_main(rest, prog=f"{PROG} build")
         if args.command == "sweep":
             from .sweep import main as sweep_main
             return sweep_main(rest, prog=f"{PROG} sweep", default_name=SWEEP_NAME)

@@ -93,14 +93,14 @@ def reference() -> np.ndarray:
 
 def write_reference_files(folder: str | Path) -> list[Path]:
     """Write <MODEL>_in.csv, <MODEL>_ref.opt and <MODEL>_ref.csv into `folder`."""
-    from fmpy.util import write_csv
+    from .results import write_csv
 
     folder = Path(folder)
     folder.mkdir(parents=True, exist_ok=True)
     paths = [folder / f"{MODEL}_in.csv", folder / f"{MODEL}_ref.opt", folder / f"{MODEL}_ref.csv"]
-    write_csv(str(paths[0]), inputs())
+    write_csv(inputs(), paths[0])
     paths[1].write_text("".join(f"{key}, {value!r}\n" for key, value in OPTIONS.items()))
-    write_csv(str(paths[2]), reference())
+    write_csv(reference(), paths[2])
     return paths
 
 
