@@ -58,7 +58,7 @@ def _check_start_values(start_values: dict) -> dict:
     joint = CardanJoint(**values)
     problem = joint.parameter_problem() or joint.input_problem()
     if problem:
-        raise BuildError(f"invalid start values: {problem}")
+        raise BuildError(f"invalid start values: {problem.text}")
     return values
 
 

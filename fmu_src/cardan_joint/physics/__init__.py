@@ -11,11 +11,12 @@ from .model import CardanJoint
 from .quantities import (cardan_error, crosspiece_angular_velocity, crosspiece_quaternion,
                          degree_of_unevenness, max_cardan_error, output_acceleration,
                          output_angle, output_speed, roll_angle, speed_ratio)
+from .refusal import Reason, Refusal
 from .response import JointResponse, joint_response
 from .revolutions import RevolutionAngle, advance, split_angle
 
 __all__ = [
-    "CardanJoint", "JointResponse", "RevolutionAngle", "advance", "cardan_error",
+    "CardanJoint", "JointResponse", "Reason", "Refusal", "RevolutionAngle", "advance", "cardan_error",
     "crosspiece_angular_velocity", "crosspiece_quaternion", "degree_of_unevenness",
     "joint_response", "max_cardan_error", "output_acceleration", "output_angle",
     "output_speed", "roll_angle", "speed_ratio", "split_angle",
