@@ -87,8 +87,8 @@ class CardanJoint:
             return problem
         guard = self.max_bend_angle
         if not 0.0 < guard < table.HALF_PI:
-            return Refusal(Reason.BEND_GUARD, "max_bend_angle", guard,
-                           crossed_limit(guard, 0.0, table.HALF_PI), self.time, "rad")
+            limit = 0.0 if guard <= 0.0 else table.HALF_PI
+            return Refusal(Reason.BEND_GUARD, "max_bend_angle", guard, limit, self.time, "rad")
         return None
 
     # --- stepping ----------------------------------------------------------

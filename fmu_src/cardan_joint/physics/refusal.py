@@ -27,10 +27,9 @@ class Reason(str, Enum):
     SPEED_OVERFLOW = "speed_overflow"                # input speed beyond its range at step end
 
 
-_BEND = ("input bend_angle = {value} rad ({value:deg} deg){where} is not below the limit "
-         "max_bend_angle = {limit} rad ({limit:deg} deg)")
-_THROUGH = (" through bend_angle_rate = {bend_angle_rate} rad/s and bend_angle_acceleration = "
-            "{bend_angle_acceleration} rad/s2)")
+_LIMIT = "max_bend_angle = {limit} rad ({limit:deg} deg)"
+_IN_STEP = (" with bend_angle_rate = {bend_angle_rate} rad/s and bend_angle_acceleration = "
+            "{bend_angle_acceleration} rad/s2: not below the limit " + _LIMIT)
 _OVERFLOW = ("input_speed = {input_speed} rad/s with input_acceleration = {input_acceleration} "
              "rad/s2 over a step of {step_size} s overflows: ")
 _TEMPLATES = {
@@ -38,11 +37,12 @@ _TEMPLATES = {
                        "(limit {limit} {unit})",
     Reason.OUT_OF_RANGE: "{kind} {variable} = {value} {unit} is outside its range "
                          "[{low}, {high}] {unit} (limit {limit} {unit})",
-    Reason.BEND_ANGLE: _BEND.replace("{where}", ""),
-    Reason.BEND_AT_STEP_END: _BEND.replace("{where}", " (at the end of the step, {after} s on,"
-                                           + _THROUGH),
-    Reason.BEND_PEAK_IN_STEP: _BEND.replace("{where}", " (peaking {after} s into the step,"
-                                            + _THROUGH),
+    Reason.BEND_ANGLE: "input bend_angle = {value} rad ({value:deg} deg) is not below the limit "
+                       + _LIMIT,
+    Reason.BEND_AT_STEP_END: "input bend_angle reaches {value} rad ({value:deg} deg) at the end "
+                             "of the step, {after} s on," + _IN_STEP,
+    Reason.BEND_PEAK_IN_STEP: "input bend_angle peaks at {value} rad ({value:deg} deg) {after} s "
+                              "into the step," + _IN_STEP,
     Reason.BEND_GUARD: "parameter max_bend_angle = {value} rad ({value:deg} deg) must lie "
                        "strictly between 0 and pi/2 (90 deg, where the joint locks; "
                        "limit {limit} rad)",
