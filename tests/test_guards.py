@@ -102,6 +102,12 @@ def test_a_bend_angle_at_the_guard_is_refused_and_its_outputs_marked_invalid():
 
 
 @pytest.mark.parametrize("sign", [1.0, -1.0])
+def test_a_bend_angle_beyond_the_guard_is_refused_even_if_it_returns_within_the_step(sign):
+    joint = CardanJoint(bend_angle=sign * 1.5, bend_angle_rate=-sign * 20.0)
+    assert refused(joint, 0.01, Reason.BEND_ANGLE, "bend_angle").value == sign * 1.5
+
+
+@pytest.mark.parametrize("sign", [1.0, -1.0])
 def test_a_bend_angle_reaching_the_guard_at_the_step_end_is_refused(sign):
     joint = CardanJoint(bend_angle=sign * 1.3, bend_angle_rate=sign * 20.0)
     refusal = refused(joint, 0.01, Reason.BEND_AT_STEP_END, "bend_angle")
