@@ -191,7 +191,10 @@ def _copy_tree(destination: Path):
 
 
 def _failures(output: str):
-    return re.findall(r"^(?:FAILED|ERROR) \S+?::(\S+)", output, re.MULTILINE)
+    """The failing tests, once each, with how many of their cases failed."""
+    names = re.findall(r"^(?:FAILED|ERROR) \S+?::(\w+)", output, re.MULTILINE)
+    return [f"{name} ({names.count(name)} cases)" if names.count(name) > 1 else name
+            for name in dict.fromkeys(names)]
 
 
 def run_mutation(tree: Path, mutation: Mutation, timeout=300):
@@ -238,9 +241,9 @@ def main(argv=None):
         for k, mutation in enumerate(chosen, 1):
             killed, failing, seconds = run_mutation(tree, mutation)
             survivors += not killed
-            shown = ", ".join(f"`{name}`" for name in failing[:2])
-            if len(failing) > 2:
-                shown += f" (+{len(failing) - 2} more)"
+            shown = ", ".join(f"`{name}`" for name in failing[:3])
+            if len(failing) > 3:
+                shown += f" (+{len(failing) - 3} more)"
             rows.append(f"| {mutation.guard} | {mutation.what} | {shown or '(none)'} | "
                         f"{'yes' if killed else '**NO**'} |")
             print(f"[{k}/{len(chosen)}] {mutation.guard}: {'killed' if killed else 'SURVIVED'} "
