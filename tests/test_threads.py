@@ -4,12 +4,13 @@ messages of a serial run, each bad input's message in its own instance's log."""
 
 import math
 import threading
+import time
 
 from cardan_joint.physics import Reason, Refusal
 from fmi_loop import JointInstance
 
 THREADS = 8
-STEPS = 300
+STEPS = 1000
 H = 1e-3
 
 
@@ -18,7 +19,7 @@ def bad_bend(k):
     return 1.40 + 0.001 * k
 
 
-def scenario(model_description, unzipped, k, start=None):
+def scenario(model_description, unzipped, k, start=None, window=None):
     """Run instance `k`'s inputs; return its trace (status, outputs) and its log."""
     messages = []
     joint = JointInstance(model_description, unzipped, name=f"joint{k}", messages=messages,
@@ -26,6 +27,7 @@ def scenario(model_description, unzipped, k, start=None):
     trace = []
     if start is not None:
         start.wait()                          # all threads step at the same time
+        window.append(time.perf_counter())
     try:
         for n in range(STEPS):
             joint.set(input_speed=10.0 + k + 0.01 * n, bend_angle=0.02 * k + 1e-4 * n,
@@ -38,6 +40,8 @@ def scenario(model_description, unzipped, k, start=None):
                 continue
             trace.append((joint.try_step(H), tuple(joint.get_outputs().values())))
     finally:
+        if window is not None:
+            window.append(time.perf_counter())
         joint.close()
     return trace, messages
 
@@ -45,12 +49,13 @@ def scenario(model_description, unzipped, k, start=None):
 def test_eight_threads_give_the_serial_results_and_messages(model_description, unzipped_fmu):
     serial = [scenario(model_description, unzipped_fmu, k) for k in range(THREADS)]
     threaded = [None] * THREADS
+    windows = [[] for _ in range(THREADS)]
     errors = []
     start = threading.Barrier(THREADS)
 
     def worker(k):
         try:
-            threaded[k] = scenario(model_description, unzipped_fmu, k, start)
+            threaded[k] = scenario(model_description, unzipped_fmu, k, start, windows[k])
         except BaseException as error:        # reported below, not lost in the thread
             errors.append((k, error))
 
@@ -60,6 +65,8 @@ def test_eight_threads_give_the_serial_results_and_messages(model_description, u
     for thread in threads:
         thread.join(timeout=120)
     assert not errors and not any(thread.is_alive() for thread in threads), errors
+    # The runs overlapped: every thread was stepping while every other one was.
+    assert max(w[0] for w in windows) < min(w[1] for w in windows)
     for k in range(THREADS):
         (trace, messages), (serial_trace, serial_messages) = threaded[k], serial[k]
         assert trace == serial_trace, k                    # bit for bit, every step
