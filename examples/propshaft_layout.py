@@ -24,9 +24,10 @@ from pathlib import Path
 import numpy as np
 
 from cardan_joint.physics.propshaft import angle_report, best_phasing, layout
+from cardan_joint.plotting import save_figure
 from cardan_joint.simulate import simulate
 
-from _support import example_parser, output_folder, save_figure
+from _support import example_parser, output_folder
 
 SIDE_DEG = (-3.0, -1.0, -3.0)
 TOP_DEG = (0.0, 2.5, 5.0)

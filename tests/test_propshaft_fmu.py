@@ -136,7 +136,7 @@ def test_a_working_angle_at_the_limit_refuses_every_step_and_says_why(descriptio
     try:
         assert shaft.try_step(0.01) == DISCARD
         text = " ".join(m for _, _, m in messages)
-        assert "joint 1 working angle" in text and "max_working_angle" in text
+        assert "joint_1_working_angle" in text and "max_working_angle" in text
         assert shaft.time == 0.0
     finally:
         shaft.close()

@@ -19,11 +19,13 @@ def complete_inputs(inputs, starts: dict, stop_time: float, step: float) -> np.n
     input of the FMU, each missing one following what the FMU would do with it
     left unset: held at its start value, or carried along its rate. FMPy warns
     ("missing input") for every input without a signal."""
-    names = tuple(name for name in starts if name not in _RATES) + tuple(_RATES)
+    # Only the carried inputs this FMU has (the propshaft has no bend angle).
+    rates = {name: r for name, r in _RATES.items() if name in starts}
+    names = tuple(name for name in starts if name not in rates) + tuple(rates)
     if not isinstance(inputs, dict):
         given = set(inputs.dtype.names)
         moving = {n for n in names if n not in given and any(
-            r in given or starts[r] != 0.0 for r in _RATES.get(n, ()))}
+            r in given or starts[r] != 0.0 for r in rates.get(n, ()))}
         if moving:
             return inputs        # the FMU carries these along given rates: leave them unset
         signal = np.zeros(len(inputs), dtype=inputs.dtype.descr +
@@ -34,18 +36,19 @@ def complete_inputs(inputs, starts: dict, stop_time: float, step: float) -> np.n
     value = {name: float(inputs.get(name, starts[name])) for name in names}
     # Linear pieces are exact between two points; a bend angle carried by its
     # acceleration is a parabola, given at every communication point.
-    curved = "bend_angle" not in inputs and value["bend_angle_acceleration"] != 0.0
+    curved = "bend_angle" in rates and "bend_angle" not in inputs and \
+        value["bend_angle_acceleration"] != 0.0
     t = (np.linspace(0.0, stop_time, max(1, round(stop_time / step)) + 1) if curved
          else np.array([0.0, stop_time]))
     signal = np.zeros(len(t), dtype=[("time", float)] + [(n, float) for n in names])
     signal["time"] = t
     for name in names:
         signal[name] = value[name]
-    if "input_speed" not in inputs:
+    if "input_speed" in rates and "input_speed" not in inputs:
         signal["input_speed"] = value["input_speed"] + value["input_acceleration"] * t
-    if "bend_angle_rate" not in inputs:
+    if "bend_angle_rate" in rates and "bend_angle_rate" not in inputs:
         signal["bend_angle_rate"] = value["bend_angle_rate"] + value["bend_angle_acceleration"] * t
-    if "bend_angle" not in inputs:
+    if "bend_angle" in rates and "bend_angle" not in inputs:
         signal["bend_angle"] = (value["bend_angle"] + value["bend_angle_rate"] * t
                                 + 0.5 * value["bend_angle_acceleration"] * t * t)
     return signal

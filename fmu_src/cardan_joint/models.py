@@ -31,7 +31,7 @@ def _check_joint_start_values(values: Mapping[str, float], settings: Mapping) ->
     joint = CardanJoint(**values)
     problem = joint.parameter_problem() or joint.input_problem()
     if problem:
-        raise StartValueError(f"invalid start values: {problem}")
+        raise StartValueError(f"invalid start values: {problem.text}")
 
 
 def _check_propshaft_start_values(values: Mapping[str, float], settings: Mapping) -> None:
@@ -50,7 +50,7 @@ def _check_propshaft_start_values(values: Mapping[str, float], settings: Mapping
     propshaft = Propshaft(joints, **values)
     problem = propshaft.parameter_problem() or propshaft.input_problem()
     if problem:
-        raise StartValueError(f"invalid start values: {problem}")
+        raise StartValueError(f"invalid start values: {problem.text}")
 
 
 def _propshaft_name(settings: Mapping) -> str:

@@ -17,12 +17,38 @@ _STATUS = {0: "ok", 1: "warning", 2: "discard", 3: "error", 4: "fatal", 5: "pend
 
 
 class SimulationError(RuntimeError):
-    """The FMU refused a step or reported an error; `messages` holds its log."""
+    """The FMU refused a step or reported an error; `messages` holds its log,
+    `result` the run up to there."""
+
+    refusal = None
 
     def __init__(self, text, messages, result):
         super().__init__(text)
         self.messages = messages
         self.result = result
+
+
+class RefusalError(SimulationError):
+    """A SimulationError whose first problem is a `Refusal`: its `variable`,
+    `value`, `limit`, `time`, `code` (a `Reason`) and `unit` are attributes."""
+
+    def __init__(self, text, messages, result, refusal):
+        super().__init__(text, messages, result)
+        self.refusal = refusal
+        self.variable, self.value, self.limit = refusal.variable, refusal.value, refusal.limit
+        self.time, self.code, self.unit = refusal.time, refusal.code, refusal.unit
+
+
+def first_refusal(texts):
+    """The first `Refusal` written in `texts` (the FMU's log), or None."""
+    from .physics.refusal import Refusal
+
+    for text in texts:
+        try:
+            return Refusal.from_message(text)
+        except ValueError:
+            continue
+    return None
 
 
 def simulate(fmu=DEFAULT_FMU, stop_time=None, output_interval=None, inputs=None,
@@ -31,7 +57,8 @@ def simulate(fmu=DEFAULT_FMU, stop_time=None, output_interval=None, inputs=None,
 
     `inputs`: an FMPy structured array (field "time" plus input names), or a
     dict of constant input values. `output_interval` is the communication step.
-    Raises SimulationError if the FMU refused a step or logged an error.
+    Raises SimulationError if the FMU refused a step or logged an error: a
+    RefusalError, with the refusal's fields, when the FMU said why.
     """
     from fmpy import read_model_description, simulate_fmu
 
@@ -63,8 +90,11 @@ def simulate(fmu=DEFAULT_FMU, stop_time=None, output_interval=None, inputs=None,
     if problems or not reached >= stop_time - 1e-9 * max(1.0, abs(stop_time)):
         detail = "\n  ".join(f"{status}: {text}" for status, _, text in problems) or \
             "(the FMU gave no reason)"
-        raise SimulationError(f"the FMU stopped at t = {reached!r} s of {stop_time!r} s:\n  {detail}",
-                              messages, result)
+        text = f"the FMU stopped at t = {reached!r} s of {stop_time!r} s:\n  {detail}"
+        refusal = first_refusal(text for _, _, text in problems)
+        if refusal is None:
+            raise SimulationError(text, messages, result)
+        raise RefusalError(text, messages, result, refusal)
     # One warning per distinct message, however often and in whatever order it came.
     repeats = Counter(text for status, _, text in messages if status == "warning")
     for text, count in repeats.items():

@@ -150,7 +150,7 @@ class CardanJointSlave(Fmi2Slave):
             self._initialized = True
             problem = self._joint.parameter_fault
             if problem:
-                self._report(f"{problem}; every step will be refused until it is fixed",
+                self._report(f"{problem.message}; every step will be refused until it is fixed",
                              Fmi2Status.error)
             for message in self._initialization_warnings():
                 self._report(message, Fmi2Status.warning)
@@ -165,9 +165,8 @@ class CardanJointSlave(Fmi2Slave):
             problem = joint.step(step_size)
             if problem:
                 joint.time = time
-                self._report(f"t = {current_time!r} s: {problem}; step of {step_size!r} s "
-                             f"refused, the joint stays at t = {current_time!r} s",
-                             Fmi2Status.discard)
+                self._report(f"{problem.message}; step of {step_size!r} s refused, the joint "
+                             f"stays at t = {current_time!r} s", Fmi2Status.discard)
                 return False
             self._outputs = None
             self._inputs_checked = True
@@ -183,7 +182,7 @@ class CardanJointSlave(Fmi2Slave):
         if not self._inputs_checked:
             problem = joint.parameter_fault or joint.input_problem()
             if problem:
-                self._report(f"t = {joint.time!r} s: {problem}; outputs that depend on it "
+                self._report(f"{problem.at(joint.time).message}; outputs that depend on it "
                              f"are held at the last valid inputs", Fmi2Status.warning)
                 return self._held_outputs(joint)
             self._inputs_checked = True

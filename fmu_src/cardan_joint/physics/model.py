@@ -2,9 +2,9 @@
 
 `CardanJoint` holds the inputs, parameters, the input angle (as exact
 revolutions, see `revolutions`) and the time; `step` advances them exactly for
-inputs that are polynomial over the step, or refuses the step with a message
-and changes nothing; `outputs` evaluates the closed forms for the current
-values. Pure Python: the FMU maps its variables onto this object.
+inputs that are polynomial over the step, or refuses the step and changes
+nothing, returning a `Refusal` (variable, value, limit, time, reason code);
+`outputs` evaluates the closed forms for the current values. Pure Python: the FMU maps its variables onto this object.
 """
 
 import math
@@ -13,6 +13,7 @@ from operator import itemgetter
 from .. import variables as table
 # The kernel itself: the FMU's once-per-step call on floats skips the array dispatch.
 from .response import JointResponse
+from .refusal import Reason, Refusal
 from .response import _response as joint_response_kernel
 from .revolutions import split_angle
 from .values import SavedState, ValueChecks, advance_input, value_ranges
@@ -62,21 +63,27 @@ class CardanJoint(ValueChecks, SavedState):
         # negative phase costs no precision; its turns enter the quaternion's sign.
         self._phase = split_angle(self.yoke_phase if valid else 0.0)
 
+    def _non_finite_limit(self, name, variable):
+        # The bend angle's limit is the max_bend_angle parameter, not its table range.
+        if name == "bend_angle":
+            return self.max_bend_angle
+        return super()._non_finite_limit(name, variable)
+
     def parameter_problem(self):
-        """Why the parameters cannot run, or None."""
-        problem = self._value_problem("parameter", table.PARAMETERS, _PARAMETER_RANGES)
+        """The Refusal that keeps the parameters from running, or None."""
+        problem = self._value_problem(table.PARAMETERS, _PARAMETER_RANGES)
         if problem:
             return problem
         guard = self.max_bend_angle
         if not 0.0 < guard < table.HALF_PI:
-            return (f"parameter max_bend_angle = {guard!r} rad ({guard * table.DEG:.6g} deg) "
-                    f"must lie strictly between 0 and pi/2 (90 deg, where the joint locks)")
+            limit = 0.0 if guard <= 0.0 else table.HALF_PI
+            return Refusal(Reason.BEND_GUARD, "max_bend_angle", guard, limit, self.time, "rad")
         return None
 
     # --- stepping ----------------------------------------------------------
 
     def input_problem(self, step_size: float = 0.0):
-        """Why the inputs cannot be used over [time, time + step_size], or None."""
+        """The Refusal of the inputs over [time, time + step_size], or None."""
         # Fast path for the common case, once per FMU step: every range at once and
         # the bend angle at both ends of the step. NaN fails every comparison, so
         # it always takes the slow path, which names the first problem.
@@ -92,55 +99,49 @@ class CardanJoint(ValueChecks, SavedState):
         return self._explain_input_problem(step_size)
 
     def _explain_input_problem(self, step_size):
-        problem = self._value_problem("input", table.INPUTS, _INPUT_RANGES)
+        problem = self._value_problem(table.INPUTS, _INPUT_RANGES)
         if problem:
             return problem
         guard = self.max_bend_angle
-        worst_time, worst = self._largest_bend(step_size)
+        reason, after, worst = self._largest_bend(step_size)
         if abs(worst) >= guard:
-            where = ("" if worst_time == 0.0 else
-                     f" (reached {worst_time:.6g} s into the step through bend_angle_rate"
-                     f" = {self.bend_angle_rate!r} rad/s and bend_angle_acceleration"
-                     f" = {self.bend_angle_acceleration!r} rad/s2)")
-            return (f"input bend_angle = {worst!r} rad ({worst * table.DEG:.6g} deg){where}"
-                    f" is not below the limit max_bend_angle = {guard!r} rad"
-                    f" ({guard * table.DEG:.6g} deg)")
+            details = {} if reason is Reason.BEND_ANGLE else {
+                "after": after, "bend_angle_rate": self.bend_angle_rate,
+                "bend_angle_acceleration": self.bend_angle_acceleration}
+            return Refusal(reason, "bend_angle", worst, guard, self.time, "rad", details)
         return None
 
     def invalid_inputs(self) -> set:
         """Names of the inputs unusable at this instant (non-finite, out of range,
         bend angle at or beyond the guard)."""
-        invalid = {name for name, _ in self._bad_values("input", table.INPUTS, _INPUT_RANGES)}
+        invalid = {r.variable for r in self._bad_values(table.INPUTS, _INPUT_RANGES)}
         if not abs(self.bend_angle) < self.max_bend_angle:
             invalid.add("bend_angle")
         return invalid
 
     def _largest_bend(self, step_size):
-        """(time into the step, bend angle) of the largest |bend angle| over the step."""
+        """(Reason, time into the step, bend angle) of the largest |bend angle| over the step."""
         beta, rate, acc = self.bend_angle, self.bend_angle_rate, self.bend_angle_acceleration
-        candidates = [(0.0, beta)]
+        candidates = [(Reason.BEND_ANGLE, 0.0, beta)]
         if step_size > 0.0:
-            candidates.append((step_size, beta + step_size * (rate + 0.5 * acc * step_size)))
+            candidates.append((Reason.BEND_AT_STEP_END, step_size,
+                               beta + step_size * (rate + 0.5 * acc * step_size)))
             if acc != 0.0 and 0.0 < -rate / acc < step_size:
                 vertex = -rate / acc
-                candidates.append((vertex, beta + vertex * (rate + 0.5 * acc * vertex)))
-        return max(candidates, key=lambda c: abs(c[1]))
-
-    def step_problem(self, step_size: float):
-        if not (math.isfinite(step_size) and step_size > 0.0):
-            return f"communication step size = {step_size!r} s must be a finite number > 0"
-        return self.parameter_fault or self.input_problem(step_size)
+                candidates.append((Reason.BEND_PEAK_IN_STEP, vertex,
+                                   beta + vertex * (rate + 0.5 * acc * vertex)))
+        return max(candidates, key=lambda c: abs(c[2]))
 
     def step(self, step_size: float):
-        """Advance by `step_size`; return None, or the reason the step was refused
-        (then nothing has changed)."""
+        """Advance by `step_size`; return None, or the Refusal of the step (then
+        nothing has changed)."""
         problem = self.step_problem(step_size)
         if problem:
             return problem
         h = step_size
         advanced = advance_input(self._angle, self.input_speed, self.input_acceleration, h,
-                                 _SPEED_LIMIT)
-        if isinstance(advanced, str):
+                                 _SPEED_LIMIT, self.time)
+        if isinstance(advanced, Refusal):
             return advanced
         self._angle, self.input_speed = advanced
         rate, bend_acceleration = self.bend_angle_rate, self.bend_angle_acceleration

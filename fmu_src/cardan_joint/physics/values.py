@@ -1,9 +1,10 @@
 """Checks of variable values, the input shaft's exact advance and the saved
-state, shared by every stepped model (the joint, the propshaft): one wording
-for every refusal, one state format."""
+state, shared by every stepped model (the joint, the propshaft): one Refusal
+per bad value, one state format."""
 
 import math
 
+from .refusal import Reason, Refusal, crossed_limit
 from .revolutions import RevolutionAngle, advance
 
 # Beyond 1e15 rad a float has no fractional digits left: the pin's position
@@ -18,34 +19,53 @@ def value_ranges(by_name, names, *excluded):
 
 
 class ValueChecks:
-    """Explains bad attribute values of a model object, naming value and limit."""
+    """Refusals for bad attribute values of a model object with a variable `table`."""
 
-    def _bad_values(self, kind, names, ranges):
-        """(name, explanation) of each of `names` not finite or outside its range."""
+    def _non_finite_limit(self, name, variable):
+        """The limit a NaN or infinite `name` is reported against: its range's bound."""
+        return crossed_limit(getattr(self, name), variable.min, variable.max)
+
+    def _bad_values(self, names, ranges):
+        """A Refusal for each of `names` not finite or outside its range."""
+        by_name = self.table.BY_NAME
         for name in names:
             value = getattr(self, name)
             if not math.isfinite(value):
-                yield name, f"{kind} {name} = {value!r} is not a finite number"
+                variable = by_name[name]
+                yield Refusal(Reason.NOT_FINITE, name, value,
+                              self._non_finite_limit(name, variable), self.time, variable.unit,
+                              kind=variable.causality)
         for name, low, high, unit in ranges:
             value = getattr(self, name)
             if math.isfinite(value) and not low <= value <= high:
-                yield name, (f"{kind} {name} = {value!r} {unit} is outside its range "
-                             f"[{low!r}, {high!r}] {unit}")
+                yield Refusal(Reason.OUT_OF_RANGE, name, value, crossed_limit(value, low, high),
+                              self.time, unit, {"low": low, "high": high},
+                              by_name[name].causality)
 
-    def _value_problem(self, kind, names, ranges):
-        """The first bad value, explained, or None."""
-        return next((text for _, text in self._bad_values(kind, names, ranges)), None)
+    def _value_problem(self, names, ranges):
+        """The first bad value, or None."""
+        return next(self._bad_values(names, ranges), None)
+
+    def step_problem(self, step_size: float):
+        """The Refusal of a step of `step_size` from now, or None."""
+        if not (math.isfinite(step_size) and step_size > 0.0):
+            return Refusal(Reason.STEP_SIZE, "step_size", step_size, 0.0, self.time, "s")
+        if self.parameter_fault:
+            return self.parameter_fault.at(self.time)
+        return self.input_problem(step_size)
 
 
-def advance_input(angle, speed, acceleration, h, speed_limit):
+def advance_input(angle, speed, acceleration, h, speed_limit, time):
     """(new angle, new speed) after `h` s at constant acceleration, or the
-    reason this step would overflow (a string)."""
+    Refusal of a step that would overflow."""
     increment = h * (speed + 0.5 * acceleration * h)
-    if not (abs(increment) <= MAX_INCREMENT and abs(speed + acceleration * h) <= speed_limit):
-        return (f"input_speed = {speed!r} rad/s with input_acceleration = {acceleration!r} "
-                f"rad/s2 over a step of {h!r} s overflows: the input angle would advance by "
-                f"{increment!r} rad (limit {MAX_INCREMENT!r} rad per step) and the speed "
-                f"reach {speed + acceleration * h!r} rad/s (limit {speed_limit!r} rad/s)")
+    overflow = {"input_speed": speed, "input_acceleration": acceleration, "step_size": h}
+    if not abs(increment) <= MAX_INCREMENT:
+        return Refusal(Reason.ANGLE_OVERFLOW, "input_angle", increment, MAX_INCREMENT, time,
+                       "rad", overflow)
+    if not abs(speed + acceleration * h) <= speed_limit:
+        return Refusal(Reason.SPEED_OVERFLOW, "input_speed", speed + acceleration * h,
+                       speed_limit, time, "rad/s", overflow)
     return advance(angle, increment), speed + acceleration * h
 
 

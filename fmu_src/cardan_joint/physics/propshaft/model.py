@@ -11,6 +11,7 @@ import math
 
 from ...propshaft_variables import propshaft_table
 from ..revolutions import split_angle
+from ..refusal import Reason, Refusal
 from ..values import SavedState, ValueChecks, advance_input, value_ranges
 from .chain import chain
 from .checks import angle_warnings
@@ -64,19 +65,18 @@ class Propshaft(ValueChecks, SavedState):
         self._shifts = tuple(TWO_PI * round(o / TWO_PI) for o in offsets)
 
     def _angle_problem(self):
-        problem = self._value_problem("parameter", self.table.PARAMETERS,
-                                      self._parameter_ranges)
+        problem = self._value_problem(self.table.PARAMETERS, self._parameter_ranges)
         if problem:
             return problem
         for name in self._sides + self._tops:
             value = getattr(self, name)
             if not abs(value) < HALF_PI:
-                return (f"parameter {name} = {value!r} rad must lie strictly between -pi/2 "
-                        f"and pi/2 (a shaft cannot point across the driveline)")
+                return Refusal(Reason.SHAFT_ANGLE, name, value, math.copysign(HALF_PI, value),
+                               self.time, "rad", kind="parameter")
         guard = self.max_working_angle
         if not 0.0 < guard < HALF_PI:
-            return (f"parameter max_working_angle = {guard!r} rad ({math.degrees(guard):.6g} "
-                    f"deg) must lie strictly between 0 and pi/2 (90 deg, where a joint locks)")
+            return Refusal(Reason.WORKING_ANGLE_GUARD, "max_working_angle", guard,
+                           0.0 if guard <= 0.0 else HALF_PI, self.time, "rad", kind="parameter")
         return None
 
     def _geometry(self):
@@ -88,9 +88,8 @@ class Propshaft(ValueChecks, SavedState):
         guard = self.max_working_angle
         for k, beta in enumerate(geometry.working_angles, start=1):
             if not beta < guard:
-                return (f"joint {k} working angle = {beta!r} rad ({math.degrees(beta):.6g} deg, "
-                        f"from the angles of shafts {k - 1} and {k}) is not below the limit "
-                        f"max_working_angle = {guard!r} rad ({math.degrees(guard):.6g} deg)")
+                return Refusal(Reason.WORKING_ANGLE, f"joint_{k}_working_angle", beta, guard,
+                               self.time, "rad", kind="parameter")
         return None
 
     def parameter_problem(self):
@@ -103,16 +102,10 @@ class Propshaft(ValueChecks, SavedState):
         """Why the inputs cannot be used over the next step, or None."""
         if all(abs(getattr(self, name)) <= high for name, high in self._limits):
             return None
-        return self._value_problem("input", self.table.INPUTS, self._input_ranges)
+        return self._value_problem(self.table.INPUTS, self._input_ranges)
 
     def invalid_inputs(self) -> set:
-        return {name for name, _ in self._bad_values("input", self.table.INPUTS,
-                                                       self._input_ranges)}
-
-    def step_problem(self, step_size: float):
-        if not (math.isfinite(step_size) and step_size > 0.0):
-            return f"communication step size = {step_size!r} s must be a finite number > 0"
-        return self.parameter_fault or self.input_problem(step_size)
+        return {r.variable for r in self._bad_values(self.table.INPUTS, self._input_ranges)}
 
     def step(self, step_size: float):
         """Advance by `step_size`; return None, or why the step was refused (then
@@ -121,8 +114,8 @@ class Propshaft(ValueChecks, SavedState):
         if problem:
             return problem
         advanced = advance_input(self._angle, self.input_speed, self.input_acceleration,
-                                 step_size, self._speed_limit)
-        if isinstance(advanced, str):
+                                 step_size, self._speed_limit, self.time)
+        if isinstance(advanced, Refusal):
             return advanced
         self._angle, self.input_speed = advanced
         self.time += step_size

@@ -1,0 +1,84 @@
+"""Issue 14: refusals as data. The FMU's copy of the package speaks to its host
+only through log text, so every reason's message must parse back exactly."""
+
+import math
+
+import numpy as np
+import pytest
+
+from cardan_joint import variables as table
+from cardan_joint.physics import CardanJoint, Reason, Refusal
+from cardan_joint.physics.propshaft import Propshaft
+from cardan_joint.simulate import RefusalError, SimulationError, simulate
+
+GUARD = table.BY_NAME["max_bend_angle"].start
+# One way to meet each reason: (start values, step size).
+CAUSES = {
+    Reason.NOT_FINITE: [(dict(input_speed=math.nan), 0.1), (dict(load_torque=-math.inf), 0.1),
+                        (dict(yoke_phase=math.inf), 0.1), (dict(bend_angle=math.nan), 0.1)],
+    Reason.OUT_OF_RANGE: [(dict(input_acceleration=-1.5e8), 0.1),
+                          (dict(crosspiece_inertia_3=-1e-300), 0.1)],
+    Reason.BEND_ANGLE: [(dict(bend_angle=-1.5), 0.1)],
+    Reason.BEND_AT_STEP_END: [(dict(bend_angle=1.3, bend_angle_rate=1.0 / 3.0), 0.5)],
+    Reason.BEND_PEAK_IN_STEP: [(dict(bend_angle=-1.38, bend_angle_rate=-2.0,
+                                     bend_angle_acceleration=100.0), 0.04)],
+    Reason.BEND_GUARD: [(dict(max_bend_angle=1.6), 0.1), (dict(max_bend_angle=-0.0), 0.1)],
+    Reason.STEP_SIZE: [({}, -math.inf), ({}, math.nan), ({}, -5e-324)],
+    Reason.ANGLE_OVERFLOW: [(dict(input_speed=-0.1), 1e17)],
+    Reason.SPEED_OVERFLOW: [(dict(input_speed=0.1 + 0.2, input_acceleration=1e8), 0.7)],
+    # The propshaft's own parameters.
+    Reason.SHAFT_ANGLE: [(dict(shaft_1_top_angle=-math.pi / 2), 0.1)],
+    Reason.WORKING_ANGLE_GUARD: [(dict(max_working_angle=2.0), 0.1)],
+    Reason.WORKING_ANGLE: [(dict(shaft_1_side_angle=0.6, max_working_angle=0.5), 0.1)],
+}
+PROPSHAFT_REASONS = {Reason.SHAFT_ANGLE, Reason.WORKING_ANGLE_GUARD, Reason.WORKING_ANGLE}
+
+
+def _model(reason, start):
+    return Propshaft(**start) if reason in PROPSHAFT_REASONS else CardanJoint(**start)
+
+
+def test_every_reason_has_a_cause():
+    assert set(CAUSES) == set(Reason)
+
+
+@pytest.mark.parametrize("time", [0.0, 0.1 + 0.2, 1e-300, 12345.678901234567])
+@pytest.mark.parametrize("reason", list(Reason))
+def test_each_refusal_reads_back_exactly_from_its_message(reason, time):
+    for start, step_size in CAUSES[reason]:
+        joint = _model(reason, start)
+        joint.time = time
+        refusal = joint.step(step_size)
+        assert refusal.code == reason
+        assert refusal.variable and refusal.unit and not math.isnan(refusal.limit)
+        # As the FMU logs it: the refusal inside a longer line.
+        line = f"{refusal.message}; step of {step_size!r} s refused, the joint stays at t = 1.0 s"
+        back = Refusal.from_message(line)
+        assert back == refusal and back.message == refusal.message
+        assert [repr(x) for x in (back.value, back.limit, back.time)] == \
+            [repr(x) for x in (refusal.value, refusal.limit, refusal.time)]
+        assert back.details == refusal.details or math.isnan(refusal.value)
+
+
+def test_the_message_names_variable_value_limit_and_time():
+    refusal = CardanJoint(bend_angle=1.5).step(0.1)
+    assert refusal.message == ("t = 0.0 s: input bend_angle = 1.5 rad (85.9437 deg) is not below "
+                               "the limit max_bend_angle = 1.3962634015954636 rad (80 deg)")
+    assert refusal.at(2.5).time == 2.5 and refusal.at(2.5).message.startswith("t = 2.5 s: ")
+
+
+def test_text_without_a_refusal_is_not_parsed():
+    with pytest.raises(ValueError):
+        Refusal.from_message("internal error in do_step: ZeroDivisionError: division by zero")
+
+
+def test_simulate_raises_the_refusal_with_its_fields(fmu_path):
+    u = np.array([(0.0, 0.5), (0.5, 0.5), (0.5, 1.5), (1.0, 1.5)],
+                 dtype=[("time", float), ("bend_angle", float)])
+    with pytest.raises(RefusalError) as error:
+        simulate(fmu_path, stop_time=1.0, output_interval=0.1, inputs=u)
+    e = error.value
+    assert isinstance(e, SimulationError) and e.result["time"][-1] == 0.5 and e.messages
+    assert (e.variable, e.value, e.limit, e.time, e.code, e.unit) == \
+        ("bend_angle", 1.5, GUARD, 0.5, Reason.BEND_ANGLE, "rad")
+    assert e.refusal.message in str(e)

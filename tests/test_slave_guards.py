@@ -1,0 +1,151 @@
+"""Issue 14: the slave's guards, each with a test that fails without it
+(tools/mutation.py disables each in turn): the refused step and held outputs as
+the FMU logs them, illegal calls, and state checks; and the bend angle peaking
+inside a step, through the FMU."""
+
+import json
+import math
+
+import pytest
+from pythonfmu.enums import Fmi2Status
+
+from cardan_joint import variables as table
+from cardan_joint.fmu.slave import CardanJointSlave
+from cardan_joint.physics import CardanJoint, Reason, Refusal
+from cardan_joint.instance import JointInstance
+
+REFERENCE = {name: k for k, name in enumerate(v.name for v in table.VARIABLES)}
+ALL = list(range(len(table.VARIABLES)))
+PEAK = dict(bend_angle=1.38, bend_angle_rate=2.0, bend_angle_acceleration=-100.0)
+PEAK_STEP = 0.04                 # both ends at 1.38 rad, the vertex at 1.40 rad > 80 deg
+
+
+def initialized(**start):
+    slave = CardanJointSlave(instance_name="guarded")
+    slave.setup_experiment(0.0)
+    slave.set_real([REFERENCE[n] for n in start], list(start.values()))
+    slave.exit_initialization_mode()
+    return slave
+
+
+def last(slave, status):
+    return [m.msg for m in slave.log_queue if m.status == status][-1]
+
+
+def test_the_slave_refuses_a_step_peaking_inside_it_and_names_the_peak():
+    slave = initialized()
+    assert slave.do_step(0.0, 0.1) is True
+    before = slave.get_real(ALL)
+    slave.set_real([REFERENCE[n] for n in PEAK], list(PEAK.values()))
+    assert slave.do_step(0.1, PEAK_STEP) is False
+    refusal = Refusal.from_message(last(slave, Fmi2Status.discard))
+    assert (refusal.code, refusal.time) == (Reason.BEND_PEAK_IN_STEP, 0.1)
+    assert slave._joint.time == 0.1 and slave.get_real([REFERENCE["input_angle"]]) == \
+        before[REFERENCE["input_angle"]:REFERENCE["input_angle"] + 1]
+
+
+def test_outputs_with_invalid_inputs_are_held_and_the_warning_names_the_input():
+    slave = initialized()
+    held = slave.get_real(ALL)
+    slave.set_real([REFERENCE["bend_angle"]], [1.5])
+    assert slave.get_real(ALL)[REFERENCE["output_speed"]] == held[REFERENCE["output_speed"]]
+    refusal = Refusal.from_message(last(slave, Fmi2Status.warning))
+    assert (refusal.code, refusal.variable, refusal.value) == (Reason.BEND_ANGLE, "bend_angle", 1.5)
+
+
+def test_bad_parameters_are_an_error_at_initialization():
+    slave = initialized(max_bend_angle=1.6)
+    refusal = Refusal.from_message(last(slave, Fmi2Status.error))
+    assert (refusal.code, refusal.value) == (Reason.BEND_GUARD, 1.6)
+    assert slave.do_step(0.0, 0.1) is False
+    assert Refusal.from_message(last(slave, Fmi2Status.discard)).code == Reason.BEND_GUARD
+
+
+@pytest.mark.parametrize("reference", [REFERENCE["input_angle"], len(table.VARIABLES), -1])
+def test_setting_an_output_or_an_unknown_reference_is_an_error_and_changes_nothing(reference):
+    slave = initialized()
+    before = slave.get_real(ALL)
+    slave.set_real([reference], [123.0])
+    assert "ignored: only inputs and parameters can be set" in last(slave, Fmi2Status.error)
+    assert slave.get_real(ALL) == before
+
+
+def test_reading_an_unknown_reference_is_an_error():
+    slave = initialized()
+    assert math.isnan(slave.get_real([9999])[0])
+    assert "no Real variable has value reference 9999" in last(slave, Fmi2Status.error)
+
+
+def test_a_parameter_set_after_initialization_is_ignored():
+    slave = initialized()
+    slave.set_real([REFERENCE["crosspiece_inertia_1"]], [5.0])
+    assert "crosspiece_inertia_1 = 5.0 ignored" in last(slave, Fmi2Status.error)
+    assert slave.get_real([REFERENCE["crosspiece_inertia_1"]]) == [0.026]
+
+
+@pytest.mark.parametrize("call, answer", [
+    ("get_integer", [0]), ("get_boolean", [False]), ("get_string", [""]),
+    ("set_integer", None), ("set_boolean", None), ("set_string", None)])
+def test_calls_for_other_variable_types_are_errors_not_exceptions(call, answer):
+    slave = initialized()
+    method = getattr(slave, call)
+    result = method([0]) if call.startswith("get") else method([0], [1])
+    assert result == answer
+    assert "the FMU has no" in last(slave, Fmi2Status.error)
+
+
+def restored(slave, state, words):
+    """Set `state`; check it is refused with `words` and the slave keeps its state."""
+    before, saved = slave.get_real(ALL), slave._get_fmu_state()
+    slave._set_fmu_state(state)
+    assert words in last(slave, Fmi2Status.error)
+    assert slave.get_real(ALL) == before and slave._get_fmu_state() == saved
+
+
+@pytest.mark.parametrize("data, words", [(b"not json", "got no valid state"),
+                                         (b"[1, 2]", "not a serialized FMU state of this project")])
+def test_a_serialized_state_that_is_no_state_is_refused(data, words):
+    slave = initialized()
+    state = CardanJointSlave._fmu_state_from_bytes(data)
+    assert "invalid_state" in state
+    restored(slave, state, words)
+
+
+def test_a_state_of_another_fmu_version_is_refused():
+    slave, other = initialized(), initialized(input_speed=77.0)
+    other.do_step(0.0, 0.3)
+    state = json.loads(CardanJointSlave._fmu_state_to_bytes(other._get_fmu_state()))
+    state["outputs_held"] = state["outputs_held"][:-1]
+    restored(slave, state, "another version")
+
+
+def test_a_state_missing_a_joint_value_is_refused():
+    slave, other = initialized(), initialized(input_speed=77.0)
+    other.do_step(0.0, 0.3)
+    state = other._get_fmu_state()
+    del state["joint"]["fraction_error"]
+    restored(slave, state, "KeyError")
+
+
+@pytest.mark.parametrize("sign", [1.0, -1.0])
+def test_the_fmu_refuses_a_bend_peak_inside_the_step(model_description, unzipped_fmu, sign):
+    messages = []
+    joint = JointInstance(model_description, unzipped_fmu, name="peak", messages=messages)
+    twin = CardanJoint()
+    try:
+        joint.step(0.1)
+        twin.step(0.1)
+        before = joint.get_outputs()
+        peak = {name: sign * value for name, value in PEAK.items()}
+        joint.set(**peak)
+        assert joint.try_step(PEAK_STEP) == 2
+        refusal = Refusal.from_message(messages[-1][2])
+        for name, value in peak.items():
+            setattr(twin, name, value)
+        assert refusal == twin.step(PEAK_STEP)                 # the same refusal, as data
+        assert refusal.code == Reason.BEND_PEAK_IN_STEP and refusal.time == 0.1
+        assert joint.get("input_angle") == {"input_angle": before["input_angle"]}
+        joint.set(bend_angle_acceleration=0.0, bend_angle_rate=0.0)
+        assert joint.try_step(PEAK_STEP) == 0                  # fixed: the same step goes
+    finally:
+        joint.close()
