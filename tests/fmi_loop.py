@@ -33,8 +33,19 @@ class JointInstance:
         self.fmu.enterInitializationMode()
         if start_values:
             self.set(**start_values)
-        self.fmu.exitInitializationMode()
+        self.init_status = self._status_of(self.fmu.exitInitializationMode)
         self.time = start_time
+
+    @staticmethod
+    def _status_of(call, *args, **kwargs):
+        """The FMI status of a call FMPy raises on (fmi2Discard or worse)."""
+        from fmpy.fmi1 import FMICallException
+
+        try:
+            call(*args, **kwargs)
+            return 0
+        except FMICallException as refusal:
+            return refusal.status
 
     def set(self, **values):
         self.fmu.setReal([self.references[n] for n in values], list(values.values()))
@@ -51,13 +62,11 @@ class JointInstance:
 
     def try_step(self, step_size):
         """Step; return the FMI status (a refused step leaves the time where it was)."""
-        from fmpy.fmi1 import FMICallException
+        return self._status_of(self.step, step_size)
 
-        try:
-            self.step(step_size)
-            return 0
-        except FMICallException as refusal:
-            return refusal.status
+    def try_set(self, **values):
+        """Set; return the FMI status (fmi2Error for a call FMI does not allow)."""
+        return self._status_of(self.set, **values)
 
     def close(self):
         self.fmu.terminate()

@@ -116,7 +116,6 @@ int fuzz(const char *dir, unsigned seed, int count)
         }
         case 5:
             call = "GetReal";
-            illegal = state == INSTANTIATED;
             for (size_t k = 0; k < n; k++)
                 illegal |= (int)vr[k] >= n_variables;
             status = fmu.GetReal(c, vr, n, values);

@@ -53,6 +53,9 @@ static void read_model_description(const char *dir)
     size_t n = fread(xml, 1, sizeof xml - 1, file);
     xml[n] = '\0';
     fclose(file);
+    char *identifier = strstr(xml, "modelIdentifier=\"");
+    if (!identifier || sscanf(identifier, "modelIdentifier=\"%63[^\"]", fmu.identifier) != 1)
+        fail("no modelIdentifier in %s", path);
     char *guid = strstr(xml, "guid=\"");
     if (!guid || sscanf(guid, "guid=\"%127[^\"]", fmu.guid) != 1)
         fail("no guid in %s", path);
@@ -72,7 +75,7 @@ void load(const char *dir)
 {
     char path[4096];
     read_model_description(dir);
-    snprintf(path, sizeof path, "%s/binaries/linux64/UniversalJoint.so", dir);
+    snprintf(path, sizeof path, "%s/binaries/linux64/%s.so", dir, fmu.identifier);
     void *handle = dlopen(path, RTLD_NOW | RTLD_LOCAL);
     if (!handle)
         fail("dlopen: %s", dlerror());

@@ -46,7 +46,7 @@ struct variable {
 };
 
 struct fmu {
-    char guid[128], resources[4200];
+    char guid[128], identifier[64], resources[4200];
     struct variable variables[64];
     int n_variables;
 #define MEMBER(name) __typeof__(&fmi2##name) name;

@@ -28,7 +28,7 @@ struct instance {
     fmi2Boolean visible;
     fmi2CallbackFunctions host;      /* the host's callbacks, as given */
     fmi2CallbackFunctions to_slave;  /* the same with this file's logger */
-    int logging_on, echo_stderr;
+    int logging_on, echo_stderr, shared_proxy;
     char **categories;
     size_t n_categories;
     enum state state;

@@ -70,9 +70,10 @@ void report(struct instance *in, fmi2Status status, const char *category, const 
     int important = status != fmi2OK && status != fmi2Pending;
     if (!important && !category_enabled(in, category))
         return;
-    if (in->host.logger)
+    int to_logger = in->host.logger && (in->logging_on || !in->shared_proxy);
+    if (to_logger)
         to_host(in, status, category, text);
-    if (in->echo_stderr || (!in->host.logger && important))
+    if (in->echo_stderr || (!to_logger && important))
         fprintf(stderr, "[%s %s] %s: %s\n", in->model, in->name, STATUS_NAMES[index], text);
 }
 
@@ -135,6 +136,17 @@ static int load_slave_library(const char *model, char *error, size_t size)
     return result;
 }
 
+/* FMPy's logger proxy (fmpy/logging) keeps ONE target for the whole process:
+ * the logger of the last callbacks it wrapped, which simulate_fmu frees when
+ * it returns. Calling it for an instance whose host did not turn logging on
+ * may jump into freed memory, so such messages go to stderr instead. */
+static int is_shared_proxy(fmi2CallbackLogger logger)
+{
+    Dl_info where;
+    return logger && dladdr((void *)logger, &where) && where.dli_fname &&
+           strstr(where.dli_fname, "/fmpy/logging/");
+}
+
 /* Messages before an instance exists still go to the host's logger. */
 static void early_message(const fmi2CallbackFunctions *functions, const char *name,
                           const char *text)
@@ -142,6 +154,7 @@ static void early_message(const fmi2CallbackFunctions *functions, const char *na
     struct instance scratch = {.name = (char *)(name ? name : "?"), .model = MODEL_IDENTIFIER};
     if (functions)
         scratch.host = *functions;
+    scratch.shared_proxy = is_shared_proxy(scratch.host.logger);
     report(&scratch, fmi2Error, NULL, text);
 }
 
@@ -201,6 +214,7 @@ fmi2Component fmi2Instantiate(fmi2String name, fmi2Type type, fmi2String guid,
     in->echo_stderr = echo && *echo && strcmp(echo, "0") != 0;
     if (functions)
         in->host = *functions;
+    in->shared_proxy = is_shared_proxy(in->host.logger);
     in->to_slave = in->host;
     in->to_slave.logger = from_slave;
     in->to_slave.componentEnvironment = in;
