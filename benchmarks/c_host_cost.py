@@ -1,6 +1,6 @@
 """Cost per step of the FMU in a C host against FMPy's low-level loop (issue 11).
 
-    .venv/bin/python benchmarks/c_host.py [--steps N] [--rounds R]
+    .venv/bin/python benchmarks/c_host_cost.py [--steps N] [--rounds R]
 
 One step = set the 6 inputs, fmi2DoStep, get all outputs, as in
 run_benchmarks.py. Measured side by side in one run, rounds interleaved so that
