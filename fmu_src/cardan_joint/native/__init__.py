@@ -19,7 +19,7 @@ import tempfile
 import zipfile
 from pathlib import Path
 
-SOURCES = ("loader.c", "fmi2_calls.c", "python_runtime.c", "runtime_record.c")
+SOURCES = ("loader.c", "fmi2_calls.c", "fmu_states.c", "python_runtime.c", "runtime_record.c")
 RECORD = "resources/python_runtime.txt"
 _HERE = Path(__file__).resolve().parent
 _EXPORTS = "{ global: fmi2*; local: *; };\n"   # nothing else may interpose in the host

@@ -20,6 +20,9 @@ enum state {
     STATE_FATAL = 16,
 };
 
+#define ALIVE (STATE_INSTANTIATED | STATE_INITIALIZATION | STATE_STEP_COMPLETE | STATE_TERMINATED)
+#define ANY (ALIVE | STATE_FATAL)
+
 struct instance {
     unsigned magic;
     fmi2Component slave;
@@ -88,6 +91,13 @@ struct slave_api {
 extern struct slave_api slave;
 
 int resolve_slave_api(void *handle, char *error, size_t size);
+/* Every fmi2 call on an instance: enter() checks it and the state machine
+ * (NULL: answer fmi2Error), leave() returns the worst status logged. */
+struct instance *enter(fmi2Component c, unsigned allowed, const char *function);
+fmi2Status leave(struct instance *in, fmi2Status status);
+int arrays_given(struct instance *in, const char *function, size_t n, const void *references,
+                 const void *values);
+fmi2Status drop_state(struct instance *in, fmi2FMUstate *state);
 int instantiate_slave(struct instance *in);
 void free_instance(struct instance *in);
 void report(struct instance *in, fmi2Status status, const char *category, const char *text);
