@@ -101,24 +101,28 @@ def test_call_order_fuzz_every_illegal_call_answered(c_host, unzipped_fmu):
     assert "all answered; after reset equal to a fresh instance" in run.stdout
 
 
-def test_the_fmu_runs_in_a_python_that_links_libpython_statically(fmu_path):
+def test_fmpy_and_libcosim_in_a_python_that_links_libpython_statically(fmu_path):
     """/usr/bin/python3.11 has libpython in its executable: the loader must use it."""
     python = Path("/usr/bin/python3.11")
     if not python.exists() or sys.version_info[:2] != (3, 11):
         pytest.skip("needs /usr/bin/python3.11 and a 3.11 build")
     site = next(p for p in sys.path if p.endswith("site-packages"))
-    script = ("import sys; from fmpy import simulate_fmu\n"
-              f"r = simulate_fmu({str(fmu_path)!r}, stop_time=0.5, output_interval=1e-3,"
+    source = str(Path(__file__).resolve().parents[1] / "fmu_src")
+    script = ("from fmpy import simulate_fmu\n"
+              "from cardan_joint.cosim import run_libcosim\n"
+              f"fmu = {str(fmu_path)!r}\n"
+              "r = simulate_fmu(fmu, stop_time=0.5, output_interval=1e-3,"
               " start_values={'input_speed': 12.0, 'bend_angle': 0.4})\n"
-              "print(repr(float(r['output_angle'][-1])))\n")
-    run = subprocess.run([str(python), "-c", script], capture_output=True, text=True,
-                         env={**EMPTY_ENVIRONMENT, "PYTHONPATH": site}, timeout=120)
-    assert run.returncode == 0, run.stderr
-    from fmpy import simulate_fmu
-
-    here = simulate_fmu(str(fmu_path), stop_time=0.5, output_interval=1e-3,
-                        start_values={"input_speed": 12.0, "bend_angle": 0.4})
-    assert float(run.stdout.strip()) == float(here["output_angle"][-1])
+              "c = run_libcosim(fmu, 0.5, 1e-3, {'input_speed': 12.0, 'bend_angle': 0.4},"
+              " ['output_angle'])\n"
+              "print(repr(float(r['output_angle'][-1])), repr(float(c['output_angle'][-1])))\n")
+    runs = [subprocess.run([executable, "-c", script], capture_output=True, text=True,
+                           env={**EMPTY_ENVIRONMENT, "PYTHONPATH": f"{site}:{source}"},
+                           timeout=120) for executable in (str(python), sys.executable)]
+    assert all(run.returncode == 0 for run in runs), runs[0].stderr + runs[1].stderr
+    assert runs[0].stdout == runs[1].stdout          # unchanged results, bit for bit
+    fmpy_angle, libcosim_angle = map(float, runs[0].stdout.split())
+    assert fmpy_angle == pytest.approx(libcosim_angle, rel=1e-12)
 
 
 def test_the_fmu_ships_the_loader_and_pythonfmus_binary(fmu_path):
