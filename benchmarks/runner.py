@@ -8,7 +8,8 @@ Measures, each in its module, and writes benchmarks/results.md:
    `simulate_fmu`, next to floor FMUs (`floor`) whose do_step does nothing;
 2. `accuracy`: against Tătaru's numerical method (the seed's ODE under RK4);
 3. `vectorized`: `joint_response` on numpy arrays against a scalar loop;
-4. `growth`: per-step cost and memory as the run grows.
+4. `growth`: per-step cost and memory as the run grows;
+5. `c_host`: the same step in a C host against FMPy's loop.
 
 Not part of the test run: tests/test_benchmarks_smoke.py only checks that
 `--quick` writes the tables.
@@ -24,6 +25,7 @@ from pathlib import Path
 from cardan_joint import variables as table
 
 from .accuracy import accuracy, accuracy_rows, accuracy_table, worker_accuracy
+from .c_host import c_host_cost, c_host_rows
 from .floor import FLOORS, build_floor_fmu, build_joint_fmu, unzip
 from .growth import growth, growth_rows, growth_table, worker_tracemalloc
 from .step_cost import (LOOP_CHUNK, SIMULATE_CHUNK, STEP_SIZE, cost_rows, step_cost,
@@ -74,6 +76,7 @@ def summary_table(results, sizes):
         *accuracy_rows(results["accuracy"]),
         *vector_rows(results["vector"], sizes),
         *growth_rows(results["growth"]),
+        *c_host_rows(results["c_host"], sizes),
     ])
 
 
@@ -121,7 +124,7 @@ def run_all(sizes, joint_fmu, workdir):
     fmus["joint"] = unzip(joint_fmu or build_joint_fmu(workdir), workdir)
     cost = step_cost(fmus, sizes)
     return {"cost": cost, "accuracy": accuracy(fmus["joint"]), "vector": vectorized(sizes),
-            "growth": growth(fmus, sizes, cost)}
+            "growth": growth(fmus, sizes, cost), "c_host": c_host_cost(fmus, sizes, workdir)}
 
 
 def main(argv=None):

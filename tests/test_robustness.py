@@ -9,7 +9,7 @@ import numpy as np
 import pytest
 
 from cardan_joint import variables as table
-from cardan_joint.instance import JointInstance
+from cardan_joint.instance import JointInstance, status_of
 from cardan_joint.physics import CardanJoint
 from cardan_joint.simulate import SimulationError, simulate
 from conftest import build_fmu
@@ -95,7 +95,8 @@ def test_bad_parameters_refuse_every_step_and_say_why(model_description, unzippe
     joint = JointInstance(model_description, unzipped_fmu, start_values={parameter: value},
                           messages=messages)
     try:
-        assert any(all(w in m[2] for w in words) for m in messages if m[0] == 3)   # error at init
+        assert joint.init_status == 3                                               # fmi2Error
+        assert any(all(w in m[2] for w in words) for m in messages if m[0] == 3)   # ... and why
         for _ in range(3):
             assert joint.try_step(0.01) == DISCARD
         assert all(w in messages[-1][2] for w in words)
@@ -107,9 +108,9 @@ def test_parameters_cannot_change_after_initialization(model_description, unzipp
     messages = []
     joint = JointInstance(model_description, unzipped_fmu, messages=messages)
     try:
-        joint.set(crosspiece_inertia_1=5.0)
+        assert joint.try_set(crosspiece_inertia_1=5.0) == 3                # fmi2Error
         assert joint.get("crosspiece_inertia_1")["crosspiece_inertia_1"] == 0.026
-        assert "crosspiece_inertia_1 = 5.0 ignored" in messages[-1][2]
+        assert "parameter crosspiece_inertia_1 is fixed" in messages[-1][2]
         assert joint.try_step(0.01) == 0
     finally:
         joint.close()
@@ -124,8 +125,10 @@ def test_plain_simulate_fmu_shows_the_message_on_the_terminal(fmu_path):
     run = subprocess.run([sys.executable, "-c", script], capture_output=True, text=True, timeout=120)
     assert run.returncode == 0
     assert "stopped at 0.5" in run.stdout                 # FMPy stops early, silently
-    assert "input bend_angle = 1.5 rad" in run.stderr     # ... but the FMU says why
-    assert "max_bend_angle" in run.stderr and "t = 0.5 s" in run.stderr
+    # ... but the FMU says why: on stderr, as FMPy's default logger cannot be trusted
+    # with logging off (its proxy may still point at a freed logger of an earlier run)
+    assert "Discard: t = 0.5 s: input bend_angle = 1.5 rad" in run.stderr
+    assert "max_bend_angle" in run.stderr
 
 
 def test_simulate_entry_point_raises_with_the_message(fmu_path):
@@ -286,11 +289,11 @@ def test_calls_for_other_types_and_bad_references_are_errors_not_fatal(model_des
     messages = []
     joint = JointInstance(model_description, unzipped_fmu, messages=messages)
     try:
-        assert joint.fmu.getInteger([0]) == [0]
-        assert joint.fmu.getBoolean([0]) == [False]
-        joint.fmu.setInteger([0], [1])
-        joint.fmu.setBoolean([0], [True])
-        assert math.isnan(joint.fmu.getReal([9999])[0])
+        fmu = joint.fmu
+        for call, arguments in ((fmu.getInteger, ([0],)), (fmu.getBoolean, ([0],)),
+                                (fmu.setInteger, ([0], [1])), (fmu.setBoolean, ([0], [True])),
+                                (fmu.getReal, ([9999],))):
+            assert status_of(call, *arguments) == 3      # fmi2Error, never fmi2Fatal
         assert any("no Real variable has value reference 9999" in m[2] for m in messages)
         assert any("no Integer variables" in m[2] for m in messages)
         assert joint.try_step(0.01) == 0        # still alive and well
@@ -306,7 +309,7 @@ def test_a_garbage_serialized_state_is_refused_and_changes_nothing(model_descrip
         joint.step(0.05)
         before = all_reals(joint)
         state = joint.deserialize_state(b"not a state at all")
-        joint.set_state(state)
+        assert status_of(joint.set_state, state) == 3       # fmi2Error
         joint.free_state(state)
         assert "fmi2SetFMUstate ignored" in messages[-1][2]
         assert all_reals(joint) == before

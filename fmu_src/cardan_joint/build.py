@@ -135,6 +135,14 @@ def build(dest="dist", model_name: str = None, start_values: dict = None,
                                                                          script.stem)]:
                 del sys.modules[name]
     fmu = Path(fmu)
+    # --- native loader (issue 11): C hosts run the FMU without any set-up ---
+    from .native import NativeBuildError, install_loader
+    try:
+        install_loader(fmu, model_name)
+    except NativeBuildError as error:
+        fmu.unlink()
+        raise BuildError(str(error)) from None
+    # --- end native loader ---
     if validate:
         from fmpy.validation import validate_fmu
 

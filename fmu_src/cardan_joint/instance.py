@@ -51,6 +51,17 @@ def logging_callbacks(sink: Any):
     return callbacks
 
 
+def status_of(call, *args, **kwargs) -> int:
+    """The FMI status of a call FMPy raises on (fmi2Discard or worse), 0 for OK."""
+    from fmpy.fmi1 import FMICallException
+
+    try:
+        call(*args, **kwargs)
+        return 0
+    except FMICallException as refusal:
+        return refusal.status
+
+
 class JointInstance:
     """One instance of an unzipped FMU, initialised and ready to step from `start_time`.
 
@@ -90,9 +101,13 @@ class JointInstance:
             self.close()
             raise
 
-    def exit_initialization_mode(self) -> None:
-        self.fmu.exitInitializationMode()
+    def exit_initialization_mode(self) -> int:
+        """Leave initialization; the FMI status is kept as `init_status` (fmi2Error
+        for parameters that cannot run: the instance stays usable, every step is
+        refused until they are fixed)."""
+        self.init_status = status_of(self.fmu.exitInitializationMode)
         self._cleanup.append(self.fmu.terminate)
+        return self.init_status
 
     @classmethod
     def open(cls, fmu: str | Path, **arguments) -> JointInstance:
@@ -139,13 +154,11 @@ class JointInstance:
 
     def try_step(self, step_size: float) -> int:
         """Step; return the FMI status (a refused step leaves the time where it was)."""
-        from fmpy.fmi1 import FMICallException
+        return status_of(self.step, step_size)
 
-        try:
-            self.step(step_size)
-            return 0
-        except FMICallException as refusal:
-            return refusal.status
+    def try_set(self, **values: float) -> int:
+        """Set; return the FMI status (fmi2Error for a call FMI does not allow)."""
+        return status_of(self.set, **values)
 
     def get_state(self):
         return self.fmu.getFMUstate()

@@ -5,13 +5,12 @@ No equation lives here. What does live here is the FMI plumbing that pythonfmu
 layer becomes fmi2Fatal, so every method it calls catches everything; a
 refused step returns False (fmi2Discard) with the joint untouched; the
 complete state (including the revolution counter) is saved for
-fmi2GetFMUstate; and every problem is also written to stderr, because
-pythonfmu drops log messages unless debug logging is on.
+fmi2GetFMUstate; and every problem is logged (the FMU's native loader makes
+sure it reaches the host, see `cardan_joint.native`).
 """
 
 import json
 import math
-import sys
 from operator import attrgetter
 
 from pythonfmu import Fmi2Causality, Fmi2Slave, Fmi2Variability, Real
@@ -84,7 +83,6 @@ class CardanJointSlave(Fmi2Slave):
         self._initialized = False
         self._outputs = None            # cached outputs; None = recompute on next read
         self._inputs_checked = False
-        self._last_message = None
         self._outputs_held, self._inputs_held = refs.nan_outputs, refs.inputs_of(self._joint)
         if not (self._joint.parameter_fault or self._joint.input_problem()):
             self._outputs_held = self._joint.outputs()
@@ -109,18 +107,10 @@ class CardanJointSlave(Fmi2Slave):
     # --- messages ------------------------------------------------------------
 
     def _report(self, message: str, status: Fmi2Status) -> None:
+        # No stderr here: the FMU's native loader hands every message to the host's
+        # logger (warnings and refusals even with debug logging off), or to stderr
+        # when the host gave no logger or $CARDAN_JOINT_FMU_STDERR asks for it.
         self.log(message, status)
-        if message != self._last_message:
-            self._last_message = message
-            # pythonfmu forwards log messages only with debug logging on, so a user
-            # of plain fmpy.simulate_fmu would never learn why the run stopped.
-            # A host without a usable stderr must not turn this into fmi2Fatal.
-            try:
-                sys.stderr.write(f"[{self.modelName} {self.instance_name}] "
-                                 f"{status.name.upper()}: {message}\n")
-                sys.stderr.flush()
-            except Exception:
-                pass
 
     def _fault(self, where: str, error: BaseException) -> None:
         try:

@@ -1,0 +1,107 @@
+/* One FMU instance as the loader sees it, and pythonfmu's fmi2 entry points. */
+#ifndef CARDAN_JOINT_INSTANCE_H
+#define CARDAN_JOINT_INSTANCE_H
+
+#include "fmi2.h"
+#include "loader.h"
+
+#ifndef MODEL_IDENTIFIER
+#error "compile with -DMODEL_IDENTIFIER=\"<modelIdentifier>\""
+#endif
+
+#define INSTANCE_MAGIC 0x4341524aU
+
+/* FMI 2.0 co-simulation states; a mask of them says where a call is legal. */
+enum state {
+    STATE_INSTANTIATED = 1,
+    STATE_INITIALIZATION = 2,
+    STATE_STEP_COMPLETE = 4,
+    STATE_TERMINATED = 8,
+    STATE_FATAL = 16,
+};
+
+#define ALIVE (STATE_INSTANTIATED | STATE_INITIALIZATION | STATE_STEP_COMPLETE | STATE_TERMINATED)
+#define ANY (ALIVE | STATE_FATAL)
+
+struct instance {
+    unsigned magic;
+    fmi2Component slave;
+    const char *model;
+    char *name, *guid, *resources_uri;
+    fmi2Boolean visible;
+    fmi2CallbackFunctions host;      /* the host's callbacks, as given */
+    fmi2CallbackFunctions to_slave;  /* the same with this file's logger */
+    int logging_on, echo_stderr, shared_proxy;
+    char **categories;
+    size_t n_categories;
+    enum state state;
+    fmi2Status worst;                /* worst status logged during the current call */
+    const struct fixed_parameters *fixed;
+    fmi2FMUstate *fmu_states;        /* the live FMU states this instance handed out */
+    size_t n_fmu_states, fmu_states_capacity;
+};
+
+#define SLAVE_FUNCTIONS(X)                                                            \
+    X(instantiate, fmi2Instantiate, fmi2Component, (fmi2String, fmi2Type, fmi2String,   \
+      fmi2String, const fmi2CallbackFunctions *, fmi2Boolean, fmi2Boolean))            \
+    X(free_instance, fmi2FreeInstance, void, (fmi2Component))                           \
+    X(setup_experiment, fmi2SetupExperiment, fmi2Status, (fmi2Component, fmi2Boolean,   \
+      fmi2Real, fmi2Real, fmi2Boolean, fmi2Real))                                       \
+    X(enter_initialization, fmi2EnterInitializationMode, fmi2Status, (fmi2Component))   \
+    X(exit_initialization, fmi2ExitInitializationMode, fmi2Status, (fmi2Component))     \
+    X(terminate, fmi2Terminate, fmi2Status, (fmi2Component))                            \
+    X(get_real, fmi2GetReal, fmi2Status, (fmi2Component, const fmi2ValueReference *,    \
+      size_t, fmi2Real *))                                                              \
+    X(get_integer, fmi2GetInteger, fmi2Status, (fmi2Component,                          \
+      const fmi2ValueReference *, size_t, fmi2Integer *))                               \
+    X(get_boolean, fmi2GetBoolean, fmi2Status, (fmi2Component,                          \
+      const fmi2ValueReference *, size_t, fmi2Boolean *))                               \
+    X(get_string, fmi2GetString, fmi2Status, (fmi2Component,                            \
+      const fmi2ValueReference *, size_t, fmi2String *))                                \
+    X(set_real, fmi2SetReal, fmi2Status, (fmi2Component, const fmi2ValueReference *,    \
+      size_t, const fmi2Real *))                                                        \
+    X(set_integer, fmi2SetInteger, fmi2Status, (fmi2Component,                          \
+      const fmi2ValueReference *, size_t, const fmi2Integer *))                         \
+    X(set_boolean, fmi2SetBoolean, fmi2Status, (fmi2Component,                          \
+      const fmi2ValueReference *, size_t, const fmi2Boolean *))                         \
+    X(set_string, fmi2SetString, fmi2Status, (fmi2Component,                            \
+      const fmi2ValueReference *, size_t, const fmi2String *))                          \
+    X(get_fmu_state, fmi2GetFMUstate, fmi2Status, (fmi2Component, fmi2FMUstate *))      \
+    X(set_fmu_state, fmi2SetFMUstate, fmi2Status, (fmi2Component, fmi2FMUstate))        \
+    X(free_fmu_state, fmi2FreeFMUstate, fmi2Status, (fmi2Component, fmi2FMUstate *))    \
+    X(serialized_size, fmi2SerializedFMUstateSize, fmi2Status, (fmi2Component,          \
+      fmi2FMUstate, size_t *))                                                          \
+    X(serialize, fmi2SerializeFMUstate, fmi2Status, (fmi2Component, fmi2FMUstate,       \
+      fmi2Byte *, size_t))                                                              \
+    X(deserialize, fmi2DeSerializeFMUstate, fmi2Status, (fmi2Component,                 \
+      const fmi2Byte *, size_t, fmi2FMUstate *))                                        \
+    X(do_step, fmi2DoStep, fmi2Status, (fmi2Component, fmi2Real, fmi2Real, fmi2Boolean)) \
+    X(get_real_status, fmi2GetRealStatus, fmi2Status, (fmi2Component, fmi2StatusKind,   \
+      fmi2Real *))                                                                      \
+    X(get_boolean_status, fmi2GetBooleanStatus, fmi2Status, (fmi2Component,             \
+      fmi2StatusKind, fmi2Boolean *))
+
+struct slave_api {
+    void *handle;
+    void (*finalize)(void);
+#define MEMBER(member, symbol, result, parameters) result(*member) parameters;
+    SLAVE_FUNCTIONS(MEMBER)
+#undef MEMBER
+};
+extern struct slave_api slave;
+
+int resolve_slave_api(void *handle, char *error, size_t size);
+/* Every fmi2 call on an instance: enter() checks it and the state machine
+ * (NULL: answer fmi2Error), leave() returns the worst status logged. */
+struct instance *enter(fmi2Component c, unsigned allowed, const char *function);
+fmi2Status leave(struct instance *in, fmi2Status status);
+int arrays_given(struct instance *in, const char *function, size_t n, const void *references,
+                 const void *values);
+fmi2Status drop_state(struct instance *in, fmi2FMUstate *state);
+int instantiate_slave(struct instance *in);
+void free_instance(struct instance *in);
+void report(struct instance *in, fmi2Status status, const char *category, const char *text);
+void reportf(struct instance *in, fmi2Status status, const char *format, ...)
+    __attribute__((format(printf, 3, 4)));
+
+#endif

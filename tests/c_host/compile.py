@@ -1,0 +1,16 @@
+"""Compile the C test host (host.c and friends) with the machine's compiler ($CC, else cc)."""
+
+import os
+import shlex
+import subprocess
+from pathlib import Path
+
+HERE = Path(__file__).resolve().parent
+NATIVE = HERE.parents[1] / "fmu_src" / "cardan_joint" / "native"
+
+
+def compile_host(output: Path) -> Path:
+    subprocess.run([*shlex.split(os.environ.get("CC") or "cc"), "-std=gnu11", "-O2", "-pthread",
+                    f"-I{NATIVE}", *map(str, sorted(HERE.glob("*.c"))), "-ldl", "-lm",
+                    "-o", str(output)], check=True)
+    return output
