@@ -77,10 +77,10 @@ def _stage(workdir: Path, script_template: Path, model_name: str, start_values: 
         else:
             shutil.copy2(source, target / entry)
     script = script_template.read_text().replace("from cardan_joint.", f"from {package}.")
-    base = re.search(r"^class \w+\((\w+)\):", script, flags=re.M)
+    base = re.search(r"^class \w+\(([\w, ]+)\):", script, flags=re.M)
     if base is None:
         raise BuildError(f"{script_template} has no slave class for the build to rename")
-    script = _rewrite(script, r"^class \w+\(\w+\):", f"class {model_name}({base.group(1)}):",
+    script = _rewrite(script, r"^class \w+\([\w, ]+\):", f"class {model_name}({base.group(1)}):",
                       "class", True)
     script = _rewrite(script, r"^    start_overrides = \{\}$",
                       f"    start_overrides = {start_values!r}", "start_overrides", True)

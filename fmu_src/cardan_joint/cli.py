@@ -169,7 +169,7 @@ def _progress_callback(stop_time, step, show):
 
 
 def simulate_command(args):
-    from .simulate import simulate
+    from .simulate import flat_columns, simulate
 
     fmu = Path(args.fmu)
     if not fmu.is_file():
@@ -207,6 +207,7 @@ def simulate_command(args):
     sys.stderr.write(fmu_messages.getvalue())
     output = Path(args.output)
     plot = Path(args.plot) if args.plot else output.with_suffix(".png")
+    result = flat_columns(result)                    # an FMI 3 FMU's arrays, as FMI 2 columns
     write_result_csv(result, output)
     plot.parent.mkdir(parents=True, exist_ok=True)
     plot_result(result, args.plot_variables, plot,

@@ -33,7 +33,8 @@ GROUPS = table.fmi3_variables()
 # Value reference -> the flat indices (FMI 2 value references) it holds.
 _FLAT = ((),) + tuple(tuple(core.NAMES.index(row.name) for row in group.rows)
                       for group in GROUPS)
-_LONGEST = max(len(flat) for flat in _FLAT)
+_SIZE = tuple(len(flat) or 1 for flat in _FLAT)     # elements per value reference
+_LONGEST = max(_SIZE)
 _SETTABLE = frozenset(vr for vr, group in enumerate(GROUPS, start=1)
                       if group.causality in ("input", "parameter"))
 _OK = Fmi3StepResult(status=Fmi3Status.ok, terminateSimulation=False)
@@ -128,28 +129,23 @@ class CardanJointSlave3(JointCore, Fmi3Slave):
             indices = self._flat_indices(vrs, "fmi3GetFloat64")
             if indices is None:
                 return [math.nan] * (_LONGEST * len(vrs))
-            values = self._get_flat(indices)
-            if TIME_REFERENCE in vrs:       # the only value reference with no flat index
-                values = self._get_with_time(vrs)
-            return values
+            if TIME_REFERENCE in vrs:       # the one value reference with no flat index
+                return [value for vr in vrs for value in
+                        ([self._joint.time] if vr == TIME_REFERENCE
+                         else self._get_flat(list(_FLAT[vr])))]
+            return self._get_flat(indices)
         except Exception as error:
             self._fault("fmi3GetFloat64", error)
             return [math.nan] * (_LONGEST * len(vrs))
-
-    def _get_with_time(self, vrs):
-        values = []
-        for vr in vrs:
-            values.extend([self._joint.time] if vr == TIME_REFERENCE
-                          else self._get_flat(list(_FLAT[vr])))
-        return values
 
     def set_float64(self, vrs, values):
         try:
             indices = self._flat_indices(vrs, "fmi3SetFloat64")
             if indices is None:
                 return
-            if len(values) != len(indices):
-                self._report(f"fmi3SetFloat64: {len(values)} values for {len(indices)} "
+            sizes = [_SIZE[vr] for vr in vrs]
+            if len(values) != sum(sizes):
+                self._report(f"fmi3SetFloat64: {len(values)} values for {sum(sizes)} "
                              f"elements of value references {list(vrs)}: nothing set",
                              Fmi3Status.error)
                 return
@@ -158,23 +154,13 @@ class CardanJointSlave3(JointCore, Fmi3Slave):
                 names = ", ".join(self._fmi3_name(vr) for vr in refused)
                 self._report(f"fmi3SetFloat64 on {names} ignored: only inputs and parameters "
                              f"can be set", Fmi3Status.error)
-                values = [value for vr in vrs if vr in _SETTABLE
-                          for value, _ in zip(values, _FLAT[vr])] if False else \
-                    self._settable_values(vrs, values)
-                indices = [i for vr in vrs if vr in _SETTABLE for i in _FLAT[vr]]
+                starts = [sum(sizes[:k]) for k in range(len(vrs))]
+                kept = [k for k, vr in enumerate(vrs) if vr in _SETTABLE]
+                indices = [i for k in kept for i in _FLAT[vrs[k]]]
+                values = [v for k in kept for v in values[starts[k]:starts[k] + sizes[k]]]
             self._set_flat(indices, values, "fmi3SetFloat64")
         except Exception as error:
             self._fault("fmi3SetFloat64", error)
-
-    @staticmethod
-    def _settable_values(vrs, values):
-        kept, position = [], 0
-        for vr in vrs:
-            size = len(_FLAT[vr]) or 1
-            if vr in _SETTABLE:
-                kept.extend(values[position:position + size])
-            position += size
-        return kept
 
     @staticmethod
     def _fmi3_name(vr):
@@ -194,7 +180,7 @@ class CardanJointSlave3(JointCore, Fmi3Slave):
         return self._no_such_variables("Int64", vrs, 0)
 
     def get_uint64(self, vrs):
-        return self._no_such_variables("UInt64", vrs, ctypes.c_uint64(0))
+        return self._no_such_variables("UInt64", vrs, ctypes.c_uint64(0))  # read via .value
 
     def get_boolean(self, vrs):
         return self._no_such_variables("Boolean", vrs, False)
