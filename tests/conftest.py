@@ -24,7 +24,7 @@ def build_fmu(dest: Path, *args: str) -> Path:
                             capture_output=True, text=True, cwd=ROOT)
     assert result.returncode == 0, result.stdout + result.stderr
     name = next((a.split("=", 1)[1] for a in args if a.startswith("--name=")), "UniversalJoint")
-    return dest / f"{name}.fmu"
+    return dest / ("fmi3" if "--fmi-version=3" in args else "") / f"{name}.fmu"
 
 
 @pytest.fixture(scope="session")

@@ -88,7 +88,8 @@ def simulate(fmu=DEFAULT_FMU, stop_time=None, output_interval=None, inputs=None,
 
     messages = []
 
-    def collect(component, instance, status, category, message):
+    def collect(*arguments):     # FMI 2 passes (component, instance, ...), FMI 3 (environment, ...)
+        status, category, message = arguments[-3:]
         messages.append((_STATUS.get(status, str(status)), category.decode(errors="replace"),
                          message.decode(errors="replace")))
 
