@@ -37,7 +37,7 @@ _SIZE = tuple(len(flat) or 1 for flat in _FLAT)     # elements per value referen
 _LONGEST = max(_SIZE)
 _SETTABLE = frozenset(vr for vr, group in enumerate(GROUPS, start=1)
                       if group.causality in ("input", "parameter"))
-_OK = Fmi3StepResult(status=Fmi3Status.ok, terminateSimulation=False)
+# terminateSimulation set explicitly: pythonfmu3 copies it to the host only when present.
 _STEP_RESULTS = {status: Fmi3StepResult(status=status, terminateSimulation=False)
                  for status in Fmi3Status}
 # cppfmu::Logger (pythonfmu3 0.3.4, pinned): { void* environment; callback logMessage; ... }.
@@ -106,8 +106,7 @@ class CardanJointSlave3(JointCore, Fmi3Slave):
             self._fault("enter_initialization_mode", error)
 
     def do_step(self, current_time, step_size):
-        status = self._step(current_time, step_size)
-        return _OK if status == Fmi3Status.ok else _STEP_RESULTS[status]
+        return _STEP_RESULTS[self._step(current_time, step_size)]
 
     # --- values --------------------------------------------------------------
 
