@@ -16,6 +16,7 @@ functions) and `_report(message, status)`.
 
 import json
 import math
+import sys
 from operator import attrgetter
 
 from .. import __version__
@@ -68,6 +69,18 @@ class JointCore:
         self._outputs_held, self._inputs_held = _NAN_OUTPUTS, _inputs_of(self._joint)
         if not (self._joint.parameter_fault or self._joint.input_problem()):
             self._outputs_held = self._joint.outputs()
+
+    def _echo_to_stderr(self, message: str, status) -> None:
+        """Also write a message to stderr, once per distinct message, for hosts whose
+        logger never sees it; a host without a usable stderr must not make it fatal."""
+        if message != self._last_message:
+            self._last_message = message
+            try:
+                sys.stderr.write(f"[{self.modelName} {self.instance_name}] "
+                                 f"{status.name.upper()}: {message}\n")
+                sys.stderr.flush()
+            except Exception:
+                pass
 
     def _fault(self, where: str, error: BaseException) -> None:
         try:

@@ -30,15 +30,11 @@ def complete(root: Element, groups) -> Element:
         group = by_name.get(node.get("name"))
         if group is None:                      # the independent variable
             continue
-        node.set("unit", group.unit)
-        if group.display_unit:
-            node.set("displayUnit", group.display_unit)
-        for attribute in ("min", "max"):
-            value = getattr(group, attribute)
-            if value is not None:
-                node.set(attribute, _number(value))
-        if group.start is not None:
-            node.set("start", " ".join([_number(group.start)] * len(group.rows)))
+        start = None if group.start is None else " ".join([_number(group.start)] * len(group.rows))
+        attributes = {"unit": group.unit, "displayUnit": group.display_unit, "start": start,
+                      **{a: None if getattr(group, a) is None else _number(getattr(group, a))
+                         for a in ("min", "max")}}
+        node.attrib.update({k: v for k, v in attributes.items() if v})
 
     structure = root.find("ModelStructure")
     for child in list(structure):

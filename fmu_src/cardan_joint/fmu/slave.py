@@ -11,7 +11,6 @@ logging is on.
 """
 
 import math
-import sys
 
 from pythonfmu import Fmi2Causality, Fmi2Slave, Fmi2Variability, Real
 from pythonfmu.default_experiment import DefaultExperiment
@@ -60,17 +59,9 @@ class CardanJointSlave(JointCore, Fmi2Slave):
 
     def _report(self, message: str, status: Fmi2Status) -> None:
         self.log(message, status)
-        if message != self._last_message:
-            self._last_message = message
-            # pythonfmu forwards log messages only with debug logging on, so a user
-            # of plain fmpy.simulate_fmu would never learn why the run stopped.
-            # A host without a usable stderr must not turn this into fmi2Fatal.
-            try:
-                sys.stderr.write(f"[{self.modelName} {self.instance_name}] "
-                                 f"{status.name.upper()}: {message}\n")
-                sys.stderr.flush()
-            except Exception:
-                pass
+        # pythonfmu forwards log messages only with debug logging on, so a user
+        # of plain fmpy.simulate_fmu would never learn why the run stopped.
+        self._echo_to_stderr(message, status)
 
     # --- life cycle ----------------------------------------------------------
 

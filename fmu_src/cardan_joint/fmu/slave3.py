@@ -15,7 +15,6 @@ status; but it calls the host's logger without checking for NULL, which FMI
 
 import ctypes
 import math
-import sys
 
 from pythonfmu3 import Fmi3Causality, Fmi3Slave, Fmi3Variability, Float64
 from pythonfmu3.default_experiment import DefaultExperiment
@@ -86,14 +85,8 @@ class CardanJointSlave3(JointCore, Fmi3Slave):
     def _report(self, message: str, status: Fmi3Status) -> None:
         if self._log_to_host:
             self.log(message, status)
-        elif message != self._last_message:
-            self._last_message = message
-            try:
-                sys.stderr.write(f"[{self.modelName} {self.instance_name}] "
-                                 f"{status.name.upper()}: {message}\n")
-                sys.stderr.flush()
-            except Exception:
-                pass
+        else:
+            self._echo_to_stderr(message, status)
 
     # --- life cycle ----------------------------------------------------------
 
