@@ -46,3 +46,24 @@ def model_description(fmu_path):
     from fmpy import read_model_description
 
     return read_model_description(str(fmu_path))
+
+
+
+@pytest.fixture(scope="session")
+def fmi3_path(tmp_path_factory) -> Path:
+    return build_fmu(tmp_path_factory.mktemp("fmu3"), "--fmi-version=3")
+
+
+@pytest.fixture(scope="session")
+def fmi3_unzipped(fmi3_path, tmp_path_factory):
+    from fmpy import extract
+
+    # pytest removes its old temporary directories itself.
+    return extract(str(fmi3_path), unzipdir=str(tmp_path_factory.mktemp("unzipped3")))
+
+
+@pytest.fixture(scope="session")
+def fmi3_description(fmi3_unzipped):
+    from fmpy import read_model_description
+
+    return read_model_description(fmi3_unzipped)

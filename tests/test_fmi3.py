@@ -7,35 +7,14 @@ import textwrap
 
 import numpy as np
 import pytest
-from fmpy.fmi1 import FMICallException
 
 from cardan_joint import variables as table
 from cardan_joint.simulate import SimulationError, flat_columns, simulate
-from conftest import build_fmu
 from fmi_loop import JointInstance
 
 GROUPS = table.fmi3_variables()
 ARRAYS = {"crosspiece_quaternion": 4, "crosspiece_angular_velocity": 3, "crosspiece_torque": 3}
 INPUT_LAWS = ("input_speed", "bend_angle", "load_torque")
-
-
-@pytest.fixture(scope="session")
-def fmi3_path(tmp_path_factory):
-    return build_fmu(tmp_path_factory.mktemp("fmu3"), "--fmi-version=3")
-
-
-@pytest.fixture(scope="session")
-def fmi3_description(fmi3_path):
-    from fmpy import read_model_description
-
-    return read_model_description(str(fmi3_path))
-
-
-@pytest.fixture(scope="session")
-def fmi3_unzipped(fmi3_path, tmp_path_factory):
-    from fmpy import extract
-
-    return extract(str(fmi3_path), unzipdir=str(tmp_path_factory.mktemp("unzipped3")))
 
 
 @pytest.fixture
@@ -84,6 +63,7 @@ def test_fmpy_validates_it_and_reads_every_unit_and_display_unit(fmi3_path, fmi3
     assert (md.defaultExperiment.startTime, md.defaultExperiment.stopTime,
             md.defaultExperiment.stepSize) == ("0.0", "2.0", "0.001")
     assert md.coSimulation.canGetAndSetFMUstate and md.coSimulation.canSerializeFMUstate
+    assert md.coSimulation.canHandleVariableCommunicationStepSize
 
 
 def test_log_categories_are_those_of_the_fmi2_fmu(fmi3_description, model_description):
@@ -311,3 +291,17 @@ def test_the_cli_writes_the_same_columns_for_either_fmu(fmu_path, fmi3_path, tmp
                      "0.05", "--step", "0.01", "--output", str(out), "--no-progress"]) == 0
         tables.append(out.read_text())
     assert tables[0] == tables[1]
+
+
+def test_an_internal_fault_in_a_step_is_an_error_status_not_an_exception(monkeypatch):
+    from pythonfmu3.enums import Fmi3Status
+
+    from cardan_joint.fmu.slave3 import CardanJointSlave3
+
+    slave = CardanJointSlave3(instance_name="faulty")
+    slave.enter_initialization_mode()
+    slave.exit_initialization_mode()
+    monkeypatch.setattr(slave._joint, "step", lambda step_size: 1 / 0)
+    assert slave.do_step(0.0, 0.1).status == Fmi3Status.error
+    assert "internal error in do_step: ZeroDivisionError" in slave.log_queue[-1].msg
+    assert slave.get_float64([0])[0] == 0.0                # the clock stays at the step's start

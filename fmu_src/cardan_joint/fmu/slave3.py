@@ -36,9 +36,7 @@ _SIZE = tuple(len(flat) or 1 for flat in _FLAT)     # elements per value referen
 _LONGEST = max(_SIZE)
 _SETTABLE = frozenset(vr for vr, group in enumerate(GROUPS, start=1)
                       if group.causality in ("input", "parameter"))
-# terminateSimulation set explicitly: pythonfmu3 copies it to the host only when present.
-_STEP_RESULTS = {status: Fmi3StepResult(status=status, terminateSimulation=False)
-                 for status in Fmi3Status}
+_STEP_RESULTS = {status: Fmi3StepResult(status=status) for status in Fmi3Status}
 # cppfmu::Logger (pythonfmu3 0.3.4, pinned): { void* environment; callback logMessage; ... }.
 _LOGGER_CALLBACK_OFFSET = ctypes.sizeof(ctypes.c_void_p)
 
