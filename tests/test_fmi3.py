@@ -305,3 +305,14 @@ def test_an_internal_fault_in_a_step_is_an_error_status_not_an_exception(monkeyp
     assert slave.do_step(0.0, 0.1).status == Fmi3Status.error
     assert "internal error in do_step: ZeroDivisionError" in slave.log_queue[-1].msg
     assert slave.get_float64([0])[0] == 0.0                # the clock stays at the step's start
+
+
+def test_the_model_description_carries_the_builds_start_values():
+    from cardan_joint.fmu.slave3 import CardanJointSlave3
+
+    class Bent(CardanJointSlave3):
+        start_overrides = {"bend_angle": 0.2, "max_bend_angle": math.nextafter(1.2, 2.0)}
+
+    variables = {v.get("name"): v for v in Bent(instance_name="bent").to_xml().iter("Float64")}
+    assert variables["bend_angle"].get("start") == "0.2"
+    assert float(variables["max_bend_angle"].get("start")) == math.nextafter(1.2, 2.0)

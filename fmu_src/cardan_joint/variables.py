@@ -2,7 +2,9 @@
 
 Registration, the model description (units, display units, min/max,
 variability, initial, ModelStructure dependencies), the physics model's default
-values and the README's variable table are all generated from `VARIABLES`.
+values and the README's variable table are all generated from `VARIABLES`, for
+FMI 2.0 and FMI 3.0 alike: `fmi3_variables()` groups the rows of a vector
+(`<stem>_<i>`, named in `ARRAY_STEMS`) into one FMI 3 array.
 Pure data: no FMI import, so the physics can read its defaults from here.
 """
 

@@ -14,9 +14,10 @@ CAPABILITIES = {"canHandleVariableCommunicationStepSize": "true",
                 "canGetAndSetFMUState": "true", "canSerializeFMUState": "true"}
 
 
-def complete(root: Element, groups) -> Element:
+def complete(root: Element, groups, starts) -> Element:
     """`groups`: `variables.fmi3_variables()`, the order the slave registered them in
-    (after the independent variable `time`)."""
+    (after the independent variable `time`); `starts`: name -> start value (the
+    build's, which may differ from the table's)."""
     cosimulation = root.find("CoSimulation")
     for name, value in CAPABILITIES.items():
         cosimulation.set(name, value)
@@ -30,7 +31,7 @@ def complete(root: Element, groups) -> Element:
         group = by_name.get(node.get("name"))
         if group is None:                      # the independent variable
             continue
-        start = None if group.start is None else " ".join([_number(group.start)] * len(group.rows))
+        start = _number(starts[group.name]) if group.name in starts else None
         attributes = {"unit": group.unit, "displayUnit": group.display_unit, "start": start,
                       **{a: None if getattr(group, a) is None else _number(getattr(group, a))
                          for a in ("min", "max")}}

@@ -76,7 +76,8 @@ class CardanJointSlave3(JointCore, Fmi3Slave):
             dimensions=dimensions, getter=lambda: None, setter=lambda value: None))
 
     def to_xml(self, model_options=None):
-        return complete(super().to_xml(model_options or {}), GROUPS)
+        starts = {name: getattr(self._joint, name) for name in core.KNOWN}
+        return complete(super().to_xml(model_options or {}), GROUPS, starts)
 
     # --- messages ------------------------------------------------------------
 
