@@ -242,3 +242,25 @@ def test_the_model_description_carries_the_builds_start_values():
     variables = {v.get("name"): v for v in Bent(instance_name="bent").to_xml().iter("Float64")}
     assert variables["bend_angle"].get("start") == "0.2"
     assert float(variables["max_bend_angle"].get("start")) == math.nextafter(1.2, 2.0)
+
+
+def test_an_invalid_input_holds_the_same_outputs_as_fmi2(model_description, unzipped_fmu,
+                                                         fmi3_description, fmi3_unzipped):
+    messages = []
+    joints = [JointInstance(model_description, unzipped_fmu, name="held2"),
+              JointInstance(fmi3_description, fmi3_unzipped, name="held3", messages=messages)]
+    try:
+        for joint in joints:
+            joint.set(input_speed=40.0, load_torque=100.0)
+            joint.step(0.1)
+        valid = [joint.get_flat_outputs() for joint in joints][1]    # what each holds
+        for joint in joints:
+            joint.set(input_speed=20.0, load_torque=math.nan)
+        fmi2, fmi3 = (joint.get_flat_outputs() for joint in joints)
+        assert fmi3 == fmi2
+        assert fmi3["input_torque"] == valid["input_torque"]          # held
+        assert fmi3["output_speed"] != valid["output_speed"]          # follows the speed
+        assert messages[-1][:2] == (1, "logStatusWarning") and "load_torque" in messages[-1][2]
+    finally:
+        for joint in joints:
+            joint.close()
