@@ -24,7 +24,7 @@ def build_fmu(dest: Path, *args: str) -> Path:
                             capture_output=True, text=True, cwd=ROOT)
     assert result.returncode == 0, result.stdout + result.stderr
     name = next((a.split("=", 1)[1] for a in args if a.startswith("--name=")), "UniversalJoint")
-    return dest / f"{name}.fmu"
+    return dest / ("fmi3" if "--fmi-version=3" in args else "") / f"{name}.fmu"
 
 
 @pytest.fixture(scope="session")
@@ -64,3 +64,23 @@ def propshaft_unzipped(propshaft_fmu_path, tmp_path_factory):
                         unzipdir=str(tmp_path_factory.mktemp("propshaft_unzipped")))
     yield directory
     shutil.rmtree(directory, ignore_errors=True)
+
+
+@pytest.fixture(scope="session")
+def fmi3_path(tmp_path_factory) -> Path:
+    return build_fmu(tmp_path_factory.mktemp("fmu3"), "--fmi-version=3")
+
+
+@pytest.fixture(scope="session")
+def fmi3_unzipped(fmi3_path, tmp_path_factory):
+    from fmpy import extract
+
+    # pytest removes its old temporary directories itself.
+    return extract(str(fmi3_path), unzipdir=str(tmp_path_factory.mktemp("unzipped3")))
+
+
+@pytest.fixture(scope="session")
+def fmi3_description(fmi3_unzipped):
+    from fmpy import read_model_description
+
+    return read_model_description(fmi3_unzipped)

@@ -2,7 +2,7 @@
 
 from pathlib import Path
 
-from cardan_joint.variables import markdown_table
+from cardan_joint.variables import fmi3_array_table, markdown_table
 
 ROOT = Path(__file__).resolve().parents[1]
 README = (ROOT / "README.md").read_text()
@@ -13,6 +13,11 @@ TEST_COMMAND = ('python3 -m venv .venv && .venv/bin/pip install -e ".[test]" '
 def test_variable_table_is_generated_from_the_metadata_table():
     begin, end = "<!-- variables:begin -->\n", "<!-- variables:end -->"
     assert README.split(begin)[1].split(end)[0] == markdown_table()
+
+
+def test_fmi3_array_table_is_generated_from_the_metadata_table():
+    begin, end = "<!-- fmi3-arrays:begin -->\n", "<!-- fmi3-arrays:end -->"
+    assert README.split(begin)[1].split(end)[0] == fmi3_array_table()
 
 
 def test_ci_runs_the_readmes_test_command():

@@ -40,7 +40,7 @@ def test_the_slave_refuses_a_step_peaking_inside_it_and_names_the_peak():
     assert slave.do_step(0.1, PEAK_STEP) is False
     refusal = Refusal.from_message(last(slave, Fmi2Status.discard))
     assert (refusal.code, refusal.time) == (Reason.BEND_PEAK_IN_STEP, 0.1)
-    assert slave._joint.time == 0.1 and slave.get_real([REFERENCE["input_angle"]]) == \
+    assert slave._model.time == 0.1 and slave.get_real([REFERENCE["input_angle"]]) == \
         before[REFERENCE["input_angle"]:REFERENCE["input_angle"] + 1]
 
 

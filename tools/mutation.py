@@ -29,6 +29,7 @@ COPIED = ("fmu_src", "tests", "build_fmu.py", "pyproject.toml", "README.md")
 MODEL = "fmu_src/cardan_joint/physics/model.py"
 VALUES = "fmu_src/cardan_joint/physics/values.py"
 SLAVE = "fmu_src/cardan_joint/fmu/slave.py"
+CORE = "fmu_src/cardan_joint/fmu/core.py"
 GUARDS = "tests/test_guards.py"
 SLAVE_GUARDS = "tests/test_slave_guards.py"
 ROBUSTNESS = "tests/test_robustness.py"
@@ -141,26 +142,26 @@ MUTATIONS = (
              "        for name, value in values.items():\n            setattr(self, name, value)\n",
              (GUARDS, SLAVE_GUARDS, "-k", "state")),
     # The slave: what the FMU does with a refusal, illegal calls, states.
-    Mutation("slave: refused step returns Discard", SLAVE,
-             "            if problem:\n                joint.time = time\n",
-             "            if False:\n                joint.time = time\n", (SLAVE_GUARDS, "-k", "step")),
-    Mutation("slave: refused step leaves the clock", SLAVE,
-             "                joint.time = time\n                self._report(",
+    Mutation("slave: refused step returns Discard", CORE,
+             "            if problem:\n                model.time = time\n",
+             "            if False:\n                model.time = time\n", (SLAVE_GUARDS, "-k", "step")),
+    Mutation("slave: refused step leaves the clock", CORE,
+             "                model.time = time\n                self._report(",
              "                self._report(", (f"{ROBUSTNESS}::test_a_refused_step_leaves_the_clock_alone",)),
-    Mutation("slave: invalid inputs hold outputs", SLAVE,
-             "            if problem:\n                self._report(f\"{problem.at(joint.time).message}",
-             "            if False:\n                self._report(f\"{problem.at(joint.time).message}",
+    Mutation("slave: invalid inputs hold outputs", CORE,
+             "            if problem:\n                self._report(f\"{problem.at(model.time).message}",
+             "            if False:\n                self._report(f\"{problem.at(model.time).message}",
              (SLAVE_GUARDS, "-k", "held")),
-    Mutation("slave: held outputs follow the declared dependencies", SLAVE,
+    Mutation("slave: held outputs follow the declared dependencies", CORE,
              "live[i] if dependencies & invalid else fresh[i]", "fresh[i]",
              (f"{ROBUSTNESS}::test_invalid_load_holds_only_the_outputs_that_depend_on_it",)),
-    Mutation("slave: bad parameters are an error at initialization", SLAVE,
-             "            problem = self._joint.parameter_fault\n            if problem:",
-             "            problem = self._joint.parameter_fault\n            if False:",
+    Mutation("slave: bad parameters are an error at initialization", CORE,
+             "            problem = self._model.parameter_fault\n            if problem:",
+             "            problem = self._model.parameter_fault\n            if False:",
              (SLAVE_GUARDS, "-k", "initialization")),
-    Mutation("slave: set on an output or unknown reference", SLAVE,
-             "if not 0 <= vr < refs.first_output:", "if False:", (SLAVE_GUARDS, "-k", "setting")),
-    Mutation("slave: parameter set after initialization", SLAVE,
+    Mutation("slave: set on an output or unknown reference", CORE,
+             "if not 0 <= i < refs.first_output:", "if False:", (SLAVE_GUARDS, "-k", "setting")),
+    Mutation("slave: parameter set after initialization", CORE,
              "elif self._initialized:", "elif False:", (SLAVE_GUARDS, "-k", "after_initialization")),
     Mutation("slave: get of an unknown reference", SLAVE, "            if bad:\n",
              "            if False:\n", (SLAVE_GUARDS, "-k", "unknown_reference")),
@@ -168,16 +169,16 @@ MUTATIONS = (
                f"def _unused_{call}(self, vrs", (SLAVE_GUARDS, "-k", "other_variable_types"))
       for call in ("get_integer", "get_boolean", "get_string", "set_integer", "set_boolean",
                    "set_string")),
-    Mutation("slave: a marked invalid state", SLAVE, 'if "invalid_state" in state:', "if False:",
+    Mutation("slave: a marked invalid state", CORE, 'if "invalid_state" in state:', "if False:",
              (SLAVE_GUARDS, "-k", "state")),
-    Mutation("slave: a state of another version", SLAVE,
+    Mutation("slave: a state of another version", CORE,
              "if (len(held_outputs) != len(self.table.OUTPUTS)\n"
              "                    or len(held_inputs) != len(self.table.INPUTS)):",
              "if False:", (SLAVE_GUARDS, "-k", "state")),
-    Mutation("slave: deserialized bytes that are no dict", SLAVE,
+    Mutation("slave: deserialized bytes that are no dict", CORE,
              "if not isinstance(state, dict):", "if False:", (SLAVE_GUARDS, "-k", "state")),
-    Mutation("slave: deserialized bytes that are no JSON", SLAVE,
-             'return {"invalid_state": f"fmi2DeSerializeFMUstate got no valid state: {error}"}',
+    Mutation("slave: deserialized bytes that are no JSON", CORE,
+             'return {"invalid_state": f"{cls._API}DeSerializeFMU{cls._STATE} got no valid "',
              "raise", (SLAVE_GUARDS, "-k", "state")),
 )
 

@@ -77,10 +77,10 @@ def _stage(workdir: Path, script_template: Path, model_name: str, start_values: 
         else:
             shutil.copy2(source, target / entry)
     script = script_template.read_text().replace("from cardan_joint.", f"from {package}.")
-    base = re.search(r"^class \w+\((\w+)\):", script, flags=re.M)
+    base = re.search(r"^class \w+\(([\w, ]+)\):", script, flags=re.M)
     if base is None:
         raise BuildError(f"{script_template} has no slave class for the build to rename")
-    script = _rewrite(script, r"^class \w+\(\w+\):", f"class {model_name}({base.group(1)}):",
+    script = _rewrite(script, r"^class \w+\([\w, ]+\):", f"class {model_name}({base.group(1)}):",
                       "class", True)
     script = _rewrite(script, r"^    start_overrides = \{\}$",
                       f"    start_overrides = {start_values!r}", "start_overrides", True)
@@ -136,9 +136,11 @@ def build(dest="dist", model_name: str = None, start_values: dict = None,
                 del sys.modules[name]
     fmu = Path(fmu)
     # --- native loader (issue 11): C hosts run the FMU without any set-up ---
+    # FMI 2 binaries only: the FMI 3 binary is pythonfmu3's own (see the README).
     from .native import NativeBuildError, install_loader
     try:
-        install_loader(fmu, model_name)
+        if fmi_version == 2:
+            install_loader(fmu, model_name)
     except NativeBuildError as error:
         fmu.unlink()
         raise BuildError(str(error)) from None

@@ -158,7 +158,7 @@ def _refusal(error, stop_time) -> str:
 
 
 def simulate_command(args):
-    from .simulate import SimulationError, simulate
+    from .simulate import SimulationError, flat_columns, simulate
 
     fmu = Path(args.fmu)
     if not fmu.is_file():
@@ -189,7 +189,7 @@ def simulate_command(args):
                           start_values=parameters, output=list(table.INPUTS + table.OUTPUTS),
                           step_finished=step_finished)
     except SimulationError as error:
-        written = write_outputs(error.result, output, plot, args.plot_variables,
+        written = write_outputs(flat_columns(error.result), output, plot, args.plot_variables,
                                 f"{title} (refused)")
         print(f"{PROG} simulate: {_refusal(error, stop_time)}\n"
               f"wrote the run up to the refusal: {written}", file=sys.stderr)
@@ -197,6 +197,7 @@ def simulate_command(args):
     finally:
         if bar:
             bar.close()
+    result = flat_columns(result)                    # an FMI 3 FMU's arrays, as FMI 2 columns
     print(f"wrote {write_outputs(result, output, plot, args.plot_variables, title)}")
     return 0
 

@@ -1,4 +1,4 @@
-"""One FMU instance on FMPy's low-level API, its Real variables by name.
+"""One FMU instance (FMI 2.0 or 3.0) on FMPy's low-level API, its Float variables by name.
 
 The one wrapper around FMPy's slave classes that the tests, the examples and
 the benchmarks share: instantiation and initialisation with start values,
@@ -19,23 +19,26 @@ from __future__ import annotations
 
 import shutil
 from collections.abc import Callable, Iterable
+from math import prod
 from pathlib import Path
 from typing import Any
 
 Message = tuple[int, str, str]          # (FMI status, category, text)
 
 
-def _fmi2_slave(model_description, unzipped: str, name: str):
+def _slave(model_description, unzipped: str, name: str):
     from fmpy.fmi2 import FMU2Slave
+    from fmpy.fmi3 import FMU3Slave
 
-    return FMU2Slave(guid=model_description.guid, unzipDirectory=unzipped,
-                     modelIdentifier=model_description.coSimulation.modelIdentifier,
-                     instanceName=name)
+    fmi3 = model_description.fmiVersion.startswith("3")
+    return (FMU3Slave if fmi3 else FMU2Slave)(
+        guid=model_description.guid, unzipDirectory=unzipped,
+        modelIdentifier=model_description.coSimulation.modelIdentifier, instanceName=name)
 
 
-# FMI 3 (FMU3Slave) differs in its call sequence and value getters; it gets an
-# entry here, with its own adapter, once the project builds FMI 3 FMUs.
-_SLAVES = {"2.0": _fmi2_slave}
+# FMI 3 differs in its call sequence, its value getters (arrays) and its names for
+# the FMU-state calls; JointInstance hides that.
+_SLAVES = {"2.0": _slave, "3.0": _slave}
 
 
 def logging_callbacks(sink: Any):
@@ -83,15 +86,29 @@ class JointInstance:
         self.references = {v.name: v.valueReference for v in model_description.modelVariables}
         self.outputs = [v.name for v in model_description.modelVariables
                         if v.causality == "output"]
+        self.fmi3 = version.startswith("3")
+        # Elements per variable (FMI 3 arrays; 1 for a scalar).
+        self.sizes = {v.name: prod(int(d.start) for d in getattr(v, "dimensions", None) or [])
+                      for v in model_description.modelVariables}
         self.fmu = _SLAVES[version](model_description, str(unzipped), name)
-        # Kept on the instance: ctypes callbacks must outlive the FMU.
-        self.callbacks = None if messages is None else logging_callbacks(messages)
         self._cleanup: list[Callable[[], None]] = []
-        self.fmu.instantiate(callbacks=self.callbacks, loggingOn=messages is not None)
+        if self.fmi3:
+            # FMPy keeps the callback on the FMU object, so it outlives the instance.
+            self.callbacks = None
+            self.fmu.instantiate(logMessage=None if messages is None else (
+                lambda env, status, category, message: messages.append(
+                    (status, category.decode(), message.decode()))))
+        else:
+            # Kept on the instance: ctypes callbacks must outlive the FMU.
+            self.callbacks = None if messages is None else logging_callbacks(messages)
+            self.fmu.instantiate(callbacks=self.callbacks, loggingOn=messages is not None)
         self._cleanup.append(self.fmu.freeInstance)
         try:
-            self.fmu.setupExperiment(startTime=start_time)
-            self.fmu.enterInitializationMode()
+            if self.fmi3:
+                self.fmu.enterInitializationMode(startTime=start_time)
+            else:
+                self.fmu.setupExperiment(startTime=start_time)
+                self.fmu.enterInitializationMode()
             if start_values:
                 self.set(**start_values)
             self.time = start_time
@@ -135,17 +152,33 @@ class JointInstance:
             raise KeyError(f"the FMU has no variable {unknown.args[0]!r}") from None
 
     def set(self, **values: float) -> None:
-        self.fmu.setReal(self._refs(values), list(values.values()))
+        setter = self.fmu.setFloat64 if self.fmi3 else self.fmu.setReal
+        setter(self._refs(values), list(values.values()))
 
-    def values(self, *names: str) -> list[float]:
-        """The variables' values, in the order named."""
-        return self.fmu.getReal(self._refs(names))
+    def values(self, *names: str) -> list:
+        """The variables' values, in the order named; an FMI 3 array comes as a list."""
+        if not self.fmi3:
+            return self.fmu.getReal(self._refs(names))
+        flat = iter(self.fmu.getFloat64(self._refs(names), sum(self.sizes[n] for n in names)))
+        return [[next(flat) for _ in range(self.sizes[n])] if self.sizes[n] > 1 else next(flat)
+                for n in names]
 
     def get(self, *names: str) -> dict[str, float]:
         return dict(zip(names, self.values(*names)))
 
     def get_outputs(self) -> dict[str, float]:
         return self.get(*self.outputs)
+
+    def get_flat_outputs(self) -> dict[str, float]:
+        """Every output by its FMI 2 name (an FMI 3 array split into its rows)."""
+        from .variables import fmi3_variables
+
+        rows = {g.name: g.rows for g in fmi3_variables() if len(g.rows) > 1}
+        values = {}
+        for name, value in self.get_outputs().items():
+            values.update(zip((row.name for row in rows[name]), value)
+                          if isinstance(value, list) else [(name, value)])
+        return values
 
     def step(self, step_size: float) -> None:
         """Step from `self.time`; FMPy raises FMICallException on a refused step."""
@@ -161,19 +194,21 @@ class JointInstance:
         return status_of(self.set, **values)
 
     def get_state(self):
-        return self.fmu.getFMUstate()
+        return self.fmu.getFMUState() if self.fmi3 else self.fmu.getFMUstate()
 
     def set_state(self, state) -> None:
-        self.fmu.setFMUstate(state)
+        (self.fmu.setFMUState if self.fmi3 else self.fmu.setFMUstate)(state)
 
     def free_state(self, state) -> None:
-        self.fmu.freeFMUstate(state)
+        (self.fmu.freeFMUState if self.fmi3 else self.fmu.freeFMUstate)(state)
 
     def serialize_state(self, state) -> bytes:
-        return self.fmu.serializeFMUstate(state)
+        return bytes((self.fmu.serializeFMUState if self.fmi3
+                      else self.fmu.serializeFMUstate)(state))
 
     def deserialize_state(self, serialized: bytes):
-        return self.fmu.deSerializeFMUstate(serialized)
+        return (self.fmu.deserializeFMUState if self.fmi3
+                else self.fmu.deSerializeFMUstate)(serialized)
 
     def close(self) -> None:
         """Terminate and free the instance (and remove what `open` unzipped); once."""

@@ -81,7 +81,7 @@ class Model:
 MODELS: Dict[str, Model] = {
     "UniversalJoint": Model(
         key="UniversalJoint",
-        scripts={2: FMU_DIR / "UniversalJoint.py"},
+        scripts={2: FMU_DIR / "UniversalJoint.py", 3: FMU_DIR / "UniversalJoint3.py"},
         check_start_values=_check_joint_start_values,
     ),
     "Propshaft": Model(

@@ -4,15 +4,25 @@ Plain `fmpy.simulate_fmu` stops silently when the FMU refuses a step (it
 returns the result up to there), and pythonfmu drops the FMU's messages unless
 debug logging is on. `simulate` turns debug logging on, collects the messages,
 and raises `SimulationError` naming the variable, value, limit and time when
-the run did not reach its stop time.
+the run did not reach its stop time. It takes the FMI 2.0 and the FMI 3.0 FMU
+alike: with FMI 3, FMPy raises at a refused step (the messages and the result
+up to there still go into the SimulationError), output names may be given in
+either form, and the result holds the arrays (`flat_columns` splits them into
+the FMI 2 columns).
 """
 
 import warnings
 from collections import Counter
 from pathlib import Path
 
+import numpy as np
+
+from . import variables as table
 
 DEFAULT_FMU = Path("dist") / "UniversalJoint.fmu"
+# FMI 2 variable name -> the FMI 3 variable holding it (itself, or its array).
+_FMI3_NAME = {row.name: group.name for group in table.fmi3_variables() for row in group.rows}
+_FMI3_GROUPS = {group.name: group for group in table.fmi3_variables()}
 _STATUS = {0: "ok", 1: "warning", 2: "discard", 3: "error", 4: "fatal", 5: "pending"}
 
 
@@ -51,6 +61,28 @@ def first_refusal(texts):
     return None
 
 
+def fmi3_names(names):
+    """The FMI 3 variables holding the named FMI 2 (or FMI 3) variables, in order."""
+    return list(dict.fromkeys(_FMI3_NAME.get(name, name) for name in names))
+
+
+def flat_columns(result: np.ndarray) -> np.ndarray:
+    """The result with each FMI 3 array column split into its FMI 2 variables
+    (an FMI 2 result comes back unchanged): the same columns for either FMU."""
+    fields = []
+    for name in result.dtype.names:
+        rows = _FMI3_GROUPS[name].rows if result.dtype[name].shape else ()
+        fields += [(row.name, float) for row in rows] or [(name, result.dtype[name])]
+    flat = np.zeros(len(result), dtype=fields)
+    for name in result.dtype.names:
+        if result.dtype[name].shape:
+            for i, row in enumerate(_FMI3_GROUPS[name].rows):
+                flat[row.name] = result[name][:, i]
+        else:
+            flat[name] = result[name]
+    return flat
+
+
 def simulate(fmu=DEFAULT_FMU, stop_time=None, output_interval=None, inputs=None,
              start_values=None, output=None, **fmpy_options):
     """Co-simulate the FMU; return FMPy's structured result array.
@@ -61,6 +93,7 @@ def simulate(fmu=DEFAULT_FMU, stop_time=None, output_interval=None, inputs=None,
     RefusalError, with the refusal's fields, when the FMU said why.
     """
     from fmpy import read_model_description, simulate_fmu
+    from fmpy.fmi1 import FMICallException
 
     from .inputs import complete_inputs
 
@@ -78,13 +111,31 @@ def simulate(fmu=DEFAULT_FMU, stop_time=None, output_interval=None, inputs=None,
 
     messages = []
 
-    def collect(component, instance, status, category, message):
+    def collect(*arguments):     # FMI 2 passes (component, instance, ...), FMI 3 (environment, ...)
+        status, category, message = arguments[-3:]
         messages.append((_STATUS.get(status, str(status)), category.decode(errors="replace"),
                          message.decode(errors="replace")))
 
-    result = simulate_fmu(fmu, stop_time=stop_time, output_interval=output_interval, input=inputs,
-                          start_values=start_values or {}, output=output, debug_logging=True,
-                          logger=collect, **fmpy_options)
+    fmi3 = description.fmiVersion.startswith("3")
+    if fmi3 and output is not None:
+        output = fmi3_names(output)
+    # FMPy raises on an FMI 3 refusal, losing its recorder: keep it for the partial result.
+    recorders, step_finished = [], fmpy_options.pop("step_finished", None)
+
+    def keep_recorder(time, recorder):
+        recorders[:1] = [recorder]
+        return step_finished is None or step_finished(time, recorder)
+
+    try:
+        result = simulate_fmu(fmu, stop_time=stop_time, output_interval=output_interval,
+                              input=inputs, start_values=start_values or {}, output=output,
+                              debug_logging=True, logger=collect,
+                              step_finished=keep_recorder if fmi3 else step_finished,
+                              **fmpy_options)
+    except FMICallException as error:
+        if not fmi3 or not messages:
+            raise
+        result = recorders[0].result() if recorders else np.zeros(0, dtype=[("time", float)])
     problems = [m for m in messages if m[0] in ("discard", "error", "fatal")]
     reached = float(result["time"][-1]) if len(result) else float("nan")
     if problems or not reached >= stop_time - 1e-9 * max(1.0, abs(stop_time)):

@@ -2,11 +2,15 @@
 
 Registration, the model description (units, display units, min/max,
 variability, initial, ModelStructure dependencies), the physics model's default
-values and the README's variable table are all generated from `VARIABLES`.
+values and the README's variable table are all generated from `VARIABLES`, for
+FMI 2.0 and FMI 3.0 alike: `fmi3_variables()` groups the rows of a vector
+(`<stem>_<i>`, named in `ARRAY_STEMS`) into one FMI 3 array.
 Pure data: no FMI import, so the physics can read its defaults from here.
 """
 
 import math
+import os
+import re
 from dataclasses import dataclass
 from typing import Optional
 
@@ -175,6 +179,51 @@ INPUTS = _names(VARIABLES, _IN)
 PARAMETERS = _names(VARIABLES, _PAR)
 OUTPUTS = _names(VARIABLES, _OUT)
 
+# Vector quantities: FMI 2 has one row per element (`<stem>_<i>`); FMI 3 declares
+# each as one Float64 array named by the stem, elements in the rows' order.
+ARRAY_STEMS = ("crosspiece_angular_velocity", "crosspiece_torque", "crosspiece_quaternion")
+
+
+@dataclass(frozen=True)
+class Group:
+    """One FMI 3 variable: a scalar row, or the rows of one array in element order.
+    Every attribute but the name and description is the rows' common one."""
+    name: str
+    rows: tuple
+
+    def __getattr__(self, attribute):
+        if attribute.startswith("_"):       # copy/pickle probe before `rows` exists
+            raise AttributeError(attribute)
+        return getattr(self.rows[0], attribute)
+
+    @property
+    def description(self) -> str:
+        """The rows' common prefix (to a word) with each element's rest, in order."""
+        texts = [row.description for row in self.rows]
+        if len(texts) == 1:
+            return texts[0]
+        common = os.path.commonprefix(texts)
+        common = common[:common.rfind(" ") + 1]
+        return common + " / ".join(text[len(common):] for text in texts)
+
+
+def _group(stem):
+    rows = tuple(v for v in VARIABLES if re.fullmatch(re.escape(stem) + r"_\d", v.name))
+    first = VARIABLES.index(rows[0])
+    shared = ("causality", "unit", "display_unit", "min", "max", "depends_on", "start")
+    assert rows == VARIABLES[first:first + len(rows)], f"{stem}: rows must be consecutive"
+    assert all(getattr(r, a) == getattr(rows[0], a) for r in rows for a in shared), \
+        f"{stem}: the elements of an array share causality, unit, range and dependencies"
+    return Group(stem, rows)
+
+
+def fmi3_variables() -> tuple:
+    """The FMI 3 variables in table order: arrays where ARRAY_STEMS says, else scalars."""
+    arrays = {g.rows[0].name: g for g in map(_group, ARRAY_STEMS)}
+    in_array = {row.name for g in arrays.values() for row in g.rows}
+    return tuple(arrays.get(v.name) or Group(v.name, (v,)) for v in VARIABLES
+                 if v.name in arrays or v.name not in in_array)
+
 
 def start_values(variables=VARIABLES) -> dict:
     return {v.name: v.start for v in variables if v.start is not None}
@@ -191,4 +240,16 @@ def markdown_table(variables=VARIABLES) -> str:
         high = "" if v.max is None else f"{v.max:.6g}"
         span = f"[{low}, {high}]" if (low or high) else ""
         rows.append(f"| `{v.name}` | {v.causality} | {unit} | {start} | {span} | {v.description} |")
+    return "\n".join(rows) + "\n"
+
+
+def fmi3_array_table() -> str:
+    """The README's table of the FMI 3 arrays and the FMI 2 variables they hold."""
+    rows = ["| FMI 3 array | FMI 2 variables (elements, in order) | unit (display) |",
+            "|---|---|---|"]
+    for group in fmi3_variables():
+        if len(group.rows) > 1:
+            unit = group.unit + (f" ({group.display_unit})" if group.display_unit else "")
+            elements = ", ".join(f"`{row.name}`" for row in group.rows)
+            rows.append(f"| `{group.name}[{len(group.rows)}]` | {elements} | {unit} |")
     return "\n".join(rows) + "\n"

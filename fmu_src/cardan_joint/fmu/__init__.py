@@ -1,1 +1,1 @@
-"""The pythonfmu side: the slave class and its model description."""
+"""The pythonfmu and pythonfmu3 side: the slave classes and their model descriptions."""

@@ -25,4 +25,4 @@ class PropshaftSlave(CardanJointSlave):
         return Propshaft(self.joints, **self.start_overrides)
 
     def _initialization_warnings(self):
-        return self._joint.warnings()
+        return self._model.warnings()

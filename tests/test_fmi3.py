@@ -1,0 +1,266 @@
+"""The FMI 3.0 FMU: the same model as the FMI 2.0 one, through pythonfmu3."""
+
+import math
+
+import numpy as np
+import pytest
+
+from cardan_joint import variables as table
+from cardan_joint.instance import JointInstance
+
+GROUPS = table.fmi3_variables()
+ARRAYS = {"crosspiece_quaternion": 4, "crosspiece_angular_velocity": 3, "crosspiece_torque": 3}
+INPUT_LAWS = ("input_speed", "bend_angle", "load_torque")
+
+
+@pytest.fixture
+def joint3(fmi3_description, fmi3_unzipped):
+    messages = []
+    instance = JointInstance(fmi3_description, fmi3_unzipped, name="joint3", messages=messages)
+    instance.messages = messages
+    yield instance
+    instance.close()
+
+
+def test_fmpy_validates_it_and_reads_every_unit_and_display_unit(fmi3_path, fmi3_description):
+    from fmpy.validation import validate_fmu
+
+    assert validate_fmu(str(fmi3_path)) == []
+    md = fmi3_description
+    assert md.fmiVersion == "3.0"
+    units = {u.name: u for u in md.unitDefinitions}
+    assert set(units) == set(table.UNITS)
+    for name, unit in table.UNITS.items():
+        base = units[name].baseUnit
+        assert {k: getattr(base, k) for k, _ in unit.exponents} == dict(unit.exponents)
+        assert [(d.name, float(d.factor)) for d in units[name].displayUnits] == list(unit.display)
+    variables = {v.name: v for v in md.modelVariables}
+    assert variables["time"].causality == "independent"
+    assert [v.name for v in md.modelVariables[1:]] == [g.name for g in GROUPS]
+    for group in GROUPS:
+        v = variables[group.name]
+        assert (v.type, v.causality, v.variability) == ("Float64", group.causality,
+                                                        group.variability)
+        assert (v.unit, v.displayUnit, v.description) == (group.unit, group.display_unit,
+                                                          group.description)
+        assert tuple(None if x is None else float(x) for x in (v.min, v.max, v.start)) == \
+            (group.min, group.max, group.start)
+        if v.displayUnit:
+            assert v.displayUnit in [d.name for d in units[v.unit].displayUnits]
+        size = int(v.dimensions[0].start) if v.dimensions else 1
+        assert size == ARRAYS.get(group.name, 1) == len(group.rows)
+    structure = {u.variable.name: u for u in md.outputs}
+    assert list(structure) == [g.name for g in GROUPS if g.causality == "output"]
+    for group in GROUPS:
+        if group.causality == "output":
+            assert sorted(d.name for d in structure[group.name].dependencies) == \
+                sorted(group.depends_on)
+    assert [u.variable.name for u in md.initialUnknowns] == list(structure)
+    assert (md.defaultExperiment.startTime, md.defaultExperiment.stopTime,
+            md.defaultExperiment.stepSize) == ("0.0", "2.0", "0.001")
+    assert md.coSimulation.canGetAndSetFMUstate and md.coSimulation.canSerializeFMUstate
+    assert md.coSimulation.canHandleVariableCommunicationStepSize
+
+
+def test_log_categories_are_those_of_the_fmi2_fmu(fmi3_description, model_description):
+    assert [c.name for c in fmi3_description.logCategories] == \
+        [c.name for c in model_description.logCategories]
+
+
+def _polynomial_laws(rng, horizon):
+    """Random quadratic input laws over [0, horizon]: value, rate and acceleration at t."""
+    scale = np.array([1.0, 1.0 / horizon, 1.0 / horizon ** 2])
+    c = {"input_speed": rng.uniform(-300, 300, 3) * scale,
+         "bend_angle": rng.uniform(-0.4, 0.4, 3) * scale,      # stays inside the guard
+         "load_torque": rng.uniform(-500, 500, 3) * scale}
+
+    def inputs(t):
+        s, b, load = (np.polynomial.polynomial.polyval(t, c[n]) for n in INPUT_LAWS)
+        ds, db = (np.polynomial.polynomial.polyval(t, np.polynomial.polynomial.polyder(c[n]))
+                  for n in ("input_speed", "bend_angle"))
+        ddb = 2.0 * c["bend_angle"][2]
+        return dict(input_speed=s, input_acceleration=ds, bend_angle=b, bend_angle_rate=db,
+                    bend_angle_acceleration=ddb, load_torque=load)
+    return inputs
+
+
+def _same(a, b):
+    return a == b or abs(a - b) <= 1e-15 * max(abs(a), abs(b))
+
+
+@pytest.mark.parametrize("seed, step_size, steps", [(1, 1e-3, 300), (2, 0.01, 150),
+                                                    (3, 0.1, 40), (4, 0.37, 20)])
+def test_every_output_equals_the_fmi2_fmus_at_every_point(model_description, unzipped_fmu,
+                                                          fmi3_description, fmi3_unzipped,
+                                                          seed, step_size, steps):
+    rng = np.random.default_rng(seed)
+    inputs = _polynomial_laws(rng, steps * step_size)
+    parameters = dict(yoke_phase=rng.uniform(-3, 3), input_angle_start=rng.uniform(-10, 10),
+                      crosspiece_inertia_2=rng.uniform(0.01, 0.1))
+    joints = [JointInstance(md, unzipped, name=f"same{seed}", start_values=parameters)
+              for md, unzipped in ((model_description, unzipped_fmu),
+                                   (fmi3_description, fmi3_unzipped))]
+    try:
+        for k in range(steps + 1):
+            values = {n: float(v) for n, v in inputs(k * step_size).items()}
+            for joint in joints:
+                joint.set(**values)
+            fmi2, fmi3 = (joint.get_flat_outputs() for joint in joints)
+            assert list(fmi3) == list(table.OUTPUTS)
+            different = [n for n in table.OUTPUTS if not _same(fmi2[n], fmi3[n])]
+            assert not different, (k, [(n, fmi2[n], fmi3[n]) for n in different])
+            for joint in joints:
+                joint.step(step_size)
+    finally:
+        for joint in joints:
+            joint.close()
+
+
+def _state_bytes(joint):
+    state = joint.get_state()
+    try:
+        return joint.serialize_state(state)
+    finally:
+        joint.fmu.freeFMUState(state)
+
+
+def test_a_bad_input_is_refused_with_its_message_and_nothing_is_lost(joint3):
+    joint3.set(input_speed=30.0, bend_angle=0.3)
+    joint3.step(0.05)
+    outputs = joint3.get_outputs()
+    before = _state_bytes(joint3)
+    # Ends below the guard, crosses it mid-step (vertex of the bend parabola).
+    joint3.set(bend_angle=1.3, bend_angle_rate=4.0, bend_angle_acceleration=-80.0)
+    assert joint3.try_step(0.1) == 2                     # fmi3Discard
+    status, category, message = joint3.messages[-1]
+    assert (status, category) == (2, "logStatusDiscard")
+    for words in ("bend_angle", "max_bend_angle", "1.3962634015954636", "t = 0.05 s",
+                  "stays at t = 0.05 s"):
+        assert words in message
+    joint3.set(bend_angle=0.3, bend_angle_rate=0.0, bend_angle_acceleration=0.0)
+    assert _state_bytes(joint3) == before
+    assert joint3.get_outputs() == outputs
+    joint3.step(0.1)                                     # continues with corrected inputs
+    assert joint3.get("time")["time"] == pytest.approx(0.15)
+
+
+def test_parameters_are_fixed_after_initialization(joint3):
+    joint3.set(max_bend_angle=0.1)
+    assert joint3.messages[-1][:2] == (3, "logStatusError")
+    assert "max_bend_angle = 0.1 ignored" in joint3.messages[-1][2]
+    assert joint3.get("max_bend_angle")["max_bend_angle"] == table.BY_NAME["max_bend_angle"].start
+
+
+def test_bad_calls_are_errors_in_the_log_never_fatal(joint3):
+    joint3.fmu.setFloat64([joint3.references["crosspiece_torque"]], [1.0, 2.0, 3.0])
+    assert "crosspiece_torque ignored" in joint3.messages[-1][2]
+    assert all(math.isnan(x) for x in joint3.fmu.getFloat64([999], 4))
+    assert "value reference 999" in joint3.messages[-1][2]
+    assert joint3.fmu.getInt32([1], 1) == [0]
+    assert "no Int32 variables" in joint3.messages[-1][2]
+    joint3.fmu.setFloat64([1, 3], [1.0])                 # too few values: nothing set
+    assert "nothing set" in joint3.messages[-1][2]
+    assert {status for status, _, _ in joint3.messages} == {3}
+    joint3.step(0.01)                                    # still alive
+
+
+def test_state_round_trips_bit_for_bit(joint3, fmi3_description, fmi3_unzipped):
+    inputs = _polynomial_laws(np.random.default_rng(7), 0.8)
+    for k in range(50):
+        joint3.set(**{n: float(v) for n, v in inputs(k * 0.01).items()})
+        joint3.step(0.01)
+    state = joint3.get_state()
+    data = joint3.serialize_state(state)
+
+    def run(joint):
+        recorded = []
+        for k in range(50, 80):
+            joint.set(**{n: float(v) for n, v in inputs(k * 0.01).items()})
+            joint.step(0.01)
+            recorded.append(joint.get_outputs())
+        return recorded
+
+    first = run(joint3)
+    joint3.set_state(state)
+    joint3.time = 0.5
+    assert run(joint3) == first
+    joint3.fmu.freeFMUState(state)
+    fresh = JointInstance(fmi3_description, fmi3_unzipped, name="fresh")
+    try:
+        restored = fresh.deserialize_state(data)
+        fresh.set_state(restored)
+        fresh.fmu.freeFMUState(restored)
+        fresh.time = 0.5
+        assert run(fresh) == first
+    finally:
+        fresh.close()
+
+
+def test_reset_returns_to_the_start_values(joint3):
+    start = joint3.get_outputs()
+    joint3.set(input_speed=100.0)
+    joint3.step(0.3)
+    joint3.fmu.reset()
+    joint3.fmu.enterInitializationMode()
+    joint3.fmu.exitInitializationMode()
+    assert joint3.get_outputs() == start
+
+
+def test_many_instances_in_one_process_are_independent(fmi3_description, fmi3_unzipped):
+    joints = [JointInstance(fmi3_description, fmi3_unzipped, name=f"j{i}",
+                            start_values={"input_speed": 1.0 + i}) for i in range(40)]
+    try:
+        for joint in joints:
+            joint.step(0.1)
+        angles = [joint.get("input_angle")["input_angle"] for joint in joints]
+        assert angles == [0.1 * (1.0 + i) for i in range(40)]
+    finally:
+        for joint in joints:
+            joint.close()
+
+
+def test_an_internal_fault_in_a_step_is_an_error_status_not_an_exception(monkeypatch):
+    from pythonfmu3.enums import Fmi3Status
+
+    from cardan_joint.fmu.slave3 import CardanJointSlave3
+
+    slave = CardanJointSlave3(instance_name="faulty")
+    slave.enter_initialization_mode()
+    slave.exit_initialization_mode()
+    monkeypatch.setattr(slave._model, "step", lambda step_size: 1 / 0)
+    assert slave.do_step(0.0, 0.1).status == Fmi3Status.error
+    assert "internal error in do_step: ZeroDivisionError" in slave.log_queue[-1].msg
+    assert slave.get_float64([0])[0] == 0.0                # the clock stays at the step's start
+
+
+def test_the_model_description_carries_the_builds_start_values():
+    from cardan_joint.fmu.slave3 import CardanJointSlave3
+
+    class Bent(CardanJointSlave3):
+        start_overrides = {"bend_angle": 0.2, "max_bend_angle": math.nextafter(1.2, 2.0)}
+
+    variables = {v.get("name"): v for v in Bent(instance_name="bent").to_xml().iter("Float64")}
+    assert variables["bend_angle"].get("start") == "0.2"
+    assert float(variables["max_bend_angle"].get("start")) == math.nextafter(1.2, 2.0)
+
+
+def test_an_invalid_input_holds_the_same_outputs_as_fmi2(model_description, unzipped_fmu,
+                                                         fmi3_description, fmi3_unzipped):
+    messages = []
+    joints = [JointInstance(model_description, unzipped_fmu, name="held2"),
+              JointInstance(fmi3_description, fmi3_unzipped, name="held3", messages=messages)]
+    try:
+        for joint in joints:
+            joint.set(input_speed=40.0, load_torque=100.0)
+            joint.step(0.1)
+        valid = [joint.get_flat_outputs() for joint in joints][1]    # what each holds
+        for joint in joints:
+            joint.set(input_speed=20.0, load_torque=math.nan)
+        fmi2, fmi3 = (joint.get_flat_outputs() for joint in joints)
+        assert fmi3 == fmi2
+        assert fmi3["input_torque"] == valid["input_torque"]          # held
+        assert fmi3["output_speed"] != valid["output_speed"]          # follows the speed
+        assert messages[-1][:2] == (1, "logStatusWarning") and "load_torque" in messages[-1][2]
+    finally:
+        for joint in joints:
+            joint.close()
