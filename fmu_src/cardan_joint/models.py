@@ -34,6 +34,24 @@ def _check_joint_start_values(values: Mapping[str, float], settings: Mapping) ->
         raise StartValueError(f"invalid start values: {problem}")
 
 
+def _component_start_value_checker(class_name: str):
+    """Start-value check for the stepped model `physics.driveline.<class_name>`."""
+    def check(values: Mapping[str, float], settings: Mapping) -> None:
+        from .physics import driveline
+
+        model_class = getattr(driveline, class_name)
+        table = model_class.table
+        unknown = sorted(set(values) - set(table.INPUTS) - set(table.PARAMETERS))
+        if unknown:
+            raise StartValueError(f"cannot set start value of {', '.join(unknown)}: "
+                                  f"only inputs and parameters have start values")
+        component = model_class(**values)
+        problem = component.parameter_fault or component.input_problem()
+        if problem:
+            raise StartValueError(f"invalid start values: {problem}")
+    return check
+
+
 @dataclass(frozen=True)
 class Model:
     """How to build one model.
@@ -59,6 +77,16 @@ MODELS: Dict[str, Model] = {
         key="UniversalJoint",
         scripts={2: FMU_DIR / "UniversalJoint.py"},
         check_start_values=_check_joint_start_values,
+    ),
+    "Motor": Model(
+        key="Motor",
+        scripts={2: FMU_DIR / "Motor.py"},
+        check_start_values=_component_start_value_checker("Motor"),
+    ),
+    "Load": Model(
+        key="Load",
+        scripts={2: FMU_DIR / "Load.py"},
+        check_start_values=_component_start_value_checker("Load"),
     ),
 }
 

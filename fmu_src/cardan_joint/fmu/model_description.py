@@ -6,14 +6,14 @@ output dependencies; FMPy's validator rejects the result. This adds them.
 
 from xml.etree.ElementTree import Element, SubElement
 
-from .. import variables as table
+from .. import variables as joint_table
 
 
 def _number(value: float) -> str:
     return repr(float(value))
 
 
-def _unit_definitions() -> Element:
+def _unit_definitions(table) -> Element:
     node = Element("UnitDefinitions")
     for unit in table.UNITS.values():
         unit_node = SubElement(node, "Unit", name=unit.name)
@@ -23,10 +23,12 @@ def _unit_definitions() -> Element:
     return node
 
 
-def complete(root: Element) -> Element:
+def complete(root: Element, table=joint_table) -> Element:
+    """`table`: the model's variable table (a module or object with VARIABLES, BY_NAME,
+    OUTPUTS, UNITS); the joint's by default."""
     children = list(root)
     position = next(i for i, child in enumerate(children) if child.tag == "CoSimulation") + 1
-    root.insert(position, _unit_definitions())
+    root.insert(position, _unit_definitions(table))
 
     index = {}
     for i, scalar in enumerate(root.find("ModelVariables"), start=1):

@@ -9,19 +9,16 @@ fmi2GetFMUstate; and every problem is also written to stderr, because
 pythonfmu drops log messages unless debug logging is on.
 """
 
-import json
 import math
-import sys
 from operator import attrgetter
 
-from pythonfmu import Fmi2Causality, Fmi2Slave, Fmi2Variability, Real
 from pythonfmu.default_experiment import DefaultExperiment
-from pythonfmu.enums import Fmi2Initial, Fmi2Status
+from pythonfmu.enums import Fmi2Status
 
 from .. import __version__
 from .. import variables as table
 from ..physics.model import CardanJoint
-from .model_description import complete
+from .base import TableSlave
 
 _KNOWN = table.INPUTS + table.PARAMETERS
 _NAMES = _KNOWN + table.OUTPUTS
@@ -38,7 +35,8 @@ _ALL_INPUTS = list(_INPUT_REFERENCES)
 _ALL_OUTPUTS = list(range(_FIRST_OUTPUT, len(_NAMES)))
 
 
-class CardanJointSlave(Fmi2Slave):
+class CardanJointSlave(TableSlave):
+    table = table
     author = "Cardan joint FMU team"
     license = "MIT"
     version = __version__
@@ -62,50 +60,11 @@ class CardanJointSlave(Fmi2Slave):
         self._initialized = False
         self._outputs = None            # cached outputs; None = recompute on next read
         self._inputs_checked = False
-        self._last_message = None
         self._outputs_held, self._inputs_held = _NAN_OUTPUTS, _inputs_of(self._joint)
         if not (self._joint.parameter_fault or self._joint.input_problem()):
             self._outputs_held = self._joint.outputs()
         for name in _NAMES:
             self._register(table.BY_NAME[name])
-
-    def _register(self, variable):
-        causality = Fmi2Causality[variable.causality]
-        initial = Fmi2Initial[variable.initial] if variable.initial else None
-        reference = len(self.vars)
-        self.register_variable(Real(
-            variable.name, causality=causality, description=variable.description,
-            variability=Fmi2Variability[variable.variability], initial=initial,
-            getter=lambda: self.get_real([reference])[0],
-            setter=lambda value: self.set_real([reference], [value])))
-
-    def to_xml(self, model_options=None):
-        options = {"canGetAndSetFMUstate": True, "canSerializeFMUstate": True,
-                   **(model_options or {})}
-        return complete(super().to_xml(options))
-
-    # --- messages ------------------------------------------------------------
-
-    def _report(self, message: str, status: Fmi2Status) -> None:
-        self.log(message, status)
-        if message != self._last_message:
-            self._last_message = message
-            # pythonfmu forwards log messages only with debug logging on, so a user
-            # of plain fmpy.simulate_fmu would never learn why the run stopped.
-            # A host without a usable stderr must not turn this into fmi2Fatal.
-            try:
-                sys.stderr.write(f"[{self.modelName} {self.instance_name}] "
-                                 f"{status.name.upper()}: {message}\n")
-                sys.stderr.flush()
-            except Exception:
-                pass
-
-    def _fault(self, where: str, error: BaseException) -> None:
-        try:
-            self._report(f"internal error in {where}: {type(error).__name__}: {error}",
-                         Fmi2Status.error)
-        except Exception:
-            pass
 
     # --- life cycle ----------------------------------------------------------
 
@@ -238,33 +197,6 @@ class CardanJointSlave(Fmi2Slave):
     def _name_of(vr):
         return _NAMES[vr] if 0 <= vr < len(_NAMES) else f"value reference {vr}"
 
-    # The FMU has Real variables only; pythonfmu's typed accessors would raise
-    # (fmi2Fatal) on any other call, so these refuse politely instead.
-    def _no_such_variables(self, kind, vrs):
-        self._report(f"the FMU has no {kind} variables (value references {list(vrs)})",
-                     Fmi2Status.error)
-
-    def get_integer(self, vrs):
-        self._no_such_variables("Integer", vrs)
-        return [0] * len(vrs)
-
-    def get_boolean(self, vrs):
-        self._no_such_variables("Boolean", vrs)
-        return [False] * len(vrs)
-
-    def get_string(self, vrs):
-        self._no_such_variables("String", vrs)
-        return [""] * len(vrs)
-
-    def set_integer(self, vrs, values):
-        self._no_such_variables("Integer", vrs)
-
-    def set_boolean(self, vrs, values):
-        self._no_such_variables("Boolean", vrs)
-
-    def set_string(self, vrs, values):
-        self._no_such_variables("String", vrs)
-
     # --- FMU state -----------------------------------------------------------
 
     def _get_fmu_state(self):
@@ -295,21 +227,3 @@ class CardanJointSlave(Fmi2Slave):
         finally:
             self._outputs = None
             self._inputs_checked = False
-
-    @staticmethod
-    def _fmu_state_to_bytes(state):
-        try:
-            return json.dumps(state).encode("utf-8")
-        except Exception as error:
-            return json.dumps({"invalid_state": f"serialization failed: {error}"}).encode()
-
-    @staticmethod
-    def _fmu_state_from_bytes(data):
-        # Returning a marked state instead of raising: fmi2SetFMUstate then says why.
-        try:
-            state = json.loads(data.decode("utf-8"))
-            if not isinstance(state, dict):
-                raise ValueError("not a serialized UniversalJoint state")
-            return state
-        except Exception as error:
-            return {"invalid_state": f"fmi2DeSerializeFMUstate got no valid state: {error}"}

@@ -7,18 +7,17 @@ and changes nothing; `outputs` evaluates the closed forms for the current
 values. Pure Python: the FMU maps its variables onto this object.
 """
 
-import math
 from operator import itemgetter
 
 from .. import variables as table
 # The kernel itself: the FMU's once-per-step call on floats skips the array dispatch.
 from .response import JointResponse
 from .response import _response as joint_response_kernel
+from . import limits
 from .revolutions import RevolutionAngle, advance, split_angle
 
 def _ranges(names, *excluded):
-    return tuple((n, table.BY_NAME[n].min, table.BY_NAME[n].max, table.BY_NAME[n].unit)
-                 for n in names if table.BY_NAME[n].min is not None and n not in excluded)
+    return limits.ranges(table, names, *excluded)
 
 
 # The bend angle's own limit is the max_bend_angle parameter, checked apart.
@@ -62,19 +61,11 @@ class CardanJoint:
 
     def _bad_values(self, kind, names, ranges):
         """(name, explanation) of each of `names` not finite or outside its range."""
-        for name in names:
-            value = getattr(self, name)
-            if not math.isfinite(value):
-                yield name, f"{kind} {name} = {value!r} is not a finite number"
-        for name, low, high, unit in ranges:
-            value = getattr(self, name)
-            if math.isfinite(value) and not low <= value <= high:
-                yield name, (f"{kind} {name} = {value!r} {unit} is outside its range "
-                             f"[{low!r}, {high!r}] {unit}")
+        return limits.bad_values(kind, self, names, ranges)
 
     def _value_problem(self, kind, names, ranges):
         """The first bad value, explained, or None."""
-        return next((text for _, text in self._bad_values(kind, names, ranges)), None)
+        return limits.first_problem(kind, self, names, ranges)
 
     def parameter_problem(self):
         """Why the parameters cannot run, or None."""
@@ -141,9 +132,8 @@ class CardanJoint:
         return max(candidates, key=lambda c: abs(c[1]))
 
     def step_problem(self, step_size: float):
-        if not (math.isfinite(step_size) and step_size > 0.0):
-            return f"communication step size = {step_size!r} s must be a finite number > 0"
-        return self.parameter_fault or self.input_problem(step_size)
+        return (limits.step_size_problem(step_size) or self.parameter_fault
+                or self.input_problem(step_size))
 
     def step(self, step_size: float):
         """Advance by `step_size`; return None, or the reason the step was refused

@@ -1,0 +1,16 @@
+"""pythonfmu script of the Load FMU (see `UniversalJoint.py` for how the build ships it)."""
+
+import ctypes
+
+from cardan_joint.fmu.component import ComponentSlave
+from cardan_joint.physics.driveline import Load as _Physics
+
+# pythonfmu 0.7.0 releases one reference too many to this namespace at every
+# fmi2Instantiate (see UniversalJoint.py); one reference per run keeps the count right.
+ctypes.pythonapi.Py_IncRef(ctypes.py_object(globals()))
+
+
+class Load(ComponentSlave):
+    description = "Driven machine: inertia, viscous drag and constant torque"
+    model_class = _Physics
+    start_overrides = {}
