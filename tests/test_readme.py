@@ -19,3 +19,11 @@ def test_ci_runs_the_readmes_test_command():
     assert f"    {TEST_COMMAND}\n" in README
     ci = (ROOT / ".ci" / "run").read_text()
     assert f"\n{TEST_COMMAND}\n" in ci
+
+
+def test_motor_and_load_tables_are_generated_from_their_tables():
+    from cardan_joint.driveline_variables import LOAD, MOTOR
+
+    for key, table in (("motor", MOTOR), ("load", LOAD)):
+        begin, end = f"<!-- {key}-variables:begin -->\n", f"<!-- {key}-variables:end -->"
+        assert README.split(begin)[1].split(end)[0] == markdown_table(table.VARIABLES)

@@ -148,11 +148,12 @@ def start_values() -> dict:
     return {v.name: v.start for v in VARIABLES if v.start is not None}
 
 
-def markdown_table() -> str:
-    """The README's variable table (a test keeps the README in step with it)."""
+def markdown_table(variables=VARIABLES) -> str:
+    """The README's variable table of `variables` (the joint's by default; a test keeps
+    the README in step with it)."""
     rows = ["| name | causality | unit (display) | start | range | description |",
             "|---|---|---|---|---|---|"]
-    for v in VARIABLES:
+    for v in variables:
         unit = v.unit + (f" ({v.display_unit})" if v.display_unit else "")
         start = "" if v.start is None else f"{v.start:.6g}"
         low = "" if v.min is None else f"{v.min:.6g}"
