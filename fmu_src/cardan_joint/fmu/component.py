@@ -9,24 +9,12 @@ with an unusable input are held at their last valid values, with a warning.
 
 import math
 
-from pythonfmu.default_experiment import DefaultExperiment
 from pythonfmu.enums import Fmi2Status
 
-from .. import __version__
 from .base import TableSlave
 
 
 class ComponentSlave(TableSlave):
-    author = "Cardan joint FMU team"
-    license = "MIT"
-    version = __version__
-    default_experiment = DefaultExperiment(start_time=0.0, stop_time=2.0, step_size=1e-3)
-    log_categories = {
-        "logStatusWarning": "Warnings: outputs held at the last valid inputs.",
-        "logStatusDiscard": "Refused steps: the variable, its value, the limit and the time.",
-        "logStatusError": "Errors: invalid parameters, calls FMI does not allow, internal faults.",
-        "logAll": "All messages.",
-    }
     model_class = None          # the physics model class; its `table` drives everything
     start_overrides: dict = {}  # start values that differ from the table's (written by the build)
 
@@ -65,17 +53,12 @@ class ComponentSlave(TableSlave):
 
     def do_step(self, current_time, step_size):
         try:
-            model = self._model
-            time = model.time
-            model.time = current_time
-            problem = model.step(step_size)
+            problem = self._model.step(step_size, start_time=current_time)
             if problem:
-                model.time = time
                 self._report(f"t = {current_time!r} s: {problem}; step of {step_size!r} s "
                              f"refused, the {self.modelName} stays at t = {current_time!r} s",
                              Fmi2Status.discard)
-                return False
-            return True
+            return not problem
         except Exception as error:
             self._fault("do_step", error)
             return False
@@ -99,13 +82,7 @@ class ComponentSlave(TableSlave):
             return [outputs[vr - first] if vr >= first else getattr(self._model, self._names[vr])
                     for vr in vrs]
         except Exception as error:
-            bad = [vr for vr in vrs if not 0 <= vr < len(self._names)]
-            if bad:
-                self._report(f"get_real: no Real variable has value reference {bad[0]}",
-                             Fmi2Status.error)
-            else:
-                self._fault("get_real", error)
-            return [math.nan] * len(vrs)
+            return self._get_real_failed(vrs, error, len(self._names))
 
     def set_real(self, vrs, values):
         try:
@@ -113,17 +90,9 @@ class ComponentSlave(TableSlave):
             parameters_changed = False
             for vr, value in zip(vrs, values):
                 name = self._names[vr] if 0 <= vr < len(self._names) else f"value reference {vr}"
-                if not 0 <= vr < self._first_output:
-                    self._report(f"set_real on {name} ignored: only inputs and parameters can "
-                                 f"be set", Fmi2Status.error)
-                elif vr < n_inputs:
+                if self._write_permitted(vr, name, value, n_inputs, self._first_output):
                     setattr(model, name, float(value))
-                elif self._initialized:
-                    self._report(f"parameter {name} = {value!r} ignored: fixed parameters "
-                                 f"cannot change after initialization", Fmi2Status.error)
-                else:
-                    setattr(model, name, float(value))
-                    parameters_changed = True
+                    parameters_changed = parameters_changed or vr >= n_inputs
             if parameters_changed:
                 model.start(self._start_time)     # outputs in initialization mode see them
         except Exception as error:
@@ -131,25 +100,16 @@ class ComponentSlave(TableSlave):
 
     # --- FMU state -----------------------------------------------------------
 
-    def _get_fmu_state(self):
-        try:
-            return {"model": self._model.state(), "start_time": self._start_time,
-                    "initialized": self._initialized, "held": list(self._held)}
-        except Exception as error:
-            self._fault("fmi2GetFMUstate", error)
-            return {"invalid_state": f"fmi2GetFMUstate failed: {error}"}
+    @property
+    def _state_owner(self):
+        return self.modelName
 
-    def _set_fmu_state(self, state):
-        try:
-            if "invalid_state" in state:
-                raise ValueError(state["invalid_state"])
-            held = tuple(float(v) for v in state["held"])
-            if len(held) != len(self.table.OUTPUTS):
-                raise ValueError("the state is from another version of the FMU")
-            self._model.restore(state["model"])           # all or nothing
-            self._start_time = float(state["start_time"])
-            self._initialized = bool(state["initialized"])
-            self._held = held
-        except Exception as error:
-            self._report(f"fmi2SetFMUstate ignored, the {self.modelName} keeps its state: "
-                         f"{type(error).__name__}: {error}", Fmi2Status.error)
+    def _state_parts(self):
+        return {"model": self._model.state(), "held": list(self._held)}
+
+    def _restore_parts(self, state):
+        held = tuple(float(v) for v in state["held"])
+        if len(held) != len(self.table.OUTPUTS):
+            raise ValueError("the state is from another version of the FMU")
+        self._model.restore(state["model"])           # all or nothing
+        self._held = held

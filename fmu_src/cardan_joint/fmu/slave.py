@@ -12,10 +12,8 @@ pythonfmu drops log messages unless debug logging is on.
 import math
 from operator import attrgetter
 
-from pythonfmu.default_experiment import DefaultExperiment
 from pythonfmu.enums import Fmi2Status
 
-from .. import __version__
 from .. import variables as table
 from ..physics.model import CardanJoint
 from .base import TableSlave
@@ -37,19 +35,8 @@ _ALL_OUTPUTS = list(range(_FIRST_OUTPUT, len(_NAMES)))
 
 class CardanJointSlave(TableSlave):
     table = table
-    author = "Cardan joint FMU team"
-    license = "MIT"
-    version = __version__
     description = ("Exact Cardan (Hooke) universal joint: output shaft motion, crosspiece "
                    "orientation and dynamics, input torque and secondary couples")
-    default_experiment = DefaultExperiment(start_time=0.0, stop_time=2.0, step_size=1e-3)
-    log_categories = {
-        "logStatusWarning": "Warnings: outputs held at the last valid inputs.",
-        "logStatusDiscard": "Refused steps: the variable, its value, the limit and the time.",
-        "logStatusError": "Errors: invalid parameters, calls FMI does not allow, internal faults.",
-        "logStatusFatal": "Not used: the FMU never ends in fmi2Fatal on its own.",
-        "logAll": "All messages.",
-    }
     # Start values that differ from the table's, written in by the build script.
     start_overrides: dict = {}
 
@@ -155,13 +142,7 @@ class CardanJointSlave(TableSlave):
             return [outputs[vr - _FIRST_OUTPUT] if vr >= _FIRST_OUTPUT
                     else getattr(joint, _KNOWN[vr]) for vr in vrs]
         except Exception as error:
-            bad = [vr for vr in vrs if not 0 <= vr < len(_NAMES)]
-            if bad:
-                self._report(f"get_real: no Real variable has value reference {bad[0]}",
-                             Fmi2Status.error)
-            else:
-                self._fault("get_real", error)
-            return [math.nan] * len(vrs)
+            return self._get_real_failed(vrs, error, len(_NAMES))
 
     def set_real(self, vrs, values):
         try:
@@ -174,18 +155,10 @@ class CardanJointSlave(TableSlave):
                 return
             parameters_changed = False
             for vr, value in zip(vrs, values):
-                if not 0 <= vr < _FIRST_OUTPUT:
-                    self._report(f"set_real on {self._name_of(vr)} ignored: only inputs and "
-                                 f"parameters can be set", Fmi2Status.error)
-                elif vr in _INPUT_REFERENCES:
+                if self._write_permitted(vr, self._name_of(vr), value, len(table.INPUTS),
+                                         _FIRST_OUTPUT):
                     setattr(joint, _KNOWN[vr], float(value))
-                elif self._initialized:
-                    self._report(f"parameter {_KNOWN[vr]} = {value!r} ignored: fixed "
-                                 f"parameters cannot change after initialization",
-                                 Fmi2Status.error)
-                else:
-                    setattr(joint, _KNOWN[vr], float(value))
-                    parameters_changed = True
+                    parameters_changed = parameters_changed or vr not in _INPUT_REFERENCES
             if parameters_changed:
                 self._restart()        # outputs in initialization mode see them at once
             self._outputs = None
@@ -199,31 +172,20 @@ class CardanJointSlave(TableSlave):
 
     # --- FMU state -----------------------------------------------------------
 
-    def _get_fmu_state(self):
-        try:
-            return {"joint": self._joint.state(), "start_time": self._start_time,
-                    "initialized": self._initialized,
-                    "outputs_held": list(self._outputs_held),
-                    "inputs_held": list(self._inputs_held)}
-        except Exception as error:
-            self._fault("fmi2GetFMUstate", error)
-            return {"invalid_state": f"fmi2GetFMUstate failed: {error}"}
+    _state_owner = "joint"
 
-    def _set_fmu_state(self, state):
-        try:
-            if "invalid_state" in state:
-                raise ValueError(state["invalid_state"])
-            held_outputs = tuple(float(v) for v in state["outputs_held"])
-            held_inputs = tuple(float(v) for v in state["inputs_held"])
-            if len(held_outputs) != len(table.OUTPUTS) or len(held_inputs) != len(table.INPUTS):
-                raise ValueError("the state is from another version of the FMU")
-            self._joint.restore(state["joint"])           # all or nothing
-            self._start_time = float(state["start_time"])
-            self._initialized = bool(state["initialized"])
-            self._outputs_held, self._inputs_held = held_outputs, held_inputs
-        except Exception as error:
-            self._report(f"fmi2SetFMUstate ignored, the joint keeps its state: "
-                         f"{type(error).__name__}: {error}", Fmi2Status.error)
-        finally:
-            self._outputs = None
-            self._inputs_checked = False
+    def _state_parts(self):
+        return {"joint": self._joint.state(), "outputs_held": list(self._outputs_held),
+                "inputs_held": list(self._inputs_held)}
+
+    def _restore_parts(self, state):
+        held_outputs = tuple(float(v) for v in state["outputs_held"])
+        held_inputs = tuple(float(v) for v in state["inputs_held"])
+        if len(held_outputs) != len(table.OUTPUTS) or len(held_inputs) != len(table.INPUTS):
+            raise ValueError("the state is from another version of the FMU")
+        self._joint.restore(state["joint"])           # all or nothing
+        self._outputs_held, self._inputs_held = held_outputs, held_inputs
+
+    def _state_restored(self):
+        self._outputs = None
+        self._inputs_checked = False

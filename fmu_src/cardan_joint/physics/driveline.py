@@ -52,14 +52,14 @@ class _TableModel:
         return {name for name, _ in limits.bad_values("input", self, self.table.INPUTS,
                                                       self._input_ranges)}
 
-    def step(self, step_size: float):
-        """Advance by `step_size`; return None, or why the step was refused (then
-        nothing has changed)."""
+    def step(self, step_size: float, start_time: float = None):
+        """Advance by `step_size` from `start_time` (default: the model's clock); return
+        None, or why the step was refused (then nothing has changed, the clock neither)."""
         problem = (limits.step_size_problem(step_size) or self.parameter_fault
                    or self.input_problem(step_size) or self._advance(step_size))
         if problem:
             return problem
-        self.time += step_size
+        self.time = (self.time if start_time is None else start_time) + step_size
         return None
 
     def _variables(self):
