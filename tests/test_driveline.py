@@ -227,3 +227,61 @@ def test_example_writes_the_ssp_both_csvs_and_the_plot(tmp_path):
     assert rows[0][:2] == ["time", "Motor.speed"] and len(rows) == 1002
     assert "ratio 2, step 0.0001 s: DIVERGES" in run.stdout
     assert "ratio 0.5, step 0.001 s: bounded" in run.stdout
+
+
+def _jacobi_master(ssp_path, stop_time, h, first_values):
+    """An independent fixed-step Jacobi master on the SSP's FMUs: each step every FMU
+    gets the connected outputs of the last communication point, steps, and reports;
+    `first_values` {"Component.output": value} are the values fed in the first step."""
+    from fmpy import extract, read_model_description
+    from fmpy.fmi2 import FMU2Slave
+    from cardan_joint.ssp import fmpy_parameter_set
+
+    unzipped = extract(str(ssp_path))
+    parameters = {p.name: float(p.value) for p in fmpy_parameter_set(ssp_path).parameters}
+    sources = {"Motor": "Motor.fmu", "Drive": "UniversalJoint.fmu", "Load": "Load.fmu"}
+    fmus, refs = {}, {}
+    for name, source in sources.items():
+        path = f"{unzipped}/resources/{source}"
+        description = read_model_description(path)
+        fmu = FMU2Slave(guid=description.guid, unzipDirectory=extract(path),
+                        modelIdentifier=description.coSimulation.modelIdentifier,
+                        instanceName=name)
+        fmu.instantiate()
+        fmu.setupExperiment(startTime=0.0)
+        refs[name] = {v.name: v.valueReference for v in description.modelVariables}
+        for key, value in parameters.items():
+            if key.startswith(name + "."):
+                fmu.setReal([refs[name][key.split(".", 1)[1]]], [value])
+        fmu.enterInitializationMode()
+        fmu.exitInitializationMode()
+        fmus[name] = fmu
+    values = dict(first_values)
+    rows = {key: [] for key in system.RECORDED}
+    for k in range(round(stop_time / h)):
+        for start, start_connector, end, end_connector in system.CONNECTIONS:
+            fmus[end].setReal([refs[end][end_connector]], [values[f"{start}.{start_connector}"]])
+        for name, fmu in fmus.items():
+            fmu.doStep(k * h, h)
+        for key in system.RECORDED:
+            name, variable = key.split(".")
+            values[key] = fmus[name].getReal([refs[name][variable]])[0]
+            rows[key].append(values[key])
+    for fmu in fmus.values():
+        fmu.terminate()
+        fmu.freeInstance()
+    return {key: np.array(v) for key, v in rows.items()}
+
+
+def test_each_host_is_exactly_a_jacobi_master_with_its_own_first_inputs(driveline_ssp):
+    pytest.importorskip("libcosimpy")
+    h, stop_time = 1e-3, 0.1
+    fmpy_rows = system.run_fmpy(driveline_ssp, stop_time, h)
+    libcosim_rows = system.run_libcosim(driveline_ssp, stop_time, h)
+    zeros = {key: 0.0 for key in system.RECORDED}
+    initial = {key: libcosim_rows[key][0] for key in system.RECORDED}
+    for rows, first, offset in ((fmpy_rows, zeros, 0), (libcosim_rows, initial, 1)):
+        reference = _jacobi_master(driveline_ssp, stop_time, h, first)
+        for key in system.RECORDED:
+            scale = max(1.0, np.max(np.abs(reference[key])))
+            assert np.max(np.abs(rows[key][offset:] - reference[key])) <= 1e-9 * scale, key
