@@ -39,15 +39,13 @@ def loop_stability(fmus, drive, folder, ratios=(0.5, 0.9, 2.0), steps=(1e-3, 1e-
                    n_steps=200):
     """{(inertia ratio, step): True if the torque loop stays bounded over `n_steps`} on a
     straight, massless drive element (the load's inertia meets the motor's unchanged)."""
-    straight = {"UniversalJoint": {"bend_angle": 0.0, "crosspiece_inertia_1": 0.0,
-                                   "crosspiece_inertia_2": 0.0, "crosspiece_inertia_3": 0.0}}
     motor_inertia = system.MOTOR_PARAMETERS["rotor_inertia"]
     rigid = system.MOTOR_PARAMETERS["stall_torque"] / motor_inertia
     outcome = {}
     for ratio in ratios:
         ssp = system.write_driveline_ssp(
             Path(folder) / f"ratio_{ratio}.ssp", fmus, drive,
-            drive_parameters=straight.get(drive), load={"inertia": ratio * motor_inertia})
+            drive_parameters=system.STRAIGHT_DRIVE_PARAMETERS.get(drive), load={"inertia": ratio * motor_inertia})
         for h in steps:
             try:
                 rows = system.run_libcosim(ssp, n_steps * h, h)

@@ -23,9 +23,13 @@ def component_fmus(tmp_path_factory):
 
 @pytest.fixture(scope="module")
 def driveline_ssp(component_fmus, fmu_path, tmp_path_factory):
-    fmus = {"Motor": component_fmus["Motor"], system.DRIVE_INSTANCE: fmu_path,
+    folder = tmp_path_factory.mktemp("ssp")
+    # The session's joint FMU when the drive is the joint; the drive model otherwise.
+    drive = (fmu_path if system.DRIVE == "UniversalJoint" else
+             build_fmu(folder, "--model", system.DRIVE, f"--name={system.DRIVE}"))
+    fmus = {"Motor": component_fmus["Motor"], system.DRIVE_INSTANCE: drive,
             "Load": component_fmus["Load"]}
-    return system.write_driveline_ssp(tmp_path_factory.mktemp("ssp") / "Driveline.ssp", fmus)
+    return system.write_driveline_ssp(folder / "Driveline.ssp", fmus)
 
 
 # --- physics ---------------------------------------------------------------
@@ -185,10 +189,10 @@ def test_ssp_holds_the_three_fmus_connections_and_parameter_sets(driveline_ssp):
     from fmpy.ssp.ssd import read_ssd
 
     ssd = read_ssd(str(driveline_ssp))        # validates against the SSP schema
-    assert [c.name for c in ssd.system.elements] == ["Motor", "Drive", "Load"]
+    assert [c.name for c in ssd.system.elements] == ["Motor", system.DRIVE_INSTANCE, "Load"]
     assert len(ssd.system.connections) == 6
     names = zipfile.ZipFile(driveline_ssp).namelist()
-    assert {"resources/Motor.fmu", "resources/UniversalJoint.fmu", "resources/Load.fmu",
+    assert {"resources/Motor.fmu", f"resources/{system.DRIVE}.fmu", "resources/Load.fmu",
             "resources/Motor.ssv", "resources/Drive.ssv", "resources/Load.ssv"} <= set(names)
 
 
@@ -239,10 +243,11 @@ def _jacobi_master(ssp_path, stop_time, h, first_values):
 
     unzipped = extract(str(ssp_path))
     parameters = {p.name: float(p.value) for p in fmpy_parameter_set(ssp_path).parameters}
-    sources = {"Motor": "Motor.fmu", "Drive": "UniversalJoint.fmu", "Load": "Load.fmu"}
+    from fmpy.ssp.ssd import find_components, read_ssd
+
     fmus, refs = {}, {}
-    for name, source in sources.items():
-        path = f"{unzipped}/resources/{source}"
+    for component in find_components(read_ssd(str(ssp_path)).system):
+        name, path = component.name, f"{unzipped}/{component.source}"
         description = read_model_description(path)
         fmu = FMU2Slave(guid=description.guid, unzipDirectory=extract(path),
                         modelIdentifier=description.coSimulation.modelIdentifier,

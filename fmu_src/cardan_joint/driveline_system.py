@@ -28,6 +28,12 @@ DRIVE_INSTANCE = "Drive"
 DRIVE_PARAMETERS = {
     "UniversalJoint": {"bend_angle": math.radians(20.0)},
 }
+# A straight drive without inertia of its own: the load's inertia meets the motor's
+# unchanged (the example's stability demonstration).
+STRAIGHT_DRIVE_PARAMETERS = {
+    "UniversalJoint": {"bend_angle": 0.0, "crosspiece_inertia_1": 0.0,
+                       "crosspiece_inertia_2": 0.0, "crosspiece_inertia_3": 0.0},
+}
 MOTOR_PARAMETERS = {"stall_torque": 120.0, "no_load_speed": 157.07963267948966,
                     "rotor_inertia": 0.2}
 LOAD_PARAMETERS = {"inertia": 0.05, "drag": 0.05, "constant_torque": 20.0}
