@@ -32,3 +32,11 @@ def test_propshaft_variable_table_is_generated_from_its_metadata():
     text = (ROOT / "docs" / "Propshaft" / "README.md").read_text()
     begin, end = "<!-- variables:begin -->\n", "<!-- variables:end -->"
     assert text.split(begin)[1].split(end)[0] == propshaft_table(2).markdown_table()
+
+
+def test_motor_and_load_tables_are_generated_from_their_tables():
+    from cardan_joint.driveline_variables import LOAD, MOTOR
+
+    for key, table in (("motor", MOTOR), ("load", LOAD)):
+        begin, end = f"<!-- {key}-variables:begin -->\n", f"<!-- {key}-variables:end -->"
+        assert README.split(begin)[1].split(end)[0] == table.markdown_table()

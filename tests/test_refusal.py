@@ -8,6 +8,7 @@ import pytest
 
 from cardan_joint import variables as table
 from cardan_joint.physics import CardanJoint, Reason, Refusal
+from cardan_joint.physics.driveline import Motor
 from cardan_joint.physics.propshaft import Propshaft
 from cardan_joint.simulate import RefusalError, SimulationError, simulate
 
@@ -30,11 +31,17 @@ CAUSES = {
     Reason.SHAFT_ANGLE: [(dict(shaft_1_top_angle=-math.pi / 2), 0.1)],
     Reason.WORKING_ANGLE_GUARD: [(dict(max_working_angle=2.0), 0.1)],
     Reason.WORKING_ANGLE: [(dict(shaft_1_side_angle=0.6, max_working_angle=0.5), 0.1)],
+    # The motor's.
+    Reason.ROTOR_SPEED: [(dict(load_torque=9e8, stall_torque=60.0, no_load_speed=100.0,
+                               rotor_inertia=0.3), 0.1)],
 }
 PROPSHAFT_REASONS = {Reason.SHAFT_ANGLE, Reason.WORKING_ANGLE_GUARD, Reason.WORKING_ANGLE}
+MOTOR_REASONS = {Reason.ROTOR_SPEED}
 
 
 def _model(reason, start):
+    if reason in MOTOR_REASONS:
+        return Motor(**start)
     return Propshaft(**start) if reason in PROPSHAFT_REASONS else CardanJoint(**start)
 
 

@@ -22,7 +22,8 @@ from .models import MODELS, Model, StartValueError, model as find_model
 
 PACKAGE_DIR = Path(__file__).resolve().parent
 # What an FMU needs at run time: the rest of the package runs in the host only.
-RUNTIME = ("__init__.py", "variables.py", "propshaft_variables.py", "physics", "fmu")
+RUNTIME = ("__init__.py", "variables.py", "propshaft_variables.py", "driveline_variables.py",
+           "physics", "fmu")
 DEFAULT_MODEL = "UniversalJoint"
 FMI_VERSIONS = (2, 3)
 

@@ -29,6 +29,10 @@ Things worth knowing:
   real step-0 sample. The C function is therefore called directly here.
 * libcosim logs at ``debug`` level to stderr by default (FMI Library chatter);
   this sets the process-wide level to ``warning``.
+* An SSP archive loads with ``CosimExecution.from_ssp_file`` (fixed step): its
+  connections are then transferred after every step from the outputs the FMUs
+  report after that step (explicit, Jacobi-type coupling); at initialisation the
+  initial outputs are passed through before the first step.
 * libcosim unpacks the FMU under ``/tmp/libcosim_<uuid>`` and removes it when
   the execution is destroyed.
 """
@@ -47,6 +51,68 @@ def _ns(seconds: float) -> int:
     return int(round(seconds * _NS))
 
 
+def _check(ok, what):
+    from libcosimpy._internal import get_last_error_message
+
+    if not ok:
+        raise RuntimeError(f"libcosim: {what} failed: {get_last_error_message()}")
+
+
+def _steps(stop_time, step_size):
+    step_ns, stop_ns = _ns(step_size), _ns(stop_time)
+    n_steps = round(stop_ns / step_ns) if step_ns > 0 else 0
+    if step_ns <= 0 or n_steps < 1 or n_steps * step_ns != stop_ns:
+        raise ValueError(f"stop_time {stop_time} is not a positive whole number of steps {step_size}")
+    return step_ns, n_steps
+
+
+def _real_references(execution, index, where):
+    from libcosimpy.CosimEnums import CosimVariableType
+
+    refs = {v.name.decode(): v.reference for v in execution.slave_variables(index)
+            if CosimVariableType(v.type) is CosimVariableType.REAL}
+
+    def ref(name):
+        if name not in refs:
+            raise KeyError(f"{name!r} is not a Real variable of {where}")
+        return refs[name]
+    return ref
+
+
+def _observe_and_run(execution, observed, n_steps, step_ns):
+    """Step `execution` `n_steps` times recording `observed` = {key: (slave index,
+    value reference)}; return {"time": t, key: values} with n_steps + 1 samples."""
+    from libcosimpy.CosimEnums import CosimVariableType
+    from libcosimpy.CosimObserver import CosimObserver
+    from libcosimpy._internal import libcosimc
+
+    n = n_steps + 1
+    observer = CosimObserver.create_time_series(n)  # the default one keeps only the last 10000
+    _check(execution.add_observer(observer), "adding observer")
+    for key, (index, reference) in observed.items():
+        _check(observer.start_time_series(index, reference, CosimVariableType.REAL),
+               f"observing {key}")
+
+    _check(execution.step(n_steps), "stepping")
+
+    get_samples = libcosimc().cosim_observer_slave_get_real_samples
+    get_samples.restype = ctypes.c_int64
+    get_samples.argtypes = [ctypes.c_void_p, ctypes.c_int, ctypes.c_uint32, ctypes.c_int64, ctypes.c_size_t,
+                            ctypes.c_void_p, ctypes.c_void_p, ctypes.c_void_p]
+    result: dict[str, np.ndarray] = {}
+    for key, (index, reference) in observed.items():
+        values, steps, times = np.empty(n), np.empty(n, np.int64), np.empty(n, np.int64)
+        got = get_samples(ctypes.cast(observer.ptr(), ctypes.c_void_p), index, reference, 0, n,
+                          values.ctypes.data, steps.ctypes.data, times.ctypes.data)
+        _check(got == n and np.array_equal(steps, np.arange(n)), f"reading {key} ({got} of {n} samples)")
+        result.setdefault("time", times / _NS)
+        result[key] = values
+    if "time" not in result:
+        result["time"] = np.arange(n) * step_ns / _NS
+    del observer
+    return result
+
+
 def run_libcosim(fmu_path, stop_time, step_size, inputs: dict[str, float], outputs: list[str],
                  start_values: dict[str, float] | None = None) -> dict[str, np.ndarray]:
     """Simulate one FMU alone in libcosim with constant real ``inputs``.
@@ -56,60 +122,46 @@ def run_libcosim(fmu_path, stop_time, step_size, inputs: dict[str, float], outpu
     number of steps. Returns ``{"time": t, name: values, ...}`` with
     ``round(stop_time / step_size) + 1`` samples starting at t = 0.
     """
-    from libcosimpy.CosimEnums import CosimVariableType
     from libcosimpy.CosimExecution import CosimExecution
     from libcosimpy.CosimLogging import CosimLogLevel, log_output_level
-    from libcosimpy.CosimObserver import CosimObserver
     from libcosimpy.CosimSlave import CosimLocalSlave
-    from libcosimpy._internal import get_last_error_message, libcosimc
 
-    step_ns, stop_ns = _ns(step_size), _ns(stop_time)
-    n_steps = round(stop_ns / step_ns)
-    if step_ns <= 0 or n_steps < 1 or n_steps * step_ns != stop_ns:
-        raise ValueError(f"stop_time {stop_time} is not a positive whole number of steps {step_size}")
-
-    def check(ok, what):
-        if not ok:
-            raise RuntimeError(f"libcosim: {what} failed: {get_last_error_message()}")
-
+    step_ns, n_steps = _steps(stop_time, step_size)
     log_output_level(CosimLogLevel.WARNING)
     execution = CosimExecution.from_step_size(step_ns)
     slave = CosimLocalSlave(fmu_path=str(Path(fmu_path).resolve()), instance_name="fmu")
-    check(slave.ptr(), f"loading {fmu_path}")  # adding a NULL slave segfaults
+    _check(slave.ptr(), f"loading {fmu_path}")  # adding a NULL slave segfaults
     index = execution.add_local_slave(slave)
-    check(index >= 0, f"adding {fmu_path}")
-    refs = {v.name.decode(): v.reference for v in execution.slave_variables(index)
-            if CosimVariableType(v.type) is CosimVariableType.REAL}
-
-    def ref(name):
-        if name not in refs:
-            raise KeyError(f"{name!r} is not a Real variable of {fmu_path}")
-        return refs[name]
-
+    _check(index >= 0, f"adding {fmu_path}")
+    ref = _real_references(execution, index, fmu_path)
     for name, value in {**(start_values or {}), **inputs}.items():
-        check(execution.real_initial_value(index, ref(name), float(value)), f"setting {name}")
+        _check(execution.real_initial_value(index, ref(name), float(value)), f"setting {name}")
+    result = _observe_and_run(execution, {name: (index, ref(name)) for name in outputs},
+                              n_steps, step_ns)
+    del execution, slave  # execution first: it owns the FMU instance
+    return result
 
-    n = n_steps + 1
-    observer = CosimObserver.create_time_series(n)  # the default one keeps only the last 10000
-    check(execution.add_observer(observer), "adding observer")
-    for name in outputs:
-        check(observer.start_time_series(index, ref(name), CosimVariableType.REAL), f"observing {name}")
 
-    check(execution.step(n_steps), "stepping")
+def run_libcosim_ssp(ssp_path, stop_time, step_size, outputs: list[str]) -> dict[str, np.ndarray]:
+    """Simulate the SSP archive ``ssp_path`` in libcosim with its own connections and
+    component-level parameter bindings (libcosim ignores system-level ones).
 
-    get_samples = libcosimc().cosim_observer_slave_get_real_samples
-    get_samples.restype = ctypes.c_int64
-    get_samples.argtypes = [ctypes.c_void_p, ctypes.c_int, ctypes.c_uint32, ctypes.c_int64, ctypes.c_size_t,
-                            ctypes.c_void_p, ctypes.c_void_p, ctypes.c_void_p]
-    result: dict[str, np.ndarray] = {}
-    for name in outputs:
-        values, steps, times = np.empty(n), np.empty(n, np.int64), np.empty(n, np.int64)
-        got = get_samples(ctypes.cast(observer.ptr(), ctypes.c_void_p), index, ref(name), 0, n,
-                          values.ctypes.data, steps.ctypes.data, times.ctypes.data)
-        check(got == n and np.array_equal(steps, np.arange(n)), f"reading {name} ({got} of {n} samples)")
-        result.setdefault("time", times / _NS)
-        result[name] = values
-    if "time" not in result:
-        result["time"] = np.arange(n) * step_ns / _NS
-    del execution, observer, slave  # execution first: it owns the FMU instance
+    ``outputs`` are "Component.variable" names; the result has them and "time",
+    ``round(stop_time / step_size) + 1`` samples from t = 0 as in ``run_libcosim``.
+    """
+    from libcosimpy.CosimExecution import CosimExecution
+    from libcosimpy.CosimLogging import CosimLogLevel, log_output_level
+
+    step_ns, n_steps = _steps(stop_time, step_size)
+    log_output_level(CosimLogLevel.WARNING)
+    execution = CosimExecution.from_ssp_file(str(Path(ssp_path).resolve()), step_size=step_ns)
+    _check(execution.num_slaves() > 0, f"loading {ssp_path}")
+    observed = {}
+    for key in outputs:
+        component, _, variable = key.partition(".")
+        index = execution.slave_index_from_instance_name(component)
+        _check(index >= 0, f"finding component {component} in {ssp_path}")
+        observed[key] = (index, _real_references(execution, index, component)(variable))
+    result = _observe_and_run(execution, observed, n_steps, step_ns)
+    del execution
     return result

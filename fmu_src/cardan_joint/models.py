@@ -20,18 +20,23 @@ class StartValueError(ValueError):
     """A start value is unknown or cannot run; the message says which and why."""
 
 
+def _check_values(values: Mapping[str, float], table, make, owner: str = "") -> None:
+    """Raise StartValueError unless `values` name inputs and parameters of `table`
+    only and the model `make(**values)` can run with them."""
+    unknown = sorted(set(values) - set(table.INPUTS) - set(table.PARAMETERS))
+    if unknown:
+        raise StartValueError(f"cannot set start value of {', '.join(unknown)}: only inputs "
+                              f"and parameters{owner} have start values")
+    model = make(**values)
+    problem = model.parameter_problem() or model.input_problem()
+    if problem:
+        raise StartValueError(f"invalid start values: {problem.text}")
+
+
 def _check_joint_start_values(values: Mapping[str, float], settings: Mapping) -> None:
     from .physics.model import CardanJoint
 
-    settable = set(joint_table.INPUTS) | set(joint_table.PARAMETERS)
-    unknown = sorted(set(values) - settable)
-    if unknown:
-        raise StartValueError(f"cannot set start value of {', '.join(unknown)}: "
-                              f"only inputs and parameters have start values")
-    joint = CardanJoint(**values)
-    problem = joint.parameter_problem() or joint.input_problem()
-    if problem:
-        raise StartValueError(f"invalid start values: {problem.text}")
+    _check_values(values, joint_table, CardanJoint)
 
 
 def _check_propshaft_start_values(values: Mapping[str, float], settings: Mapping) -> None:
@@ -42,20 +47,23 @@ def _check_propshaft_start_values(values: Mapping[str, float], settings: Mapping
     if joints not in JOINTS:
         raise StartValueError(f"--joints {joints!r}: the Propshaft is built for "
                               f"{', '.join(map(str, JOINTS))} joints")
-    table = propshaft_table(joints)
-    unknown = sorted(set(values) - set(table.INPUTS) - set(table.PARAMETERS))
-    if unknown:
-        raise StartValueError(f"cannot set start value of {', '.join(unknown)}: only inputs "
-                              f"and parameters of the {joints}-joint Propshaft have start values")
-    propshaft = Propshaft(joints, **values)
-    problem = propshaft.parameter_problem() or propshaft.input_problem()
-    if problem:
-        raise StartValueError(f"invalid start values: {problem.text}")
+    _check_values(values, propshaft_table(joints), lambda **v: Propshaft(joints, **v),
+                  f" of the {joints}-joint Propshaft")
 
 
 def _propshaft_name(settings: Mapping) -> str:
     joints = settings.get("joints", 2)
     return "Propshaft" if joints == 2 else f"Propshaft{joints}"
+
+
+def _component_start_value_checker(class_name: str):
+    """Start-value check for the stepped model `physics.driveline.<class_name>`."""
+    def check(values: Mapping[str, float], settings: Mapping) -> None:
+        from .physics import driveline
+
+        model_class = getattr(driveline, class_name)
+        _check_values(values, model_class.table, model_class)
+    return check
 
 
 @dataclass(frozen=True)
@@ -90,6 +98,16 @@ MODELS: Dict[str, Model] = {
         check_start_values=_check_propshaft_start_values,
         default_settings={"joints": 2},
         name_for=_propshaft_name,
+    ),
+    "Motor": Model(
+        key="Motor",
+        scripts={2: FMU_DIR / "Motor.py"},
+        check_start_values=_component_start_value_checker("Motor"),
+    ),
+    "Load": Model(
+        key="Load",
+        scripts={2: FMU_DIR / "Load.py"},
+        check_start_values=_component_start_value_checker("Load"),
     ),
 }
 

@@ -155,13 +155,15 @@ class VariableTable:
     is itself the UniversalJoint's table (same attribute names), other models
     build one (e.g. `propshaft_variables.propshaft_table`)."""
 
-    def __init__(self, variables):
+    def __init__(self, variables, units=None):
+        """`units`: the unit definitions (name -> Unit) its description declares;
+        the joint's by default."""
         self.VARIABLES = tuple(variables)
         self.BY_NAME = {v.name: v for v in self.VARIABLES}
         self.INPUTS = _names(self.VARIABLES, _IN)
         self.PARAMETERS = _names(self.VARIABLES, _PAR)
         self.OUTPUTS = _names(self.VARIABLES, _OUT)
-        self.UNITS = UNITS
+        self.UNITS = UNITS if units is None else units
 
     def start_values(self) -> dict:
         return start_values(self.VARIABLES)

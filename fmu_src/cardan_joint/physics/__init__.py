@@ -7,6 +7,7 @@ call per FMU step) and on numpy arrays (broadcast, no Python loops);
 `CardanJoint` steps the joint in time as the FMU does.
 """
 
+from .driveline import Load, Motor
 from .model import CardanJoint
 from .quantities import (cardan_error, degree_of_unevenness, max_cardan_error, output_angle,
                          output_speed, roll_angle, speed_ratio)
@@ -15,7 +16,7 @@ from .response import JointResponse, joint_response
 from .revolutions import RevolutionAngle, advance, split_angle
 
 __all__ = [
-    "CardanJoint", "JointResponse", "Reason", "Refusal", "RevolutionAngle", "advance", "cardan_error",
+    "CardanJoint", "JointResponse", "Load", "Motor", "Reason", "Refusal", "RevolutionAngle", "advance", "cardan_error",
     "degree_of_unevenness", "joint_response", "max_cardan_error", "output_angle",
     "output_speed", "roll_angle", "speed_ratio", "split_angle",
 ]

@@ -28,6 +28,7 @@ class Reason(str, Enum):
     SHAFT_ANGLE = "shaft_angle_invalid"              # a propshaft shaft angle not in (-pi/2, pi/2)
     WORKING_ANGLE_GUARD = "max_working_angle_invalid"  # max_working_angle not in (0, pi/2)
     WORKING_ANGLE = "working_angle"                  # a joint's working angle >= max_working_angle
+    ROTOR_SPEED = "rotor_speed"                      # the motor's speed beyond its range at step end
 
 
 _LIMIT = "max_bend_angle = {limit} rad ({limit:deg} deg)"
@@ -62,6 +63,8 @@ _TEMPLATES = {
                                 "limit {limit} rad)",
     Reason.WORKING_ANGLE: "{variable} = {value} rad ({value:deg} deg) is not below the limit "
                           "max_working_angle = {limit} rad ({limit:deg} deg)",
+    Reason.ROTOR_SPEED: "input load_torque = {load_torque} N.m over a step of {step_size} s "
+                        "drives the rotor speed to {value} rad/s, beyond the limit {limit} rad/s",
 }
 # Fixed by the reason, so not written in the message.
 _IMPLIED = {Reason.BEND_ANGLE: ("bend_angle", "rad"), Reason.BEND_AT_STEP_END: ("bend_angle", "rad"),
@@ -70,7 +73,7 @@ _IMPLIED = {Reason.BEND_ANGLE: ("bend_angle", "rad"), Reason.BEND_AT_STEP_END: (
             Reason.ANGLE_OVERFLOW: ("input_angle", "rad"),
             Reason.SPEED_OVERFLOW: ("input_speed", "rad/s"), Reason.SHAFT_ANGLE: (None, "rad"),
             Reason.WORKING_ANGLE_GUARD: ("max_working_angle", "rad"),
-            Reason.WORKING_ANGLE: (None, "rad")}
+            Reason.WORKING_ANGLE: (None, "rad"), Reason.ROTOR_SPEED: ("speed", "rad/s")}
 _PREFIX = "t = {time} s: "
 _FLOAT = r"-?(?:inf|nan|[0-9][0-9.e+-]*)"
 _PLACEHOLDER = re.compile(r"\{(\w+)(?::deg)?\}")

@@ -1,0 +1,110 @@
+"""Motor -> drive element -> Load as an SSP system, run by FMPy and by OSP libcosim.
+
+    python examples/driveline_ssp.py [--drive Propshaft|UniversalJoint] [--out results]
+
+Builds the Motor, Load and drive FMUs, writes results/Driveline.ssp (the three
+FMUs, their connections, one parameter set per component), runs it with FMPy's
+`simulate_ssp` and with libcosim, writes results/driveline_ssp_fmpy.csv,
+results/driveline_ssp_libcosim.csv and results/driveline_ssp.png, and prints
+how far the two hosts differ at three step sizes and the torque loop's
+stability against the load-to-motor inertia ratio.
+"""
+
+import argparse
+import sys
+import tempfile
+from pathlib import Path
+
+import numpy as np
+
+from cardan_joint import driveline_system as system
+from cardan_joint import results
+from cardan_joint.plotting import pyplot, save_figure
+from cardan_joint.units import RAD_PER_S_TO_RPM
+
+sys.path.insert(0, str(Path(__file__).resolve().parent))
+from _support import output_folder  # noqa: E402
+
+STOP_TIME, STEP = 1.0, 1e-3
+
+
+def host_convergence(ssp, steps=(1e-3, 5e-4, 2.5e-4), stop_time=0.5):
+    """{step: largest |FMPy - libcosim| of the motor speed}: the hosts differ only in
+    the first step's inputs (see the README), so this falls in proportion to the step."""
+    return {h: system.host_difference(system.run_fmpy(ssp, stop_time, h),
+                                      system.run_libcosim(ssp, stop_time, h))["Motor.speed"]
+            for h in steps}
+
+
+def loop_stability(fmus, drive, folder, ratios=(0.5, 0.9, 2.0), steps=(1e-3, 1e-4),
+                   n_steps=200):
+    """{(inertia ratio, step): True if the torque loop stays bounded over `n_steps`} on a
+    straight, massless drive element (the load's inertia meets the motor's unchanged)."""
+    motor_inertia = system.MOTOR_PARAMETERS["rotor_inertia"]
+    rigid = system.MOTOR_PARAMETERS["stall_torque"] / motor_inertia
+    outcome = {}
+    for ratio in ratios:
+        ssp = system.write_driveline_ssp(
+            Path(folder) / f"ratio_{ratio}.ssp", fmus, drive,
+            drive_parameters=system.STRAIGHT_DRIVE_PARAMETERS.get(drive),
+            load={"inertia": ratio * motor_inertia})
+        for h in steps:
+            try:
+                rows = system.run_libcosim(ssp, n_steps * h, h)
+                outcome[ratio, h] = bool(np.max(np.abs(rows["Motor.acceleration"])) < 10 * rigid)
+            except RuntimeError:        # a step refused: the loop ran away
+                outcome[ratio, h] = False
+    return outcome
+
+
+def plot(fmpy_rows, libcosim_rows, path, drive):
+    plt = pyplot()
+    fig, axes = plt.subplots(3, 1, figsize=(9, 8), sharex=True)
+    rpm = RAD_PER_S_TO_RPM
+    for rows, style, host in ((libcosim_rows, "-", "libcosim"), (fmpy_rows, "--", "FMPy")):
+        axes[0].plot(rows["time"], rows["Motor.speed"] * rpm, style, label=f"motor ({host})")
+        axes[0].plot(rows["time"], rows["Drive.output_speed"] * rpm, style, lw=0.7,
+                     label=f"load shaft ({host})")
+        axes[1].plot(rows["time"], rows["Drive.input_torque"], style, lw=0.7,
+                     label=f"drive input torque ({host})")
+        axes[1].plot(rows["time"], rows["Load.torque"], style, lw=0.7, label=f"load torque ({host})")
+    difference = fmpy_rows["Motor.speed"] - libcosim_rows["Motor.speed"][1:]
+    axes[2].plot(fmpy_rows["time"], difference * rpm)
+    axes[0].set_ylabel("speed [rpm]")
+    axes[1].set_ylabel("torque [N.m]")
+    axes[2].set_ylabel("motor speed\nFMPy - libcosim [rpm]")
+    axes[2].set_xlabel("time [s]")
+    axes[0].set_title(f"SSP system Motor -> {drive} -> Load, step {STEP:g} s")
+    for ax in axes:
+        if ax.get_legend_handles_labels()[0]:
+            ax.legend(loc="lower right", fontsize=7)
+    save_figure(fig, path)
+
+
+def main(argv=None):
+    parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
+    parser.add_argument("--drive", default=system.DRIVE,
+                        help="drive element model (default: %(default)s)")
+    parser.add_argument("--out", default="results", help="folder for the results")
+    args = parser.parse_args(argv)
+    out = output_folder(args)
+    with tempfile.TemporaryDirectory(prefix="driveline_ssp_") as work:
+        fmus = system.build_fmus(work, args.drive)
+        ssp = system.write_driveline_ssp(out / "Driveline.ssp", fmus, args.drive, STOP_TIME)
+        fmpy_rows = system.run_fmpy(ssp, STOP_TIME, STEP)
+        libcosim_rows = system.run_libcosim(ssp, STOP_TIME, STEP)
+        results.write_csv(fmpy_rows, out / "driveline_ssp_fmpy.csv")
+        results.write_csv(libcosim_rows, out / "driveline_ssp_libcosim.csv")
+        plot(fmpy_rows, libcosim_rows, out / "driveline_ssp.png", args.drive)
+        print(f"wrote {ssp}, {out / 'driveline_ssp_fmpy.csv'}, "
+              f"{out / 'driveline_ssp_libcosim.csv'} and {out / 'driveline_ssp.png'}")
+        print("largest |FMPy - libcosim| of the motor speed over 0.5 s:")
+        for h, difference in host_convergence(ssp).items():
+            print(f"  step {h:g} s: {difference:.3e} rad/s")
+        print("torque loop bounded (load/motor inertia ratio, step):")
+        for (ratio, h), bounded in loop_stability(fmus, args.drive, work).items():
+            print(f"  ratio {ratio:g}, step {h:g} s: {'bounded' if bounded else 'DIVERGES'}")
+
+
+if __name__ == "__main__":
+    main()

@@ -1,0 +1,283 @@
+"""Motor and Load FMUs and the driveline SSP system in FMPy and libcosim."""
+
+import csv
+import math
+import subprocess
+import sys
+import zipfile
+
+import numpy as np
+import pytest
+
+from cardan_joint import driveline_system as system
+from cardan_joint.instance import JointInstance
+from cardan_joint.physics import Reason, Refusal
+from cardan_joint.physics.driveline import Load, Motor
+from cardan_joint.ssp import Component, write_ssp
+from conftest import ROOT, build_fmu
+
+
+@pytest.fixture(scope="module")
+def component_fmus(tmp_path_factory):
+    dest = tmp_path_factory.mktemp("components")
+    return {name: build_fmu(dest, "--model", name, f"--name={name}") for name in ("Motor", "Load")}
+
+
+@pytest.fixture(scope="module")
+def driveline_ssp(component_fmus, request, tmp_path_factory):
+    folder = tmp_path_factory.mktemp("ssp")
+    # The session's FMU of the drive model (built once for all tests).
+    session_fixture = {"UniversalJoint": "fmu_path", "Propshaft": "propshaft_fmu_path"}
+    drive = request.getfixturevalue(session_fixture[system.DRIVE])
+    fmus = {"Motor": component_fmus["Motor"], system.DRIVE_INSTANCE: drive,
+            "Load": component_fmus["Load"]}
+    return system.write_driveline_ssp(folder / "Driveline.ssp", fmus)
+
+
+# --- physics ---------------------------------------------------------------
+
+def _ode_reference(motor, load_torques, steps):
+    """The motor's speed and angle by a tight numerical integration of
+    J w' = T_s (1 - w / w0) - T_L, independent of the closed form."""
+    from scipy.integrate import solve_ivp
+
+    w, angle, out = motor.speed_start, motor.angle_start, []
+    for load_torque, h in zip(load_torques, steps):
+        def rhs(t, y):
+            torque = motor.stall_torque * (1.0 - y[0] / motor.no_load_speed)
+            return [(torque - load_torque) / motor.rotor_inertia, y[0]]
+        solution = solve_ivp(rhs, (0.0, h), [w, angle], method="DOP853", rtol=1e-13, atol=1e-12)
+        w, angle = solution.y[:, -1]
+        out.append((w, angle))
+    return out
+
+
+def test_motor_steps_follow_the_exact_run_up_at_any_step_size():
+    rng = np.random.default_rng(7)
+    motor = Motor(stall_torque=80.0, no_load_speed=150.0, rotor_inertia=0.1, speed_start=5.0,
+                  angle_start=1.0)
+    steps = rng.uniform(1e-4, 0.2, 30)
+    loads = rng.uniform(-50.0, 70.0, 30)
+    reference = _ode_reference(motor, loads, steps)
+    for load_torque, h, (w, angle) in zip(loads, steps, reference):
+        motor.load_torque = load_torque
+        assert motor.step(h) is None
+        assert motor.speed == pytest.approx(w, rel=1e-10, abs=1e-9)
+        assert motor.angle == pytest.approx(angle, rel=1e-10, abs=1e-9)
+        # The acceleration output is the ODE's right-hand side at the step's end.
+        speed, acceleration, _, torque = motor.outputs()
+        assert torque == pytest.approx(80.0 * (1 - speed / 150.0), rel=1e-14)
+        assert acceleration == pytest.approx((torque - load_torque) / 0.1, rel=1e-12)
+
+
+def test_motor_run_up_from_rest_is_the_exponential():
+    motor = Motor(stall_torque=60.0, no_load_speed=100.0, rotor_inertia=0.3)
+    motor.load_torque = 15.0
+    tau, final = 0.3 * 100.0 / 60.0, 100.0 * (1 - 15.0 / 60.0)
+    for k in range(1, 101):
+        motor.step(0.01)
+        t = 0.01 * k
+        assert motor.speed == pytest.approx(final * (1 - math.exp(-t / tau)), rel=1e-12)
+        assert motor.angle == pytest.approx(final * (t - tau * (1 - math.exp(-t / tau))),
+                                            rel=1e-11)
+
+
+def test_load_torque_is_inertia_drag_and_constant():
+    load = Load(inertia=0.4, drag=0.2, constant_torque=-3.0)
+    load.speed, load.acceleration = 12.0, -5.0
+    assert load.outputs() == (0.4 * -5.0 + 0.2 * 12.0 - 3.0,)
+
+
+@pytest.mark.parametrize("change, words", [
+    ({"load_torque": math.nan}, ["input load_torque = nan", "not a finite number"]),
+    ({"load_torque": 2e9}, ["load_torque = 2000000000.0 N.m", "[-1000000000.0, 1000000000.0]"]),
+    # Within range, but it would drive the rotor past its speed limit in this step.
+    ({"load_torque": 9e8}, ["rotor speed to", "beyond the limit 100000.0 rad/s"]),
+])
+def test_motor_refuses_unusable_inputs_and_keeps_its_state(change, words):
+    motor = Motor(stall_torque=60.0, no_load_speed=100.0, rotor_inertia=0.3)
+    motor.step(0.5)
+    before = motor.state()
+    for name, value in change.items():
+        setattr(motor, name, value)
+    problem = motor.step(0.1)
+    assert problem and all(word in problem.message for word in words), problem
+    assert Refusal.from_message(problem.message) == problem
+    after = motor.state()
+    after.pop("load_torque"), before.pop("load_torque")
+    assert after == before
+
+
+def test_bad_step_sizes_and_parameters_are_refused():
+    motor = Motor()
+    assert "step size = nan s" in motor.step(math.nan).message
+    assert "step size = -0.1 s" in motor.step(-0.1).message
+    motor = Motor(rotor_inertia=0.0)
+    refusal = motor.step(1e-3)
+    assert (refusal.code, refusal.variable, refusal.value, refusal.limit) == \
+        (Reason.OUT_OF_RANGE, "rotor_inertia", 0.0, 1e-9)
+    assert "parameter rotor_inertia = 0.0 kg.m2 is outside its range" in refusal.message
+    assert "input speed = inf" in Load(speed=math.inf).step(1e-3).message
+
+
+# --- FMUs ------------------------------------------------------------------
+
+@pytest.mark.parametrize("name", ["Motor", "Load"])
+def test_component_fmus_pass_validation_with_units_and_dependencies(component_fmus, name):
+    from fmpy import read_model_description
+    from fmpy.validation import validate_fmu
+
+    assert validate_fmu(str(component_fmus[name])) == []
+    description = read_model_description(str(component_fmus[name]))
+    variables = {v.name: v for v in description.modelVariables}
+    if name == "Load":
+        assert variables["drag"].declaredType is None and variables["drag"].unit == "N.m.s/rad"
+        torque = description.outputs[0]
+        assert {v.name for v in torque.dependencies} == {"speed", "acceleration"}
+    else:
+        dependencies = {u.variable.name: {v.name for v in u.dependencies}
+                        for u in description.outputs}
+        assert dependencies["acceleration"] == {"load_torque"} and dependencies["speed"] == set()
+
+
+def test_motor_fmu_refuses_a_nan_load_torque_and_says_why(component_fmus):
+    messages = []
+    with JointInstance.open(component_fmus["Motor"], name="m", messages=messages) as motor:
+        motor.set(load_torque=10.0)
+        motor.step(0.1)
+        speed = motor.get("speed")
+        motor.set(load_torque=math.nan)
+        assert motor.try_step(0.1) == 2                                   # fmi2Discard
+        assert any(text.startswith("t = 0.1 s: input load_torque = nan N.m is not a finite "
+                                   "number (limit 1000000000.0 N.m); step of 0.1 s refused, "
+                                   "the motor stays at t = 0.1 s") for _, _, text in messages)
+        motor.set(load_torque=10.0)
+        assert motor.get("speed") == speed
+        # Parameters are fixed after initialization: the change is refused, not applied.
+        assert motor.try_set(stall_torque=1.0) == 3                       # fmi2Error
+        assert any("parameter stall_torque is fixed" in text for _, _, text in messages)
+
+
+def test_motor_fmu_holds_only_the_outputs_that_depend_on_an_invalid_input(component_fmus):
+    messages = []
+    with JointInstance.open(component_fmus["Motor"], name="m", messages=messages) as motor:
+        motor.set(load_torque=10.0)
+        motor.step(0.1)
+        valid = motor.get_outputs()
+        motor.set(load_torque=math.inf)
+        assert motor.get_outputs() == valid       # acceleration held, the rest unchanged
+        assert any("outputs that depend on it are held" in text for _, _, text in messages)
+
+
+def test_motor_fmu_state_round_trips_through_bytes(component_fmus):
+    with JointInstance.open(component_fmus["Motor"], name="m") as motor:
+        motor.set(load_torque=10.0)
+        motor.step(0.05)
+        state = motor.deserialize_state(motor.serialize_state(motor.get_state()))
+        motor.step(0.05)
+        first = motor.get("speed", "angle")
+        motor.set_state(state)
+        motor.time = 0.05
+        motor.step(0.05)
+        assert motor.get("speed", "angle") == first
+
+
+# --- the SSP system --------------------------------------------------------
+
+def test_ssp_holds_the_three_fmus_connections_and_parameter_sets(driveline_ssp):
+    from fmpy.ssp.ssd import read_ssd
+
+    ssd = read_ssd(str(driveline_ssp))        # validates against the SSP schema
+    assert [c.name for c in ssd.system.elements] == ["Motor", system.DRIVE_INSTANCE, "Load"]
+    assert len(ssd.system.connections) == 6
+    names = zipfile.ZipFile(driveline_ssp).namelist()
+    assert {"resources/Motor.fmu", f"resources/{system.DRIVE}.fmu", "resources/Load.fmu",
+            "resources/Motor.ssv", "resources/Drive.ssv", "resources/Load.ssv"} <= set(names)
+
+
+def test_ssp_writer_refuses_a_connection_to_a_missing_connector(tmp_path, component_fmus):
+    motor = Component("Motor", component_fmus["Motor"], {"speed": "output"})
+    with pytest.raises(ValueError, match="Motor has no input connector 'speed'"):
+        write_ssp(tmp_path / "x.ssp", "X", [motor], [("Motor", "speed", "Motor", "speed")], 1.0)
+
+
+def test_both_hosts_apply_the_parameter_sets_and_differ_only_by_the_first_step(driveline_ssp):
+    pytest.importorskip("libcosimpy")
+    differences = {}
+    for h in (1e-3, 5e-4):
+        fmpy_rows = system.run_fmpy(driveline_ssp, 0.2, h)
+        libcosim_rows = system.run_libcosim(driveline_ssp, 0.2, h)
+        differences[h] = system.host_difference(fmpy_rows, libcosim_rows)["Motor.speed"]
+        # The parameter sets reached the FMUs in both hosts: motor torque = 120 (1 - w / w0).
+        for rows in (fmpy_rows, libcosim_rows):
+            expected = 120.0 * (1 - rows["Motor.speed"] / system.MOTOR_PARAMETERS["no_load_speed"])
+            np.testing.assert_allclose(rows["Motor.motor_torque"], expected, rtol=1e-12, atol=1e-9)
+    # libcosim starts from the initial outputs, FMPy from zeros: the difference is one
+    # step's impulse, so it halves with the step.
+    assert 1.9 < differences[1e-3] / differences[5e-4] < 2.1, differences
+
+
+def test_example_writes_the_ssp_both_csvs_and_the_plot(tmp_path):
+    pytest.importorskip("libcosimpy")
+    run = subprocess.run([sys.executable, str(ROOT / "examples" / "driveline_ssp.py"),
+                          "--out", str(tmp_path)], capture_output=True, text=True, cwd=ROOT)
+    assert run.returncode == 0, run.stderr
+    for name in ("Driveline.ssp", "driveline_ssp_fmpy.csv", "driveline_ssp_libcosim.csv",
+                 "driveline_ssp.png"):
+        assert (tmp_path / name).stat().st_size > 0
+    with open(tmp_path / "driveline_ssp_libcosim.csv") as stream:
+        rows = list(csv.reader(stream))
+    assert rows[0][:2] == ["time", "Motor.speed"] and len(rows) == 1002
+    assert "ratio 2, step 0.0001 s: DIVERGES" in run.stdout
+    assert "ratio 0.5, step 0.001 s: bounded" in run.stdout
+
+
+def _jacobi_master(ssp_path, stop_time, h, first_values):
+    """An independent fixed-step Jacobi master on the SSP's FMUs: each step every FMU
+    gets the connected outputs of the last communication point, steps, and reports;
+    `first_values` {"Component.output": value} are the values fed in the first step."""
+    from fmpy import extract
+    from fmpy.ssp.ssd import find_components, read_ssd
+
+    from cardan_joint.ssp import fmpy_parameter_set
+
+    unzipped = extract(str(ssp_path))
+    parameters = {p.name: float(p.value) for p in fmpy_parameter_set(ssp_path).parameters}
+    instances = {}
+    try:
+        for component in find_components(read_ssd(str(ssp_path)).system):
+            name = component.name
+            starts = {key.split(".", 1)[1]: value for key, value in parameters.items()
+                      if key.startswith(name + ".")}
+            instances[name] = JointInstance.open(f"{unzipped}/{component.source}", name=name,
+                                                 start_values=starts)
+        values = dict(first_values)
+        rows = {key: [] for key in system.RECORDED}
+        for k in range(round(stop_time / h)):
+            for start, start_connector, end, end_connector in system.CONNECTIONS:
+                instances[end].set(**{end_connector: values[f"{start}.{start_connector}"]})
+            for instance in instances.values():
+                instance.time = k * h
+                instance.step(h)
+            for key in system.RECORDED:
+                name, variable = key.split(".")
+                values[key] = instances[name].get(variable)[variable]
+                rows[key].append(values[key])
+    finally:
+        for instance in instances.values():
+            instance.close()
+    return {key: np.array(v) for key, v in rows.items()}
+
+
+def test_each_host_is_exactly_a_jacobi_master_with_its_own_first_inputs(driveline_ssp):
+    pytest.importorskip("libcosimpy")
+    h, stop_time = 1e-3, 0.1
+    fmpy_rows = system.run_fmpy(driveline_ssp, stop_time, h)
+    libcosim_rows = system.run_libcosim(driveline_ssp, stop_time, h)
+    zeros = {key: 0.0 for key in system.RECORDED}
+    initial = {key: libcosim_rows[key][0] for key in system.RECORDED}
+    for rows, first, offset in ((fmpy_rows, zeros, 0), (libcosim_rows, initial, 1)):
+        reference = _jacobi_master(driveline_ssp, stop_time, h, first)
+        for key in system.RECORDED:
+            scale = max(1.0, np.max(np.abs(reference[key])))
+            assert np.max(np.abs(rows[key][offset:] - reference[key])) <= 1e-9 * scale, key
