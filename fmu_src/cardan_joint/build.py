@@ -17,6 +17,7 @@ import shutil
 import sys
 import tempfile
 from pathlib import Path
+from typing import Optional
 
 from .models import MODELS, Model, StartValueError, model as find_model
 
@@ -99,8 +100,8 @@ def _fmu_builder(fmi_version: int):
     return FmuBuilder
 
 
-def build(dest="dist", model_name: str = None, start_values: dict = None,
-          validate: bool = True, model: str = DEFAULT_MODEL, settings: dict = None,
+def build(dest="dist", model_name: Optional[str] = None, start_values: Optional[dict] = None,
+          validate: bool = True, model: str = DEFAULT_MODEL, settings: Optional[dict] = None,
           fmi_version: int = 2) -> Path:
     """Build `<dest>/<model_name>.fmu` (FMI 3: `<dest>/fmi3/<model_name>.fmu`);
     raise BuildError unless FMPy validates it."""

@@ -11,7 +11,7 @@ Parquet engine (pyarrow) is installed.
 
 from os import PathLike
 from pathlib import Path
-from typing import Iterable, Mapping, Sequence, Union
+from typing import Iterable, Mapping, Optional, Sequence, Union
 
 import numpy as np
 
@@ -41,7 +41,7 @@ def structured(columns: Mapping[str, Iterable[float]]) -> np.ndarray:
 
 
 def write_csv(data: Union[np.ndarray, Mapping[str, Iterable[float]]], path: PathType,
-              columns: Sequence[str] = None) -> Path:
+              columns: Optional[Sequence[str]] = None) -> Path:
     """Write a result (structured array, or {name: column} of numbers) in FMPy's CSV format.
 
     `columns`: the variables to write besides `time` (FMPy's convention; None: all)."""

@@ -51,11 +51,11 @@ def run_serial(fmu: PathLike, spec: SweepSpec, progress: bool = True,
                on_rows: Optional[Callable[[list], None]] = None) -> "pandas.DataFrame":
     """Every task (every missing one, with a store) in this process, in order;
     returns the table (a DataFrame). `on_rows(rows)` is called after each task."""
-    fmu = str(Path(fmu).resolve())
+    path = str(Path(fmu).resolve())
     collector = _Collector(spec, store, progress, "serial", on_rows)
     try:
         for cases in collector.pending:
-            collector.finished(run_task(fmu, spec, cases))
+            collector.finished(run_task(path, spec, cases))
     finally:
         collector.bar.close()
     return collector.table()
@@ -69,12 +69,12 @@ def run_dask(fmu: PathLike, spec: SweepSpec, client, progress: bool = True,
     task lost with its worker is rerun by the scheduler and arrives once."""
     from dask.distributed import as_completed
 
-    fmu = str(Path(fmu).resolve())
+    path = str(Path(fmu).resolve())
     collector = _Collector(spec, store, progress, "dask", on_rows)
     tasks = collector.pending
     # pure=False: fresh keys every run, so a repeated sweep is computed again
     # rather than served from the cluster's memory.
-    futures = client.map(run_task, [fmu] * len(tasks), [spec] * len(tasks), tasks, pure=False)
+    futures = client.map(run_task, [path] * len(tasks), [spec] * len(tasks), tasks, pure=False)
     try:
         for future in as_completed(futures):
             collector.finished(future.result())
