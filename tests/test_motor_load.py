@@ -1,5 +1,7 @@
 """The motor-joint-load example (issue 3) against the multibody forward dynamics."""
 
+import math
+import re
 import subprocess
 import sys
 from pathlib import Path
@@ -11,6 +13,7 @@ from cardan_joint import results
 from reference.multibody import simulate_multibody
 
 ROOT = Path(__file__).resolve().parents[1]
+README = (ROOT / "README.md").read_text()
 sys.path.insert(0, str(ROOT / "examples"))
 from motor_load import DEFAULTS, run  # noqa: E402
 
@@ -34,6 +37,10 @@ def test_co_simulated_power_loop_converges_to_the_multibody_simulation(fmu_path)
     for name in COMPARED:
         assert fine[name] < 5e-3, (name, fine[name])
         assert coarse[name] / fine[name] > 3.5, (name, coarse[name], fine[name])
+    # The README states the measured order: keep it true.
+    stated = float(re.search(r"measured order (\d\.\d)", README).group(1))
+    measured = math.log2(coarse["input_torque"] / fine["input_torque"])
+    assert abs(measured - stated) < 0.1, (measured, stated)
 
 
 def test_example_runs_from_the_command_line(fmu_path, tmp_path):

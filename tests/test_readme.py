@@ -27,3 +27,16 @@ def test_propshaft_variable_table_is_generated_from_its_metadata():
     text = (ROOT / "docs" / "Propshaft" / "README.md").read_text()
     begin, end = "<!-- variables:begin -->\n", "<!-- variables:end -->"
     assert text.split(begin)[1].split(end)[0] == propshaft_table(2).markdown_table()
+
+
+def test_readme_states_how_many_tests_the_suite_runs(request):
+    import re
+
+    import pytest
+
+    config = request.config
+    if config.args_source != pytest.Config.ArgsSource.TESTPATHS or config.option.keyword \
+            or config.option.markexpr or config.option.deselect:
+        pytest.skip("only a run of the whole suite knows its size")
+    stated = int(re.search(r"installs and runs (\d+) tests", README).group(1))
+    assert stated == len(request.session.items), "update the test count in the README"
