@@ -179,6 +179,10 @@ MUTATIONS = (
     Mutation("slave: deserialized bytes that are no JSON", SLAVE,
              'return {"invalid_state": f"fmi2DeSerializeFMUstate got no valid state: {error}"}',
              "raise", (SLAVE_GUARDS, "-k", "state")),
+    # The build, called as a library: the caller's sys.modules as it was.
+    Mutation("build: drops its staged modules", "fmu_src/cardan_joint/build.py",
+             "n.split(\".\")[0] in (package_dir.name,", "n.split(\".\")[0] in (package_dir.name + \"_\",",
+             ("tests/test_build.py",)),
 )
 
 
