@@ -6,44 +6,22 @@ from cardan_joint import variables as table
 
 # docs/UniversalJoint/README.md's interface table, in its order.
 PHYSICS_NAMES = {
-    "input": [
-        "input_speed",
-        "input_acceleration",
-        "bend_angle",
-        "bend_angle_rate",
-        "bend_angle_acceleration",
-        "load_torque",
-    ],
-    "parameter": [
-        "yoke_phase",
-        "input_angle_start",
-        "crosspiece_inertia_1",
-        "crosspiece_inertia_2",
-        "crosspiece_inertia_3",
-        "max_bend_angle",
-    ],
-    "output": [
-        "input_angle",
-        "output_angle",
-        "output_speed",
-        "output_acceleration",
-        "cardan_error",
-        "speed_ratio",
-        "crosspiece_angular_velocity_1",
-        "crosspiece_angular_velocity_2",
-        "crosspiece_angular_velocity_3",
-        "crosspiece_torque_1",
-        "crosspiece_torque_2",
-        "crosspiece_torque_3",
-        "crosspiece_kinetic_energy",
-        "crosspiece_quaternion_0",
-        "crosspiece_quaternion_1",
-        "crosspiece_quaternion_2",
-        "crosspiece_quaternion_3",
-        "input_torque",
-        "input_yoke_moment",
-        "output_yoke_moment",
-    ],
+    "input": (
+        "input_speed input_acceleration bend_angle bend_angle_rate "
+        "bend_angle_acceleration load_torque"
+    ).split(),
+    "parameter": (
+        "yoke_phase input_angle_start crosspiece_inertia_1 crosspiece_inertia_2 "
+        "crosspiece_inertia_3 max_bend_angle"
+    ).split(),
+    "output": (
+        "input_angle output_angle output_speed output_acceleration cardan_error "
+        "speed_ratio crosspiece_angular_velocity_1 crosspiece_angular_velocity_2 "
+        "crosspiece_angular_velocity_3 crosspiece_torque_1 crosspiece_torque_2 "
+        "crosspiece_torque_3 crosspiece_kinetic_energy crosspiece_quaternion_0 "
+        "crosspiece_quaternion_1 crosspiece_quaternion_2 crosspiece_quaternion_3 "
+        "input_torque input_yoke_moment output_yoke_moment"
+    ).split(),
 }
 PHYSICS_UNITS = {
     "input_speed": "rad/s",

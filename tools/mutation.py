@@ -25,6 +25,9 @@ from dataclasses import dataclass
 from pathlib import Path
 
 ROOT = Path(__file__).resolve().parents[1]
+sys.path.insert(0, str(ROOT / "fmu_src"))
+from cardan_joint import variables as table  # noqa: E402
+
 COPIED = ("fmu_src", "tests", "build_fmu.py", "pyproject.toml", "README.md")
 MODEL = "fmu_src/cardan_joint/physics/model.py"
 VALUES = "fmu_src/cardan_joint/physics/values.py"
@@ -71,14 +74,7 @@ RANGED_PARAMETERS = (
     "crosspiece_inertia_2",
     "crosspiece_inertia_3",
 )
-ALL_INPUTS = (
-    "input_speed",
-    "input_acceleration",
-    "bend_angle",
-    "bend_angle_rate",
-    "bend_angle_acceleration",
-    "load_torque",
-)
+ALL_INPUTS = table.INPUTS
 PARAMETERS = RANGED_PARAMETERS + ("max_bend_angle",)
 FAST_PATH = {
     "input_speed": "abs(self.input_speed) <= _SPEED_LIMIT",

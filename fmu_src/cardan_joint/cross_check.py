@@ -25,6 +25,8 @@ from pathlib import Path
 
 import numpy as np
 
+from . import variables as table
+
 MODEL = "UniversalJoint"
 TOOL_ID = "cardan_joint"
 DOCS = Path(__file__).resolve().parents[2] / "docs" / MODEL
@@ -39,14 +41,7 @@ INPUT_ROWS = (
     (0.0, 20.0, 20.0, 0.2, 0.4, 0.0, 100.0),
     (1.0, 40.0, 20.0, 0.6, 0.4, 0.0, 100.0),
 )
-INPUT_NAMES = (
-    "input_speed",
-    "input_acceleration",
-    "bend_angle",
-    "bend_angle_rate",
-    "bend_angle_acceleration",
-    "load_torque",
-)
+INPUT_NAMES = table.INPUTS
 # At most 10 columns with the time (the cross-check rules' recommendation).
 REFERENCE_OUTPUTS = (
     "output_angle",
