@@ -10,7 +10,7 @@ import time
 
 from .timing import StepClock, in_fresh_process, met, us
 
-SEED_SPEED = 10.0                                   # Tataru: omega1 = 10 rad/s for 1 s
+SEED_SPEED = 10.0  # Tataru: omega1 = 10 rad/s for 1 s
 SEED_BENDS = (("2π/7", 2 * math.pi / 7), ("2π/5", 2 * math.pi / 5))
 ACCURACY_STEPS = (1e-1, 1e-2, 1e-3, 1e-4)
 ANGLE_ERROR_GOAL = 1e-12
@@ -25,14 +25,25 @@ def worker_accuracy(unzipped):
     for label, bend in SEED_BENDS:
         for step in ACCURACY_STEPS:
             clock = StepClock()
-            result = simulate_fmu(unzipped, stop_time=1.0, output_interval=step,
-                                  start_values={"input_speed": SEED_SPEED, "bend_angle": bend},
-                                  output=["output_angle", "output_speed"], step_finished=clock)
+            result = simulate_fmu(
+                unzipped,
+                stop_time=1.0,
+                output_interval=step,
+                start_values={"input_speed": SEED_SPEED, "bend_angle": bend},
+                output=["output_angle", "output_speed"],
+                step_finished=clock,
+            )
             last = result[-1]
-            runs.append({"bend": label, "step": step, "time": float(last["time"]),
-                         "angle": float(last["output_angle"]),
-                         "speed": float(last["output_speed"]),
-                         "wall": clock.per_step()["wall"]})
+            runs.append(
+                {
+                    "bend": label,
+                    "step": step,
+                    "time": float(last["time"]),
+                    "angle": float(last["output_angle"]),
+                    "speed": float(last["output_speed"]),
+                    "wall": clock.per_step()["wall"],
+                }
+            )
     return {"runs": runs}
 
 
@@ -41,7 +52,7 @@ def tataru_rates(state, sin2, cos_bend):
     w1, w3, phi1, _ = state
     cos_phi = math.cos(phi1)
     D = 1.0 - sin2 * cos_phi * cos_phi
-    B = -(sin2 * cos_bend * math.sin(2.0 * phi1) / (D * D)) * w1     # eq. (9)
+    B = -(sin2 * cos_bend * math.sin(2.0 * phi1) / (D * D)) * w1  # eq. (9)
     return (0.0, B * w1, w1, w3)
 
 
@@ -56,8 +67,10 @@ def rk4_tataru(bend, step, stop_time=1.0):
         k2 = tataru_rates([s + 0.5 * h * k for s, k in zip(state, k1)], sin2, cos_bend)
         k3 = tataru_rates([s + 0.5 * h * k for s, k in zip(state, k2)], sin2, cos_bend)
         k4 = tataru_rates([s + h * k for s, k in zip(state, k3)], sin2, cos_bend)
-        state = tuple(s + h / 6.0 * (a + 2.0 * b + 2.0 * c + d)
-                      for s, a, b, c, d in zip(state, k1, k2, k3, k4))
+        state = tuple(
+            s + h / 6.0 * (a + 2.0 * b + 2.0 * c + d)
+            for s, a, b, c, d in zip(state, k1, k2, k3, k4)
+        )
     return state
 
 
@@ -90,21 +103,30 @@ def accuracy(joint):
         exact_angle, exact_speed = exact_output(bend, 1.0)
         # The FMU against the exact value at the communication point it reached.
         fmu_angle, fmu_speed = exact_output(bend, run["time"])
-        rows.append({"bend": run["bend"], "step": step, "fmu_wall": run["wall"],
-                     "fmu_angle": abs(float(run["angle"] - fmu_angle)),
-                     "fmu_speed": abs(float(run["speed"] - fmu_speed)),
-                     "rk4_angle": abs(float(phi3 - exact_angle)),
-                     "rk4_speed": abs(float(w3 - exact_speed))})
+        rows.append(
+            {
+                "bend": run["bend"],
+                "step": step,
+                "fmu_wall": run["wall"],
+                "fmu_angle": abs(float(run["angle"] - fmu_angle)),
+                "fmu_speed": abs(float(run["speed"] - fmu_speed)),
+                "rk4_angle": abs(float(phi3 - exact_angle)),
+                "rk4_speed": abs(float(w3 - exact_speed)),
+            }
+        )
     finest = min(ACCURACY_STEPS)
-    return {"rows": rows, "rk4_wall": rk4_cost_per_step(SEED_BENDS[0][1], finest),
-            "fmu_wall": statistics.median(r["fmu_wall"] for r in rows if r["step"] == finest)}
+    return {
+        "rows": rows,
+        "rk4_wall": rk4_cost_per_step(SEED_BENDS[0][1], finest),
+        "fmu_wall": statistics.median(r["fmu_wall"] for r in rows if r["step"] == finest),
+    }
 
 
 def accuracy_rows(acc):
     worst = max(r["fmu_angle"] for r in acc["rows"])
     at_1e2 = [r for r in acc["rows"] if r["step"] == 1e-2]
     # An exact FMU result (error 0) counts as one ulp of the angle.
-    factor = min(r["rk4_angle"] / max(r["fmu_angle"], 2.0 ** -52 * 10) for r in at_1e2)
+    factor = min(r["rk4_angle"] / max(r["fmu_angle"], 2.0**-52 * 10) for r in at_1e2)
     return [
         f"| 2. FMU output angle error after 1 s, worst of both bends, steps 1e-1…1e-4 s | "
         f"{worst:.1e} rad | ≤ {ANGLE_ERROR_GOAL:.0e} rad | {met(worst <= ANGLE_ERROR_GOAL)} |",
@@ -116,9 +138,14 @@ def accuracy_rows(acc):
 
 
 def accuracy_table(acc):
-    lines = ["| bend | step (s) | FMU angle error (rad) | RK4 angle error (rad) | "
-             "FMU speed error (rad/s) | RK4 speed error (rad/s) |",
-             "|---|---|---|---|---|---|"]
-    lines += [f"| {r['bend']} | {r['step']:.0e} | {r['fmu_angle']:.1e} | {r['rk4_angle']:.1e} "
-              f"| {r['fmu_speed']:.1e} | {r['rk4_speed']:.1e} |" for r in acc["rows"]]
+    lines = [
+        "| bend | step (s) | FMU angle error (rad) | RK4 angle error (rad) | "
+        "FMU speed error (rad/s) | RK4 speed error (rad/s) |",
+        "|---|---|---|---|---|---|",
+    ]
+    lines += [
+        f"| {r['bend']} | {r['step']:.0e} | {r['fmu_angle']:.1e} | {r['rk4_angle']:.1e} "
+        f"| {r['fmu_speed']:.1e} | {r['rk4_speed']:.1e} |"
+        for r in acc["rows"]
+    ]
     return "\n".join(lines)

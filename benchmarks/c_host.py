@@ -18,7 +18,7 @@ from .step_cost import instantiate, step_loop
 from .timing import ROOT, met, us
 
 HOSTS = ("C host", "FMPy loop")
-GOAL = 1.0          # C host / FMPy loop, for the joint
+GOAL = 1.0  # C host / FMPy loop, for the joint
 
 
 def compile_c_host(workdir):
@@ -31,9 +31,13 @@ def compile_c_host(workdir):
 
 
 def c_host_seconds(host, unzipped, steps):
-    run = subprocess.run([str(host), "bench", unzipped, str(steps)],
-                         env={"PATH": "/usr/bin:/bin"}, capture_output=True, text=True,
-                         check=True)
+    run = subprocess.run(
+        [str(host), "bench", unzipped, str(steps)],
+        env={"PATH": "/usr/bin:/bin"},
+        capture_output=True,
+        text=True,
+        check=True,
+    )
     return 1e-6 * float(re.search(r"([0-9.]+) us/step", run.stdout).group(1))
 
 

@@ -1,7 +1,7 @@
 """The FMUs the benchmarks time: floor FMUs (benchmarks/floor_slave.py) and the joint.
 
-    from benchmarks.floor import build_floor_fmu
-    fmu = build_floor_fmu(dest, "plain")       # or "bare"
+from benchmarks.floor import build_floor_fmu
+fmu = build_floor_fmu(dest, "plain")       # or "bare"
 """
 
 import hashlib
@@ -25,8 +25,7 @@ FLOORS = {
 def floor_config(kind: str) -> dict:
     if kind not in FLOORS:
         raise ValueError(f"floor kind must be one of {sorted(FLOORS)}, got {kind!r}")
-    variables = [(v.name, v.causality, v.variability, v.initial, v.start)
-                 for v in table.VARIABLES]
+    variables = [(v.name, v.causality, v.variability, v.initial, v.start) for v in table.VARIABLES]
     return {"value_access": kind, "variables": variables}
 
 
@@ -45,8 +44,19 @@ def build_floor_fmu(dest, kind: str) -> Path:
     shutil.copyfile(SLAVE, script)
     (staging / "floor.json").write_text(config)
     # Its own process: pythonfmu imports the script to build it.
-    run_checked(["-m", "pythonfmu", "build", "-f", str(script), "-d", str(folder),
-                 str(staging / "floor.json")], cwd=staging)
+    run_checked(
+        [
+            "-m",
+            "pythonfmu",
+            "build",
+            "-f",
+            str(script),
+            "-d",
+            str(folder),
+            str(staging / "floor.json"),
+        ],
+        cwd=staging,
+    )
     # The joint's build puts the native loader in front of pythonfmu's binary:
     # the floor gets the same, so that the ratio measures the joint alone.
     fmu = folder / "Floor.fmu"

@@ -32,10 +32,14 @@ class Floor(Fmi2Slave):
         super().__init__(**kwargs)
         for name, causality, variability, initial, start in CONFIG["variables"]:
             setattr(self, name, 0.0 if start is None else start)
-            self.register_variable(Real(
-                name, causality=Fmi2Causality[causality],
-                variability=Fmi2Variability[variability],
-                initial=Fmi2Initial[initial] if initial else None))
+            self.register_variable(
+                Real(
+                    name,
+                    causality=Fmi2Causality[causality],
+                    variability=Fmi2Variability[variability],
+                    initial=Fmi2Initial[initial] if initial else None,
+                )
+            )
         self._values = [getattr(self, name) for name, *_ in CONFIG["variables"]]
 
     def do_step(self, current_time, step_size):

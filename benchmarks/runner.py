@@ -28,11 +28,17 @@ from .accuracy import accuracy, accuracy_rows, accuracy_table, worker_accuracy
 from .c_host import c_host_cost, c_host_rows
 from .floor import FLOORS, build_floor_fmu, build_joint_fmu, unzip
 from .growth import growth, growth_rows, growth_table, worker_tracemalloc
-from .step_cost import (LOOP_CHUNK, SIMULATE_CHUNK, STEP_SIZE, cost_rows, step_cost,
-                        worker_loop, worker_simulate)
+from .step_cost import (
+    LOOP_CHUNK,
+    SIMULATE_CHUNK,
+    STEP_SIZE,
+    cost_rows,
+    step_cost,
+    worker_loop,
+    worker_simulate,
+)
 from .timing import ROOT, machine
-from .vectorized import (vector_rows, vectorized, worker_scalar, worker_trigonometry,
-                         worker_vector)
+from .vectorized import vector_rows, vectorized, worker_scalar, worker_trigonometry, worker_vector
 
 DEFAULT_OUTPUT = ROOT / "benchmarks" / "results.md"
 COMMAND = "python -m benchmarks"
@@ -40,24 +46,44 @@ COMMAND = "python -m benchmarks"
 
 @dataclass(frozen=True)
 class Sizes:
-    runs: int                 # runs of the low-level loop (median taken)
-    simulate_runs: int        # runs of simulate_fmu
-    steps: int                # steps per FMU per run
-    growth_steps: tuple       # run lengths of the growth benchmark
-    memory_steps: tuple       # run lengths traced by tracemalloc
+    runs: int  # runs of the low-level loop (median taken)
+    simulate_runs: int  # runs of simulate_fmu
+    steps: int  # steps per FMU per run
+    growth_steps: tuple  # run lengths of the growth benchmark
+    memory_steps: tuple  # run lengths traced by tracemalloc
     vector_samples: int
     scalar_samples: int
 
 
-FULL = Sizes(runs=7, simulate_runs=5, steps=100_000, growth_steps=(1_000, 100_000, 1_000_000),
-             memory_steps=(1_000, 100_000), vector_samples=1_000_000, scalar_samples=100_000)
-QUICK = Sizes(runs=1, simulate_runs=1, steps=300, growth_steps=(10, 300, 1_000),
-              memory_steps=(10, 100), vector_samples=2_000, scalar_samples=200)
+FULL = Sizes(
+    runs=7,
+    simulate_runs=5,
+    steps=100_000,
+    growth_steps=(1_000, 100_000, 1_000_000),
+    memory_steps=(1_000, 100_000),
+    vector_samples=1_000_000,
+    scalar_samples=100_000,
+)
+QUICK = Sizes(
+    runs=1,
+    simulate_runs=1,
+    steps=300,
+    growth_steps=(10, 300, 1_000),
+    memory_steps=(10, 100),
+    vector_samples=2_000,
+    scalar_samples=200,
+)
 
 # What `python -m benchmarks --worker REQUEST` runs (timing.in_fresh_process).
-WORKERS = {"loop": worker_loop, "simulate": worker_simulate, "tracemalloc": worker_tracemalloc,
-           "accuracy": worker_accuracy, "vector": worker_vector, "scalar": worker_scalar,
-           "trigonometry": worker_trigonometry}
+WORKERS = {
+    "loop": worker_loop,
+    "simulate": worker_simulate,
+    "tracemalloc": worker_tracemalloc,
+    "accuracy": worker_accuracy,
+    "vector": worker_vector,
+    "scalar": worker_scalar,
+    "trigonometry": worker_trigonometry,
+}
 
 
 def run_worker(request: str) -> None:
@@ -69,73 +95,91 @@ def run_worker(request: str) -> None:
 
 
 def summary_table(results, sizes):
-    return "\n".join([
-        "| benchmark | result | goal | met |",
-        "|---|---|---|---|",
-        *cost_rows(results["cost"], sizes),
-        *accuracy_rows(results["accuracy"]),
-        *vector_rows(results["vector"], sizes),
-        *growth_rows(results["growth"]),
-        *c_host_rows(results["c_host"], sizes),
-    ])
+    return "\n".join(
+        [
+            "| benchmark | result | goal | met |",
+            "|---|---|---|---|",
+            *cost_rows(results["cost"], sizes),
+            *accuracy_rows(results["accuracy"]),
+            *vector_rows(results["vector"], sizes),
+            *growth_rows(results["growth"]),
+            *c_host_rows(results["c_host"], sizes),
+        ]
+    )
 
 
 def report(results, sizes, quick, elapsed):
     command = COMMAND + (" --quick" if quick else "")
-    return "\n".join([
-        "# Benchmarks",
-        "",
-        f"Measured on {machine()}, by `{command}` in {elapsed / 60:.1f} min: one run on a "
-        "shared machine, so absolute times move with other users' load; ratios are measured "
-        f"side by side: each run is a fresh process that loads the FMUs, then steps them in "
-        f"turns of {LOOP_CHUNK:,} steps ({SIMULATE_CHUNK:,} under `simulate_fmu`).",
-        "",
-        summary_table(results, sizes),
-        "",
-        "Floors: pythonfmu FMUs built from `benchmarks/floor_slave.py` with the joint's "
-        f"{len(table.VARIABLES)} Real variables (same causality, variability, initial, start) "
-        "and a `do_step` that does nothing. *plain*: values through pythonfmu's own "
-        "`get_real`/`set_real`; *bare*: through list indexing. "
-        f"Communication step {STEP_SIZE} s; times are wall-clock unless marked CPU.",
-        "",
-        "## Accuracy after 1 s against Tătaru's numerical method (ω1 = 10 rad/s)",
-        "",
-        "Exact: the closed form atan(tan ψ / cos β) − ψ at 40 digits (mpmath). RK4: the seed's "
-        "ODE (ω1' = 0, ω3' = B ω1, φ1' = ω1, φ3' = ω3) at the same step. FMU: `simulate_fmu` at "
-        "that communication step.",
-        "",
-        accuracy_table(results["accuracy"]),
-        "",
-        "## Growth with the run length (FMU2Slave loop)",
-        "",
-        "Runs as in section 1, the joint beside the plain floor. Peak RSS: VmHWM of the "
-        "worker process (interpreter, numpy, FMPy and both FMUs), from /proc/self/status; "
-        "`getrusage().ru_maxrss` is not used because Linux carries it over fork and exec "
-        "from the parent. Python heap: tracemalloc over the joint's stepping alone, after 10 "
-        "warm-up steps, with garbage collected.",
-        "",
-        growth_table(results["growth"]),
-        "",
-    ])
+    return "\n".join(
+        [
+            "# Benchmarks",
+            "",
+            f"Measured on {machine()}, by `{command}` in {elapsed / 60:.1f} min: one run on a "
+            "shared machine, so absolute times move with other users' load; ratios are measured "
+            f"side by side: each run is a fresh process that loads the FMUs, then steps them in "
+            f"turns of {LOOP_CHUNK:,} steps ({SIMULATE_CHUNK:,} under `simulate_fmu`).",
+            "",
+            summary_table(results, sizes),
+            "",
+            "Floors: pythonfmu FMUs built from `benchmarks/floor_slave.py` with the joint's "
+            f"{len(table.VARIABLES)} Real variables (same causality, variability, initial, start) "
+            "and a `do_step` that does nothing. *plain*: values through pythonfmu's own "
+            "`get_real`/`set_real`; *bare*: through list indexing. "
+            f"Communication step {STEP_SIZE} s; times are wall-clock unless marked CPU.",
+            "",
+            "## Accuracy after 1 s against Tătaru's numerical method (ω1 = 10 rad/s)",
+            "",
+            "Exact: the closed form atan(tan ψ / cos β) − ψ at 40 digits (mpmath). "
+            "RK4: the seed's ODE (ω1' = 0, ω3' = B ω1, φ1' = ω1, φ3' = ω3) at the same step. "
+            "FMU: `simulate_fmu` at that communication step.",
+            "",
+            accuracy_table(results["accuracy"]),
+            "",
+            "## Growth with the run length (FMU2Slave loop)",
+            "",
+            "Runs as in section 1, the joint beside the plain floor. Peak RSS: VmHWM of the "
+            "worker process (interpreter, numpy, FMPy and both FMUs), from /proc/self/status; "
+            "`getrusage().ru_maxrss` is not used because Linux carries it over fork and exec "
+            "from the parent. Python heap: tracemalloc over the joint's stepping alone, after 10 "
+            "warm-up steps, with garbage collected.",
+            "",
+            growth_table(results["growth"]),
+            "",
+        ]
+    )
 
 
 def run_all(sizes, joint_fmu, workdir):
     fmus = {kind: unzip(build_floor_fmu(workdir, kind), workdir) for kind in FLOORS}
     fmus["joint"] = unzip(joint_fmu or build_joint_fmu(workdir), workdir)
     cost = step_cost(fmus, sizes)
-    return {"cost": cost, "accuracy": accuracy(fmus["joint"]), "vector": vectorized(sizes),
-            "growth": growth(fmus, sizes, cost), "c_host": c_host_cost(fmus, sizes, workdir)}
+    return {
+        "cost": cost,
+        "accuracy": accuracy(fmus["joint"]),
+        "vector": vectorized(sizes),
+        "growth": growth(fmus, sizes, cost),
+        "c_host": c_host_cost(fmus, sizes, workdir),
+    }
 
 
 def main(argv=None):
-    parser = argparse.ArgumentParser(prog="python -m benchmarks",
-                                     description="Benchmarks of the UniversalJoint FMU.")
-    parser.add_argument("--quick", action="store_true",
-                        help="tiny sizes: checks that everything runs, measures nothing")
-    parser.add_argument("--output", type=Path, default=DEFAULT_OUTPUT,
-                        help="markdown file to write (default: benchmarks/results.md)")
-    parser.add_argument("--fmu", type=Path,
-                        help="a built UniversalJoint.fmu (default: build the working tree's)")
+    parser = argparse.ArgumentParser(
+        prog="python -m benchmarks", description="Benchmarks of the UniversalJoint FMU."
+    )
+    parser.add_argument(
+        "--quick",
+        action="store_true",
+        help="tiny sizes: checks that everything runs, measures nothing",
+    )
+    parser.add_argument(
+        "--output",
+        type=Path,
+        default=DEFAULT_OUTPUT,
+        help="markdown file to write (default: benchmarks/results.md)",
+    )
+    parser.add_argument(
+        "--fmu", type=Path, help="a built UniversalJoint.fmu (default: build the working tree's)"
+    )
     parser.add_argument("--worker", help=argparse.SUPPRESS)
     args = parser.parse_args(argv)
     if args.worker:

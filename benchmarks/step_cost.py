@@ -16,9 +16,14 @@ from .timing import StepClock, against, chunks, in_fresh_process, met, peak_rss_
 STEP_SIZE = 1e-3
 # Inputs of the timing runs: every term of the physics active (speed ramp, bend
 # rate, load) at values a driveline sees.
-TIMING_INPUTS = {"input_speed": 100.0, "input_acceleration": 5.0, "bend_angle": 0.3,
-                 "bend_angle_rate": 0.01, "bend_angle_acceleration": 0.0,
-                 "load_torque": 50.0}
+TIMING_INPUTS = {
+    "input_speed": 100.0,
+    "input_acceleration": 5.0,
+    "bend_angle": 0.3,
+    "bend_angle_rate": 0.01,
+    "bend_angle_acceleration": 0.0,
+    "load_torque": 50.0,
+}
 # FMUs timed side by side take turns every this many steps (~30 ms; ~0.5 s
 # under simulate_fmu, whose set-up is not timed but should stay rare).
 LOOP_CHUNK = 1_000
@@ -63,13 +68,15 @@ def worker_loop(fmus, steps, chunk):
             step_loop(instances[name], length, first)
             wall[name] += time.perf_counter() - start
             cpu[name] += time.process_time() - start_cpu
-        order.reverse()                  # nobody always runs right after the same one
+        order.reverse()  # nobody always runs right after the same one
     peak_after = peak_rss_kib()
     for joint in instances.values():
         joint.close()
-    return {"times": {name: {"wall": wall[name] / steps, "cpu": cpu[name] / steps}
-                      for name in fmus},
-            "peak_rss_kib": peak_after, "peak_rss_growth_kib": peak_after - peak_before}
+    return {
+        "times": {name: {"wall": wall[name] / steps, "cpu": cpu[name] / steps} for name in fmus},
+        "peak_rss_kib": peak_after,
+        "peak_rss_growth_kib": peak_after - peak_before,
+    }
 
 
 def constant_input_signal(stop_time):
@@ -95,35 +102,49 @@ def worker_simulate(fmus, steps, chunk):
         stop_time = length * STEP_SIZE
         for name in order:
             clock = StepClock()
-            simulate_fmu(fmus[name], stop_time=stop_time, output_interval=STEP_SIZE,
-                         input=constant_input_signal(stop_time), step_finished=clock)
+            simulate_fmu(
+                fmus[name],
+                stop_time=stop_time,
+                output_interval=STEP_SIZE,
+                input=constant_input_signal(stop_time),
+                step_finished=clock,
+            )
             wall[name] += clock.last[0] - clock.first[0]
             cpu[name] += clock.last[1] - clock.first[1]
             done[name] += clock.calls - 1
         order.reverse()
-    return {"times": {name: {"wall": wall[name] / done[name], "cpu": cpu[name] / done[name]}
-                      for name in fmus}}
+    return {
+        "times": {
+            name: {"wall": wall[name] / done[name], "cpu": cpu[name] / done[name]} for name in fmus
+        }
+    }
 
 
 def side_by_side(kind, fmus: dict, runs, steps, chunk):
     """Runs, each in a fresh process in which the FMUs take turns; per run
     {name: {"wall", "cpu"} per step}, plus the run's peak RSS."""
-    return [in_fresh_process(kind, fmus=fmus, steps=steps, chunk=min(chunk, steps))
-            for _ in range(runs)]
+    return [
+        in_fresh_process(kind, fmus=fmus, steps=steps, chunk=min(chunk, steps)) for _ in range(runs)
+    ]
 
 
 def step_cost(fmus, sizes):
     simulated = {name: fmus[name] for name in ("plain", "joint")}
-    return {"loop": side_by_side("loop", fmus, sizes.runs, sizes.steps, LOOP_CHUNK),
-            "simulate": side_by_side("simulate", simulated, sizes.simulate_runs, sizes.steps,
-                                     SIMULATE_CHUNK)}
+    return {
+        "loop": side_by_side("loop", fmus, sizes.runs, sizes.steps, LOOP_CHUNK),
+        "simulate": side_by_side(
+            "simulate", simulated, sizes.simulate_runs, sizes.steps, SIMULATE_CHUNK
+        ),
+    }
 
 
 def cost_cell(runs, floor):
     wall, cpu = against(runs, floor, "wall"), against(runs, floor, "cpu")
-    return (f"joint {us(wall['joint'])}, floor {us(wall['floor'])}: **×{wall['ratio']:.2f}** "
-            f"(single runs ×{wall['pair_min']:.2f}–{wall['pair_max']:.2f}; "
-            f"CPU time ×{cpu['ratio']:.2f})"), wall["ratio"]
+    return (
+        f"joint {us(wall['joint'])}, floor {us(wall['floor'])}: **×{wall['ratio']:.2f}** "
+        f"(single runs ×{wall['pair_min']:.2f}–{wall['pair_max']:.2f}; "
+        f"CPU time ×{cpu['ratio']:.2f})"
+    ), wall["ratio"]
 
 
 def cost_rows(cost, sizes):

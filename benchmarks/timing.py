@@ -75,8 +75,10 @@ class StepClock:
 
     def per_step(self):
         steps = self.calls - 1
-        return {"wall": (self.last[0] - self.first[0]) / steps,
-                "cpu": (self.last[1] - self.first[1]) / steps}
+        return {
+            "wall": (self.last[0] - self.first[0]) / steps,
+            "cpu": (self.last[1] - self.first[1]) / steps,
+        }
 
 
 def against(runs, floor, clock="wall"):
@@ -86,8 +88,14 @@ def against(runs, floor, clock="wall"):
     floor_times = [run["times"][floor][clock] for run in runs]
     joint, floor_median = statistics.median(joint_times), statistics.median(floor_times)
     within = [j / f for j, f in zip(joint_times, floor_times)]
-    return {"joint": joint, "floor": floor_median, "ratio": joint / floor_median,
-            "pair_min": min(within), "pair_max": max(within), "runs": len(runs)}
+    return {
+        "joint": joint,
+        "floor": floor_median,
+        "ratio": joint / floor_median,
+        "pair_min": min(within),
+        "pair_max": max(within),
+        "runs": len(runs),
+    }
 
 
 def us(seconds):
@@ -107,5 +115,7 @@ def machine():
                 break
     except OSError:
         pass
-    return (f"{cpu} ({os.cpu_count()} cores), Python {platform.python_version()}, "
-            f"{platform.system()} {platform.machine()}")
+    return (
+        f"{cpu} ({os.cpu_count()} cores), Python {platform.python_version()}, "
+        f"{platform.system()} {platform.machine()}"
+    )

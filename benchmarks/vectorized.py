@@ -20,29 +20,31 @@ def joint_samples(count, seed=6):
     import numpy as np
 
     rng = np.random.default_rng(seed)
-    return (rng.uniform(0.0, 2 * math.pi, count),                   # psi
-            rng.uniform(-1.2, 1.2, count),                          # bend angle
-            rng.uniform(-300.0, 300.0, count),                      # input speed
-            rng.uniform(-50.0, 50.0, count),                        # input acceleration
-            rng.uniform(-1.0, 1.0, count),                          # bend rate
-            rng.uniform(-5.0, 5.0, count),                          # bend acceleration
-            tuple(rng.uniform(0.0, 0.05, count) for _ in range(3)),  # inertias
-            rng.uniform(-500.0, 500.0, count))                      # load torque
+    return (
+        rng.uniform(0.0, 2 * math.pi, count),  # psi
+        rng.uniform(-1.2, 1.2, count),  # bend angle
+        rng.uniform(-300.0, 300.0, count),  # input speed
+        rng.uniform(-50.0, 50.0, count),  # input acceleration
+        rng.uniform(-1.0, 1.0, count),  # bend rate
+        rng.uniform(-5.0, 5.0, count),  # bend acceleration
+        tuple(rng.uniform(0.0, 0.05, count) for _ in range(3)),  # inertias
+        rng.uniform(-500.0, 500.0, count),
+    )  # load torque
 
 
 def in_chunks(samples, size):
     count = len(samples[0])
     for start in range(0, count, size):
         part = slice(start, start + size)
-        yield tuple(tuple(i[part] for i in x) if isinstance(x, tuple) else x[part]
-                    for x in samples)
+        yield tuple(tuple(i[part] for i in x) if isinstance(x, tuple) else x[part] for x in samples)
 
 
 def time_scalar_loop(samples):
     from cardan_joint.physics import joint_response
 
     psi, beta, w1, a1, rb, ab, inertias, load = (
-        [i.tolist() for i in x] if isinstance(x, tuple) else x.tolist() for x in samples)
+        [i.tolist() for i in x] if isinstance(x, tuple) else x.tolist() for x in samples
+    )
     rows = list(zip(psi, beta, w1, a1, rb, ab, zip(*inertias), load))
     start = time.perf_counter()
     for p, b, w, a, r, c, inertia, torque in rows:
@@ -73,7 +75,7 @@ def worker_trigonometry(samples, chunk):
 
     def trigonometry():
         for start in range(0, samples, chunk):
-            half, bend = 0.5 * psi[start:start + chunk], beta[start:start + chunk]
+            half, bend = 0.5 * psi[start : start + chunk], beta[start : start + chunk]
             np.sin(half), np.cos(half), np.sin(bend), np.cos(bend), np.atan(bend)
 
     return {"rate": samples / best_time(trigonometry)}
@@ -84,21 +86,28 @@ def worker_scalar(samples):
 
 
 def vectorized(sizes):
-    return {"scalar_rate": in_fresh_process("scalar", samples=sizes.scalar_samples)["rate"],
-            "whole_rate": in_fresh_process("vector", samples=sizes.vector_samples,
-                                           chunk=sizes.vector_samples)["rate"],
-            "chunked_rate": in_fresh_process("vector", samples=sizes.vector_samples,
-                                             chunk=CHUNK)["rate"],
-            "trigonometry_rate": in_fresh_process("trigonometry", samples=sizes.vector_samples,
-                                                  chunk=CHUNK)["rate"]}
+    return {
+        "scalar_rate": in_fresh_process("scalar", samples=sizes.scalar_samples)["rate"],
+        "whole_rate": in_fresh_process(
+            "vector", samples=sizes.vector_samples, chunk=sizes.vector_samples
+        )["rate"],
+        "chunked_rate": in_fresh_process("vector", samples=sizes.vector_samples, chunk=CHUNK)[
+            "rate"
+        ],
+        "trigonometry_rate": in_fresh_process(
+            "trigonometry", samples=sizes.vector_samples, chunk=CHUNK
+        )["rate"],
+    }
 
 
 def vector_rows(vector, sizes):
     whole = vector["whole_rate"] / vector["scalar_rate"]
     chunked = vector["chunked_rate"] / vector["scalar_rate"]
     ceiling = vector["trigonometry_rate"] / vector["scalar_rate"]
-    samples = (f"{sizes.vector_samples:,} samples vs a scalar loop on "
-               f"{sizes.scalar_samples:,} samples (rate scaled)")
+    samples = (
+        f"{sizes.vector_samples:,} samples vs a scalar loop on "
+        f"{sizes.scalar_samples:,} samples (rate scaled)"
+    )
     return [
         f"| 3. `joint_response` on numpy arrays, one call on {samples} | "
         f"{vector['whole_rate']:.3g} vs {vector['scalar_rate']:.3g} samples/s: **×{whole:.0f}** | "

@@ -7,12 +7,11 @@ formulas appear only as reference marks drawn over the FMU's curves.
 from pathlib import Path
 
 import numpy as np
+from _support import example_parser, output_folder
 
 from cardan_joint import results
 from cardan_joint.plotting import pyplot  # noqa: F401 - the seed scripts import it from here
 from cardan_joint.simulate import simulate
-
-from _support import example_parser, output_folder
 
 # Dark enough on white for thin lines, distinct for up to six bend angles.
 COLORS = ("tab:blue", "tab:orange", "tab:green", "tab:red", "tab:purple", "tab:brown")
@@ -20,8 +19,9 @@ COLORS = ("tab:blue", "tab:orange", "tab:green", "tab:red", "tab:purple", "tab:b
 
 def parse_args(doc, argv):
     parser = example_parser(doc, str(Path("results") / "seeds"))
-    parser.add_argument("--quick", action="store_true",
-                        help="coarse sampling and fewer runs (for the tests)")
+    parser.add_argument(
+        "--quick", action="store_true", help="coarse sampling and fewer runs (for the tests)"
+    )
     args = parser.parse_args(argv)
     args.out = output_folder(args)
     return args
@@ -33,8 +33,13 @@ def run(fmu, stop_time, output_interval, output=None, **start_values):
     `output`: the variables to record (FMPy's default: all outputs); inputs can be
     recorded too, and read back as the FMU holds them.
     """
-    return simulate(fmu, stop_time=stop_time, output_interval=output_interval,
-                    start_values=start_values, output=output)
+    return simulate(
+        fmu,
+        stop_time=stop_time,
+        output_interval=output_interval,
+        start_values=start_values,
+        output=output,
+    )
 
 
 class Outputs:
@@ -54,6 +59,7 @@ class Outputs:
         path = self.folder / f"{name}.png"
         fig.savefig(path, dpi=100)
         import matplotlib.pyplot as plt
+
         plt.close(fig)
         self.paths.append(path)
         return path
@@ -66,7 +72,7 @@ class Outputs:
 def parabola_peak(x, y):
     """Abscissa and height of the sampled maximum, refined through its two neighbours."""
     k = int(np.clip(np.argmax(y), 1, len(y) - 2))
-    (x0, x1, _), (y0, y1, y2) = x[k - 1:k + 2], y[k - 1:k + 2]
+    (x0, x1, _), (y0, y1, y2) = x[k - 1 : k + 2], y[k - 1 : k + 2]
     curvature = y0 - 2 * y1 + y2
     shift = 0.5 * (y0 - y2) / curvature if curvature else 0.0
     return x1 + shift * (x1 - x0), y1 - 0.25 * (y0 - y2) * shift

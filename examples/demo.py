@@ -10,14 +10,13 @@ back, against a 200 N.m load. Writes results/demo.csv and results/demo.png.
 import math
 
 import numpy as np
+from _support import example_parser, output_folder
 
 from cardan_joint import results
 from cardan_joint import variables as table
 from cardan_joint.plotting import pyplot, save_figure
 from cardan_joint.simulate import simulate
 from cardan_joint.units import RAD_PER_S_TO_RPM, RAD_TO_DEG, RPM_TO_RAD_PER_S
-
-from _support import example_parser, output_folder
 
 
 def demo_inputs(stop_time=2.0, step=1e-3):
@@ -42,7 +41,9 @@ def plot(result, inputs, path):
     t = result["time"]
     fig, axes = plt.subplots(4, 1, figsize=(9, 11), sharex=True)
     axes[0].plot(t, result["output_speed"] * RAD_PER_S_TO_RPM, lw=0.8, label="output shaft")
-    axes[0].plot(inputs["time"], inputs["input_speed"] * RAD_PER_S_TO_RPM, "k--", lw=1, label="input shaft")
+    axes[0].plot(
+        inputs["time"], inputs["input_speed"] * RAD_PER_S_TO_RPM, "k--", lw=1, label="input shaft"
+    )
     axes[0].set_ylabel("speed [rpm]")
     axes[0].legend(loc="upper left")
     axes[0].set_title("Run-up through a Cardan joint bending 0 -> 30 -> 0 deg, 200 N.m load")
@@ -68,16 +69,28 @@ def main(argv=None):
     args = parser.parse_args(argv)
     out = output_folder(args)
     inputs = demo_inputs(args.stop_time)
-    result = simulate(args.fmu, stop_time=args.stop_time, output_interval=1e-3, inputs=inputs,
-                      start_values={"crosspiece_inertia_1": 0.004, "crosspiece_inertia_2": 0.004,
-                                    "crosspiece_inertia_3": 0.008})
+    result = simulate(
+        args.fmu,
+        stop_time=args.stop_time,
+        output_interval=1e-3,
+        inputs=inputs,
+        start_values={
+            "crosspiece_inertia_1": 0.004,
+            "crosspiece_inertia_2": 0.004,
+            "crosspiece_inertia_3": 0.008,
+        },
+    )
     results.write_csv(result, out / "demo.csv")
     plot(result, inputs, out / "demo.png")
-    swing = result["output_speed"] / np.interp(result["time"], inputs["time"], inputs["input_speed"])
+    swing = result["output_speed"] / np.interp(
+        result["time"], inputs["time"], inputs["input_speed"]
+    )
     print(f"wrote {out / 'demo.csv'} ({len(result)} rows) and {out / 'demo.png'}")
-    print(f"output/input speed ratio swung between {swing.min():.4f} and {swing.max():.4f}; "
-          f"peak input torque {result['input_torque'].max():.1f} N.m, peak secondary couples "
-          f"{result['input_yoke_moment'].max():.1f} / {result['output_yoke_moment'].max():.1f} N.m")
+    print(
+        f"output/input speed ratio swung between {swing.min():.4f} and {swing.max():.4f}; "
+        f"peak input torque {result['input_torque'].max():.1f} N.m, peak secondary couples "
+        f"{result['input_yoke_moment'].max():.1f} / {result['output_yoke_moment'].max():.1f} N.m"
+    )
 
 
 if __name__ == "__main__":

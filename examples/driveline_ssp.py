@@ -67,7 +67,8 @@ def plot(fmpy_rows, libcosim_rows, path, drive):
                      label=f"load shaft ({host})")
         axes[1].plot(rows["time"], rows["Drive.input_torque"], style, lw=0.7,
                      label=f"drive input torque ({host})")
-        axes[1].plot(rows["time"], rows["Load.torque"], style, lw=0.7, label=f"load torque ({host})")
+        axes[1].plot(rows["time"], rows["Load.torque"], style, lw=0.7,
+                     label=f"load torque ({host})")
     difference = fmpy_rows["Motor.speed"] - libcosim_rows["Motor.speed"][1:]
     axes[2].plot(fmpy_rows["time"], difference * rpm)
     axes[0].set_ylabel("speed [rpm]")

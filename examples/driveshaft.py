@@ -61,23 +61,29 @@ Writes results/driveshaft_steps.csv (step dependence), results/driveshaft_phase.
 import math
 
 import numpy as np
-
-from cardan_joint.instance import ExtractedFMU
-from cardan_joint.physics import quantities
-
-from cardan_joint import results
-from cardan_joint.plotting import save_figure
-
 from _support import example_parser, output_folder
 
+from cardan_joint import results
+from cardan_joint.instance import ExtractedFMU
+from cardan_joint.physics import quantities
+from cardan_joint.plotting import save_figure
+
 COUPLINGS = ("lead", "hold", "angle")
-ARRANGEMENTS = {"Z": -1.0, "W": 1.0}       # sign of joint 2's bend angle
+ARRANGEMENTS = {"Z": -1.0, "W": 1.0}  # sign of joint 2's bend angle
 ROUNDING = 1e-12
 
 
-def cosimulate(fmu: ExtractedFMU, bend_angle=math.radians(30), input_speed=10.0, step=1e-3,
-               revolutions=2, arrangement="Z", phase_error=0.0, coupling="hold",
-               input_acceleration=0.0):
+def cosimulate(
+    fmu: ExtractedFMU,
+    bend_angle=math.pi / 6,
+    input_speed=10.0,
+    step=1e-3,
+    revolutions=2,
+    arrangement="Z",
+    phase_error=0.0,
+    coupling="hold",
+    input_acceleration=0.0,
+):
     """Run the driveshaft for `revolutions` of the input at its initial speed.
 
     Joint 1's input speed is prescribed: input_speed + input_acceleration * t
@@ -89,21 +95,36 @@ def cosimulate(fmu: ExtractedFMU, bend_angle=math.radians(30), input_speed=10.0,
     if coupling not in COUPLINGS:
         raise ValueError(f"coupling must be one of {COUPLINGS}, got {coupling!r}")
     steps = int(round(revolutions * 2 * math.pi / input_speed / step))
-    joint1 = fmu.instance("joint1", start_values={
-        "bend_angle": bend_angle, "yoke_phase": 0.0, "input_angle_start": 0.0,
-        "input_speed": input_speed, "input_acceleration": input_acceleration})
+    joint1 = fmu.instance(
+        "joint1",
+        start_values={
+            "bend_angle": bend_angle,
+            "yoke_phase": 0.0,
+            "input_angle_start": 0.0,
+            "input_speed": input_speed,
+            "input_acceleration": input_acceleration,
+        },
+    )
     # Joint 2's input shaft starts where joint 1's output shaft is.
     (start_angle,) = joint1.values("output_angle")
-    joint2 = fmu.instance("joint2", start_values={
-        "bend_angle": ARRANGEMENTS[arrangement] * bend_angle,
-        "yoke_phase": math.pi / 2 + phase_error, "input_angle_start": start_angle})
+    joint2 = fmu.instance(
+        "joint2",
+        start_values={
+            "bend_angle": ARRANGEMENTS[arrangement] * bend_angle,
+            "yoke_phase": math.pi / 2 + phase_error,
+            "input_angle_start": start_angle,
+        },
+    )
     intermediate, output, output_at_end = [], [], []
     with joint1, joint2:
         for k in range(steps + 1):
-            joint1.set(input_speed=input_speed + input_acceleration * k * step,
-                       input_acceleration=input_acceleration)
-            speed, acceleration, angle = joint1.values("output_speed", "output_acceleration",
-                                                       "output_angle")
+            joint1.set(
+                input_speed=input_speed + input_acceleration * k * step,
+                input_acceleration=input_acceleration,
+            )
+            speed, acceleration, angle = joint1.values(
+                "output_speed", "output_acceleration", "output_angle"
+            )
             # Set for every coupling: the sample below then sees consistent inputs at t.
             joint2.set(input_speed=speed, input_acceleration=acceleration)
             intermediate.append(speed)
@@ -113,19 +134,24 @@ def cosimulate(fmu: ExtractedFMU, bend_angle=math.radians(30), input_speed=10.0,
             joint1.step(step)
             if coupling == "lead":
                 lead = joint1.get("output_speed", "output_acceleration")
-                joint2.set(input_speed=lead["output_speed"],
-                           input_acceleration=lead["output_acceleration"])
+                joint2.set(
+                    input_speed=lead["output_speed"], input_acceleration=lead["output_acceleration"]
+                )
             elif coupling == "angle":
                 (next_angle,) = joint1.values("output_angle")
-                joint2.set(input_acceleration=2.0 * ((next_angle - angle) - speed * step)
-                           / (step * step))
+                joint2.set(
+                    input_acceleration=2.0 * ((next_angle - angle) - speed * step) / (step * step)
+                )
             joint2.step(step)
             output_at_end.append(joint2.values("output_speed")[0])
     time = step * np.arange(steps + 1)
-    return {"time": time, "input_speed": input_speed + input_acceleration * time,
-            "intermediate_speed": np.array(intermediate),
-            "output_speed": np.array(output),
-            "output_speed_at_step_end": np.array(output_at_end)}
+    return {
+        "time": time,
+        "input_speed": input_speed + input_acceleration * time,
+        "intermediate_speed": np.array(intermediate),
+        "output_speed": np.array(output),
+        "output_speed_at_step_end": np.array(output_at_end),
+    }
 
 
 def fluctuation(speed, input_speed):
@@ -147,8 +173,9 @@ def exact_fluctuation(bend_angle, phase_error, samples=200_001):
     turned by joint 1's exact output angle."""
     gamma1 = np.linspace(0.0, 2 * math.pi, samples)
     gamma2 = quantities.output_angle(gamma1, bend_angle)
-    ratio = (quantities.speed_ratio(gamma1, bend_angle)
-             * quantities.speed_ratio(gamma2 + math.pi / 2 + phase_error, bend_angle))
+    ratio = quantities.speed_ratio(gamma1, bend_angle) * quantities.speed_ratio(
+        gamma2 + math.pi / 2 + phase_error, bend_angle
+    )
     return float(ratio.max() - ratio.min())
 
 
@@ -158,66 +185,103 @@ def step_table(fmu, bend_angle, input_speed, steps, revolutions):
         for step in steps:
             run = cosimulate(fmu, bend_angle, input_speed, step, revolutions, "Z", 0.0, coupling)
             residual = fluctuation(run["output_speed"], input_speed)
-            rows.append({"coupling": coupling, "step": step, "fluctuation": residual,
-                         "reduction": single_joint_fluctuation(bend_angle) / residual
-                         if residual > 0 else math.inf,
-                         "fluctuation_at_step_end":
-                             fluctuation(run["output_speed_at_step_end"], input_speed)})
+            rows.append(
+                {
+                    "coupling": coupling,
+                    "step": step,
+                    "fluctuation": residual,
+                    "reduction": single_joint_fluctuation(bend_angle) / residual
+                    if residual > 0
+                    else math.inf,
+                    "fluctuation_at_step_end": fluctuation(
+                        run["output_speed_at_step_end"], input_speed
+                    ),
+                }
+            )
             if coupling == "hold":
                 rows[-1]["predicted"] = predicted_hold_fluctuation(bend_angle, input_speed, step)
     for previous, row in zip(rows, rows[1:]):
         # An order from residuals at the rounding level would be noise.
         if previous["coupling"] == row["coupling"] and row["fluctuation"] > ROUNDING:
-            row["order"] = (math.log(previous["fluctuation"] / row["fluctuation"])
-                            / math.log(previous["step"] / row["step"]))
+            row["order"] = math.log(previous["fluctuation"] / row["fluctuation"]) / math.log(
+                previous["step"] / row["step"]
+            )
     return rows
 
 
 def phase_table(fmu, bend_angle, input_speed, step, revolutions, errors_deg):
     rows = []
     for error in errors_deg:
-        run = cosimulate(fmu, bend_angle, input_speed, step, revolutions, "Z",
-                         math.radians(error), "hold")
-        rows.append({"phase_error_deg": error,
-                     "fluctuation": fluctuation(run["output_speed"], input_speed),
-                     "exact": exact_fluctuation(bend_angle, math.radians(error)),
-                     "single_joint": single_joint_fluctuation(bend_angle)})
+        run = cosimulate(
+            fmu, bend_angle, input_speed, step, revolutions, "Z", math.radians(error), "hold"
+        )
+        rows.append(
+            {
+                "phase_error_deg": error,
+                "fluctuation": fluctuation(run["output_speed"], input_speed),
+                "exact": exact_fluctuation(bend_angle, math.radians(error)),
+                "single_joint": single_joint_fluctuation(bend_angle),
+            }
+        )
     return rows
 
 
 def plot(steps_rows, phase_rows, bend_angle, input_speed, phase_step, path):
     import matplotlib
+
     matplotlib.use("Agg")
     import matplotlib.pyplot as plt
 
     single = single_joint_fluctuation(bend_angle)
     fig, (left, right) = plt.subplots(1, 2, figsize=(12, 4.8))
     markers = {"lead": "v", "hold": "o", "angle": "s"}
-    labels = {"lead": "lead: joint 2 fed joint 1's outputs at t + h",
-              "hold": "hold: inputs valid at t (O(h$^2$))",
-              "angle": "angle: hold + angle-matching acceleration"}
+    labels = {
+        "lead": "lead: joint 2 fed joint 1's outputs at t + h",
+        "hold": "hold: inputs valid at t (O(h$^2$))",
+        "angle": "angle: hold + angle-matching acceleration",
+    }
     for coupling in COUPLINGS:
         rows = [r for r in steps_rows if r["coupling"] == coupling]
         # Rounding-level residuals are floored so the log axis can show them.
-        left.loglog([r["step"] for r in rows], [max(r["fluctuation"], 1e-16) for r in rows],
-                    marker=markers[coupling], label=labels[coupling])
+        left.loglog(
+            [r["step"] for r in rows],
+            [max(r["fluctuation"], 1e-16) for r in rows],
+            marker=markers[coupling],
+            label=labels[coupling],
+        )
     h = np.array(sorted({r["step"] for r in steps_rows}))
-    left.loglog(h, [predicted_hold_fluctuation(bend_angle, input_speed, x) for x in h], "k:",
-                label=r"$(\omega_1 h)^2\tan^2\beta\,\sin^2\beta/6$")
+    left.loglog(
+        h,
+        [predicted_hold_fluctuation(bend_angle, input_speed, x) for x in h],
+        "k:",
+        label=r"$(\omega_1 h)^2\tan^2\beta\,\sin^2\beta/6$",
+    )
     left.axhline(single, color="tab:red", ls="--", label=r"single joint $\tan\beta\sin\beta$")
     left.set_xlabel("communication step h [s]")
     left.set_ylabel(r"output speed fluctuation $(\max-\min)/\omega_1$")
-    left.set_title(f"Z driveshaft, {math.degrees(bend_angle):g} deg, "
-                   f"$\\omega_1$ = {input_speed:g} rad/s: step dependence", fontsize=10)
+    left.set_title(
+        f"Z driveshaft, {math.degrees(bend_angle):g} deg, "
+        f"$\\omega_1$ = {input_speed:g} rad/s: step dependence",
+        fontsize=10,
+    )
     left.legend(fontsize=8, loc="center right", bbox_to_anchor=(1.0, 0.3))
     left.grid(alpha=0.3, which="both")
 
     errors = np.linspace(0.0, max(r["phase_error_deg"] for r in phase_rows), 101)
-    right.semilogy(errors[1:], [exact_fluctuation(bend_angle, math.radians(e), 20_001)
-                                for e in errors[1:]], "k-", lw=1, label="exact (closed forms)")
-    right.semilogy([r["phase_error_deg"] for r in phase_rows],
-                   [r["fluctuation"] for r in phase_rows], "o", color="tab:blue",
-                   label=f"co-simulated, hold coupling, h = {phase_step:g} s")
+    right.semilogy(
+        errors[1:],
+        [exact_fluctuation(bend_angle, math.radians(e), 20_001) for e in errors[1:]],
+        "k-",
+        lw=1,
+        label="exact (closed forms)",
+    )
+    right.semilogy(
+        [r["phase_error_deg"] for r in phase_rows],
+        [r["fluctuation"] for r in phase_rows],
+        "o",
+        color="tab:blue",
+        label=f"co-simulated, hold coupling, h = {phase_step:g} s",
+    )
     right.axhline(single, color="tab:red", ls="--", label="single joint")
     right.set_xlabel("joint 2 yoke phase error [deg] (yoke_phase = 90 deg + error)")
     right.set_ylabel(r"output speed fluctuation $(\max-\min)/\omega_1$")
@@ -231,15 +295,29 @@ def main(argv=None):
     parser = example_parser(__doc__)
     parser.add_argument("--bend-angle", type=float, default=30.0, help="deg (default 30)")
     parser.add_argument("--input-speed", type=float, default=10.0, help="rad/s (default 10)")
-    parser.add_argument("--revolutions", type=int, default=2,
-                        help="input revolutions per run (default 2)")
-    parser.add_argument("--steps", type=float, nargs="+", default=[1e-2, 1e-3, 1e-4],
-                        help="communication steps of the step-dependence table [s]")
-    parser.add_argument("--phase-step", type=float, default=1e-3,
-                        help="communication step of the phase-error sweep [s]")
-    parser.add_argument("--phase-errors", type=float, nargs="+",
-                        default=[0, 0.1, 0.25, 0.5, 1, 2, 3, 4, 5, 6, 7, 8, 9, 10],
-                        help="yoke phase errors of joint 2 [deg]")
+    parser.add_argument(
+        "--revolutions", type=int, default=2, help="input revolutions per run (default 2)"
+    )
+    parser.add_argument(
+        "--steps",
+        type=float,
+        nargs="+",
+        default=[1e-2, 1e-3, 1e-4],
+        help="communication steps of the step-dependence table [s]",
+    )
+    parser.add_argument(
+        "--phase-step",
+        type=float,
+        default=1e-3,
+        help="communication step of the phase-error sweep [s]",
+    )
+    parser.add_argument(
+        "--phase-errors",
+        type=float,
+        nargs="+",
+        default=[0, 0.1, 0.25, 0.5, 1, 2, 3, 4, 5, 6, 7, 8, 9, 10],
+        help="yoke phase errors of joint 2 [deg]",
+    )
     args = parser.parse_args(argv)
     out = output_folder(args)
     bend = math.radians(args.bend_angle)
@@ -250,37 +328,52 @@ def main(argv=None):
         z = cosimulate(fmu, bend, speed, 1e-3, args.revolutions, "Z")
         w = cosimulate(fmu, bend, speed, 1e-3, args.revolutions, "W")
         steps_rows = step_table(fmu, bend, speed, args.steps, args.revolutions)
-        phase_rows = phase_table(fmu, bend, speed, args.phase_step, args.revolutions,
-                                 args.phase_errors)
+        phase_rows = phase_table(
+            fmu, bend, speed, args.phase_step, args.revolutions, args.phase_errors
+        )
     results.write_rows(steps_rows, out / "driveshaft_steps.csv")
     results.write_rows(phase_rows, out / "driveshaft_phase.csv")
     plot(steps_rows, phase_rows, bend, speed, args.phase_step, out / "driveshaft.png")
 
-    print(f"Driveshaft, equal bend angles {args.bend_angle:g} deg, omega1 = {speed:g} rad/s, "
-          f"{args.revolutions} revolutions; single joint fluctuation tan b sin b = {single:.6g}")
+    print(
+        f"Driveshaft, equal bend angles {args.bend_angle:g} deg, omega1 = {speed:g} rad/s, "
+        f"{args.revolutions} revolutions; single joint fluctuation tan b sin b = {single:.6g}"
+    )
     for name, run in (("Z (b2 = -b)", z), ("W (b2 = +b)", w)):
         residual = fluctuation(run["output_speed"], speed)
-        print(f"  {name}, hold coupling, h = 1 ms: fluctuation {residual:.3e}, "
-              f"{single / residual:.3g} times smaller than one joint's")
+        print(
+            f"  {name}, hold coupling, h = 1 ms: fluctuation {residual:.3e}, "
+            f"{single / residual:.3g} times smaller than one joint's"
+        )
     same = np.array_equal(z["output_speed"], w["output_speed"])
     print(f"  Z and W output speeds {'identical' if same else 'differ'}")
-    print("\nStep dependence (Z); fluctuation at the communication points, "
-          "and sampled at the step ends:")
-    print(f"  {'coupling':8} {'h [s]':>7} {'fluctuation':>12} {'reduction':>10} {'order':>6} "
-          f"{'at step end':>12} {'predicted':>10}")
+    print(
+        "\nStep dependence (Z); fluctuation at the communication points, "
+        "and sampled at the step ends:"
+    )
+    print(
+        f"  {'coupling':8} {'h [s]':>7} {'fluctuation':>12} {'reduction':>10} {'order':>6} "
+        f"{'at step end':>12} {'predicted':>10}"
+    )
     for r in steps_rows:
         order = f"{r['order']:.2f}" if "order" in r else ""
         predicted = f"{r['predicted']:.3e}" if "predicted" in r else ""
-        print(f"  {r['coupling']:8} {r['step']:7.0e} {r['fluctuation']:12.3e} "
-              f"{r['reduction']:10.3g} {order:>6} {r['fluctuation_at_step_end']:12.3e} "
-              f"{predicted:>10}")
+        print(
+            f"  {r['coupling']:8} {r['step']:7.0e} {r['fluctuation']:12.3e} "
+            f"{r['reduction']:10.3g} {order:>6} {r['fluctuation_at_step_end']:12.3e} "
+            f"{predicted:>10}"
+        )
     print(f"\nYoke phase error (Z, hold coupling, h = {args.phase_step:g} s):")
     print(f"  {'error [deg]':>11} {'co-simulated':>13} {'exact':>11} {'/ single':>9}")
     for r in phase_rows:
-        print(f"  {r['phase_error_deg']:11g} {r['fluctuation']:13.4e} {r['exact']:11.4e} "
-              f"{r['fluctuation'] / single:9.3g}")
-    print(f"\nwrote {out / 'driveshaft_steps.csv'}, {out / 'driveshaft_phase.csv'}, "
-          f"{out / 'driveshaft.png'}")
+        print(
+            f"  {r['phase_error_deg']:11g} {r['fluctuation']:13.4e} {r['exact']:11.4e} "
+            f"{r['fluctuation'] / single:9.3g}"
+        )
+    print(
+        f"\nwrote {out / 'driveshaft_steps.csv'}, {out / 'driveshaft_phase.csv'}, "
+        f"{out / 'driveshaft.png'}"
+    )
 
 
 if __name__ == "__main__":

@@ -18,19 +18,33 @@ The master (FMPy's low-level API) closes the driveline around the FMU:
 import math
 
 import numpy as np
-
-from cardan_joint.simulate import DEFAULT_FMU
+from _support import example_parser, output_folder
 
 from cardan_joint import results
 from cardan_joint.plotting import save_figure
+from cardan_joint.simulate import DEFAULT_FMU
 
-from _support import example_parser, output_folder
-
-DEFAULTS = dict(bend_angle=math.radians(30.0), yoke_phase=0.0, inertia=(0.004, 0.004, 0.008),
-                J_motor=0.05, J_load=0.5, motor_torque=60.0, external_torque=10.0,
-                viscous=0.2, speed0=50.0)
-RECORDED = ("input_angle", "output_angle", "output_speed", "output_acceleration", "input_torque",
-            "input_yoke_moment", "output_yoke_moment", "crosspiece_kinetic_energy")
+DEFAULTS = dict(
+    bend_angle=math.radians(30.0),
+    yoke_phase=0.0,
+    inertia=(0.004, 0.004, 0.008),
+    J_motor=0.05,
+    J_load=0.5,
+    motor_torque=60.0,
+    external_torque=10.0,
+    viscous=0.2,
+    speed0=50.0,
+)
+RECORDED = (
+    "input_angle",
+    "output_angle",
+    "output_speed",
+    "output_acceleration",
+    "input_torque",
+    "input_yoke_moment",
+    "output_yoke_moment",
+    "crosspiece_kinetic_energy",
+)
 
 
 class Driveline:
@@ -41,9 +55,17 @@ class Driveline:
 
         self.p = p
         i1, i2, i3 = p["inertia"]
-        self.joint = JointInstance.open(fmu_path, start_values=dict(
-            bend_angle=p["bend_angle"], yoke_phase=p["yoke_phase"], crosspiece_inertia_1=i1,
-            crosspiece_inertia_2=i2, crosspiece_inertia_3=i3, input_speed=p["speed0"]))
+        self.joint = JointInstance.open(
+            fmu_path,
+            start_values=dict(
+                bend_angle=p["bend_angle"],
+                yoke_phase=p["yoke_phase"],
+                crosspiece_inertia_1=i1,
+                crosspiece_inertia_2=i2,
+                crosspiece_inertia_3=i3,
+                input_speed=p["speed0"],
+            ),
+        )
         self._set, self.get = self.joint.set, self.joint.get
 
     def _torque_residual(self, speed, acceleration):
@@ -51,8 +73,11 @@ class Driveline:
         p = self.p
         self._set(input_speed=speed, input_acceleration=acceleration)
         out = self.get("output_speed", "output_acceleration")
-        load = (p["J_load"] * out["output_acceleration"] + p["external_torque"]
-                + p["viscous"] * out["output_speed"])
+        load = (
+            p["J_load"] * out["output_acceleration"]
+            + p["external_torque"]
+            + p["viscous"] * out["output_speed"]
+        )
         self._set(load_torque=load)
         t1 = self.get("input_torque")["input_torque"]
         return p["J_motor"] * acceleration - (p["motor_torque"] - t1)
@@ -89,15 +114,21 @@ def run(fmu_path=DEFAULT_FMU, stop_time=1.0, h=1e-3, **overrides):
     p = {**DEFAULTS, **overrides}
     line = Driveline(fmu_path, p)
     n = int(round(stop_time / h))
-    rows = {name: np.empty(n + 1) for name in ("time", "input_speed", "input_acceleration",
-                                                "load_torque") + RECORDED}
+    rows = {
+        name: np.empty(n + 1)
+        for name in ("time", "input_speed", "input_acceleration", "load_torque") + RECORDED
+    }
     speed = p["speed0"]
     try:
         for k in range(n + 1):
             time = k * h
-            acceleration = line.close_loop(speed)        # outputs consistent at this point
+            acceleration = line.close_loop(speed)  # outputs consistent at this point
             values = line.get("load_torque", *RECORDED)
-            rows["time"][k], rows["input_speed"][k], rows["input_acceleration"][k] = time, speed, acceleration
+            rows["time"][k], rows["input_speed"][k], rows["input_acceleration"][k] = (
+                time,
+                speed,
+                acceleration,
+            )
             for name, value in values.items():
                 rows[name][k] = value
             if k < n:
@@ -109,6 +140,7 @@ def run(fmu_path=DEFAULT_FMU, stop_time=1.0, h=1e-3, **overrides):
 
 def plot(rows, p, path, revolutions=4):
     import matplotlib
+
     matplotlib.use("Agg")
     import matplotlib.pyplot as plt
 
@@ -119,8 +151,10 @@ def plot(rows, p, path, revolutions=4):
     axes[0].plot(t, rows["input_torque"][window], label="input torque T1 (motor side)")
     axes[0].plot(t, rows["load_torque"][window], "--", label="load torque T_L (load side)")
     axes[0].set_ylabel("torque [N.m]")
-    axes[0].set_title(f"Motor -> Cardan joint at {math.degrees(p['bend_angle']):.0f} deg -> "
-                      f"load inertia: the last {revolutions} input revolutions")
+    axes[0].set_title(
+        f"Motor -> Cardan joint at {math.degrees(p['bend_angle']):.0f} deg -> "
+        f"load inertia: the last {revolutions} input revolutions"
+    )
     axes[1].plot(t, rows["output_speed"][window] * 30 / math.pi, label="output shaft")
     axes[1].plot(t, rows["input_speed"][window] * 30 / math.pi, "k--", label="input shaft (motor)")
     axes[1].set_ylabel("speed [rpm]")
@@ -145,9 +179,11 @@ def main(argv=None):
     plot(rows, DEFAULTS, out / "motor_load.png")
     t1, tl = rows["input_torque"][-200:], rows["load_torque"][-200:]
     print(f"wrote {out / 'motor_load.csv'} and {out / 'motor_load.png'}")
-    print(f"last revolutions: input torque {t1.min():.1f}..{t1.max():.1f} N.m, load torque "
-          f"{tl.min():.1f}..{tl.max():.1f} N.m, secondary couples up to "
-          f"{rows['input_yoke_moment'].max():.1f} / {rows['output_yoke_moment'].max():.1f} N.m")
+    print(
+        f"last revolutions: input torque {t1.min():.1f}..{t1.max():.1f} N.m, load torque "
+        f"{tl.min():.1f}..{tl.max():.1f} N.m, secondary couples up to "
+        f"{rows['input_yoke_moment'].max():.1f} / {rows['output_yoke_moment'].max():.1f} N.m"
+    )
 
 
 if __name__ == "__main__":

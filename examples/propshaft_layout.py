@@ -22,18 +22,17 @@ import warnings
 from pathlib import Path
 
 import numpy as np
+from _support import example_parser, output_folder
 
 from cardan_joint.physics.propshaft import angle_report, best_phasing, layout
 from cardan_joint.plotting import save_figure
 from cardan_joint.simulate import simulate
 
-from _support import example_parser, output_folder
-
 SIDE_DEG = (-3.0, -1.0, -3.0)
 TOP_DEG = (0.0, 2.5, 5.0)
 SPEED_RPM = 4000.0
-LOAD = 300.0                       # N.m at the axle pinion
-SHAFT_INERTIA = 0.05               # kg.m2, the propshaft tube
+LOAD = 300.0  # N.m at the axle pinion
+SHAFT_INERTIA = 0.05  # kg.m2, the propshaft tube
 CROSSPIECE = (0.0004, 0.0004, 0.0007)
 RPM = 30.0 / math.pi
 
@@ -43,23 +42,33 @@ def run(fmu, phase, revolutions=2, points=720):
     stop = revolutions * 2.0 * math.pi / speed
     start = {f"shaft_{k}_side_angle": math.radians(a) for k, a in enumerate(SIDE_DEG)}
     start.update({f"shaft_{k}_top_angle": math.radians(a) for k, a in enumerate(TOP_DEG)})
-    start.update(shaft_1_yoke_phase=phase, shaft_1_inertia=SHAFT_INERTIA,
-                 crosspiece_inertia_1=CROSSPIECE[0], crosspiece_inertia_2=CROSSPIECE[1],
-                 crosspiece_inertia_3=CROSSPIECE[2])
+    start.update(
+        shaft_1_yoke_phase=phase,
+        shaft_1_inertia=SHAFT_INERTIA,
+        crosspiece_inertia_1=CROSSPIECE[0],
+        crosspiece_inertia_2=CROSSPIECE[1],
+        crosspiece_inertia_3=CROSSPIECE[2],
+    )
     with warnings.catch_warnings():
         # The checks were printed from the report already; the FMU logs them again.
         warnings.simplefilter("ignore", RuntimeWarning)
-        return simulate(fmu, stop_time=stop, output_interval=stop / points,
-                        inputs=dict(input_speed=speed, input_acceleration=0.0, load_torque=LOAD),
-                        start_values=start)
+        return simulate(
+            fmu,
+            stop_time=stop,
+            output_interval=stop / points,
+            inputs=dict(input_speed=speed, input_acceleration=0.0, load_torque=LOAD),
+            start_values=start,
+        )
 
 
 def plot(before, after, phase, path):
     import matplotlib.pyplot as plt
 
     fig, (top, bottom) = plt.subplots(2, 1, sharex=True, figsize=(8, 6))
-    for result, label in ((before, "yokes in one plane (phasing 0)"),
-                          (after, f"phasing {math.degrees(phase):.2f} deg (helper)")):
+    for result, label in (
+        (before, "yokes in one plane (phasing 0)"),
+        (after, f"phasing {math.degrees(phase):.2f} deg (helper)"),
+    ):
         revolutions = result["input_angle"] / (2.0 * math.pi)
         top.plot(revolutions, result["output_speed"] * RPM, label=label)
         bottom.plot(revolutions, result["input_torque"], label=label)
@@ -82,11 +91,17 @@ def main(argv=None):
     top = [math.radians(a) for a in TOP_DEG]
     geometry = layout(side, top, [0.0])
     report = angle_report(geometry, SPEED_RPM / RPM)
-    print("Working angles: " + ", ".join(f"joint {k} {math.degrees(b):.3f} deg (shop formula "
-                                         f"{_shop_formula(side, top, k):.3f})"
-                                         for k, b in enumerate(report.working_angles, start=1)))
-    print(f"Phasing 0: speed-ratio fluctuation {report.speed_ratio_fluctuation:.4g} "
-          f"(equivalent single joint {math.degrees(report.equivalent_angle):.3f} deg)")
+    print(
+        "Working angles: "
+        + ", ".join(
+            f"joint {k} {math.degrees(b):.3f} deg (shop formula {_shop_formula(side, top, k):.3f})"
+            for k, b in enumerate(report.working_angles, start=1)
+        )
+    )
+    print(
+        f"Phasing 0: speed-ratio fluctuation {report.speed_ratio_fluctuation:.4g} "
+        f"(equivalent single joint {math.degrees(report.equivalent_angle):.3f} deg)"
+    )
     for warning in report.warnings or ("no warnings",):
         print(f"  check: {warning}")
     phases, left = best_phasing(geometry)
@@ -97,9 +112,11 @@ def main(argv=None):
     run_before, run_after = run(args.fmu, 0.0), run(args.fmu, phases[0])
     for name, result in (("phasing 0", run_before), ("best phasing", run_after)):
         ratio = result["output_speed"] / (SPEED_RPM / RPM)
-        print(f"FMU, {name}: output speed {np.ptp(result['output_speed']) * RPM:.2f} rpm peak to "
-              f"peak (ratio {np.ptp(ratio):.3g}), input torque "
-              f"{result['input_torque'].min():.2f} .. {result['input_torque'].max():.2f} N.m")
+        print(
+            f"FMU, {name}: output speed {np.ptp(result['output_speed']) * RPM:.2f} rpm peak to "
+            f"peak (ratio {np.ptp(ratio):.3g}), input torque "
+            f"{result['input_torque'].min():.2f} .. {result['input_torque'].max():.2f} N.m"
+        )
     path = plot(run_before, run_after, phases[0], out / "propshaft_layout.png")
     print(f"wrote {path}")
 

@@ -34,15 +34,14 @@ It is plotted as the paper did, and labelled so.
 import math
 
 import numpy as np
-
 from _seed_support import Outputs, parse_args, pyplot, run
 
-INPUT_SPEED = 0.5               # rad/s
+INPUT_SPEED = 0.5  # rad/s
 BEND = math.pi / 6
 YOKE_PHASE = math.pi / 2
-DURATION = 2 * 2 * math.pi / INPUT_SPEED      # two input revolutions, s
-TORQUE_INERTIA = 0.026          # kg.m2, figure 7
-I0 = 0.039                      # kg.m2, figure 8: I0 = (I1 + I2 + I3) / 2
+DURATION = 2 * 2 * math.pi / INPUT_SPEED  # two input revolutions, s
+TORQUE_INERTIA = 0.026  # kg.m2, figure 7
+I0 = 0.039  # kg.m2, figure 8: I0 = (I1 + I2 + I3) / 2
 # The paper's (I1, I2, I3), in its own axis order (1 input pin, 2 normal, 3 output pin).
 DISTRIBUTIONS = {
     "T1": (2 / 3 * I0, 2 / 3 * I0, 2 / 3 * I0),
@@ -50,7 +49,7 @@ DISTRIBUTIONS = {
     "T3": (5 / 6 * I0, 1 / 3 * I0, 5 / 6 * I0),
     "T4": (7 / 9 * I0, 1 / 9 * I0, 10 / 9 * I0),
 }
-FLAT_CROSS = (0.5 * TORQUE_INERTIA, TORQUE_INERTIA, 0.5 * TORQUE_INERTIA)   # I1 = I3 = I2 / 2
+FLAT_CROSS = (0.5 * TORQUE_INERTIA, TORQUE_INERTIA, 0.5 * TORQUE_INERTIA)  # I1 = I3 = I2 / 2
 
 
 def fmu_inertia(paper_inertia):
@@ -73,10 +72,14 @@ def in_paper_frame(r, quantity):
 def quaternion_product(p, q):
     p0, p1, p2, p3 = p
     q0, q1, q2, q3 = q
-    return np.array([p0 * q0 - p1 * q1 - p2 * q2 - p3 * q3,
-                     p0 * q1 + p1 * q0 + p2 * q3 - p3 * q2,
-                     p0 * q2 - p1 * q3 + p2 * q0 + p3 * q1,
-                     p0 * q3 + p1 * q2 - p2 * q1 + p3 * q0])
+    return np.array(
+        [
+            p0 * q0 - p1 * q1 - p2 * q2 - p3 * q3,
+            p0 * q1 + p1 * q0 + p2 * q3 - p3 * q2,
+            p0 * q2 - p1 * q3 + p2 * q0 + p3 * q1,
+            p0 * q3 + p1 * q2 - p2 * q1 + p3 * q0,
+        ]
+    )
 
 
 def axis_quaternion(axis, angle):
@@ -100,7 +103,7 @@ def paper_quaternion(q_fmu):
 
 def roll_from_quaternion(q):
     q0, q1, q2, q3 = q
-    return np.arctan2(2 * (q0 * q1 + q2 * q3), q0 ** 2 - q1 ** 2 - q2 ** 2 + q3 ** 2)
+    return np.arctan2(2 * (q0 * q1 + q2 * q3), q0**2 - q1**2 - q2**2 + q3**2)
 
 
 def paper_formulas(t):
@@ -108,8 +111,14 @@ def paper_formulas(t):
     theta = INPUT_SPEED * t
     gamma = math.pi / 2 - np.arctan(math.tan(BEND) * np.cos(theta))
     output_angle = np.unwrap(np.arctan2(np.sin(theta) * math.cos(BEND), np.cos(theta)))
-    q = np.array([np.cos(theta / 2) * np.cos(gamma / 2), np.cos(theta / 2) * np.sin(gamma / 2),
-                  np.sin(theta / 2) * np.sin(gamma / 2), np.sin(theta / 2) * np.cos(gamma / 2)])
+    q = np.array(
+        [
+            np.cos(theta / 2) * np.cos(gamma / 2),
+            np.cos(theta / 2) * np.sin(gamma / 2),
+            np.sin(theta / 2) * np.sin(gamma / 2),
+            np.sin(theta / 2) * np.cos(gamma / 2),
+        ]
+    )
     return gamma, output_angle, q
 
 
@@ -126,8 +135,9 @@ def main(argv=None):
     equal = paper_run(fmu_inertia((TORQUE_INERTIA,) * 3))
     flat = paper_run(fmu_inertia(FLAT_CROSS))
     energies = {name: paper_run(fmu_inertia(i)) for name, i in DISTRIBUTIONS.items()}
-    energies_physics_md = {name: paper_run(physics_md_inertia(i))
-                           for name, i in DISTRIBUTIONS.items()}
+    energies_physics_md = {
+        name: paper_run(physics_md_inertia(i)) for name, i in DISTRIBUTIONS.items()
+    }
 
     t = equal["time"]
     q_fmu = np.array([equal[f"crosspiece_quaternion_{k}"] for k in range(4)])
@@ -137,25 +147,51 @@ def main(argv=None):
     marks = np.linspace(0, DURATION, 33)
     gamma_ref, output_angle_ref, q_ref = paper_formulas(marks)
 
-    out.csv("seed_mityushov_misyura_kinematics", {
-        "time_s": t, "input_angle_rad": equal["input_angle"],
-        "output_angle_rad": equal["output_angle"], "roll_rho_rad": rho,
-        "paper_roll_gamma_rad": math.pi / 2 - rho,
-        **{f"fmu_omega{k}_rad_s": equal[f"crosspiece_angular_velocity_{k}"] for k in (1, 2, 3)},
-        **{f"paper_omega{k}_rad_s": omega_paper[k - 1] for k in (1, 2, 3)}})
-    out.csv("seed_mityushov_misyura_quaternion", {
-        "time_s": t, **{f"fmu_q{k}": q_fmu[k] for k in range(4)},
-        **{f"paper_q{k}": q_paper[k] for k in range(4)}})
+    out.csv(
+        "seed_mityushov_misyura_kinematics",
+        {
+            "time_s": t,
+            "input_angle_rad": equal["input_angle"],
+            "output_angle_rad": equal["output_angle"],
+            "roll_rho_rad": rho,
+            "paper_roll_gamma_rad": math.pi / 2 - rho,
+            **{f"fmu_omega{k}_rad_s": equal[f"crosspiece_angular_velocity_{k}"] for k in (1, 2, 3)},
+            **{f"paper_omega{k}_rad_s": omega_paper[k - 1] for k in (1, 2, 3)},
+        },
+    )
+    out.csv(
+        "seed_mityushov_misyura_quaternion",
+        {
+            "time_s": t,
+            **{f"fmu_q{k}": q_fmu[k] for k in range(4)},
+            **{f"paper_q{k}": q_paper[k] for k in range(4)},
+        },
+    )
 
     # Figures 3, 4, 6: roll angle, output angle, angular velocity.
     fig, axes = plt.subplots(2, 2, figsize=(12, 8), sharex=True)
     roll, velocity, angle, lead = axes.flat
-    roll.plot(t, np.degrees(math.pi / 2 - rho), color="tab:blue", lw=1.5,
-              label="paper's roll $\\gamma = \\pi/2 - \\rho$ (FMU quaternion)")
-    roll.plot(t, np.degrees(rho), color="tab:orange", lw=1.5,
-              label="roll $\\rho$ of R = Rz($\\psi$) Rx($\\rho$) (FMU quaternion)")
-    roll.plot(marks, np.degrees(gamma_ref), "k.", ms=5,
-              label="paper (3): $\\pi/2$ - arctg(tg $\\alpha$ cos $\\vartheta$)")
+    roll.plot(
+        t,
+        np.degrees(math.pi / 2 - rho),
+        color="tab:blue",
+        lw=1.5,
+        label="paper's roll $\\gamma = \\pi/2 - \\rho$ (FMU quaternion)",
+    )
+    roll.plot(
+        t,
+        np.degrees(rho),
+        color="tab:orange",
+        lw=1.5,
+        label="roll $\\rho$ of R = Rz($\\psi$) Rx($\\rho$) (FMU quaternion)",
+    )
+    roll.plot(
+        marks,
+        np.degrees(gamma_ref),
+        "k.",
+        ms=5,
+        label="paper (3): $\\pi/2$ - arctg(tg $\\alpha$ cos $\\vartheta$)",
+    )
     roll.set_ylabel("roll angle [deg]")
     roll.set_title("Fig. 3: roll angle of the crosspiece", fontsize=10)
     roll.set_ylim(-40, 200)
@@ -163,38 +199,69 @@ def main(argv=None):
     names = ("$\\Omega_1$ (input pin)", "$\\Omega_2$ (cross normal)", "$\\Omega_3$ (output pin)")
     for component, name, color in zip(omega_paper, names, ("tab:blue", "tab:orange", "tab:green")):
         velocity.plot(t, component, color=color, lw=1.5, label=f"{name}, FMU")
-    velocity.plot(t, np.hypot(omega_paper[1], omega_paper[2]), color="tab:purple", lw=3,
-                  alpha=0.45, label="$\\sqrt{\\Omega_2^2 + \\Omega_3^2}$, FMU")
-    velocity.axhline(INPUT_SPEED, color="k", ls="--", lw=1,
-                     label=f"$\\omega_1$ = {INPUT_SPEED} rad/s (paper)")
+    velocity.plot(
+        t,
+        np.hypot(omega_paper[1], omega_paper[2]),
+        color="tab:purple",
+        lw=3,
+        alpha=0.45,
+        label="$\\sqrt{\\Omega_2^2 + \\Omega_3^2}$, FMU",
+    )
+    velocity.axhline(
+        INPUT_SPEED, color="k", ls="--", lw=1, label=f"$\\omega_1$ = {INPUT_SPEED} rad/s (paper)"
+    )
     velocity.set_ylabel("crosspiece angular velocity [rad/s]")
-    velocity.set_title("Fig. 6: angular velocity on the crosspiece axes (paper's frame)",
-                       fontsize=10)
+    velocity.set_title(
+        "Fig. 6: angular velocity on the crosspiece axes (paper's frame)", fontsize=10
+    )
     velocity.set_ylim(-0.35, 0.9)
     velocity.legend(loc="upper center", ncol=2)
-    angle.plot(t, np.degrees(equal["output_angle"]), color="tab:red", lw=1.5,
-               label="driven shaft $\\varphi_{II}$ (FMU)")
-    angle.plot(t, np.degrees(equal["input_angle"]), "k--", lw=0.8,
-               label="main shaft $\\varphi_I = \\omega_1 t$")
-    angle.plot(marks, np.degrees(output_angle_ref), "k.", ms=5,
-               label="paper (2): tg $\\varphi_{II}$ = tg $\\varphi_I$ cos $\\alpha$ (continued)")
+    angle.plot(
+        t,
+        np.degrees(equal["output_angle"]),
+        color="tab:red",
+        lw=1.5,
+        label="driven shaft $\\varphi_{II}$ (FMU)",
+    )
+    angle.plot(
+        t,
+        np.degrees(equal["input_angle"]),
+        "k--",
+        lw=0.8,
+        label="main shaft $\\varphi_I = \\omega_1 t$",
+    )
+    angle.plot(
+        marks,
+        np.degrees(output_angle_ref),
+        "k.",
+        ms=5,
+        label="paper (2): tg $\\varphi_{II}$ = tg $\\varphi_I$ cos $\\alpha$ (continued)",
+    )
     angle.set_ylabel("shaft angle [deg]")
     angle.set_yticks(range(0, 721, 90))
     angle.set_title("Fig. 4: rotation angle of the driven shaft", fontsize=10)
     angle.legend(loc="upper left")
     # On the scale of fig. 4 the driven shaft's lead and lag are invisible.
-    lead.plot(t, np.degrees(equal["output_angle"] - equal["input_angle"]), color="tab:red", lw=1.5,
-              label="$\\varphi_{II} - \\varphi_I$ (FMU)")
-    lead.plot(marks, np.degrees(output_angle_ref - INPUT_SPEED * marks), "k.", ms=5,
-              label="paper (2)")
+    lead.plot(
+        t,
+        np.degrees(equal["output_angle"] - equal["input_angle"]),
+        color="tab:red",
+        lw=1.5,
+        label="$\\varphi_{II} - \\varphi_I$ (FMU)",
+    )
+    lead.plot(
+        marks, np.degrees(output_angle_ref - INPUT_SPEED * marks), "k.", ms=5, label="paper (2)"
+    )
     lead.set_ylabel("driven shaft lead $\\varphi_{II} - \\varphi_I$ [deg]")
     lead.set_title("Fig. 4 magnified: the driven shaft's lead and lag", fontsize=10)
     lead.set_ylim(-6, 8)
     lead.legend(loc="upper center", ncol=2)
     for ax in (angle, lead):
         ax.set_xlabel("time t [s]")
-    fig.suptitle("Mityushov & Misyura: $\\omega_1$ = 0.5 rad/s, $\\alpha = \\pi/6$, "
-                 "yoke phase 90°", fontsize=12)
+    fig.suptitle(
+        "Mityushov & Misyura: $\\omega_1$ = 0.5 rad/s, $\\alpha = \\pi/6$, yoke phase 90°",
+        fontsize=12,
+    )
     fig.tight_layout()
     out.figure("seed_mityushov_misyura_kinematics", fig)
 
@@ -203,15 +270,24 @@ def main(argv=None):
     colors = ("tab:blue", "tab:orange", "tab:green", "tab:red")
     for k, color in enumerate(colors):
         axes[0].plot(t, q_paper[k], color=color, lw=1.5, label=f"$q_{k}$, FMU in the paper's frame")
-        axes[0].plot(marks, q_ref[k], ".", color="k", ms=4,
-                     label="paper (4) with roll (3)" if k == 0 else None)
+        axes[0].plot(
+            marks,
+            q_ref[k],
+            ".",
+            color="k",
+            ms=4,
+            label="paper (4) with roll (3)" if k == 0 else None,
+        )
         axes[1].plot(t, q_fmu[k], color=color, lw=1.5, label=f"$q_{k}$, FMU output")
     axes[0].set_ylabel("quaternion, paper's frame [-]")
-    axes[0].set_title("Fig. 5: orientation quaternion of the crosspiece (paper's frames)",
-                      fontsize=10)
+    axes[0].set_title(
+        "Fig. 5: orientation quaternion of the crosspiece (paper's frames)", fontsize=10
+    )
     axes[1].set_ylabel("quaternion, FMU frame [-]")
-    axes[1].set_title("The FMU's crosspiece_quaternion_0..3 (model page: R = Rz($\\psi$) Rx($\\rho$))",
-                      fontsize=10)
+    axes[1].set_title(
+        "The FMU's crosspiece_quaternion_0..3 (model page: R = Rz($\\psi$) Rx($\\rho$))",
+        fontsize=10,
+    )
     axes[1].set_xlabel("time t [s]")
     for ax in axes:
         ax.set_ylim(-1.1, 1.6)
@@ -222,9 +298,14 @@ def main(argv=None):
     # Figure 7: torques on the crosspiece, and the paper's M3 = 0 for a flat cross.
     torques_equal = in_paper_frame(equal, "torque")
     torques_flat = in_paper_frame(flat, "torque")
-    out.csv("seed_mityushov_misyura_torques", {
-        "time_s": t, **{f"paper_M{k}_equal_N_m": torques_equal[k - 1] for k in (1, 2, 3)},
-        **{f"paper_M{k}_flat_cross_N_m": torques_flat[k - 1] for k in (1, 2, 3)}})
+    out.csv(
+        "seed_mityushov_misyura_torques",
+        {
+            "time_s": t,
+            **{f"paper_M{k}_equal_N_m": torques_equal[k - 1] for k in (1, 2, 3)},
+            **{f"paper_M{k}_flat_cross_N_m": torques_flat[k - 1] for k in (1, 2, 3)},
+        },
+    )
     fig, axes = plt.subplots(2, 1, figsize=(9, 7.5), sharex=True)
     names = ("$M_1$ (input pin)", "$M_2$ (cross normal)", "$M_3$ (output pin)")
     for values, ax in ((torques_equal, axes[0]), (torques_flat, axes[1])):
@@ -235,39 +316,66 @@ def main(argv=None):
         ax.set_ylim(low, high + 0.3 * (high - low))
         ax.legend(loc="upper center", ncol=3)
     axes[0].set_title(f"Fig. 7: $I_1 = I_2 = I_3$ = {TORQUE_INERTIA} kg.m$^2$", fontsize=10)
-    axes[1].set_title(f"Paper §5: $I_1 = I_3 = I_2/2$ ($I_2$ = {FLAT_CROSS[1]} kg.m$^2$ about "
-                      "the normal, a flat cross) gives $M_3 \\equiv 0$", fontsize=10)
+    axes[1].set_title(
+        f"Paper §5: $I_1 = I_3 = I_2/2$ ($I_2$ = {FLAT_CROSS[1]} kg.m$^2$ about "
+        "the normal, a flat cross) gives $M_3 \\equiv 0$",
+        fontsize=10,
+    )
     axes[1].set_xlabel("time t [s]")
     fig.tight_layout()
     out.figure("seed_mityushov_misyura_torques", fig)
 
     # Figure 8: kinetic energy for the four distributions with the same I0.
-    out.csv("seed_mityushov_misyura_energy", {
-        "time_s": t, **{f"{name}_J": r["crosspiece_kinetic_energy"] for name, r in energies.items()},
-        **{f"{name}_physics_md_reading_J": r["crosspiece_kinetic_energy"]
-           for name, r in energies_physics_md.items()}})
+    out.csv(
+        "seed_mityushov_misyura_energy",
+        {
+            "time_s": t,
+            **{f"{name}_J": r["crosspiece_kinetic_energy"] for name, r in energies.items()},
+            **{
+                f"{name}_physics_md_reading_J": r["crosspiece_kinetic_energy"]
+                for name, r in energies_physics_md.items()
+            },
+        },
+    )
     fig, axes = plt.subplots(2, 1, figsize=(9, 8), sharex=True)
-    labels = {"T1": "T1: $I_1 = I_2 = I_3 = \\frac{2}{3}I_0$",
-              "T2": "T2: $I_1 = I_3 = \\frac{1}{3}I_0,\\ I_2 = \\frac{4}{3}I_0$",
-              "T3": "T3: $I_1 = I_3 = \\frac{5}{6}I_0,\\ I_2 = \\frac{1}{3}I_0$",
-              "T4": "T4: $I_1 = \\frac{7}{9}, I_2 = \\frac{1}{9}, I_3 = \\frac{10}{9}I_0$ "
-                    "(no rigid body: $I_3 > I_1 + I_2$)"}
+    labels = {
+        "T1": "T1: $I_1 = I_2 = I_3 = \\frac{2}{3}I_0$",
+        "T2": "T2: $I_1 = I_3 = \\frac{1}{3}I_0,\\ I_2 = \\frac{4}{3}I_0$",
+        "T3": "T3: $I_1 = I_3 = \\frac{5}{6}I_0,\\ I_2 = \\frac{1}{3}I_0$",
+        "T4": "T4: $I_1 = \\frac{7}{9}, I_2 = \\frac{1}{9}, I_3 = \\frac{10}{9}I_0$ "
+        "(no rigid body: $I_3 > I_1 + I_2$)",
+    }
     colors = dict(zip(DISTRIBUTIONS, ("tab:blue", "tab:orange", "tab:green", "tab:red")))
     for ax, runs, title in (
-            (axes[0], energies, "Fig. 8: kinetic energy, the paper's axes (2 = cross normal, "
-                                "3 = output pin)"),
-            (axes[1], energies_physics_md, "The same numbers on the model page's axes "
-                                           "(2 = output pin, 3 = cross normal)")):
+        (
+            axes[0],
+            energies,
+            "Fig. 8: kinetic energy, the paper's axes (2 = cross normal, 3 = output pin)",
+        ),
+        (
+            axes[1],
+            energies_physics_md,
+            "The same numbers on the model page's axes (2 = output pin, 3 = cross normal)",
+        ),
+    ):
         for name, r in runs.items():
-            ax.plot(t, r["crosspiece_kinetic_energy"] * 1e3, color=colors[name], lw=1.5,
-                    ls=":" if name == "T4" else "-", label=labels[name])
+            ax.plot(
+                t,
+                r["crosspiece_kinetic_energy"] * 1e3,
+                color=colors[name],
+                lw=1.5,
+                ls=":" if name == "T4" else "-",
+                label=labels[name],
+            )
         ax.set_ylabel("crosspiece kinetic energy [mJ]")
         ax.set_title(title, fontsize=10)
         ax.set_ylim(0, ax.get_ylim()[1] * 1.45)
         ax.legend(loc="upper center", ncol=2, fontsize=7.5)
     axes[1].set_xlabel("time t [s]")
-    fig.suptitle(f"Mityushov & Misyura: $I_0$ = {I0} kg.m$^2$, $\\omega_1$ = 0.5 rad/s, "
-                 "$\\alpha = \\pi/6$", fontsize=12)
+    fig.suptitle(
+        f"Mityushov & Misyura: $I_0$ = {I0} kg.m$^2$, $\\omega_1$ = 0.5 rad/s, $\\alpha = \\pi/6$",
+        fontsize=12,
+    )
     fig.tight_layout()
     out.figure("seed_mityushov_misyura_energy", fig)
 
@@ -276,23 +384,36 @@ def main(argv=None):
     rho_expected = np.arctan(math.tan(BEND) * np.sin(psi))
     half_angle_roll = 2 * np.arctan2(q_fmu[1], q_fmu[0])
     wrapped = np.angle(np.exp(1j * (half_angle_roll - rho_expected)))
-    print(f"roll from the quaternion vs atan(tan a sin psi): {np.max(np.abs(rho - rho_expected)):.1e} "
-          f"rad; 2 atan2(q1, q0) differs by up to {np.max(np.abs(half_angle_roll - rho_expected)):.4f}"
-          f" rad, {np.max(np.abs(wrapped)):.1e} rad modulo 2 pi")
-    print(f"paper's quaternion (4) vs the FMU's in the paper's frames: "
-          f"{np.max(np.abs(q_paper - paper_formulas(t)[2])):.1e}; "
-          f"|q| - 1 up to {np.max(np.abs(np.linalg.norm(q_fmu, axis=0) - 1)):.1e}")
-    print(f"Omega2^2 + Omega3^2 - omega1^2 up to "
-          f"{np.max(np.abs(omega_paper[1] ** 2 + omega_paper[2] ** 2 - INPUT_SPEED ** 2)):.1e} "
-          f"rad2/s2; roll gamma in [{np.degrees((math.pi / 2 - rho).min()):.3f}, "
-          f"{np.degrees((math.pi / 2 - rho).max()):.3f}] deg")
-    print(f"torques, I = {TORQUE_INERTIA} kg.m2: |M1|, |M2|, |M3| up to "
-          + ", ".join(f"{np.max(np.abs(m)):.3e}" for m in torques_equal)
-          + f" N.m; flat cross I1 = I3 = I2/2: |M3| up to {np.max(np.abs(torques_flat[2])):.1e} N.m")
+    print(
+        "roll from the quaternion vs atan(tan a sin psi): "
+        f"{np.max(np.abs(rho - rho_expected)):.1e} rad; 2 atan2(q1, q0) differs by up to "
+        f"{np.max(np.abs(half_angle_roll - rho_expected)):.4f}"
+        f" rad, {np.max(np.abs(wrapped)):.1e} rad modulo 2 pi"
+    )
+    print(
+        f"paper's quaternion (4) vs the FMU's in the paper's frames: "
+        f"{np.max(np.abs(q_paper - paper_formulas(t)[2])):.1e}; "
+        f"|q| - 1 up to {np.max(np.abs(np.linalg.norm(q_fmu, axis=0) - 1)):.1e}"
+    )
+    print(
+        f"Omega2^2 + Omega3^2 - omega1^2 up to "
+        f"{np.max(np.abs(omega_paper[1] ** 2 + omega_paper[2] ** 2 - INPUT_SPEED**2)):.1e} "
+        f"rad2/s2; roll gamma in [{np.degrees((math.pi / 2 - rho).min()):.3f}, "
+        f"{np.degrees((math.pi / 2 - rho).max()):.3f}] deg"
+    )
+    print(
+        f"torques, I = {TORQUE_INERTIA} kg.m2: |M1|, |M2|, |M3| up to "
+        + ", ".join(f"{np.max(np.abs(m)):.3e}" for m in torques_equal)
+        + f" N.m; flat cross I1 = I3 = I2/2: |M3| up to {np.max(np.abs(torques_flat[2])):.1e} N.m"
+    )
     for name in DISTRIBUTIONS:
-        e, e_md = (runs[name]["crosspiece_kinetic_energy"] for runs in (energies, energies_physics_md))
-        print(f"{name}: energy {e.min() * 1e3:.4f}..{e.max() * 1e3:.4f} mJ, mean {e.mean() * 1e3:.4f}"
-              f" mJ (model page reading {e_md.min() * 1e3:.4f}..{e_md.max() * 1e3:.4f} mJ)")
+        e, e_md = (
+            runs[name]["crosspiece_kinetic_energy"] for runs in (energies, energies_physics_md)
+        )
+        print(
+            f"{name}: energy {e.min() * 1e3:.4f}..{e.max() * 1e3:.4f} mJ, mean {e.mean() * 1e3:.4f}"
+            f" mJ (model page reading {e_md.min() * 1e3:.4f}..{e_md.max() * 1e3:.4f} mJ)"
+        )
 
 
 if __name__ == "__main__":

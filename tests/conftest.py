@@ -20,8 +20,8 @@ ROOT = Path(__file__).resolve().parents[1]
 
 def build_fmu(dest: Path, *args: str) -> Path:
     """Run build_fmu.py in its own process, as a user would."""
-    result = subprocess.run([sys.executable, str(ROOT / "build_fmu.py"), "--dest", str(dest), *args],
-                            capture_output=True, text=True, cwd=ROOT)
+    command = [sys.executable, str(ROOT / "build_fmu.py"), "--dest", str(dest), *args]
+    result = subprocess.run(command, capture_output=True, text=True, cwd=ROOT)
     assert result.returncode == 0, result.stdout + result.stderr
     name = next((a.split("=", 1)[1] for a in args if a.startswith("--name=")), "UniversalJoint")
     return dest / ("fmi3" if "--fmi-version=3" in args else "") / f"{name}.fmu"

@@ -7,7 +7,7 @@ tan psi2 = tan psi / cos b written with atan2) and the result is evaluated in
 psi, b and their first and second rates.
 """
 
-from functools import lru_cache
+from functools import cache
 
 import mpmath
 import sympy as sp
@@ -21,11 +21,12 @@ def time_derivative(expression):
 
 
 def _cross(u, v):
-    return sp.Matrix([u[1] * v[2] - u[2] * v[1], u[2] * v[0] - u[0] * v[2],
-                      u[0] * v[1] - u[1] * v[0]])
+    return sp.Matrix(
+        [u[1] * v[2] - u[2] * v[1], u[2] * v[0] - u[0] * v[2], u[0] * v[1] - u[1] * v[0]]
+    )
 
 
-@lru_cache(maxsize=None)
+@cache
 def _expressions():
     p1 = sp.Matrix([sp.cos(psi), sp.sin(psi), 0])
     z2 = sp.Matrix([sp.sin(b), 0, sp.cos(b)])
@@ -33,30 +34,49 @@ def _expressions():
     p2 = n / sp.sqrt(n.dot(n))
     p3 = _cross(p1, p2)
     dp1, dp2, dp3 = (v.applyfunc(time_derivative) for v in (p1, p2, p3))
-    omega = [p3.dot(dp2), p1.dot(dp3), p2.dot(dp1)]        # [Omega]x = R^T dR/dt
+    omega = [p3.dot(dp2), p1.dot(dp3), p2.dot(dp1)]  # [Omega]x = R^T dR/dt
     domega = [time_derivative(w) for w in omega]
     psi2 = sp.atan2(sp.sin(psi), sp.cos(b) * sp.cos(psi))
     w2 = time_derivative(psi2)
     a2 = time_derivative(w2)
     ratio = sp.diff(psi2, psi)
     arguments = (psi, b, dpsi, db, ddpsi, ddb)
-    compiled = {name: sp.lambdify(arguments, expr, "mpmath") for name, expr in {
-        "output_speed": w2, "output_acceleration": a2, "speed_ratio": ratio,
-        "omega_1": omega[0], "omega_2": omega[1], "omega_3": omega[2],
-        "domega_1": domega[0], "domega_2": domega[1], "domega_3": domega[2],
-        "psi2": psi2,
-    }.items()}
+    compiled = {
+        name: sp.lambdify(arguments, expr, "mpmath")
+        for name, expr in {
+            "output_speed": w2,
+            "output_acceleration": a2,
+            "speed_ratio": ratio,
+            "omega_1": omega[0],
+            "omega_2": omega[1],
+            "omega_3": omega[2],
+            "domega_1": domega[0],
+            "domega_2": domega[1],
+            "domega_3": domega[2],
+            "psi2": psi2,
+        }.items()
+    }
     frame = sp.lambdify((psi, b), sp.Matrix.hstack(p1, p2, p3), "mpmath")
     return compiled, frame
 
 
-def derived(psi_value, bend, input_speed, input_acceleration=0.0, bend_rate=0.0,
-            bend_acceleration=0.0):
+def derived(
+    psi_value, bend, input_speed, input_acceleration=0.0, bend_rate=0.0, bend_acceleration=0.0
+):
     """dict of 40-digit mpmath values at one instant."""
     compiled, _ = _expressions()
     with mpmath.workdps(40):
-        args = [mpmath.mpf(x) for x in (psi_value, bend, input_speed, bend_rate,
-                                         input_acceleration, bend_acceleration)]
+        args = [
+            mpmath.mpf(x)
+            for x in (
+                psi_value,
+                bend,
+                input_speed,
+                bend_rate,
+                input_acceleration,
+                bend_acceleration,
+            )
+        ]
         values = {name: f(*args) for name, f in compiled.items()}
         # atan2 returns the principal value; the cardan error is the branch near 0.
         delta = values.pop("psi2") - args[0]

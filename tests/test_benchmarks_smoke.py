@@ -27,12 +27,25 @@ SUMMARY_ROWS = (
 
 def test_quick_run_writes_every_row(fmu_path, tmp_path):
     output = tmp_path / "results.md"
-    run = subprocess.run([sys.executable, "-m", "benchmarks", "--quick", "--output", str(output),
-                          "--fmu", str(fmu_path)],
-                         capture_output=True, text=True, cwd=ROOT, timeout=600)
+    run = subprocess.run(
+        [
+            sys.executable,
+            "-m",
+            "benchmarks",
+            "--quick",
+            "--output",
+            str(output),
+            "--fmu",
+            str(fmu_path),
+        ],
+        capture_output=True,
+        text=True,
+        cwd=ROOT,
+        timeout=600,
+    )
     assert run.returncode == 0, run.stdout + run.stderr
     text = output.read_text()
-    assert text.strip() == run.stdout.strip()       # printed and written alike
+    assert text.strip() == run.stdout.strip()  # printed and written alike
     lines = text.splitlines()
     assert "| benchmark | result | goal | met |" in lines
     for row in SUMMARY_ROWS:
@@ -47,14 +60,26 @@ def test_quick_run_writes_every_row(fmu_path, tmp_path):
 def test_the_floor_builder_makes_an_fmu_with_the_joints_variables(model_description, tmp_path):
     from fmpy import read_model_description
 
-    build = subprocess.run([sys.executable, "-c", "import sys; from benchmarks.floor import "
-                            "build_floor_fmu; print(build_floor_fmu(sys.argv[1], 'bare'))",
-                            str(tmp_path)], capture_output=True, text=True, cwd=ROOT, timeout=300)
+    build = subprocess.run(
+        [
+            sys.executable,
+            "-c",
+            "import sys; from benchmarks.floor import "
+            "build_floor_fmu; print(build_floor_fmu(sys.argv[1], 'bare'))",
+            str(tmp_path),
+        ],
+        capture_output=True,
+        text=True,
+        cwd=ROOT,
+        timeout=300,
+    )
     assert build.returncode == 0, build.stderr
     floor = read_model_description(build.stdout.strip())
 
     def signature(description):
-        return [(v.name, v.causality, v.variability, v.initial, v.start)
-                for v in description.modelVariables]
+        return [
+            (v.name, v.causality, v.variability, v.initial, v.start)
+            for v in description.modelVariables
+        ]
 
     assert signature(floor) == signature(model_description)

@@ -14,8 +14,12 @@ ROOT = Path(__file__).resolve().parents[1]
 
 
 def cardan_joint(*args, cwd=ROOT):
-    return subprocess.run([sys.executable, "-m", "cardan_joint.cli", *map(str, args)],
-                          capture_output=True, text=True, cwd=cwd)
+    return subprocess.run(
+        [sys.executable, "-m", "cardan_joint.cli", *map(str, args)],
+        capture_output=True,
+        text=True,
+        cwd=cwd,
+    )
 
 
 @pytest.fixture(scope="module")
@@ -38,42 +42,79 @@ def test_console_script_is_installed():
 
 def test_simulate_from_constant_inputs(built_fmu, tmp_path):
     out = tmp_path / "run.csv"
-    run = cardan_joint("simulate", "--fmu", built_fmu, "--set", "input_speed=20",
-                       "--set", "crosspiece_inertia_2=0.01", "--stop-time", "0.2",
-                       "--step", "1e-3", "--output", out)
+    run = cardan_joint(
+        "simulate",
+        "--fmu",
+        built_fmu,
+        "--set",
+        "input_speed=20",
+        "--set",
+        "crosspiece_inertia_2=0.01",
+        "--stop-time",
+        "0.2",
+        "--step",
+        "1e-3",
+        "--output",
+        out,
+    )
     assert run.returncode == 0, run.stderr
     rows = read_rows(out)
     assert len(rows) == 201
     assert float(rows[0]["input_speed"]) == 20.0
-    assert float(rows[0]["bend_angle"]) == 0.2            # the build's start value
+    assert float(rows[0]["bend_angle"]) == 0.2  # the build's start value
     assert out.with_suffix(".png").stat().st_size > 0
 
 
 def test_simulate_from_an_input_csv(built_fmu, tmp_path):
     inputs = tmp_path / "inputs.csv"
-    inputs.write_text("time,input_speed,input_acceleration,bend_angle\n"
-                      "0,10,10,0.1\n0.5,15,10,0.3\n")
+    inputs.write_text(
+        "time,input_speed,input_acceleration,bend_angle\n0,10,10,0.1\n0.5,15,10,0.3\n"
+    )
     out, plot = tmp_path / "csv_run.csv", tmp_path / "plots" / "csv_run.png"
-    run = cardan_joint("simulate", "--fmu", built_fmu, "--input", inputs, "--set",
-                       "load_torque=50", "--output", out, "--plot", plot,
-                       "--plot-variables", "output_speed", "input_torque")
+    run = cardan_joint(
+        "simulate",
+        "--fmu",
+        built_fmu,
+        "--input",
+        inputs,
+        "--set",
+        "load_torque=50",
+        "--output",
+        out,
+        "--plot",
+        plot,
+        "--plot-variables",
+        "output_speed",
+        "input_torque",
+    )
     assert run.returncode == 0, run.stderr
     rows = read_rows(out)
-    assert float(rows[-1]["time"]) == pytest.approx(0.5)       # the CSV's last time
+    assert float(rows[-1]["time"]) == pytest.approx(0.5)  # the CSV's last time
     assert float(rows[250]["input_speed"]) == pytest.approx(12.5)
     assert float(rows[-1]["load_torque"]) == 50.0
     assert plot.stat().st_size > 0
 
 
-@pytest.mark.parametrize("args, named", [
-    (("--set", "bend_angle=1.5"), "bend_angle"),               # refused by the FMU's guard
-    (("--set", "bend_angel=0.5"), "bend_angel"),               # no such variable
-    (("--set", "output_speed=1"), "output_speed"),             # not settable
-    (("--set", "load_torque=abc"), "load_torque"),
-])
+@pytest.mark.parametrize(
+    "args, named",
+    [
+        (("--set", "bend_angle=1.5"), "bend_angle"),  # refused by the FMU's guard
+        (("--set", "bend_angel=0.5"), "bend_angel"),  # no such variable
+        (("--set", "output_speed=1"), "output_speed"),  # not settable
+        (("--set", "load_torque=abc"), "load_torque"),
+    ],
+)
 def test_bad_input_exits_non_zero_naming_the_variable(built_fmu, tmp_path, args, named):
-    run = cardan_joint("simulate", "--fmu", built_fmu, "--stop-time", "0.1",
-                       "--output", tmp_path / "bad.csv", *args)
+    run = cardan_joint(
+        "simulate",
+        "--fmu",
+        built_fmu,
+        "--stop-time",
+        "0.1",
+        "--output",
+        tmp_path / "bad.csv",
+        *args,
+    )
     assert run.returncode != 0
     assert named in run.stderr
     assert "Traceback" not in run.stderr
@@ -82,8 +123,9 @@ def test_bad_input_exits_non_zero_naming_the_variable(built_fmu, tmp_path, args,
 def test_bad_input_csv_column_is_named(built_fmu, tmp_path):
     inputs = tmp_path / "typo.csv"
     inputs.write_text("time,input_sped\n0,1\n1,2\n")
-    run = cardan_joint("simulate", "--fmu", built_fmu, "--input", inputs,
-                       "--output", tmp_path / "bad.csv")
+    run = cardan_joint(
+        "simulate", "--fmu", built_fmu, "--input", inputs, "--output", tmp_path / "bad.csv"
+    )
     assert run.returncode != 0 and "input_sped" in run.stderr
     assert "Traceback" not in run.stderr
 
@@ -95,24 +137,41 @@ def test_missing_fmu_is_a_message_not_a_traceback(tmp_path):
 
 
 def test_sweep_subcommand_runs_the_shared_sweep(built_fmu, tmp_path):
-    run = cardan_joint("sweep", "--serial", "--fmu", built_fmu, "--bend-angles", "5",
-                       "--speeds", "1000", "--distributions", "T1", "--revolutions", "1",
-                       "--steps-per-revolution", "36", "--out", tmp_path, "--no-progress")
+    run = cardan_joint(
+        "sweep",
+        "--serial",
+        "--fmu",
+        built_fmu,
+        "--bend-angles",
+        "5",
+        "--speeds",
+        "1000",
+        "--distributions",
+        "T1",
+        "--revolutions",
+        "1",
+        "--steps-per-revolution",
+        "36",
+        "--out",
+        tmp_path,
+        "--no-progress",
+    )
     assert run.returncode == 0, run.stderr
-    rows = results.read_table(tmp_path / "sweep.csv")         # the CLI's own name
+    rows = results.read_table(tmp_path / "sweep.csv")  # the CLI's own name
     assert list(rows["status"]) == ["ok"]
     assert (tmp_path / "sweep.png").stat().st_size > 0
-    assert not (tmp_path / "design_sweep.csv").exists()       # the example's is left alone
+    assert not (tmp_path / "design_sweep.csv").exists()  # the example's is left alone
 
 
 def test_a_refused_run_writes_what_it_computed_and_says_where_it_stopped(built_fmu, tmp_path):
-    inputs = tmp_path / "bend_ramp.csv"          # the bend reaches the 80 deg guard at 0.4 s
+    inputs = tmp_path / "bend_ramp.csv"  # the bend reaches the 80 deg guard at 0.4 s
     inputs.write_text("time,bend_angle,bend_angle_rate\n0,1.0,1\n1,2.0,1\n")
     out = tmp_path / "refused.csv"
-    run = cardan_joint("simulate", "--fmu", built_fmu, "--input", inputs, "--step", "0.1",
-                       "--output", out)
+    run = cardan_joint(
+        "simulate", "--fmu", built_fmu, "--input", inputs, "--step", "0.1", "--output", out
+    )
     assert run.returncode == 1
-    assert "stopped at t = 0.3 s of 1 s" in run.stderr        # rounded, not 0.30000000000000004
+    assert "stopped at t = 0.3 s of 1 s" in run.stderr  # rounded, not 0.30000000000000004
     assert f"{out} (" in run.stderr and "Traceback" not in run.stderr
     rows = read_rows(out)
     assert rows["time"][-1] == pytest.approx(0.3) and len(rows) >= 4
@@ -163,8 +222,9 @@ def test_the_command_leaves_argv_and_stderr_alone(built_fmu, tmp_path, monkeypat
 
     def fake_simulate(fmu, stop_time, output_interval, inputs, **options):
         seen.append((sys.argv[0], sys.stderr))
-        result = np.zeros(2, dtype=[("time", float)] + [(n, float) for n in
-                                                         table.INPUTS + table.OUTPUTS])
+        result = np.zeros(
+            2, dtype=[("time", float)] + [(n, float) for n in table.INPUTS + table.OUTPUTS]
+        )
         result["time"] = (0.0, stop_time)
         return result
 
@@ -174,7 +234,20 @@ def test_the_command_leaves_argv_and_stderr_alone(built_fmu, tmp_path, monkeypat
 
     monkeypatch.setattr(cardan_joint.simulate, "simulate", fake_simulate)
     monkeypatch.setattr(cardan_joint.build, "main", fake_build)
-    assert cli.main(["simulate", "--fmu", str(built_fmu), "--stop-time", "0.1",
-                     "--output", str(tmp_path / "s.csv"), "--no-progress"]) == 0
+    assert (
+        cli.main(
+            [
+                "simulate",
+                "--fmu",
+                str(built_fmu),
+                "--stop-time",
+                "0.1",
+                "--output",
+                str(tmp_path / "s.csv"),
+                "--no-progress",
+            ]
+        )
+        == 0
+    )
     assert cli.main(["build", "--dest", str(tmp_path)]) == 0
     assert seen == [(argv0, stderr)] * 2

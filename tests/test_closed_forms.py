@@ -7,10 +7,10 @@ import mpmath
 import numpy as np
 from hypothesis import given, settings
 from hypothesis import strategies as st
-
-from cardan_joint.physics import joint_response, max_cardan_error, roll_angle
 from symbolic import derived, frame
 from tolerance import assert_close
+
+from cardan_joint.physics import joint_response, max_cardan_error, roll_angle
 
 GUARD = math.radians(85.0)
 angles = st.floats(-20.0, 20.0)
@@ -37,16 +37,27 @@ def test_kinematics_and_angular_velocity_match_computer_algebra(psi, beta, w1, a
     r = joint_response(psi, beta, w1, a1, rb, ab)
     ref = derived(psi, beta, w1, a1, rb, ab)
     speed, acceleration = _scales(w1, a1, rb, ab)
-    assert_close(r.cardan_error, ref["cardan_error"], 1e-12, max_cardan_error(beta) + 1e-28,
-                 "cardan error")
+    assert_close(
+        r.cardan_error, ref["cardan_error"], 1e-12, max_cardan_error(beta) + 1e-28, "cardan error"
+    )
     assert_close(r.speed_ratio, ref["speed_ratio"], 1e-12, what="speed ratio")
     assert_close(r.output_speed, ref["output_speed"], 1e-12, speed, "output speed")
-    assert_close(r.output_acceleration, ref["output_acceleration"], 1e-11, acceleration,
-                 "output acceleration")
+    assert_close(
+        r.output_acceleration,
+        ref["output_acceleration"],
+        1e-11,
+        acceleration,
+        "output acceleration",
+    )
     for k in (1, 2, 3):
         assert_close(r[4 + k - 1], ref[f"omega_{k}"], 1e-12, speed, f"Omega{k}")
-        assert_close(getattr(r, f"crosspiece_angular_acceleration_{k}"), ref[f"domega_{k}"],
-                     1e-11, acceleration, f"dOmega{k}")
+        assert_close(
+            getattr(r, f"crosspiece_angular_acceleration_{k}"),
+            ref[f"domega_{k}"],
+            1e-11,
+            acceleration,
+            f"dOmega{k}",
+        )
 
 
 def _body_torque_reference(psi, beta, w1, a1, rb, ab, inertia):
@@ -56,8 +67,11 @@ def _body_torque_reference(psi, beta, w1, a1, rb, ab, inertia):
         dw = [ref[f"domega_{k}"] for k in (1, 2, 3)]
         i = [mpmath.mpf(x) for x in inertia]
         moment = [i[k] * w[k] for k in range(3)]
-        gyro = [w[1] * moment[2] - w[2] * moment[1], w[2] * moment[0] - w[0] * moment[2],
-                w[0] * moment[1] - w[1] * moment[0]]
+        gyro = [
+            w[1] * moment[2] - w[2] * moment[1],
+            w[2] * moment[0] - w[0] * moment[2],
+            w[0] * moment[1] - w[1] * moment[0],
+        ]
         torque = [i[k] * dw[k] + gyro[k] for k in range(3)]
         energy = sum(i[k] * w[k] ** 2 for k in range(3)) / 2
     return torque, energy
@@ -71,14 +85,20 @@ def test_euler_torques_energy_and_yoke_reactions(psi, beta, w1, a1, rb, ab, iner
     torque, energy = _body_torque_reference(psi, beta, w1, a1, rb, ab, inertia)
     torque_scale = max(inertia) * acceleration + 1e-9
     for k in (1, 2, 3):
-        assert_close(getattr(r, f"crosspiece_torque_{k}"), torque[k - 1], 1e-11, torque_scale,
-                     f"M{k}")
-    assert_close(r.crosspiece_kinetic_energy, energy, 1e-12, max(inertia) * speed ** 2 + 1e-300,
-                 "kinetic energy")
+        assert_close(
+            getattr(r, f"crosspiece_torque_{k}"), torque[k - 1], 1e-11, torque_scale, f"M{k}"
+        )
+    assert_close(
+        r.crosspiece_kinetic_energy,
+        energy,
+        1e-12,
+        max(inertia) * speed**2 + 1e-300,
+        "kinetic energy",
+    )
 
     # Yoke reactions: the six trunnion/balance equations solved as they stand.
     R = np.array(frame(psi, beta).tolist(), dtype=float)
-    p1, p2, p3 = R[:, 0], R[:, 1], R[:, 2]
+    p1, p2 = R[:, 0], R[:, 1]
     z, y, z2 = np.eye(3)[2], np.eye(3)[1], np.array([math.sin(beta), 0.0, math.cos(beta)])
     M_fixed = R @ np.array([float(m) for m in torque])
     A = np.zeros((6, 6))
@@ -88,10 +108,16 @@ def test_euler_torques_energy_and_yoke_reactions(psi, beta, w1, a1, rb, ab, iner
     tau1, tau2 = tau[:3], tau[3:]
     scale = abs(load) / math.cos(beta) + torque_scale / math.cos(beta) ** 2
     assert_close(r.input_torque, tau1 @ z, 1e-9, scale, "input torque")
-    assert_close(r.input_yoke_moment, np.linalg.norm(tau1 - (tau1 @ z) * z), 1e-9, scale,
-                 "input yoke moment")
-    assert_close(r.output_yoke_moment, np.linalg.norm(tau2 - (tau2 @ z2) * z2), 1e-9, scale,
-                 "output yoke moment")
+    assert_close(
+        r.input_yoke_moment, np.linalg.norm(tau1 - (tau1 @ z) * z), 1e-9, scale, "input yoke moment"
+    )
+    assert_close(
+        r.output_yoke_moment,
+        np.linalg.norm(tau2 - (tau2 @ z2) * z2),
+        1e-9,
+        scale,
+        "output yoke moment",
+    )
     assert_close(r.hinge_torque, tau2 @ y, 1e-9, scale, "hinge torque")
 
 
@@ -102,20 +128,36 @@ def _quaternion_of(R):
     k = int(np.argmax(candidates))
     if k == 0:
         q0 = math.sqrt(1 + trace) / 2
-        q = [q0, (R[2, 1] - R[1, 2]) / (4 * q0), (R[0, 2] - R[2, 0]) / (4 * q0),
-             (R[1, 0] - R[0, 1]) / (4 * q0)]
+        q = [
+            q0,
+            (R[2, 1] - R[1, 2]) / (4 * q0),
+            (R[0, 2] - R[2, 0]) / (4 * q0),
+            (R[1, 0] - R[0, 1]) / (4 * q0),
+        ]
     elif k == 1:
         q1 = math.sqrt(1 + 2 * R[0, 0] - trace) / 2
-        q = [(R[2, 1] - R[1, 2]) / (4 * q1), q1, (R[0, 1] + R[1, 0]) / (4 * q1),
-             (R[0, 2] + R[2, 0]) / (4 * q1)]
+        q = [
+            (R[2, 1] - R[1, 2]) / (4 * q1),
+            q1,
+            (R[0, 1] + R[1, 0]) / (4 * q1),
+            (R[0, 2] + R[2, 0]) / (4 * q1),
+        ]
     elif k == 2:
         q2 = math.sqrt(1 + 2 * R[1, 1] - trace) / 2
-        q = [(R[0, 2] - R[2, 0]) / (4 * q2), (R[0, 1] + R[1, 0]) / (4 * q2), q2,
-             (R[1, 2] + R[2, 1]) / (4 * q2)]
+        q = [
+            (R[0, 2] - R[2, 0]) / (4 * q2),
+            (R[0, 1] + R[1, 0]) / (4 * q2),
+            q2,
+            (R[1, 2] + R[2, 1]) / (4 * q2),
+        ]
     else:
         q3 = math.sqrt(1 + 2 * R[2, 2] - trace) / 2
-        q = [(R[1, 0] - R[0, 1]) / (4 * q3), (R[0, 2] + R[2, 0]) / (4 * q3),
-             (R[1, 2] + R[2, 1]) / (4 * q3), q3]
+        q = [
+            (R[1, 0] - R[0, 1]) / (4 * q3),
+            (R[0, 2] + R[2, 0]) / (4 * q3),
+            (R[1, 2] + R[2, 1]) / (4 * q3),
+            q3,
+        ]
     return np.array(q)
 
 
@@ -146,5 +188,9 @@ def test_roll_angle_is_the_rotation_about_the_input_pin(psi, beta):
 def test_cardan_error_keeps_relative_precision_at_tiny_bend():
     for beta in (1e-3, 1e-5, 1e-7):
         ref = derived(0.7, beta, 1.0)["cardan_error"]
-        assert_close(joint_response(0.7, beta, 1.0).cardan_error, ref, 1e-13,
-                     what=f"cardan error at bend {beta}")
+        assert_close(
+            joint_response(0.7, beta, 1.0).cardan_error,
+            ref,
+            1e-13,
+            what=f"cardan error at bend {beta}",
+        )

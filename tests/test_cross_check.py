@@ -5,24 +5,38 @@ import sys
 
 import numpy as np
 import pytest
+from conftest import ROOT, build_fmu
 from fmpy import simulate_fmu
 from fmpy.cross_check import validate_result
 from fmpy.cross_check.validate_vendor_repo import validate_test_fmu
 from fmpy.util import read_csv, read_ref_opt_file
 
 from cardan_joint import cross_check
-from conftest import ROOT, build_fmu
 
-FILES = {"UniversalJoint.fmu", "UniversalJoint_in.csv", "UniversalJoint_ref.opt",
-         "UniversalJoint_ref.csv", "README.md"}
+FILES = {
+    "UniversalJoint.fmu",
+    "UniversalJoint_in.csv",
+    "UniversalJoint_ref.opt",
+    "UniversalJoint_ref.csv",
+    "README.md",
+}
 
 
 @pytest.fixture(scope="module")
 def folder(tmp_path_factory):
     dest = tmp_path_factory.mktemp("cross_check")
     build_fmu(dest, "--cross-check")
-    return (dest / "cross-check" / "fmus" / "2.0" / "cs" / "linux64" / "cardan_joint"
-            / cross_check.tool_version() / "UniversalJoint")
+    return (
+        dest
+        / "cross-check"
+        / "fmus"
+        / "2.0"
+        / "cs"
+        / "linux64"
+        / "cardan_joint"
+        / cross_check.tool_version()
+        / "UniversalJoint"
+    )
 
 
 def test_the_folder_holds_the_cross_check_files_and_passes_fmpys_validator(folder):
@@ -39,15 +53,20 @@ def test_the_fmu_reproduces_the_reference_with_the_options_and_inputs(folder):
     options = read_ref_opt_file(str(folder / "UniversalJoint_ref.opt"))
     reference = read_csv(folder / "UniversalJoint_ref.csv")
     names = list(reference.dtype.names[1:])
-    result = simulate_fmu(str(folder / "UniversalJoint.fmu"), start_time=options["StartTime"],
-                          stop_time=options["StopTime"], output_interval=options["StepSize"],
-                          input=read_csv(folder / "UniversalJoint_in.csv"), output=names)
+    result = simulate_fmu(
+        str(folder / "UniversalJoint.fmu"),
+        start_time=options["StartTime"],
+        stop_time=options["StopTime"],
+        output_interval=options["StepSize"],
+        input=read_csv(folder / "UniversalJoint_in.csv"),
+        output=names,
+    )
     assert validate_result(result, reference, options["StartTime"], options["StopTime"]) is None
     np.testing.assert_array_equal(result["time"], reference["time"])
     for name in names:
         scale = np.max(np.abs(reference[name]))
         error = np.max(np.abs(result[name] - reference[name]))
-        assert error <= 1e-12 * scale, (name, error, scale)   # measured: <= 7e-15
+        assert error <= 1e-12 * scale, (name, error, scale)  # measured: <= 7e-15
 
 
 def test_the_reference_files_in_docs_are_current(folder, tmp_path):
@@ -55,15 +74,27 @@ def test_the_reference_files_in_docs_are_current(folder, tmp_path):
     for path in fresh:
         committed = ROOT / "docs" / "UniversalJoint" / path.name
         assert committed.read_bytes() == path.read_bytes(), (
-            f"{committed} is stale: run python -m cardan_joint.cross_check")
+            f"{committed} is stale: run python -m cardan_joint.cross_check"
+        )
         assert (folder / path.name).read_bytes() == path.read_bytes()
     assert (folder / "README.md").read_bytes() == (cross_check.DOCS / "README.md").read_bytes()
 
 
 def test_cross_check_refuses_a_variant_whose_reference_it_does_not_have(tmp_path):
-    run = subprocess.run([sys.executable, str(ROOT / "build_fmu.py"), "--dest", str(tmp_path),
-                          "--cross-check", "--set", "bend_angle=0.1"],
-                         capture_output=True, text=True, cwd=ROOT)
+    run = subprocess.run(
+        [
+            sys.executable,
+            str(ROOT / "build_fmu.py"),
+            "--dest",
+            str(tmp_path),
+            "--cross-check",
+            "--set",
+            "bend_angle=0.1",
+        ],
+        capture_output=True,
+        text=True,
+        cwd=ROOT,
+    )
     assert run.returncode == 2
     assert "--cross-check takes the default model" in run.stderr
     assert not any(tmp_path.iterdir())

@@ -8,13 +8,13 @@ import zipfile
 
 import numpy as np
 import pytest
+from conftest import ROOT, build_fmu
 
 from cardan_joint import driveline_system as system
 from cardan_joint.instance import JointInstance
 from cardan_joint.physics import Reason, Refusal
 from cardan_joint.physics.driveline import Load, Motor
 from cardan_joint.ssp import Component, write_ssp
-from conftest import ROOT, build_fmu
 
 
 @pytest.fixture(scope="module")
@@ -43,7 +43,7 @@ def _ode_reference(motor, load_torques, steps):
 
     w, angle, out = motor.speed_start, motor.angle_start, []
     for load_torque, h in zip(load_torques, steps):
-        def rhs(t, y):
+        def rhs(t, y, load_torque=load_torque):
             torque = motor.stall_torque * (1.0 - y[0] / motor.no_load_speed)
             return [(torque - load_torque) / motor.rotor_inertia, y[0]]
         solution = solve_ivp(rhs, (0.0, h), [w, angle], method="DOP853", rtol=1e-13, atol=1e-12)

@@ -19,8 +19,9 @@ def driveshaft():
     examples = str(ROOT / "examples")
     sys.path.insert(0, examples)
     try:
-        spec = importlib.util.spec_from_file_location("driveshaft_example",
-                                                      ROOT / "examples" / "driveshaft.py")
+        spec = importlib.util.spec_from_file_location(
+            "driveshaft_example", ROOT / "examples" / "driveshaft.py"
+        )
         module = importlib.util.module_from_spec(spec)
         spec.loader.exec_module(module)
     finally:
@@ -84,7 +85,22 @@ def test_phase_error_follows_the_closed_form_composition(driveshaft, fmu):
 
 
 def test_script_writes_its_tables_and_figure(driveshaft, fmu_path, tmp_path):
-    driveshaft.main(["--fmu", str(fmu_path), "--out", str(tmp_path), "--revolutions", "1",
-                     "--steps", "1e-2", "1e-3", "--phase-errors", "0", "1", "5"])
+    driveshaft.main(
+        [
+            "--fmu",
+            str(fmu_path),
+            "--out",
+            str(tmp_path),
+            "--revolutions",
+            "1",
+            "--steps",
+            "1e-2",
+            "1e-3",
+            "--phase-errors",
+            "0",
+            "1",
+            "5",
+        ]
+    )
     for name in ("driveshaft_steps.csv", "driveshaft_phase.csv", "driveshaft.png"):
         assert (tmp_path / name).stat().st_size > 0

@@ -6,25 +6,44 @@ from cardan_joint import variables as table
 
 # docs/UniversalJoint/README.md's interface table, in its order.
 PHYSICS_NAMES = {
-    "input": ["input_speed", "input_acceleration", "bend_angle", "bend_angle_rate",
-              "bend_angle_acceleration", "load_torque"],
-    "parameter": ["yoke_phase", "input_angle_start", "crosspiece_inertia_1",
-                  "crosspiece_inertia_2", "crosspiece_inertia_3", "max_bend_angle"],
-    "output": ["input_angle", "output_angle", "output_speed", "output_acceleration",
-               "cardan_error", "speed_ratio", "crosspiece_angular_velocity_1",
-               "crosspiece_angular_velocity_2", "crosspiece_angular_velocity_3",
-               "crosspiece_torque_1", "crosspiece_torque_2", "crosspiece_torque_3",
-               "crosspiece_kinetic_energy", "crosspiece_quaternion_0", "crosspiece_quaternion_1",
-               "crosspiece_quaternion_2", "crosspiece_quaternion_3", "input_torque",
-               "input_yoke_moment", "output_yoke_moment"],
+    "input": (
+        "input_speed input_acceleration bend_angle bend_angle_rate "
+        "bend_angle_acceleration load_torque"
+    ).split(),
+    "parameter": (
+        "yoke_phase input_angle_start crosspiece_inertia_1 crosspiece_inertia_2 "
+        "crosspiece_inertia_3 max_bend_angle"
+    ).split(),
+    "output": (
+        "input_angle output_angle output_speed output_acceleration cardan_error "
+        "speed_ratio crosspiece_angular_velocity_1 crosspiece_angular_velocity_2 "
+        "crosspiece_angular_velocity_3 crosspiece_torque_1 crosspiece_torque_2 "
+        "crosspiece_torque_3 crosspiece_kinetic_energy crosspiece_quaternion_0 "
+        "crosspiece_quaternion_1 crosspiece_quaternion_2 crosspiece_quaternion_3 "
+        "input_torque input_yoke_moment output_yoke_moment"
+    ).split(),
 }
-PHYSICS_UNITS = {"input_speed": "rad/s", "input_acceleration": "rad/s2", "bend_angle": "rad",
-                 "bend_angle_rate": "rad/s", "bend_angle_acceleration": "rad/s2",
-                 "load_torque": "N.m", "yoke_phase": "rad", "input_angle_start": "rad",
-                 "max_bend_angle": "rad", "input_angle": "rad", "output_angle": "rad",
-                 "output_speed": "rad/s", "output_acceleration": "rad/s2", "cardan_error": "rad",
-                 "speed_ratio": "1", "crosspiece_kinetic_energy": "J", "input_torque": "N.m",
-                 "input_yoke_moment": "N.m", "output_yoke_moment": "N.m"}
+PHYSICS_UNITS = {
+    "input_speed": "rad/s",
+    "input_acceleration": "rad/s2",
+    "bend_angle": "rad",
+    "bend_angle_rate": "rad/s",
+    "bend_angle_acceleration": "rad/s2",
+    "load_torque": "N.m",
+    "yoke_phase": "rad",
+    "input_angle_start": "rad",
+    "max_bend_angle": "rad",
+    "input_angle": "rad",
+    "output_angle": "rad",
+    "output_speed": "rad/s",
+    "output_acceleration": "rad/s2",
+    "cardan_error": "rad",
+    "speed_ratio": "1",
+    "crosspiece_kinetic_energy": "J",
+    "input_torque": "N.m",
+    "input_yoke_moment": "N.m",
+    "output_yoke_moment": "N.m",
+}
 
 
 def test_fmpy_validator_reports_no_problem(fmu_path):
@@ -33,8 +52,9 @@ def test_fmpy_validator_reports_no_problem(fmu_path):
 
 def test_interface_is_exactly_physics_md(model_description):
     for causality, names in PHYSICS_NAMES.items():
-        assert [v.name for v in model_description.modelVariables
-                if v.causality == causality] == names
+        assert [
+            v.name for v in model_description.modelVariables if v.causality == causality
+        ] == names
     assert len(model_description.modelVariables) == sum(map(len, PHYSICS_NAMES.values()))
     by_name = {v.name: v for v in model_description.modelVariables}
     for name, unit in PHYSICS_UNITS.items():
@@ -64,7 +84,11 @@ def test_display_units_deg_and_rpm(model_description):
     assert abs(deg.factor * 3.141592653589793 - 180.0) < 1e-12
     assert abs(rpm.factor * 2 * 3.141592653589793 - 60.0) < 1e-12
     assert units["rad"].baseUnit.rad == 1
-    assert (units["N.m"].baseUnit.kg, units["N.m"].baseUnit.m, units["N.m"].baseUnit.s) == (1, 2, -2)
+    assert (units["N.m"].baseUnit.kg, units["N.m"].baseUnit.m, units["N.m"].baseUnit.s) == (
+        1,
+        2,
+        -2,
+    )
     by_name = {v.name: v for v in model_description.modelVariables}
     for v in model_description.modelVariables:
         if v.unit == "rad":

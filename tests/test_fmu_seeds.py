@@ -5,14 +5,14 @@ import math
 import numpy as np
 import pytest
 from fmpy import simulate_fmu
+from test_seeds import DISTRIBUTIONS, MAKER_TABLE, truncated
 
 from cardan_joint.instance import JointInstance
-from test_seeds import DISTRIBUTIONS, MAKER_TABLE, truncated
 
 
 def _parabola_peak(x, y):
     k = int(np.argmax(y))
-    (x0, x1, x2), (y0, y1, y2) = x[k - 1:k + 2], y[k - 1:k + 2]
+    (x0, x1, _), (y0, y1, y2) = x[k - 1 : k + 2], y[k - 1 : k + 2]
     denominator = y0 - 2 * y1 + y2
     shift = 0.5 * (y0 - y2) / denominator
     return x1 + shift * (x1 - x0), y1 - 0.25 * (y0 - y2) * shift
@@ -21,9 +21,13 @@ def _parabola_peak(x, y):
 @pytest.mark.parametrize("bend_deg, error_deg, at_deg", MAKER_TABLE)
 def test_maker_table_by_the_fmu(fmu_path, bend_deg, error_deg, at_deg):
     # One rad/s for a quarter turn, sampled every 1e-4 rad.
-    result = simulate_fmu(str(fmu_path), stop_time=math.pi / 2, output_interval=1e-4,
-                          start_values={"input_speed": 1.0, "bend_angle": math.radians(bend_deg)},
-                          output=["input_angle", "cardan_error"])
+    result = simulate_fmu(
+        str(fmu_path),
+        stop_time=math.pi / 2,
+        output_interval=1e-4,
+        start_values={"input_speed": 1.0, "bend_angle": math.radians(bend_deg)},
+        output=["input_angle", "cardan_error"],
+    )
     at, peak = _parabola_peak(result["input_angle"], result["cardan_error"])
     assert error_deg in (truncated(math.degrees(peak)), round(math.degrees(peak), 3))
     assert round(math.degrees(at), 1) == at_deg
@@ -33,12 +37,13 @@ def test_maker_table_by_the_fmu(fmu_path, bend_deg, error_deg, at_deg):
 def test_tataru_extremes_and_mean_by_the_fmu(fmu_path, model_description, unzipped_fmu, alpha):
     # omega1 = 10 rad/s for 1 s; steps land on phi1 = k pi/2, where the extremes are.
     w1 = 10.0
-    joint = JointInstance(model_description, unzipped_fmu,
-                          start_values={"input_speed": w1, "bend_angle": alpha})
+    joint = JointInstance(
+        model_description, unzipped_fmu, start_values={"input_speed": w1, "bend_angle": alpha}
+    )
     quarter = math.pi / 2 / w1
     try:
         speeds = [joint.get("output_speed")["output_speed"]]
-        for _ in range(6):                       # 6 quarter turns < 1 s
+        for _ in range(6):  # 6 quarter turns < 1 s
             for _ in range(10):
                 joint.step(quarter / 10)
             speeds.append(joint.get("output_speed")["output_speed"])
@@ -46,11 +51,18 @@ def test_tataru_extremes_and_mean_by_the_fmu(fmu_path, model_description, unzipp
         joint.close()
     w_max, w_min = w1 / math.cos(alpha), w1 * math.cos(alpha)
     np.testing.assert_allclose(speeds, [w_max, w_min] * 3 + [w_max], rtol=1e-12)
-    assert math.isclose((speeds[0] + speeds[1]) / 2,
-                        w1 * (1 + math.cos(alpha) ** 2) / (2 * math.cos(alpha)), rel_tol=1e-12)
-    sampled = simulate_fmu(str(fmu_path), stop_time=1.0, output_interval=1e-3,
-                           start_values={"input_speed": w1, "bend_angle": alpha},
-                           output=["output_speed"])["output_speed"]
+    assert math.isclose(
+        (speeds[0] + speeds[1]) / 2,
+        w1 * (1 + math.cos(alpha) ** 2) / (2 * math.cos(alpha)),
+        rel_tol=1e-12,
+    )
+    sampled = simulate_fmu(
+        str(fmu_path),
+        stop_time=1.0,
+        output_interval=1e-3,
+        start_values={"input_speed": w1, "bend_angle": alpha},
+        output=["output_speed"],
+    )["output_speed"]
     assert w_min * (1 - 1e-14) <= sampled.min() and sampled.max() <= w_max * (1 + 1e-14)
 
 
@@ -59,14 +71,18 @@ PAPER = {"input_speed": 0.5, "bend_angle": math.pi / 6, "yoke_phase": math.pi / 
 
 def _paper_run(fmu_path, inertia):
     start = dict(PAPER, **{f"crosspiece_inertia_{k}": i for k, i in enumerate(inertia, start=1)})
-    return simulate_fmu(str(fmu_path), stop_time=4 * math.pi / 0.5, output_interval=0.01,
-                        start_values=start)
+    return simulate_fmu(
+        str(fmu_path), stop_time=4 * math.pi / 0.5, output_interval=0.01, start_values=start
+    )
 
 
 def test_paper_identities_by_the_fmu(fmu_path):
     r = _paper_run(fmu_path, (0.026, 0.026, 0.026))
-    np.testing.assert_allclose(r["crosspiece_angular_velocity_2"] ** 2
-                               + r["crosspiece_angular_velocity_3"] ** 2, 0.25, rtol=1e-14)
+    np.testing.assert_allclose(
+        r["crosspiece_angular_velocity_2"] ** 2 + r["crosspiece_angular_velocity_3"] ** 2,
+        0.25,
+        rtol=1e-14,
+    )
     q = np.array([r[f"crosspiece_quaternion_{k}"] for k in range(4)])
     psi = r["input_angle"] + math.pi / 2
     np.testing.assert_allclose(q[0] ** 2 + q[1] ** 2, np.cos(psi / 2) ** 2, atol=1e-14)

@@ -29,8 +29,13 @@ def test_simulate_fmu_with_structured_input_arrays_matches_the_physics_package(f
     signals["bend_angle_rate"] = 0.4 * np.cos(2 * t)
     signals["bend_angle"] = 0.3 + 0.2 * np.sin(2 * t)
     signals["load_torque"] = 50 + 10 * t
-    result = simulate_fmu(str(fmu_path), stop_time=n * h, output_interval=h, input=signals,
-                          start_values={"yoke_phase": 0.4, "crosspiece_inertia_2": 0.05})
+    result = simulate_fmu(
+        str(fmu_path),
+        stop_time=n * h,
+        output_interval=h,
+        input=signals,
+        start_values={"yoke_phase": 0.4, "crosspiece_inertia_2": 0.05},
+    )
     assert len(result) == n + 1
     # FMPy records right after each doStep and sets the next inputs only then, so
     # sample k > 0 shows the inputs of step k-1 carried along their polynomials.
@@ -52,10 +57,14 @@ def test_low_level_loop_is_bit_for_bit_the_physics_package(model_description, un
     model = CardanJoint(yoke_phase=1.1)
     try:
         for _ in range(300):
-            inputs = dict(input_speed=rng.uniform(-100, 100), input_acceleration=rng.uniform(-50, 50),
-                          bend_angle=rng.uniform(-1.2, 1.2), bend_angle_rate=rng.uniform(-0.1, 0.1),
-                          bend_angle_acceleration=rng.uniform(-0.1, 0.1),
-                          load_torque=rng.uniform(-10, 10))
+            inputs = dict(
+                input_speed=rng.uniform(-100, 100),
+                input_acceleration=rng.uniform(-50, 50),
+                bend_angle=rng.uniform(-1.2, 1.2),
+                bend_angle_rate=rng.uniform(-0.1, 0.1),
+                bend_angle_acceleration=rng.uniform(-0.1, 0.1),
+                load_torque=rng.uniform(-10, 10),
+            )
             joint.set(**inputs)
             for name, value in inputs.items():
                 setattr(model, name, value)
@@ -92,11 +101,16 @@ def _exact_after(speed, h, steps, phase, bend):
     return gamma1, gamma1 + Fraction(cardan_error(fraction + phase, bend))
 
 
-def test_a_million_revolutions_through_the_fmu_stay_within_1e_8_rad(model_description, unzipped_fmu):
+def test_a_million_revolutions_through_the_fmu_stay_within_1e_8_rad(
+    model_description, unzipped_fmu
+):
     # 1e4 steps of 0.5 s at 100.3 rev/s, then 1e5 steps of 0.01 s continuing the same run.
     speed, phase, bend = 2 * math.pi * 200.6, 0.3, 0.5
-    joint = JointInstance(model_description, unzipped_fmu, start_values=dict(
-        input_speed=speed, bend_angle=bend, yoke_phase=phase))
+    joint = JointInstance(
+        model_description,
+        unzipped_fmu,
+        start_values=dict(input_speed=speed, bend_angle=bend, yoke_phase=phase),
+    )
     try:
         for _ in range(10_000):
             joint.step(0.5)

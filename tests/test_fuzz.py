@@ -12,17 +12,37 @@ from cardan_joint.instance import JointInstance
 from cardan_joint.physics import CardanJoint
 
 DISCARD = 2
-nasty = st.sampled_from([math.nan, math.inf, -math.inf, 1e308, -1e308, 1.5707963267948966,
-                         1.3962634015954636, -1.3962634015954636, 0.0, -0.0, 5e-324])
+nasty = st.sampled_from(
+    [
+        math.nan,
+        math.inf,
+        -math.inf,
+        1e308,
+        -1e308,
+        1.5707963267948966,
+        1.3962634015954636,
+        -1.3962634015954636,
+        0.0,
+        -0.0,
+        5e-324,
+    ]
+)
 values = st.one_of(st.floats(-100, 100), st.floats(-1.6, 1.6), nasty)
 steps = st.one_of(st.floats(1e-5, 0.5), st.sampled_from([0.0, -1e-3, math.nan, math.inf, 1e300]))
-actions = st.lists(st.one_of(
-    st.tuples(st.just("set"), st.sampled_from(table.INPUTS), values),
-    st.tuples(st.just("step"), steps),
-    st.tuples(st.just("rollback"))), min_size=1, max_size=40)
+actions = st.lists(
+    st.one_of(
+        st.tuples(st.just("set"), st.sampled_from(table.INPUTS), values),
+        st.tuples(st.just("step"), steps),
+        st.tuples(st.just("rollback")),
+    ),
+    min_size=1,
+    max_size=40,
+)
 
 
-@settings(max_examples=150, deadline=None, suppress_health_check=[HealthCheck.function_scoped_fixture])
+@settings(
+    max_examples=150, deadline=None, suppress_health_check=[HealthCheck.function_scoped_fixture]
+)
 @given(actions)
 def test_random_sequences_never_corrupt_the_joint(model_description, unzipped_fmu, sequence):
     joint = JointInstance(model_description, unzipped_fmu, name="fuzz")

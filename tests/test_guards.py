@@ -10,7 +10,7 @@ from cardan_joint import variables as table
 from cardan_joint.physics import CardanJoint, Reason
 
 GUARD = table.BY_NAME["max_bend_angle"].start
-TINY = 1e-9                        # a step too short for anything but the input itself to matter
+TINY = 1e-9  # a step too short for anything but the input itself to matter
 RANGED_INPUTS = [n for n in table.INPUTS if n != "bend_angle"]
 RANGED_PARAMETERS = [n for n in table.PARAMETERS if n != "max_bend_angle"]
 
@@ -22,7 +22,7 @@ def refused(joint, step_size, code, variable):
     assert refusal is not None, (code, variable)
     assert (refusal.code, refusal.variable) == (code, variable), refusal.message
     assert refusal.time == joint.time
-    assert repr(joint.state()) == repr(before)          # repr: NaN equals itself
+    assert repr(joint.state()) == repr(before)  # repr: NaN equals itself
     return refusal
 
 
@@ -36,7 +36,7 @@ def test_each_input_beyond_its_range_is_refused(name, sign):
     assert (refusal.value, refusal.limit) == (sign * 2.0 * high, sign * high)
     assert refusal.details == {"low": -high, "high": high}
     assert joint.invalid_inputs() == {name}
-    assert CardanJoint(**{name: sign * high}).step(TINY) is None      # the limit itself is fine
+    assert CardanJoint(**{name: sign * high}).step(TINY) is None  # the limit itself is fine
 
 
 @pytest.mark.parametrize("value", [math.nan, math.inf, -math.inf])
@@ -48,12 +48,20 @@ def test_each_non_finite_input_is_refused(name, value):
     assert name in joint.invalid_inputs()
 
 
-@pytest.mark.parametrize("name, value", [(n, v) for n in RANGED_PARAMETERS
-                                         for v in (2.0 * table.BY_NAME[n].max,
-                                                   -2.0 * table.BY_NAME[n].max)])
+@pytest.mark.parametrize(
+    "name, value",
+    [
+        (n, v)
+        for n in RANGED_PARAMETERS
+        for v in (2.0 * table.BY_NAME[n].max, -2.0 * table.BY_NAME[n].max)
+    ],
+)
 def test_each_parameter_beyond_its_range_refuses_every_step(name, value):
     joint = CardanJoint(**{name: value})
-    assert (joint.parameter_fault.code, joint.parameter_fault.variable) == (Reason.OUT_OF_RANGE, name)
+    assert (joint.parameter_fault.code, joint.parameter_fault.variable) == (
+        Reason.OUT_OF_RANGE,
+        name,
+    )
     joint.time = 3.0
     assert refused(joint, 1e-3, Reason.OUT_OF_RANGE, name).time == 3.0
 
@@ -95,6 +103,7 @@ def test_a_step_ending_beyond_the_speed_range_is_refused():
 
 # --- the bend angle: now, at the step's end, and at its peak inside the step ---
 
+
 def test_a_bend_angle_at_the_guard_is_refused_and_its_outputs_marked_invalid():
     joint = CardanJoint(bend_angle=-GUARD)
     assert refused(joint, 1e-3, Reason.BEND_ANGLE, "bend_angle").limit == GUARD
@@ -116,7 +125,7 @@ def test_a_bend_angle_reaching_the_guard_at_the_step_end_is_refused(sign):
 
 # Both ends of the step inside the guard, the parabola over it in between.
 PEAK = dict(bend_angle=1.38, bend_angle_rate=2.0, bend_angle_acceleration=-100.0)
-PEAK_STEP = 0.04                  # vertex at 0.02 s: 1.40 rad > 1.3963 rad; both ends 1.38 rad
+PEAK_STEP = 0.04  # vertex at 0.02 s: 1.40 rad > 1.3963 rad; both ends 1.38 rad
 
 
 def peaking(sign):
@@ -126,10 +135,12 @@ def peaking(sign):
 @pytest.mark.parametrize("sign", [1.0, -1.0])
 def test_a_bend_angle_peaking_over_the_guard_inside_the_step_is_refused(sign):
     joint = peaking(sign)
-    assert joint.input_problem() is None                   # fine at this instant
+    assert joint.input_problem() is None  # fine at this instant
     assert joint.invalid_inputs() == set()
-    for problem in (joint.input_problem(PEAK_STEP),        # fast path, then the explanation
-                    joint._explain_input_problem(PEAK_STEP)):  # the slow path on its own
+    for problem in (
+        joint.input_problem(PEAK_STEP),  # fast path, then the explanation
+        joint._explain_input_problem(PEAK_STEP),
+    ):  # the slow path on its own
         assert problem.code == Reason.BEND_PEAK_IN_STEP
         assert problem.value == pytest.approx(sign * 1.40, abs=1e-15)
         assert problem.details["after"] == pytest.approx(0.02, abs=1e-15)
@@ -140,12 +151,13 @@ def test_a_bend_angle_peaking_over_the_guard_inside_the_step_is_refused(sign):
 
 
 def test_a_peak_inside_the_step_below_the_guard_is_accepted():
-    joint = CardanJoint(**{**PEAK, "bend_angle": 1.36})    # vertex at 1.38 rad
+    joint = CardanJoint(**{**PEAK, "bend_angle": 1.36})  # vertex at 1.38 rad
     assert joint.step(PEAK_STEP) is None
     assert joint.bend_angle == pytest.approx(1.36, abs=1e-15)
 
 
 # --- state ---------------------------------------------------------------------
+
 
 def test_restore_of_a_malformed_state_changes_nothing():
     joint = CardanJoint(input_speed=3.0)

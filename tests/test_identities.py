@@ -1,5 +1,5 @@
-"""docs/UniversalJoint/README.md's identities as properties over random bend angles, phases and rates,
-and scalar/array agreement of the vectorized physics."""
+"""The model page's identities (docs/UniversalJoint/README.md) as properties over random
+bend angles, phases and rates, and scalar/array agreement of the vectorized physics."""
 
 import math
 
@@ -7,8 +7,12 @@ import numpy as np
 from hypothesis import given, settings
 from hypothesis import strategies as st
 
-from cardan_joint.physics import (degree_of_unevenness, joint_response, max_cardan_error,
-                                  output_angle)
+from cardan_joint.physics import (
+    degree_of_unevenness,
+    joint_response,
+    max_cardan_error,
+    output_angle,
+)
 
 GUARD = math.radians(85.0)
 angles = st.floats(-50.0, 50.0)
@@ -21,17 +25,18 @@ rates = st.floats(-5.0, 5.0)
 @given(angles, bends, speeds, st.floats(-1e3, 1e3), rates, st.floats(-50, 50))
 def test_omega2_squared_plus_omega3_squared_is_input_speed_squared(psi, beta, w1, a1, rb, ab):
     r = joint_response(psi, beta, w1, a1, rb, ab)
-    lhs = r.crosspiece_angular_velocity_2 ** 2 + r.crosspiece_angular_velocity_3 ** 2
+    lhs = r.crosspiece_angular_velocity_2**2 + r.crosspiece_angular_velocity_3**2
     assert abs(lhs - w1 * w1) <= 1e-13 * (w1 * w1 + 1e-300)
 
 
 @settings(max_examples=500, deadline=None)
 @given(angles, bends, speeds, st.floats(-1e3, 1e3))
 def test_omega1_squared_plus_omega3_squared_is_output_speed_squared_at_constant_bend(
-        psi, beta, w1, a1):
+    psi, beta, w1, a1
+):
     r = joint_response(psi, beta, w1, a1)
-    lhs = r.crosspiece_angular_velocity_1 ** 2 + r.crosspiece_angular_velocity_3 ** 2
-    assert abs(lhs - r.output_speed ** 2) <= 1e-12 * (r.output_speed ** 2 + 1e-300)
+    lhs = r.crosspiece_angular_velocity_1**2 + r.crosspiece_angular_velocity_3**2
+    assert abs(lhs - r.output_speed**2) <= 1e-12 * (r.output_speed**2 + 1e-300)
 
 
 @settings(max_examples=500, deadline=None)
@@ -41,10 +46,14 @@ def test_m3_at_constant_speed_and_bend(psi, beta, w1, inertia):
     r = joint_response(psi, beta, w1, 0.0, 0.0, 0.0, inertia)
     w_1, w_2 = r.crosspiece_angular_velocity_1, r.crosspiece_angular_velocity_2
     expected = (i2 - i1 - i3) * w_1 * w_2
-    assert abs(r.crosspiece_torque_3 - expected) <= 1e-11 * (max(inertia) * w1 * w1 / math.cos(beta) ** 4 + 1e-300)
+    assert abs(r.crosspiece_torque_3 - expected) <= 1e-11 * (
+        max(inertia) * w1 * w1 / math.cos(beta) ** 4 + 1e-300
+    )
     # The paper's distribution I1 = I3 = I2/2 makes M3 vanish whatever the speed.
     balanced = joint_response(psi, beta, w1, 0.0, 0.0, 0.0, (i2 / 2, i2, i2 / 2))
-    assert abs(balanced.crosspiece_torque_3) <= 1e-12 * (i2 * w1 * w1 / math.cos(beta) ** 4 + 1e-300)
+    assert abs(balanced.crosspiece_torque_3) <= 1e-12 * (
+        i2 * w1 * w1 / math.cos(beta) ** 4 + 1e-300
+    )
 
 
 @settings(max_examples=500, deadline=None)
@@ -58,7 +67,10 @@ def test_speed_ratio_swings_between_cos_beta_and_its_inverse(psi, beta):
 @settings(max_examples=500, deadline=None)
 @given(angles, bends)
 def test_cardan_error_is_bounded_by_its_closed_form_amplitude(psi, beta):
-    assert abs(joint_response(psi, beta, 1.0).cardan_error) <= max_cardan_error(beta) * (1 + 1e-14) + 1e-300
+    assert (
+        abs(joint_response(psi, beta, 1.0).cardan_error)
+        <= max_cardan_error(beta) * (1 + 1e-14) + 1e-300
+    )
 
 
 @settings(max_examples=200, deadline=None)
@@ -67,7 +79,9 @@ def test_degree_of_unevenness_is_the_speed_swing(beta):
     psi = np.linspace(0.0, math.pi, 20001)
     # The extremes sit at psi = 0 and pi/2 (Tataru's phi1 = 0, pi/2).
     swing = joint_response(np.array([0.0, math.pi / 2]), beta, 1.0).output_speed
-    assert math.isclose(swing[0] - swing[1], degree_of_unevenness(beta), rel_tol=1e-12, abs_tol=1e-15)
+    assert math.isclose(
+        swing[0] - swing[1], degree_of_unevenness(beta), rel_tol=1e-12, abs_tol=1e-15
+    )
     sampled = joint_response(psi, beta, 1.0).output_speed
     assert sampled.max() <= swing[0] * (1 + 1e-15) and sampled.min() >= swing[1] * (1 - 1e-15)
 
@@ -87,15 +101,25 @@ def test_output_angle_is_continuous_over_many_turns_without_branch_jumps():
 def test_vectorized_response_equals_scalar_loop(seed):
     rng = np.random.default_rng(seed)
     n = 64
-    args = (rng.uniform(-20, 20, n), rng.uniform(-1.4, 1.4, n), rng.uniform(-100, 100, n),
-            rng.uniform(-1e3, 1e3, n), rng.uniform(-3, 3, n), rng.uniform(-30, 30, n))
+    args = (
+        rng.uniform(-20, 20, n),
+        rng.uniform(-1.4, 1.4, n),
+        rng.uniform(-100, 100, n),
+        rng.uniform(-1e3, 1e3, n),
+        rng.uniform(-3, 3, n),
+        rng.uniform(-30, 30, n),
+    )
     inertia = tuple(rng.uniform(0, 1, (3, n)))
     load = rng.uniform(-100, 100, n)
     sign = rng.choice([-1.0, 1.0], n)
     vector = joint_response(*args, inertia, load, sign)
     for k in range(n):
-        scalar = joint_response(*(float(a[k]) for a in args),
-                                tuple(float(i[k]) for i in inertia), float(load[k]), float(sign[k]))
+        scalar = joint_response(
+            *(float(a[k]) for a in args),
+            tuple(float(i[k]) for i in inertia),
+            float(load[k]),
+            float(sign[k]),
+        )
         assert type(scalar.output_speed) is float
         # math and numpy round differently in the last bit of sin/cos/atan.
         np.testing.assert_allclose(np.array(scalar), np.array(vector)[:, k], rtol=1e-12, atol=1e-12)
@@ -111,7 +135,7 @@ def test_large_arrays_are_evaluated_in_blocks_with_identical_results():
 
     rng = np.random.default_rng(5)
     psi = rng.uniform(-20, 20, (300, 1))
-    beta = rng.uniform(-1.3, 1.3, (1, 70))          # 21000 samples by broadcasting
+    beta = rng.uniform(-1.3, 1.3, (1, 70))  # 21000 samples by broadcasting
     inertia = (rng.uniform(0, 1, (300, 1)), 0.2, 0.3)
     blocked = joint_response(psi, beta, 30.0, 5.0, 0.1, -0.2, inertia, 7.0, -1.0)
     whole = _response(psi, beta, 30.0, 5.0, 0.1, -0.2, *inertia, 7.0, -1.0)

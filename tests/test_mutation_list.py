@@ -6,7 +6,6 @@ import importlib.util
 import re
 
 import pytest
-
 from conftest import ROOT
 
 spec = importlib.util.spec_from_file_location("mutation", ROOT / "tools" / "mutation.py")
@@ -16,10 +15,19 @@ spec.loader.exec_module(mutation)
 
 def test_every_guard_of_the_issue_has_mutations():
     names = " ".join(m.guard for m in mutation.MUTATIONS)
-    for guard in ("finite", "range", "bend peak inside the step (fast path)",
-                  "bend peak inside the step (slow path)", "step size", "overflow",
-                  "restore", "state", "initialization", "after initialization",
-                  "unknown reference"):
+    for guard in (
+        "finite",
+        "range",
+        "bend peak inside the step (fast path)",
+        "bend peak inside the step (slow path)",
+        "step size",
+        "overflow",
+        "restore",
+        "state",
+        "initialization",
+        "after initialization",
+        "unknown reference",
+    ):
         assert guard in names, guard
 
 

@@ -7,11 +7,11 @@ import math
 import mpmath
 import numpy as np
 import pytest
-
 from conftest import build_fmu
-from cardan_joint.instance import JointInstance
 from reference.propshaft import PropshaftReference
 from tolerance import assert_close
+
+from cardan_joint.instance import JointInstance
 
 DISCARD = 2
 D = math.radians
@@ -31,47 +31,70 @@ def test_the_build_writes_a_valid_propshaft_fmu(propshaft_fmu_path, description)
     assert propshaft_fmu_path.name == "Propshaft.fmu"
     assert validate_fmu(str(propshaft_fmu_path)) == []
     names = [v.name for v in description.modelVariables]
-    for name in ("input_speed", "input_acceleration", "load_torque", "output_speed",
-                 "output_acceleration", "input_torque", "shaft_1_yoke_phase"):
+    for name in (
+        "input_speed",
+        "input_acceleration",
+        "load_torque",
+        "output_speed",
+        "output_acceleration",
+        "input_torque",
+        "shaft_1_yoke_phase",
+    ):
         assert name in names
 
 
 def random_case(seed, h):
     rng = np.random.default_rng(seed)
     T = STEPS * h
-    return dict(side=list(rng.uniform(-D(15), D(15), 3)), top=list(rng.uniform(-D(15), D(15), 3)),
-                phase=rng.uniform(-math.pi, math.pi), shaft=rng.uniform(0.0, 0.3),
-                cross=tuple(rng.uniform(0.0, 0.05, 3)), angle0=rng.uniform(-10, 10),
-                speed0=rng.uniform(-1, 1) * min(300.0, 100.0 / T),
-                speed_rate=rng.uniform(-1, 1) * min(100.0, 200.0 / T ** 2),
-                load=rng.uniform(-300, 300))
+    return dict(
+        side=list(rng.uniform(-D(15), D(15), 3)),
+        top=list(rng.uniform(-D(15), D(15), 3)),
+        phase=rng.uniform(-math.pi, math.pi),
+        shaft=rng.uniform(0.0, 0.3),
+        cross=tuple(rng.uniform(0.0, 0.05, 3)),
+        angle0=rng.uniform(-10, 10),
+        speed0=rng.uniform(-1, 1) * min(300.0, 100.0 / T),
+        speed_rate=rng.uniform(-1, 1) * min(100.0, 200.0 / T**2),
+        load=rng.uniform(-300, 300),
+    )
 
 
 def start_values(case):
     values = {f"shaft_{k}_side_angle": case["side"][k] for k in range(3)}
     values.update({f"shaft_{k}_top_angle": case["top"][k] for k in range(3)})
-    values.update(shaft_1_yoke_phase=case["phase"], shaft_1_inertia=case["shaft"],
-                  input_angle_start=case["angle0"], crosspiece_inertia_1=case["cross"][0],
-                  crosspiece_inertia_2=case["cross"][1], crosspiece_inertia_3=case["cross"][2])
+    values.update(
+        shaft_1_yoke_phase=case["phase"],
+        shaft_1_inertia=case["shaft"],
+        input_angle_start=case["angle0"],
+        crosspiece_inertia_1=case["cross"][0],
+        crosspiece_inertia_2=case["cross"][1],
+        crosspiece_inertia_3=case["cross"][2],
+    )
     return values
 
 
 def inputs_at(case, t):
-    return dict(input_speed=case["speed0"] + case["speed_rate"] * t,
-                input_acceleration=case["speed_rate"], load_torque=case["load"])
+    return dict(
+        input_speed=case["speed0"] + case["speed_rate"] * t,
+        input_acceleration=case["speed_rate"],
+        load_torque=case["load"],
+    )
 
 
 @pytest.mark.parametrize("seed, h", [(1, 1e-3), (2, 0.02), (3, 0.3)])
 @pytest.mark.parametrize("master", ["sets inputs once", "sets inputs every step"])
 def test_every_communication_point_matches_the_3d_construction(
-        description, propshaft_unzipped, seed, h, master):
+    description, propshaft_unzipped, seed, h, master
+):
     case = random_case(seed, h)
-    reference = PropshaftReference(case["side"], case["top"], [case["phase"]], [case["shaft"]],
-                                   case["cross"])
+    reference = PropshaftReference(
+        case["side"], case["top"], [case["phase"]], [case["shaft"]], case["cross"]
+    )
     offsets = reference.start_offsets(case["angle0"])
     fluctuation = reference.speed_ratio_fluctuation(samples=48)
-    shaft = JointInstance(description, propshaft_unzipped,
-                          start_values={**start_values(case), **inputs_at(case, 0.0)})
+    shaft = JointInstance(
+        description, propshaft_unzipped, start_values={**start_values(case), **inputs_at(case, 0.0)}
+    )
     first = None
     try:
         for k in range(STEPS + 1):
@@ -80,11 +103,13 @@ def test_every_communication_point_matches_the_3d_construction(
                 shaft.set(**inputs_at(case, t))
             values = shaft.get_outputs()
             with mpmath.workdps(40):
-                angle = case["angle0"] + t * (mpmath.mpf(case["speed0"])
-                                              + mpmath.mpf(case["speed_rate"]) * t / 2)
+                angle = case["angle0"] + t * (
+                    mpmath.mpf(case["speed0"]) + mpmath.mpf(case["speed_rate"]) * t / 2
+                )
             u = inputs_at(case, t)
-            ref = reference.at(angle, u["input_speed"], u["input_acceleration"], case["load"],
-                               offsets)
+            ref = reference.at(
+                angle, u["input_speed"], u["input_acceleration"], case["load"], offsets
+            )
             angles = (values["input_angle"], values["shaft_1_angle"], values["output_angle"])
             exact = (angle, *ref["angles"])
             first = first or (angles, exact)
@@ -96,13 +121,24 @@ def test_every_communication_point_matches_the_3d_construction(
             acceleration = speed * speed + abs(u["input_acceleration"])
             assert_close(values["shaft_1_speed"], ref["speeds"][0], 1e-9, speed, "shaft_1_speed")
             assert_close(values["output_speed"], ref["speeds"][1], 1e-9, speed, "output_speed")
-            assert_close(values["shaft_1_acceleration"], ref["accelerations"][0], 1e-9,
-                         acceleration, "shaft_1_acceleration")
-            assert_close(values["output_acceleration"], ref["accelerations"][1], 1e-9,
-                         acceleration, "output_acceleration")
+            assert_close(
+                values["shaft_1_acceleration"],
+                ref["accelerations"][0],
+                1e-9,
+                acceleration,
+                "shaft_1_acceleration",
+            )
+            assert_close(
+                values["output_acceleration"],
+                ref["accelerations"][1],
+                1e-9,
+                acceleration,
+                "output_acceleration",
+            )
             torque = abs(case["load"]) + (case["shaft"] + max(case["cross"])) * acceleration
-            assert_close(values["input_torque"], ref["input_torque"], 1e-9, torque,
-                         f"input_torque at t={t}")
+            assert_close(
+                values["input_torque"], ref["input_torque"], 1e-9, torque, f"input_torque at t={t}"
+            )
             assert_close(values["kinetic_energy"], ref["kinetic_energy"], 1e-9, None, "energy")
             assert_close(values["speed_ratio_fluctuation"], fluctuation, 1e-9, None, "fluctuation")
             for j, beta in enumerate(reference.working_angles(), start=1):
@@ -115,9 +151,12 @@ def test_every_communication_point_matches_the_3d_construction(
 
 def test_warnings_are_logged_at_initialization_and_never_refuse(description, propshaft_unzipped):
     messages = []
-    shaft = JointInstance(description, propshaft_unzipped, messages=messages,
-                          start_values=dict(shaft_0_side_angle=D(6.0), shaft_2_side_angle=D(1.0),
-                                            input_speed=500.0))
+    shaft = JointInstance(
+        description,
+        propshaft_unzipped,
+        messages=messages,
+        start_values=dict(shaft_0_side_angle=D(6.0), shaft_2_side_angle=D(1.0), input_speed=500.0),
+    )
     try:
         warnings = [m for status, _, m in messages if status == 1]
         assert any("differ by more than 1 deg" in m for m in warnings), messages
@@ -127,12 +166,16 @@ def test_warnings_are_logged_at_initialization_and_never_refuse(description, pro
         shaft.close()
 
 
-def test_a_working_angle_at_the_limit_refuses_every_step_and_says_why(description,
-                                                                      propshaft_unzipped):
+def test_a_working_angle_at_the_limit_refuses_every_step_and_says_why(
+    description, propshaft_unzipped
+):
     messages = []
-    shaft = JointInstance(description, propshaft_unzipped, messages=messages,
-                          start_values=dict(shaft_1_side_angle=D(-20.0),
-                                            max_working_angle=D(20.0)))
+    shaft = JointInstance(
+        description,
+        propshaft_unzipped,
+        messages=messages,
+        start_values=dict(shaft_1_side_angle=D(-20.0), max_working_angle=D(20.0)),
+    )
     try:
         assert shaft.try_step(0.01) == DISCARD
         text = " ".join(m for _, _, m in messages)
@@ -159,8 +202,11 @@ def test_a_non_finite_input_is_refused_and_loses_nothing(description, propshaft_
 
 
 def test_state_serialization_round_trip(description, propshaft_unzipped):
-    shaft = JointInstance(description, propshaft_unzipped,
-                          start_values=dict(shaft_2_top_angle=D(4.0), input_speed=50.0))
+    shaft = JointInstance(
+        description,
+        propshaft_unzipped,
+        start_values=dict(shaft_2_top_angle=D(4.0), input_speed=50.0),
+    )
     try:
         for _ in range(7):
             shaft.step(0.013)
@@ -177,13 +223,15 @@ def test_joints_option_names_and_validates_the_build(tmp_path):
     from fmpy import read_model_description
 
     build_fmu(tmp_path, "--model", "Propshaft", "--joints", "3")
-    names = [v.name for v in read_model_description(str(tmp_path / "Propshaft3.fmu"))
-             .modelVariables]
+    names = [
+        v.name for v in read_model_description(str(tmp_path / "Propshaft3.fmu")).modelVariables
+    ]
     assert "shaft_2_yoke_phase" in names and "joint_3_working_angle" in names
 
 
-def test_the_worked_layout_example_cancels_at_the_helpers_phasing(propshaft_fmu_path, tmp_path,
-                                                                   capsys):
+def test_the_worked_layout_example_cancels_at_the_helpers_phasing(
+    propshaft_fmu_path, tmp_path, capsys
+):
     import importlib.util
     import sys
     from pathlib import Path
@@ -191,8 +239,9 @@ def test_the_worked_layout_example_cancels_at_the_helpers_phasing(propshaft_fmu_
     examples = str(Path(__file__).resolve().parents[1] / "examples")
     sys.path.insert(0, examples)
     try:
-        spec = importlib.util.spec_from_file_location("propshaft_layout_example",
-                                                      Path(examples) / "propshaft_layout.py")
+        spec = importlib.util.spec_from_file_location(
+            "propshaft_layout_example", Path(examples) / "propshaft_layout.py"
+        )
         module = importlib.util.module_from_spec(spec)
         spec.loader.exec_module(module)
     finally:
@@ -223,15 +272,16 @@ def test_the_fmu_reports_cancellation_only_at_the_right_phasing(description, pro
     values.update({f"shaft_{k}_top_angle": top[k] for k in range(3)})
     results = {}
     for phase in (0.0, phases[0]):
-        shaft = JointInstance(description, propshaft_unzipped,
-                              start_values=dict(values, shaft_1_yoke_phase=phase))
+        shaft = JointInstance(
+            description, propshaft_unzipped, start_values=dict(values, shaft_1_yoke_phase=phase)
+        )
         try:
             results[phase] = shaft.get("speed_ratio_fluctuation", "equivalent_angle")
         finally:
             shaft.close()
     assert results[phases[0]]["speed_ratio_fluctuation"] < 1e-12
     assert results[0.0]["speed_ratio_fluctuation"] > 1e-3
-    default = JointInstance(description, propshaft_unzipped)     # a coplanar Z layout
+    default = JointInstance(description, propshaft_unzipped)  # a coplanar Z layout
     try:
         assert default.get("speed_ratio_fluctuation")["speed_ratio_fluctuation"] < 1e-12
     finally:

@@ -6,12 +6,20 @@ import math
 
 import numpy as np
 import pytest
-
-from cardan_joint.physics.propshaft import (Propshaft, angle_report, best_phasing, chain,
-                                            equivalent_angle, layout, max_operating_angle,
-                                            plane_angle, speed_ratio_fluctuation)
 from reference.propshaft import PropshaftReference
 from tolerance import assert_close
+
+from cardan_joint.physics.propshaft import (
+    Propshaft,
+    angle_report,
+    best_phasing,
+    chain,
+    equivalent_angle,
+    layout,
+    max_operating_angle,
+    plane_angle,
+    speed_ratio_fluctuation,
+)
 
 D = math.radians
 LIMIT = D(15.0)
@@ -19,16 +27,19 @@ LIMIT = D(15.0)
 
 def random_layout(seed, joints):
     rng = np.random.default_rng(seed)
-    return dict(side=list(rng.uniform(-LIMIT, LIMIT, joints + 1)),
-                top=list(rng.uniform(-LIMIT, LIMIT, joints + 1)),
-                phases=list(rng.uniform(-math.pi, math.pi, joints - 1)),
-                shafts=list(rng.uniform(0.0, 0.5, joints - 1)),
-                cross=tuple(rng.uniform(0.0, 0.05, 3)))
+    return dict(
+        side=list(rng.uniform(-LIMIT, LIMIT, joints + 1)),
+        top=list(rng.uniform(-LIMIT, LIMIT, joints + 1)),
+        phases=list(rng.uniform(-math.pi, math.pi, joints - 1)),
+        shafts=list(rng.uniform(0.0, 0.5, joints - 1)),
+        cross=tuple(rng.uniform(0.0, 0.05, 3)),
+    )
 
 
 def reference_of(case):
-    return PropshaftReference(case["side"], case["top"], case["phases"], case["shafts"],
-                              case["cross"])
+    return PropshaftReference(
+        case["side"], case["top"], case["phases"], case["shafts"], case["cross"]
+    )
 
 
 @pytest.mark.parametrize("seed, joints", [(1, 2), (2, 2), (3, 3), (4, 4)])
@@ -38,8 +49,12 @@ def test_chain_matches_the_3d_construction(seed, joints):
     reference = reference_of(case)
     rng = np.random.default_rng(seed + 100)
     for _ in range(3):
-        angle, speed, acc, load = (rng.uniform(-7, 7), rng.uniform(-300, 300),
-                                   rng.uniform(-5e3, 5e3), rng.uniform(-500, 500))
+        angle, speed, acc, load = (
+            rng.uniform(-7, 7),
+            rng.uniform(-300, 300),
+            rng.uniform(-5e3, 5e3),
+            rng.uniform(-500, 500),
+        )
         offsets = reference.start_offsets(angle)
         ref = reference.at(angle, speed, acc, load, offsets)
         got = chain(geometry, angle, speed, acc, case["cross"], case["shafts"], load)
@@ -48,13 +63,19 @@ def test_chain_matches_the_3d_construction(seed, joints):
         for k in range(joints):
             assert abs(angle + got.offsets[k] - ref["angles"][k]) < 1e-13 * (1 + abs(angle))
             assert_close(got.speeds[k], ref["speeds"][k], 1e-12, speed_scale, f"omega_{k + 1}")
-            assert_close(got.accelerations[k], ref["accelerations"][k], 1e-12, acc_scale,
-                         f"alpha_{k + 1}")
+            assert_close(
+                got.accelerations[k], ref["accelerations"][k], 1e-12, acc_scale, f"alpha_{k + 1}"
+            )
         torque_scale = abs(load) + sum(case["shafts"]) * acc_scale
         assert_close(got.input_torque, ref["input_torque"], 1e-12, torque_scale, "input torque")
         assert_close(got.kinetic_energy, ref["kinetic_energy"], 1e-12, None, "energy")
-    assert_close(speed_ratio_fluctuation(geometry), reference.speed_ratio_fluctuation(), 1e-9,
-                 None, "speed_ratio_fluctuation")
+    assert_close(
+        speed_ratio_fluctuation(geometry),
+        reference.speed_ratio_fluctuation(),
+        1e-9,
+        None,
+        "speed_ratio_fluctuation",
+    )
 
 
 def test_power_balance_holds_exactly():
@@ -65,18 +86,31 @@ def test_power_balance_holds_exactly():
     speed0, acc, load = 40.0, 30.0, 120.0
 
     def state(t):
-        return chain(geometry, 0.4 + t * (speed0 + 0.5 * acc * t), speed0 + acc * t, acc,
-                     case["cross"], case["shafts"], load)
+        return chain(
+            geometry,
+            0.4 + t * (speed0 + 0.5 * acc * t),
+            speed0 + acc * t,
+            acc,
+            case["cross"],
+            case["shafts"],
+            load,
+        )
 
     for t in (0.0, 0.013, 0.2):
         h = 1e-4
-        energy_rate = (8 * (state(t + h).kinetic_energy - state(t - h).kinetic_energy)
-                       - (state(t + 2 * h).kinetic_energy - state(t - 2 * h).kinetic_energy)
-                       ) / (12 * h)
+        energy_rate = (
+            8 * (state(t + h).kinetic_energy - state(t - h).kinetic_energy)
+            - (state(t + 2 * h).kinetic_energy - state(t - 2 * h).kinetic_energy)
+        ) / (12 * h)
         now = state(t)
         speed = speed0 + acc * t
-        assert_close(now.input_torque * speed, load * now.speeds[-1] + energy_rate, 1e-9,
-                     load * abs(speed), f"power at t={t}")
+        assert_close(
+            now.input_torque * speed,
+            load * now.speeds[-1] + energy_rate,
+            1e-9,
+            load * abs(speed),
+            f"power at t={t}",
+        )
 
 
 @pytest.mark.parametrize("outer", [(3.0, 3.0), (3.0, -3.0)], ids=["Z", "W"])
@@ -127,8 +161,9 @@ def test_two_joint_phasing_matches_a_brute_force_search(seed):
 
     grid = np.linspace(0.0, math.pi, 61)
     start = grid[int(np.argmin([cost(p) for p in grid]))]
-    brute = minimize_scalar(cost, bounds=(start - grid[1], start + grid[1]), method="bounded",
-                            options={"xatol": 1e-10})
+    brute = minimize_scalar(
+        cost, bounds=(start - grid[1], start + grid[1]), method="bounded", options={"xatol": 1e-10}
+    )
     assert left <= brute.fun + 1e-12
     assert abs(math.remainder(phases[0] - brute.x, math.pi)) < 1e-4
     assert cost(phases[0] + 0.01) > left and cost(phases[0] - 0.01) > left
@@ -166,8 +201,10 @@ def test_angle_checks_on_hand_made_layouts():
     assert not angle_report(layout([D(4.1), 0.0, D(4.1)], [0, 0, 0], [0.0]), 4000 * rpm).warnings
     residual = angle_report(layout([D(4), 0.0, D(4)], [0, 0, 0], [math.pi / 2]), 0.0)
     assert any("exceeds 0.0027" in w for w in residual.warnings)
-    assert any("above the table" in w for w in
-               angle_report(layout([D(1), 0.0, D(1)], [0, 0, 0], [0.0]), 6000 * rpm).warnings)
+    assert any(
+        "above the table" in w
+        for w in angle_report(layout([D(1), 0.0, D(1)], [0, 0, 0], [0.0]), 6000 * rpm).warnings
+    )
     limit, _ = max_operating_angle(4250 * rpm)
     assert limit == pytest.approx(D(3.95), rel=1e-12)
     assert max_operating_angle(5000 * rpm)[0] == pytest.approx(D(3.2), rel=1e-12)
@@ -188,7 +225,7 @@ def test_angles_stay_exact_over_a_million_revolutions():
         reduced = float(exact % (2 * mpmath.pi))
     expected = chain(shaft.layout, reduced, speed, 0.0, (0.026,) * 3, [0.02], 0.0)
     values = shaft.outputs()
-    assert abs(values[0] - float(exact)) <= 2e-9     # one ulp of the absolute angle
+    assert abs(values[0] - float(exact)) <= 2e-9  # one ulp of the absolute angle
     # Absolute angles of 6e6 rad resolve 1e-9 rad: the offsets survive to that.
     assert abs((values[1] - values[0]) - expected.offsets[0]) < 2e-9
     assert abs((values[4] - values[0]) - expected.offsets[1]) < 2e-9
@@ -241,12 +278,19 @@ def test_bad_steps_and_unknown_names_are_refused():
         Propshaft(2, bend_angle=0.1)
 
 
-@pytest.mark.parametrize("settings, values, words", [
-    ({"joints": 5}, {}, ["--joints 5", "2, 3, 4"]),
-    ({"joints": 2}, {"shaft_2_yoke_phase": 0.1}, ["shaft_2_yoke_phase", "2-joint"]),
-    ({"joints": 3}, {"shaft_1_side_angle": 0.6}, ["joint_1_working_angle", "max_working_angle"]),
-    ({"joints": 2}, {"input_speed": math.inf}, ["input_speed = inf"]),
-])
+@pytest.mark.parametrize(
+    "settings, values, words",
+    [
+        ({"joints": 5}, {}, ["--joints 5", "2, 3, 4"]),
+        ({"joints": 2}, {"shaft_2_yoke_phase": 0.1}, ["shaft_2_yoke_phase", "2-joint"]),
+        (
+            {"joints": 3},
+            {"shaft_1_side_angle": 0.6},
+            ["joint_1_working_angle", "max_working_angle"],
+        ),
+        ({"joints": 2}, {"input_speed": math.inf}, ["input_speed = inf"]),
+    ],
+)
 def test_the_build_refuses_propshaft_start_values_that_cannot_run(settings, values, words):
     from cardan_joint.models import StartValueError, model
 

@@ -40,3 +40,16 @@ def test_motor_and_load_tables_are_generated_from_their_tables():
     for key, table in (("motor", MOTOR), ("load", LOAD)):
         begin, end = f"<!-- {key}-variables:begin -->\n", f"<!-- {key}-variables:end -->"
         assert README.split(begin)[1].split(end)[0] == table.markdown_table()
+
+
+def test_readme_states_how_many_tests_the_suite_runs(request):
+    import re
+
+    import pytest
+
+    config = request.config
+    if config.args_source != pytest.Config.ArgsSource.TESTPATHS or config.option.keyword \
+            or config.option.markexpr or config.option.deselect:
+        pytest.skip("only a run of the whole suite knows its size")
+    stated = int(re.search(r"installs and runs (\d+) tests", README).group(1))
+    assert stated == len(request.session.items), "update the test count in the README"

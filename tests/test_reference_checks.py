@@ -2,7 +2,6 @@
 physical identities and the model page's closed forms, section by section."""
 
 import pytest
-
 from reference.check_references import SECTIONS, Checks, section_d_multibody
 
 # The multibody runs on a quarter of the script's horizon: the same checks, a

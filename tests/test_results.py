@@ -11,11 +11,15 @@ from cardan_joint import variables as table
 
 def test_csv_round_trip_is_exact_in_fmpys_format(tmp_path):
     rng = np.random.default_rng(1)
-    data = results.structured({"time": np.sort(rng.random(500)),
-                               "x": rng.standard_normal(500) * 10.0 ** rng.integers(-300, 300, 500),
-                               "y": [math.pi, -0.0, 5e-324, 1e308, 0.1] * 100})
+    data = results.structured(
+        {
+            "time": np.sort(rng.random(500)),
+            "x": rng.standard_normal(500) * 10.0 ** rng.integers(-300, 300, 500),
+            "y": [math.pi, -0.0, 5e-324, 1e308, 0.1] * 100,
+        }
+    )
     path = results.write_csv(data, tmp_path / "deep" / "run.csv")
-    assert path.read_text().splitlines()[0] == '"time","x","y"'       # FMPy's header
+    assert path.read_text().splitlines()[0] == '"time","x","y"'  # FMPy's header
     back = results.read_csv(path)
     assert back.dtype.names == data.dtype.names
     for name in data.dtype.names:
@@ -30,12 +34,15 @@ def test_a_hand_written_csv_with_spaces_reads(tmp_path):
     assert data["input_speed"].tolist() == [1.5, 2.0]
 
 
-@pytest.mark.parametrize("text, named", [
-    ("time,speed\n0,1\n1,abc\n", "line 3, column 'speed': 'abc' is not a number"),
-    ("time,speed\n", "no data rows"),
-    ("", "not a table"),
-    ("time,speed\n0,1\n1,2,3\n", "not a table"),
-])
+@pytest.mark.parametrize(
+    "text, named",
+    [
+        ("time,speed\n0,1\n1,abc\n", "line 3, column 'speed': 'abc' is not a number"),
+        ("time,speed\n", "no data rows"),
+        ("", "not a table"),
+        ("time,speed\n0,1\n1,2,3\n", "not a table"),
+    ],
+)
 def test_a_bad_csv_is_refused_naming_where(tmp_path, text, named):
     path = tmp_path / "bad.csv"
     path.write_text(text)
@@ -45,9 +52,10 @@ def test_a_bad_csv_is_refused_naming_where(tmp_path, text, named):
 
 
 def test_rows_with_text_and_gaps_are_written(tmp_path):
-    path = results.write_rows([{"coupling": "hold", "step": 0.1},
-                               {"coupling": "ahead", "step": 0.01, "order": 2.0}],
-                              tmp_path / "rows.csv")
+    path = results.write_rows(
+        [{"coupling": "hold", "step": 0.1}, {"coupling": "ahead", "step": 0.01, "order": 2.0}],
+        tmp_path / "rows.csv",
+    )
     back = results.read_table(path)
     assert list(back["coupling"]) == ["hold", "ahead"] and math.isnan(back["order"][0])
 

@@ -8,6 +8,7 @@ from hypothesis import strategies as st
 
 from cardan_joint.physics import CardanJoint, advance, cardan_error, split_angle
 
+
 def exact(angle):
     """The stored angle as an exact rational, with 2 pi to 40 digits."""
     two_pi = Fraction("6.283185307179586476925286766559005768394")
@@ -31,15 +32,15 @@ def test_advance_adds_without_drift(start, increment):
     for _ in range(2000):
         a = advance(a, increment)
     expected = Fraction(start) + 2000 * Fraction(increment)
-    assert abs(exact(a) - expected) < Fraction(1, 10 ** 13)
+    assert abs(exact(a) - expected) < Fraction(1, 10**13)
 
 
 def test_a_million_revolutions_at_constant_speed_stay_exact():
     # 1e6 revolutions of 2 pi * 0.98 rad per step at 0.5 s: the stepped joint's
     # input and output angle against exact rational arithmetic.
-    speed = 2 * math.pi * 1.96          # rad/s
+    speed = 2 * math.pi * 1.96  # rad/s
     step = 0.5
-    steps = 1_020_409                   # a little over 1e6 revolutions
+    steps = 1_020_409  # a little over 1e6 revolutions
     joint = CardanJoint(input_speed=speed, bend_angle=0.5, yoke_phase=0.3)
     for _ in range(steps):
         assert joint.step(step) is None

@@ -7,12 +7,12 @@ import sys
 
 import numpy as np
 import pytest
+from conftest import build_fmu
 
 from cardan_joint import variables as table
 from cardan_joint.instance import JointInstance, status_of
 from cardan_joint.physics import CardanJoint
 from cardan_joint.simulate import SimulationError, simulate
-from conftest import build_fmu
 
 DISCARD = 2
 GOOD = dict(input_speed=12.0, input_acceleration=3.0, bend_angle=0.4, bend_angle_rate=0.05,
@@ -21,7 +21,8 @@ GUARD = table.BY_NAME["max_bend_angle"].start
 
 BAD_INPUTS = {
     "bend angle at the guard": (dict(bend_angle=GUARD), 0.01, ["bend_angle", "max_bend_angle"]),
-    "bend angle beyond the guard": (dict(bend_angle=-1.5), 0.01, ["bend_angle = -1.5", "max_bend_angle"]),
+    "bend angle beyond the guard": (dict(bend_angle=-1.5), 0.01,
+                                    ["bend_angle = -1.5", "max_bend_angle"]),
     "bend rate reaching the guard within the step": (
         dict(bend_angle=1.3, bend_angle_rate=20.0), 0.01, ["bend_angle", "bend_angle_rate = 20.0",
                                                            "max_bend_angle"]),
@@ -122,7 +123,8 @@ def test_plain_simulate_fmu_shows_the_message_on_the_terminal(fmu_path):
               " dtype=[('time', float), ('bend_angle', float)])\n"
               f"r = simulate_fmu({str(fmu_path)!r}, stop_time=1.0, output_interval=0.1, input=u)\n"
               "print('stopped at', r['time'][-1])\n")
-    run = subprocess.run([sys.executable, "-c", script], capture_output=True, text=True, timeout=120)
+    run = subprocess.run([sys.executable, "-c", script], capture_output=True, text=True,
+                         timeout=120)
     assert run.returncode == 0
     assert "stopped at 0.5" in run.stdout                 # FMPy stops early, silently
     # ... but the FMU says why: on stderr, as FMPy's default logger cannot be trusted
@@ -134,7 +136,8 @@ def test_plain_simulate_fmu_shows_the_message_on_the_terminal(fmu_path):
 def test_simulate_entry_point_raises_with_the_message(fmu_path):
     u = np.array([(0.0, 0.5), (0.5, 0.5), (0.5, 1.5), (1.0, 1.5)],
                  dtype=[("time", float), ("bend_angle", float)])
-    with pytest.raises(SimulationError, match=r"input bend_angle = 1.5 rad .* max_bend_angle") as error:
+    with pytest.raises(SimulationError,
+                       match=r"input bend_angle = 1.5 rad .* max_bend_angle") as error:
         simulate(fmu_path, stop_time=1.0, output_interval=0.1, inputs=u)
     assert error.value.result["time"][-1] == 0.5
 

@@ -11,13 +11,13 @@ from pythonfmu.enums import Fmi2Status
 
 from cardan_joint import variables as table
 from cardan_joint.fmu.slave import CardanJointSlave
-from cardan_joint.physics import CardanJoint, Reason, Refusal
 from cardan_joint.instance import JointInstance
+from cardan_joint.physics import CardanJoint, Reason, Refusal
 
 REFERENCE = {name: k for k, name in enumerate(v.name for v in table.VARIABLES)}
 ALL = list(range(len(table.VARIABLES)))
 PEAK = dict(bend_angle=1.38, bend_angle_rate=2.0, bend_angle_acceleration=-100.0)
-PEAK_STEP = 0.04                 # both ends at 1.38 rad, the vertex at 1.40 rad > 80 deg
+PEAK_STEP = 0.04  # both ends at 1.38 rad, the vertex at 1.40 rad > 80 deg
 
 
 def initialized(**start):
@@ -40,8 +40,11 @@ def test_the_slave_refuses_a_step_peaking_inside_it_and_names_the_peak():
     assert slave.do_step(0.1, PEAK_STEP) is False
     refusal = Refusal.from_message(last(slave, Fmi2Status.discard))
     assert (refusal.code, refusal.time) == (Reason.BEND_PEAK_IN_STEP, 0.1)
-    assert slave._model.time == 0.1 and slave.get_real([REFERENCE["input_angle"]]) == \
-        before[REFERENCE["input_angle"]:REFERENCE["input_angle"] + 1]
+    assert (
+        slave._model.time == 0.1
+        and slave.get_real([REFERENCE["input_angle"]])
+        == before[REFERENCE["input_angle"] : REFERENCE["input_angle"] + 1]
+    )
 
 
 def test_outputs_with_invalid_inputs_are_held_and_the_warning_names_the_input():
@@ -83,9 +86,17 @@ def test_a_parameter_set_after_initialization_is_ignored():
     assert slave.get_real([REFERENCE["crosspiece_inertia_1"]]) == [0.026]
 
 
-@pytest.mark.parametrize("call, answer", [
-    ("get_integer", [0]), ("get_boolean", [False]), ("get_string", [""]),
-    ("set_integer", None), ("set_boolean", None), ("set_string", None)])
+@pytest.mark.parametrize(
+    "call, answer",
+    [
+        ("get_integer", [0]),
+        ("get_boolean", [False]),
+        ("get_string", [""]),
+        ("set_integer", None),
+        ("set_boolean", None),
+        ("set_string", None),
+    ],
+)
 def test_calls_for_other_variable_types_are_errors_not_exceptions(call, answer):
     slave = initialized()
     method = getattr(slave, call)
@@ -102,8 +113,13 @@ def restored(slave, state, words):
     assert slave.get_real(ALL) == before and slave._get_fmu_state() == saved
 
 
-@pytest.mark.parametrize("data, words", [(b"not json", "got no valid state"),
-                                         (b"[1, 2]", "not a serialized FMU state of this project")])
+@pytest.mark.parametrize(
+    "data, words",
+    [
+        (b"not json", "got no valid state"),
+        (b"[1, 2]", "not a serialized FMU state of this project"),
+    ],
+)
 def test_a_serialized_state_that_is_no_state_is_refused(data, words):
     slave = initialized()
     state = CardanJointSlave._fmu_state_from_bytes(data)
@@ -142,10 +158,10 @@ def test_the_fmu_refuses_a_bend_peak_inside_the_step(model_description, unzipped
         refusal = Refusal.from_message(messages[-1][2])
         for name, value in peak.items():
             setattr(twin, name, value)
-        assert refusal == twin.step(PEAK_STEP)                 # the same refusal, as data
+        assert refusal == twin.step(PEAK_STEP)  # the same refusal, as data
         assert refusal.code == Reason.BEND_PEAK_IN_STEP and refusal.time == 0.1
         assert joint.get("input_angle") == {"input_angle": before["input_angle"]}
         joint.set(bend_angle_acceleration=0.0, bend_angle_rate=0.0)
-        assert joint.try_step(PEAK_STEP) == 0                  # fixed: the same step goes
+        assert joint.try_step(PEAK_STEP) == 0  # fixed: the same step goes
     finally:
         joint.close()

@@ -6,8 +6,13 @@ import pytest
 
 from cardan_joint import sweep
 
-TINY = sweep.SweepSpec(bend_angles_deg=(10.0, 85.0), input_speeds_rpm=(1000.0, 3000.0),
-                       distributions=("T1", "T2"), revolutions=1, steps_per_revolution=72)
+TINY = sweep.SweepSpec(
+    bend_angles_deg=(10.0, 85.0),
+    input_speeds_rpm=(1000.0, 3000.0),
+    distributions=("T1", "T2"),
+    revolutions=1,
+    steps_per_revolution=72,
+)
 
 
 @pytest.fixture(scope="module")
@@ -52,13 +57,17 @@ def test_successful_cases_carry_the_joints_numbers(serial):
     beta = math.radians(10)
     # Sampled every 5 deg, the speed's extremes (pin in and normal to the bend
     # plane) are hit: the fluctuation is the single joint's tan b sin b.
-    assert ok["speed_fluctuation"].to_numpy() == pytest.approx(math.tan(beta) * math.sin(beta),
-                                                              rel=1e-9)
+    assert ok["speed_fluctuation"].to_numpy() == pytest.approx(
+        math.tan(beta) * math.sin(beta), rel=1e-9
+    )
     # Output acceleration does not depend on the crosspiece; its torque does.
     t1, t2 = ok[ok["inertia_distribution"] == "T1"], ok[ok["inertia_distribution"] == "T2"]
     assert t1["peak_output_acceleration"].to_numpy() == pytest.approx(
-        t2["peak_output_acceleration"].to_numpy(), rel=1e-12)
-    assert (t1["peak_crosspiece_torque"].to_numpy() != t2["peak_crosspiece_torque"].to_numpy()).all()
+        t2["peak_output_acceleration"].to_numpy(), rel=1e-12
+    )
+    assert (
+        t1["peak_crosspiece_torque"].to_numpy() != t2["peak_crosspiece_torque"].to_numpy()
+    ).all()
     assert list(ok["beyond_acceleration_limit"]) == list(ok["peak_output_acceleration"] > 1000.0)
 
 
@@ -77,8 +86,7 @@ def test_table_and_heatmap_are_written(serial, tmp_path):
 
 def test_cell_edges_lie_halfway_between_uneven_grid_values():
     np = pytest.importorskip("numpy")
-    assert sweep.cell_edges([1, 2, 3, 4, 6, 8, 30]).tolist() == [0.5, 1.5, 2.5, 3.5, 5, 7, 19,
-                                                                 41]
+    assert sweep.cell_edges([1, 2, 3, 4, 6, 8, 30]).tolist() == [0.5, 1.5, 2.5, 3.5, 5, 7, 19, 41]
     assert sweep.cell_edges([10]).tolist() == [9.5, 10.5]
     assert np.all(np.diff(sweep.cell_edges([500, 1000, 4000])) > 0)
 
@@ -87,12 +95,23 @@ def test_the_heatmap_spaces_an_uneven_bend_axis_truthfully(monkeypatch, tmp_path
     """Each cell spans its bend angle's true interval on a linear degree axis."""
     from matplotlib.collections import QuadMesh
 
-    uneven = sweep.SweepSpec(bend_angles_deg=(1.0, 2.0, 10.0), input_speeds_rpm=(1000.0,),
-                             distributions=("T1",))
-    table = sweep.to_table([{"bend_angle_deg": b, "input_speed_rpm": 1000.0,
-                             "inertia_distribution": "T1", "status": "ok",
-                             "peak_output_acceleration": 10.0 * b, "peak_crosspiece_torque": b}
-                            for b in (1.0, 2.0, 10.0)], uneven)
+    uneven = sweep.SweepSpec(
+        bend_angles_deg=(1.0, 2.0, 10.0), input_speeds_rpm=(1000.0,), distributions=("T1",)
+    )
+    table = sweep.to_table(
+        [
+            {
+                "bend_angle_deg": b,
+                "input_speed_rpm": 1000.0,
+                "inertia_distribution": "T1",
+                "status": "ok",
+                "peak_output_acceleration": 10.0 * b,
+                "peak_crosspiece_torque": b,
+            }
+            for b in (1.0, 2.0, 10.0)
+        ],
+        uneven,
+    )
     figures = []
     monkeypatch.setattr(sweep.heatmap, "save_figure", lambda fig, path, dpi: figures.append(fig))
     sweep.plot_heatmaps(table, uneven, tmp_path / "uneven.png")

@@ -16,10 +16,17 @@ from cardan_joint import sweep
 pytest.importorskip("dask.distributed")
 
 # 6 tasks of 2 cases: enough that both workers are busy when the first task returns.
-TINY = sweep.SweepSpec(bend_angles_deg=(5.0, 20.0, 85.0), input_speeds_rpm=(1000.0, 3000.0),
-                       distributions=("T1", "T3"), revolutions=1, steps_per_revolution=72)
-QUIET = {"DASK_DISTRIBUTED__WORKER__PROFILE__ENABLED": "False",
-         "DASK_DISTRIBUTED__ADMIN__TICK__INTERVAL": "1s"}
+TINY = sweep.SweepSpec(
+    bend_angles_deg=(5.0, 20.0, 85.0),
+    input_speeds_rpm=(1000.0, 3000.0),
+    distributions=("T1", "T3"),
+    revolutions=1,
+    steps_per_revolution=72,
+)
+QUIET = {
+    "DASK_DISTRIBUTED__WORKER__PROFILE__ENABLED": "False",
+    "DASK_DISTRIBUTED__ADMIN__TICK__INTERVAL": "1s",
+}
 
 
 class Processes:
@@ -30,16 +37,20 @@ class Processes:
 
     def start(self, *args):
         log = open(self.logs / f"{len(self.started)}_{args[0]}.log", "w")
-        process = subprocess.Popen([sys.executable, "-m", "dask", *args], stdout=log,
-                                   stderr=subprocess.STDOUT, start_new_session=True,
-                                   env={**os.environ, **QUIET})
+        process = subprocess.Popen(
+            [sys.executable, "-m", "dask", *args],
+            stdout=log,
+            stderr=subprocess.STDOUT,
+            start_new_session=True,
+            env={**os.environ, **QUIET},
+        )
         log.close()
         self.started.append(process)
         return process
 
     def kill(self, process):
         try:
-            os.killpg(process.pid, signal.SIGKILL)     # the worker and its nanny
+            os.killpg(process.pid, signal.SIGKILL)  # the worker and its nanny
         except ProcessLookupError:
             pass
         process.wait(timeout=30)
@@ -59,11 +70,29 @@ def cluster(tmp_path_factory):
     processes = Processes(folder)
     client = None
     try:
-        processes.start("scheduler", "--host", "127.0.0.1", "--port", "0", "--no-dashboard",
-                        "--scheduler-file", address_file)
-        workers = [processes.start("worker", "--scheduler-file", address_file, "--host",
-                                   "127.0.0.1", "--nthreads", "1", "--no-dashboard")
-                   for _ in range(2)]
+        processes.start(
+            "scheduler",
+            "--host",
+            "127.0.0.1",
+            "--port",
+            "0",
+            "--no-dashboard",
+            "--scheduler-file",
+            address_file,
+        )
+        workers = [
+            processes.start(
+                "worker",
+                "--scheduler-file",
+                address_file,
+                "--host",
+                "127.0.0.1",
+                "--nthreads",
+                "1",
+                "--no-dashboard",
+            )
+            for _ in range(2)
+        ]
         deadline = time.monotonic() + 60
         while not address_file.is_file() and time.monotonic() < deadline:
             time.sleep(0.1)
@@ -87,8 +116,9 @@ def case_files(folder):
     return sorted(p.name for p in folder.iterdir() if p.name != sweep.store.SETTINGS_FILE)
 
 
-def test_an_interrupted_sweep_resumes_with_only_the_missing_cases(cluster, fmu_path, serial,
-                                                                   tmp_path):
+def test_an_interrupted_sweep_resumes_with_only_the_missing_cases(
+    cluster, fmu_path, serial, tmp_path
+):
     import pandas as pd
 
     client, _ = cluster
@@ -103,18 +133,23 @@ def test_an_interrupted_sweep_resumes_with_only_the_missing_cases(cluster, fmu_p
 
     first = sweep.CaseStore(tmp_path, TINY)
     with pytest.raises(KeyboardInterrupt):
-        sweep.run_dask(fmu_path, TINY, client, progress=False, store=first,
-                       on_rows=interrupt_after_two_tasks)
+        sweep.run_dask(
+            fmu_path, TINY, client, progress=False, store=first, on_rows=interrupt_after_two_tasks
+        )
     assert first.written == 4 and len(case_files(tmp_path)) == 4
     before = {p.name: (p.stat().st_ino, p.stat().st_mtime_ns) for p in tmp_path.glob("*deg*")}
 
     computed = []
     second = sweep.CaseStore(tmp_path, TINY)
-    table = sweep.run_dask(fmu_path, TINY, client, progress=False, store=second,
-                           on_rows=computed.extend)
-    assert second.written == len(computed) == total - 4      # only the missing cases ran
-    assert {p.name: (p.stat().st_ino, p.stat().st_mtime_ns)
-            for p in tmp_path.glob("*deg*") if p.name in before} == before   # not rewritten
+    table = sweep.run_dask(
+        fmu_path, TINY, client, progress=False, store=second, on_rows=computed.extend
+    )
+    assert second.written == len(computed) == total - 4  # only the missing cases ran
+    assert {
+        p.name: (p.stat().st_ino, p.stat().st_mtime_ns)
+        for p in tmp_path.glob("*deg*")
+        if p.name in before
+    } == before  # not rewritten
     assert len(case_files(tmp_path)) == total
     pd.testing.assert_frame_equal(table, serial, check_exact=True)
 
@@ -127,18 +162,19 @@ def test_a_store_refuses_cases_of_other_settings_or_another_fmu(tmp_path):
     one.write_bytes(b"one build")
     other.write_bytes(b"another build")
     sweep.CaseStore(tmp_path / "b", TINY, one)
-    sweep.CaseStore(tmp_path / "b", TINY, one)                  # the same FMU resumes
+    sweep.CaseStore(tmp_path / "b", TINY, one)  # the same FMU resumes
     with pytest.raises(sweep.SettingsMismatch, match="fmu_sha256"):
         sweep.CaseStore(tmp_path / "b", TINY, other)
 
 
-def test_killing_a_worker_mid_sweep_loses_nothing_and_repeats_nothing(cluster, fmu_path, serial,
-                                                                      tmp_path):
+def test_killing_a_worker_mid_sweep_loses_nothing_and_repeats_nothing(
+    cluster, fmu_path, serial, tmp_path
+):
     import pandas as pd
 
     client, workers = cluster
     assert len(client.scheduler_info()["workers"]) == 2
-    groups = client.run(os.getpgid, 0)                  # worker address -> its process group
+    groups = client.run(os.getpgid, 0)  # worker address -> its process group
     ours = {process.pid: process for process in workers}
     assert set(groups.values()) == set(ours)
     killed = {}
@@ -154,13 +190,13 @@ def test_killing_a_worker_mid_sweep_loses_nothing_and_repeats_nothing(cluster, f
         workers_process.wait(timeout=30)
 
     store = sweep.CaseStore(tmp_path, TINY)
-    table = sweep.run_dask(fmu_path, TINY, client, progress=False, store=store,
-                           on_rows=kill_a_busy_worker)
+    table = sweep.run_dask(
+        fmu_path, TINY, client, progress=False, store=store, on_rows=kill_a_busy_worker
+    )
     total = len(TINY.cases())
-    assert 0 < killed["done"] < total                     # killed in the middle
+    assert 0 < killed["done"] < total  # killed in the middle
     assert killed["address"] not in client.scheduler_info()["workers"]
-    assert store.written == total                         # each case written once
+    assert store.written == total  # each case written once
     assert case_files(tmp_path) == sorted(f"{c.key}.json" for c in TINY.cases())  # no temp file
-    assert not table.duplicated(["bend_angle_deg", "input_speed_rpm",
-                                 "inertia_distribution"]).any()
+    assert not table.duplicated(["bend_angle_deg", "input_speed_rpm", "inertia_distribution"]).any()
     pd.testing.assert_frame_equal(table, serial, check_exact=True)

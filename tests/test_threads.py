@@ -6,8 +6,8 @@ import math
 import threading
 import time
 
-from cardan_joint.physics import Reason, Refusal
 from cardan_joint.instance import JointInstance
+from cardan_joint.physics import Reason, Refusal
 
 THREADS = 8
 STEPS = 1000
@@ -22,21 +22,29 @@ def bad_bend(k):
 def scenario(model_description, unzipped, k, start=None, window=None):
     """Run instance `k`'s inputs; return its trace (status, outputs) and its log."""
     messages = []
-    joint = JointInstance(model_description, unzipped, name=f"joint{k}", messages=messages,
-                          start_values=dict(yoke_phase=0.1 * k, crosspiece_inertia_2=0.01 + 0.001 * k))
+    joint = JointInstance(
+        model_description,
+        unzipped,
+        name=f"joint{k}",
+        messages=messages,
+        start_values=dict(yoke_phase=0.1 * k, crosspiece_inertia_2=0.01 + 0.001 * k),
+    )
     trace = []
     if start is not None:
-        start.wait()                          # all threads step at the same time
+        start.wait()  # all threads step at the same time
         window.append(time.perf_counter())
     try:
         for n in range(STEPS):
-            joint.set(input_speed=10.0 + k + 0.01 * n, bend_angle=0.02 * k + 1e-4 * n,
-                      load_torque=5.0 * k - 0.1 * n)
-            if k % 2 and n % 50 == 25:        # odd instances: a refused step now and then
+            joint.set(
+                input_speed=10.0 + k + 0.01 * n,
+                bend_angle=0.02 * k + 1e-4 * n,
+                load_torque=5.0 * k - 0.1 * n,
+            )
+            if k % 2 and n % 50 == 25:  # odd instances: a refused step now and then
                 joint.set(bend_angle=bad_bend(k))
                 trace.append((joint.try_step(H), None))
                 joint.set(input_speed=math.nan if n % 100 == 25 else 1.0)
-                trace.append((None, tuple(joint.get_outputs().values())))   # held outputs
+                trace.append((None, tuple(joint.get_outputs().values())))  # held outputs
                 continue
             trace.append((joint.try_step(H), tuple(joint.get_outputs().values())))
     finally:
@@ -56,7 +64,7 @@ def test_eight_threads_give_the_serial_results_and_messages(model_description, u
     def worker(k):
         try:
             threaded[k] = scenario(model_description, unzipped_fmu, k, start, windows[k])
-        except BaseException as error:        # reported below, not lost in the thread
+        except BaseException as error:  # reported below, not lost in the thread
             errors.append((k, error))
 
     threads = [threading.Thread(target=worker, args=(k,)) for k in range(THREADS)]
@@ -69,7 +77,7 @@ def test_eight_threads_give_the_serial_results_and_messages(model_description, u
     assert max(w[0] for w in windows) < min(w[1] for w in windows)
     for k in range(THREADS):
         (trace, messages), (serial_trace, serial_messages) = threaded[k], serial[k]
-        assert trace == serial_trace, k                    # bit for bit, every step
+        assert trace == serial_trace, k  # bit for bit, every step
         assert messages == serial_messages, k
         refusals = [Refusal.from_message(text) for status, _, text in messages if status == 2]
         if k % 2:
@@ -80,6 +88,8 @@ def test_eight_threads_give_the_serial_results_and_messages(model_description, u
             for _, _, text in messages:
                 refusal = Refusal.from_message(text)
                 assert repr((refusal.variable, refusal.value)) in (
-                    repr(("bend_angle", bad_bend(k))), repr(("input_speed", math.nan))), text
+                    repr(("bend_angle", bad_bend(k))),
+                    repr(("input_speed", math.nan)),
+                ), text
         else:
             assert messages == [] and all(status == 0 for status, _ in trace)

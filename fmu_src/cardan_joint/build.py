@@ -18,7 +18,8 @@ import sys
 import tempfile
 from pathlib import Path
 
-from .models import MODELS, Model, StartValueError, model as find_model
+from .models import MODELS, Model, StartValueError
+from .models import model as find_model
 
 PACKAGE_DIR = Path(__file__).resolve().parent
 # What an FMU needs at run time: the rest of the package runs in the host only.
@@ -100,8 +101,8 @@ def _fmu_builder(fmi_version: int):
     return FmuBuilder
 
 
-def build(dest="dist", model_name: str = None, start_values: dict = None,
-          validate: bool = True, model: str = DEFAULT_MODEL, settings: dict = None,
+def build(dest="dist", model_name: str | None = None, start_values: dict | None = None,
+          validate: bool = True, model: str = DEFAULT_MODEL, settings: dict | None = None,
           fmi_version: int = 2) -> Path:
     """Build `<dest>/<model_name>.fmu` (FMI 3: `<dest>/fmi3/<model_name>.fmu`);
     raise BuildError unless FMPy validates it."""

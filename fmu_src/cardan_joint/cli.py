@@ -210,8 +210,9 @@ def _parser():
     commands = parser.add_subparsers(dest="command", required=True, metavar="COMMAND")
     commands.add_parser("build", add_help=False,
                         help="build and validate the FMU (options: cardan-joint build --help)")
-    commands.add_parser("sweep", add_help=False,
-                        help="design sweep on Dask or serially (options: cardan-joint sweep --help)")
+    commands.add_parser(
+        "sweep", add_help=False,
+        help="design sweep on Dask or serially (options: cardan-joint sweep --help)")
     run = commands.add_parser("simulate", help="co-simulate the FMU with FMPy",
                               description="Co-simulate the FMU from constant inputs (--set) "
                               "and/or an input CSV; write an output CSV and a PNG plot. Inputs "

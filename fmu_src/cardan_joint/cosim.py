@@ -62,7 +62,8 @@ def _steps(stop_time, step_size):
     step_ns, stop_ns = _ns(step_size), _ns(stop_time)
     n_steps = round(stop_ns / step_ns) if step_ns > 0 else 0
     if step_ns <= 0 or n_steps < 1 or n_steps * step_ns != stop_ns:
-        raise ValueError(f"stop_time {stop_time} is not a positive whole number of steps {step_size}")
+        raise ValueError(f"stop_time {stop_time} is not a positive whole number of steps "
+                         f"{step_size}")
     return step_ns, n_steps
 
 
@@ -82,9 +83,9 @@ def _real_references(execution, index, where):
 def _observe_and_run(execution, observed, n_steps, step_ns):
     """Step `execution` `n_steps` times recording `observed` = {key: (slave index,
     value reference)}; return {"time": t, key: values} with n_steps + 1 samples."""
+    from libcosimpy._internal import libcosimc
     from libcosimpy.CosimEnums import CosimVariableType
     from libcosimpy.CosimObserver import CosimObserver
-    from libcosimpy._internal import libcosimc
 
     n = n_steps + 1
     observer = CosimObserver.create_time_series(n)  # the default one keeps only the last 10000
@@ -97,14 +98,15 @@ def _observe_and_run(execution, observed, n_steps, step_ns):
 
     get_samples = libcosimc().cosim_observer_slave_get_real_samples
     get_samples.restype = ctypes.c_int64
-    get_samples.argtypes = [ctypes.c_void_p, ctypes.c_int, ctypes.c_uint32, ctypes.c_int64, ctypes.c_size_t,
-                            ctypes.c_void_p, ctypes.c_void_p, ctypes.c_void_p]
+    get_samples.argtypes = [ctypes.c_void_p, ctypes.c_int, ctypes.c_uint32, ctypes.c_int64,
+                            ctypes.c_size_t, ctypes.c_void_p, ctypes.c_void_p, ctypes.c_void_p]
     result: dict[str, np.ndarray] = {}
     for key, (index, reference) in observed.items():
         values, steps, times = np.empty(n), np.empty(n, np.int64), np.empty(n, np.int64)
         got = get_samples(ctypes.cast(observer.ptr(), ctypes.c_void_p), index, reference, 0, n,
                           values.ctypes.data, steps.ctypes.data, times.ctypes.data)
-        _check(got == n and np.array_equal(steps, np.arange(n)), f"reading {key} ({got} of {n} samples)")
+        _check(got == n and np.array_equal(steps, np.arange(n)),
+               f"reading {key} ({got} of {n} samples)")
         result.setdefault("time", times / _NS)
         result[key] = values
     if "time" not in result:

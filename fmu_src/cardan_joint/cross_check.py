@@ -25,6 +25,8 @@ from pathlib import Path
 
 import numpy as np
 
+from . import variables as table
+
 MODEL = "UniversalJoint"
 TOOL_ID = "cardan_joint"
 DOCS = Path(__file__).resolve().parents[2] / "docs" / MODEL
@@ -39,18 +41,25 @@ INPUT_ROWS = (
     (0.0, 20.0, 20.0, 0.2, 0.4, 0.0, 100.0),
     (1.0, 40.0, 20.0, 0.6, 0.4, 0.0, 100.0),
 )
-INPUT_NAMES = ("input_speed", "input_acceleration", "bend_angle", "bend_angle_rate",
-               "bend_angle_acceleration", "load_torque")
+INPUT_NAMES = table.INPUTS
 # At most 10 columns with the time (the cross-check rules' recommendation).
-REFERENCE_OUTPUTS = ("output_angle", "output_speed", "output_acceleration", "cardan_error",
-                     "input_torque", "input_yoke_moment", "output_yoke_moment",
-                     "crosspiece_kinetic_energy", "crosspiece_quaternion_0")
+REFERENCE_OUTPUTS = (
+    "output_angle",
+    "output_speed",
+    "output_acceleration",
+    "cardan_error",
+    "input_torque",
+    "input_yoke_moment",
+    "output_yoke_moment",
+    "crosspiece_kinetic_energy",
+    "crosspiece_quaternion_0",
+)
 
 
 def tool_version() -> str:
     try:
         return version("cardan-joint-fmu")
-    except PackageNotFoundError:          # a source tree that is not installed
+    except PackageNotFoundError:  # a source tree that is not installed
         return "0+unknown"
 
 
@@ -108,10 +117,11 @@ def write_cross_check(dest: str | Path, fmu_path: str | Path) -> Path:
     """Write the model's cross-check folder under `dest`; return that folder."""
     readme = DOCS / "README.md"
     if not readme.is_file():
-        raise FileNotFoundError(f"{readme} not found: the cross-check folder is written from "
-                                f"a source checkout of the repository")
-    folder = (Path(dest) / "fmus" / "2.0" / "cs" / "linux64" / TOOL_ID / tool_version()
-              / MODEL)
+        raise FileNotFoundError(
+            f"{readme} not found: the cross-check folder is written from "
+            f"a source checkout of the repository"
+        )
+    folder = Path(dest) / "fmus" / "2.0" / "cs" / "linux64" / TOOL_ID / tool_version() / MODEL
     folder.mkdir(parents=True, exist_ok=True)
     shutil.copyfile(fmu_path, folder / f"{MODEL}.fmu")
     shutil.copyfile(readme, folder / "README.md")
@@ -121,9 +131,11 @@ def write_cross_check(dest: str | Path, fmu_path: str | Path) -> Path:
 
 def main(argv=None) -> int:
     parser = argparse.ArgumentParser(
-        description=f"Rewrite {MODEL}'s reference files (_in.csv, _ref.opt, _ref.csv).")
-    parser.add_argument("folder", nargs="?", default=str(DOCS),
-                        help=f"where to write them (default: {DOCS})")
+        description=f"Rewrite {MODEL}'s reference files (_in.csv, _ref.opt, _ref.csv)."
+    )
+    parser.add_argument(
+        "folder", nargs="?", default=str(DOCS), help=f"where to write them (default: {DOCS})"
+    )
     args = parser.parse_args(argv)
     for path in write_reference_files(args.folder):
         print(f"wrote {path}")

@@ -14,7 +14,8 @@ _UNITS = {**_JOINT_UNITS,
 
 def _table(variables) -> VariableTable:
     """A VariableTable declaring the units its variables use."""
-    return VariableTable(variables, {u: _UNITS[u] for u in dict.fromkeys(v.unit for v in variables)})
+    used = dict.fromkeys(v.unit for v in variables)
+    return VariableTable(variables, {u: _UNITS[u] for u in used})
 
 
 _IN, _PAR, _OUT = "input", "parameter", "output"

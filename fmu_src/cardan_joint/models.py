@@ -7,9 +7,9 @@ cannot run would only fail later, in someone's master. Pure data plus small
 checks; the build itself lives in `build.py`.
 """
 
+from collections.abc import Callable, Mapping
 from dataclasses import dataclass, field
 from pathlib import Path
-from typing import Callable, Dict, Mapping, Optional
 
 from . import variables as joint_table
 
@@ -76,17 +76,17 @@ class Model:
     its `build_settings = {}` line (when it has one).
     """
     key: str
-    scripts: Dict[int, Path]
+    scripts: dict[int, Path]
     check_start_values: Callable[[Mapping[str, float], Mapping], None]
     default_settings: Mapping = field(default_factory=dict)
     # Model name for given settings (default: the key).
-    name_for: Optional[Callable[[Mapping], str]] = None
+    name_for: Callable[[Mapping], str] | None = None
 
     def default_name(self, settings: Mapping) -> str:
         return self.name_for(settings) if self.name_for else self.key
 
 
-MODELS: Dict[str, Model] = {
+MODELS: dict[str, Model] = {
     "UniversalJoint": Model(
         key="UniversalJoint",
         scripts={2: FMU_DIR / "UniversalJoint.py", 3: FMU_DIR / "UniversalJoint3.py"},

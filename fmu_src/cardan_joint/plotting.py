@@ -4,8 +4,8 @@ Variables are plotted in their display units (the variable table's: deg, rpm,
 rpm/s, ...), so a figure from `cardan-joint simulate` reads like the examples'.
 """
 
+from collections.abc import Sequence
 from pathlib import Path
-from typing import Sequence
 
 from . import variables as table
 
@@ -13,11 +13,13 @@ from . import variables as table
 def pyplot():
     """matplotlib.pyplot on the file-only Agg backend, with the project's style."""
     import matplotlib
+
     matplotlib.use("Agg")
     import matplotlib.pyplot as plt
 
-    plt.rcParams.update({"axes.grid": True, "grid.alpha": 0.3, "legend.fontsize": 8,
-                         "legend.framealpha": 0.9})
+    plt.rcParams.update(
+        {"axes.grid": True, "grid.alpha": 0.3, "legend.fontsize": 8, "legend.framealpha": 0.9}
+    )
     return plt
 
 
@@ -45,8 +47,9 @@ def display(name: str):
 def plot_time_series(result, names: Sequence[str], path, title: str) -> Path:
     """One panel per variable over time, in display units."""
     plt = pyplot()
-    fig, axes = plt.subplots(len(names), 1, figsize=(9, 2.2 + 2.0 * len(names)), sharex=True,
-                             squeeze=False)
+    fig, axes = plt.subplots(
+        len(names), 1, figsize=(9, 2.2 + 2.0 * len(names)), sharex=True, squeeze=False
+    )
     for ax, name in zip(axes[:, 0], names):
         factor, unit = display(name)
         ax.plot(result["time"], result[name] * factor, lw=0.9)

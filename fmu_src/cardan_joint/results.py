@@ -4,18 +4,19 @@ Time series (FMPy's structured result arrays, and any table of numbers) go to
 CSV in FMPy's column format through `fmpy.util.write_csv`: a quoted header, one
 column per variable, values printed as the shortest text that reads back to the
 same double. They are read back through pandas (FMPy's reader takes a space
-after a comma for a vector column, which hand-written input files often have). Tables with text columns (the design sweep's status
+after a comma for a vector column, which hand-written input files often have).
+Tables with text columns (the design sweep's status
 and message) go through pandas, also round-trip exact, and to Parquet when a
 Parquet engine (pyarrow) is installed.
 """
 
+from collections.abc import Iterable, Mapping, Sequence
 from os import PathLike
 from pathlib import Path
-from typing import Iterable, Mapping, Sequence, Union
 
 import numpy as np
 
-PathType = Union[str, PathLike]
+PathType = str | PathLike
 
 
 class ResultFileError(ValueError):
@@ -40,8 +41,11 @@ def structured(columns: Mapping[str, Iterable[float]]) -> np.ndarray:
     return data
 
 
-def write_csv(data: Union[np.ndarray, Mapping[str, Iterable[float]]], path: PathType,
-              columns: Sequence[str] = None) -> Path:
+def write_csv(
+    data: np.ndarray | Mapping[str, Iterable[float]],
+    path: PathType,
+    columns: Sequence[str] | None = None,
+) -> Path:
     """Write a result (structured array, or {name: column} of numbers) in FMPy's CSV format.
 
     `columns`: the variables to write besides `time` (FMPy's convention; None: all)."""
@@ -70,8 +74,9 @@ def read_csv(path: PathType) -> np.ndarray:
     try:
         frame = pd.read_csv(path, skipinitialspace=True, **exact)
     except (pd.errors.EmptyDataError, pd.errors.ParserError, UnicodeDecodeError) as error:
-        raise ResultFileError(f"{path}: not a table under one header line "
-                              f"({' '.join(str(error).split())})") from None
+        raise ResultFileError(
+            f"{path}: not a table under one header line ({' '.join(str(error).split())})"
+        ) from None
     if frame.empty:
         raise ResultFileError(f"{path}: a header line but no data rows")
     columns = {}
@@ -80,8 +85,10 @@ def read_csv(path: PathType) -> np.ndarray:
         wrong = numbers.isna() & frame[name].notna()
         if wrong.any():
             row = int(np.argmax(wrong.to_numpy()))
-            raise ResultFileError(f"{path}, line {row + 2}, column {str(name).strip()!r}: "
-                                  f"{frame[name].iloc[row]!r} is not a number")
+            raise ResultFileError(
+                f"{path}, line {row + 2}, column {str(name).strip()!r}: "
+                f"{frame[name].iloc[row]!r} is not a number"
+            )
         columns[str(name).strip()] = numbers.to_numpy(dtype=float)
     return structured(columns)
 
@@ -106,7 +113,7 @@ def write_table(table, stem: PathType, parquet: bool = True) -> list:
             table.to_parquet(stem.with_suffix(".parquet"), index=False)
             written.append(stem.with_suffix(".parquet"))
         except ImportError:
-            pass                         # no pyarrow/fastparquet: CSV only, as documented
+            pass  # no pyarrow/fastparquet: CSV only, as documented
     return written
 
 

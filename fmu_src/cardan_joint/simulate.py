@@ -107,7 +107,8 @@ def simulate(fmu=DEFAULT_FMU, stop_time=None, output_interval=None, inputs=None,
     if inputs is not None:
         starts = {v.name: float((start_values or {}).get(v.name, v.start))
                   for v in description.modelVariables if v.causality == "input"}
-        inputs = complete_inputs(inputs, starts, stop_time, output_interval)   # FMPy warns otherwise
+        # Every input gets a signal: FMPy warns otherwise.
+        inputs = complete_inputs(inputs, starts, stop_time, output_interval)
 
     messages = []
 
@@ -132,7 +133,7 @@ def simulate(fmu=DEFAULT_FMU, stop_time=None, output_interval=None, inputs=None,
                               debug_logging=True, logger=collect,
                               step_finished=keep_recorder if fmi3 else step_finished,
                               **fmpy_options)
-    except FMICallException as error:
+    except FMICallException:
         if not fmi3 or not messages:
             raise
         result = recorders[0].result() if recorders else np.zeros(0, dtype=[("time", float)])

@@ -9,9 +9,9 @@ hierarchical names, which `fmpy_parameter_set` builds from the bindings.
 """
 
 import zipfile
+from collections.abc import Mapping
 from dataclasses import dataclass, field
 from pathlib import Path
-from typing import Dict, List, Mapping, Tuple
 from xml.etree.ElementTree import Element, SubElement, indent, tostring
 
 _NS = {"ssd": "http://ssp-standard.org/SSP1/SystemStructureDescription",
@@ -39,7 +39,8 @@ class Component:
         return f"resources/{self.name}.ssv"
 
 
-Connection = Tuple[str, str, str, str]   # start element, start connector, end element, end connector
+# start element, start connector, end element, end connector
+Connection = tuple[str, str, str, str]
 
 
 def _qualified(prefix: str, tag: str) -> str:
@@ -67,7 +68,7 @@ def parameter_set_xml(name: str, values: Mapping[str, float]) -> bytes:
     return _xml(root)
 
 
-def system_structure_xml(name: str, components: List[Component], connections: List[Connection],
+def system_structure_xml(name: str, components: list[Component], connections: list[Connection],
                          stop_time: float) -> bytes:
     ssd = lambda tag: _qualified("ssd", tag)   # noqa: E731
     root = _root(ssd("SystemStructureDescription"), ("ssd", "ssc"), version="1.0", name=name)
@@ -93,7 +94,7 @@ def system_structure_xml(name: str, components: List[Component], connections: Li
     return _xml(root)
 
 
-def write_ssp(path, name: str, components: List[Component], connections: List[Connection],
+def write_ssp(path, name: str, components: list[Component], connections: list[Connection],
               stop_time: float) -> Path:
     """Write the SSP archive `path`; return its path."""
     by_name = {c.name: c for c in components}

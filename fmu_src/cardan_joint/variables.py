@@ -12,7 +12,6 @@ import math
 import os
 import re
 from dataclasses import dataclass
-from typing import Optional
 
 # Conversion factors, named for their direction (X_TO_Y multiplies a value in X
 # into Y). Defined here because the FMU ships this file (build.RUNTIME), and the
@@ -59,10 +58,10 @@ class Variable:
     causality: str            # "input", "parameter" or "output"
     unit: str
     description: str
-    start: Optional[float] = None
-    display_unit: Optional[str] = None
-    min: Optional[float] = None
-    max: Optional[float] = None
+    start: float | None = None
+    display_unit: str | None = None
+    min: float | None = None
+    max: float | None = None
     depends_on: tuple = ()    # outputs only
 
     @property
@@ -70,7 +69,7 @@ class Variable:
         return "fixed" if self.causality == "parameter" else "continuous"
 
     @property
-    def initial(self) -> Optional[str]:
+    def initial(self) -> str | None:
         return {"parameter": "exact", "output": "calculated"}.get(self.causality)
 
 

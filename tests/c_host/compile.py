@@ -10,7 +10,19 @@ NATIVE = HERE.parents[1] / "fmu_src" / "cardan_joint" / "native"
 
 
 def compile_host(output: Path) -> Path:
-    subprocess.run([*shlex.split(os.environ.get("CC") or "cc"), "-std=gnu11", "-O2", "-pthread",
-                    f"-I{NATIVE}", *map(str, sorted(HERE.glob("*.c"))), "-ldl", "-lm",
-                    "-o", str(output)], check=True)
+    subprocess.run(
+        [
+            *shlex.split(os.environ.get("CC") or "cc"),
+            "-std=gnu11",
+            "-O2",
+            "-pthread",
+            f"-I{NATIVE}",
+            *map(str, sorted(HERE.glob("*.c"))),
+            "-ldl",
+            "-lm",
+            "-o",
+            str(output),
+        ],
+        check=True,
+    )
     return output

@@ -65,32 +65,41 @@ numbers (polynomials with float coefficients are fine: floats are exact
 binary numbers and are promoted to mpf).
 """
 
-import mpmath
 from mpmath import mp, mpf
 
-__all__ = ["geometric_reference", "geometric_reference_mp", "construct",
-           "KEYS"]
+__all__ = ["geometric_reference", "geometric_reference_mp", "construct", "KEYS"]
 
 KEYS = (
-    "input_angle", "output_angle", "cardan_error", "output_speed",
-    "output_acceleration", "speed_ratio",
-    "crosspiece_angular_velocity_1", "crosspiece_angular_velocity_2",
+    "input_angle",
+    "output_angle",
+    "cardan_error",
+    "output_speed",
+    "output_acceleration",
+    "speed_ratio",
+    "crosspiece_angular_velocity_1",
+    "crosspiece_angular_velocity_2",
     "crosspiece_angular_velocity_3",
-    "crosspiece_angular_acceleration_1", "crosspiece_angular_acceleration_2",
+    "crosspiece_angular_acceleration_1",
+    "crosspiece_angular_acceleration_2",
     "crosspiece_angular_acceleration_3",
-    "crosspiece_torque_1", "crosspiece_torque_2", "crosspiece_torque_3",
+    "crosspiece_torque_1",
+    "crosspiece_torque_2",
+    "crosspiece_torque_3",
     "crosspiece_kinetic_energy",
-    "crosspiece_quaternion_0", "crosspiece_quaternion_1",
-    "crosspiece_quaternion_2", "crosspiece_quaternion_3",
-    "input_torque", "input_yoke_moment", "output_yoke_moment", "hinge_torque",
+    "crosspiece_quaternion_0",
+    "crosspiece_quaternion_1",
+    "crosspiece_quaternion_2",
+    "crosspiece_quaternion_3",
+    "input_torque",
+    "input_yoke_moment",
+    "output_yoke_moment",
+    "hinge_torque",
 )
 
 
 # ---------------------------------------------------------------- vectors
 def _cross(a, b):
-    return (a[1] * b[2] - a[2] * b[1],
-            a[2] * b[0] - a[0] * b[2],
-            a[0] * b[1] - a[1] * b[0])
+    return (a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0])
 
 
 def _dot(a, b):
@@ -102,13 +111,11 @@ def _norm(a):
 
 
 def _matvec(M, v):
-    return tuple(M[i][0] * v[0] + M[i][1] * v[1] + M[i][2] * v[2]
-                 for i in range(3))
+    return tuple(M[i][0] * v[0] + M[i][1] * v[1] + M[i][2] * v[2] for i in range(3))
 
 
 def _matTvec(M, v):
-    return tuple(M[0][j] * v[0] + M[1][j] * v[1] + M[2][j] * v[2]
-                 for j in range(3))
+    return tuple(M[0][j] * v[0] + M[1][j] * v[1] + M[2][j] * v[2] for j in range(3))
 
 
 # ---------------------------------------------------------- construction
@@ -130,8 +137,8 @@ def construct(psi, b):
     p3 = _cross(p1, p2)
     R = [[p1[i], p2[i], p3[i]] for i in range(3)]
     # output-shaft frame: Ry(b) Rz(psi2); its pin Ry(b) Rz(psi2) (0,1,0) = p2
-    ux = cb * p2[0] - sb * p2[2]          # (Ry(b)^T p2)_x = -sin psi2
-    uy = p2[1]                            # (Ry(b)^T p2)_y =  cos psi2
+    ux = cb * p2[0] - sb * p2[2]  # (Ry(b)^T p2)_x = -sin psi2
+    uy = p2[1]  # (Ry(b)^T p2)_y =  cos psi2
     a = mp.atan2(-ux, uy)
     k = mp.nint((psi - a) / (2 * mp.pi))
     psi2 = a + 2 * mp.pi * k
@@ -146,46 +153,41 @@ def _quaternion(R):
     if i == 0:
         q0 = mp.sqrt(1 + tr) / 2
         f = 4 * q0
-        return (q0, (R[2][1] - R[1][2]) / f, (R[0][2] - R[2][0]) / f,
-                (R[1][0] - R[0][1]) / f)
+        return (q0, (R[2][1] - R[1][2]) / f, (R[0][2] - R[2][0]) / f, (R[1][0] - R[0][1]) / f)
     if i == 1:
         q1 = mp.sqrt(1 + 2 * R[0][0] - tr) / 2
         f = 4 * q1
-        return ((R[2][1] - R[1][2]) / f, q1, (R[0][1] + R[1][0]) / f,
-                (R[0][2] + R[2][0]) / f)
+        return ((R[2][1] - R[1][2]) / f, q1, (R[0][1] + R[1][0]) / f, (R[0][2] + R[2][0]) / f)
     if i == 2:
         q2 = mp.sqrt(1 + 2 * R[1][1] - tr) / 2
         f = 4 * q2
-        return ((R[0][2] - R[2][0]) / f, (R[0][1] + R[1][0]) / f, q2,
-                (R[1][2] + R[2][1]) / f)
+        return ((R[0][2] - R[2][0]) / f, (R[0][1] + R[1][0]) / f, q2, (R[1][2] + R[2][1]) / f)
     q3 = mp.sqrt(1 + 2 * R[2][2] - tr) / 2
     f = 4 * q3
-    return ((R[1][0] - R[0][1]) / f, (R[0][2] + R[2][0]) / f,
-            (R[1][2] + R[2][1]) / f, q3)
+    return ((R[1][0] - R[0][1]) / f, (R[0][2] + R[2][0]) / f, (R[1][2] + R[2][1]) / f, q3)
 
 
 def _vee(S):
     """Axial vector of the skew part of S."""
-    return ((S[2][1] - S[1][2]) / 2,
-            (S[0][2] - S[2][0]) / 2,
-            (S[1][0] - S[0][1]) / 2)
+    return ((S[2][1] - S[1][2]) / 2, (S[0][2] - S[2][0]) / 2, (S[1][0] - S[0][1]) / 2)
 
 
 # ------------------------------------------------------------- reference
-def geometric_reference(t, input_angle, bend_angle, yoke_phase=0.0,
-                        inertia=(0.0, 0.0, 0.0), load_torque=0.0, dps=40):
+def geometric_reference(
+    t, input_angle, bend_angle, yoke_phase=0.0, inertia=(0.0, 0.0, 0.0), load_torque=0.0, dps=40
+):
     """Reference outputs of the joint at time t (see module docstring).
 
     input_angle(t), bend_angle(t): callables of an mpf time returning mpf.
     Returns a dict of Python floats (keys: ``KEYS``).
     """
-    r = geometric_reference_mp(t, input_angle, bend_angle, yoke_phase,
-                               inertia, load_torque, dps)
+    r = geometric_reference_mp(t, input_angle, bend_angle, yoke_phase, inertia, load_torque, dps)
     return {k: float(v) for k, v in r.items()}
 
 
-def geometric_reference_mp(t, input_angle, bend_angle, yoke_phase=0.0,
-                           inertia=(0.0, 0.0, 0.0), load_torque=0.0, dps=40):
+def geometric_reference_mp(
+    t, input_angle, bend_angle, yoke_phase=0.0, inertia=(0.0, 0.0, 0.0), load_torque=0.0, dps=40
+):
     """As ``geometric_reference`` but returns the mpf values (dps digits)."""
     with mp.workdps(dps):
         t = mpf(t)
@@ -216,17 +218,16 @@ def geometric_reference_mp(t, input_angle, bend_angle, yoke_phase=0.0,
             r = kin_cache.get(key)
             if r is None:
                 R = geo(s)[0]
-                Rd = [[mp.diff(R_elem(i, j), s) for j in range(3)]
-                      for i in range(3)]
+                Rd = [[mp.diff(R_elem(i, j), s) for j in range(3)] for i in range(3)]
                 # S = R^T dR/dt
-                S = [[sum(R[k][i] * Rd[k][j] for k in range(3))
-                      for j in range(3)] for i in range(3)]
+                S = [
+                    [sum(R[k][i] * Rd[k][j] for k in range(3)) for j in range(3)] for i in range(3)
+                ]
                 Om = _vee(S)
                 IOm = (I[0] * Om[0], I[1] * Om[1], I[2] * Om[2])
                 # H_F = R diag(I) R^T omega_F, omega_F = R Omega
                 omF = _matvec(R, Om)
-                H = _matvec(R, tuple(I[k] * _matTvec(R, omF)[k]
-                                     for k in range(3)))
+                H = _matvec(R, tuple(I[k] * _matTvec(R, omF)[k] for k in range(3)))
                 r = (R, Rd, Om, H, IOm)
                 kin_cache[key] = r
             return r
@@ -244,6 +245,7 @@ def geometric_reference_mp(t, input_angle, bend_angle, yoke_phase=0.0,
 
         def gamma2_of_g1(g):
             return construct(g + phi, b)[1] - phi
+
         ratio = mp.diff(gamma2_of_g1, g1)
 
         # --- crosspiece kinematics
@@ -282,10 +284,29 @@ def geometric_reference_mp(t, input_angle, bend_angle, yoke_phase=0.0,
             q = tuple(-c for c in q)
 
         vals = (
-            g1, g2, g2 - g1, w2, a2, ratio,
-            Om[0], Om[1], Om[2], Omd[0], Omd[1], Omd[2],
-            M[0], M[1], M[2], E,
-            q[0], q[1], q[2], q[3],
-            T1, _norm(perp1), _norm(perp2), tau2[1],
+            g1,
+            g2,
+            g2 - g1,
+            w2,
+            a2,
+            ratio,
+            Om[0],
+            Om[1],
+            Om[2],
+            Omd[0],
+            Omd[1],
+            Omd[2],
+            M[0],
+            M[1],
+            M[2],
+            E,
+            q[0],
+            q[1],
+            q[2],
+            q[3],
+            T1,
+            _norm(perp1),
+            _norm(perp2),
+            tau2[1],
         )
         return dict(zip(KEYS, vals))

@@ -116,8 +116,7 @@ def geometry_derivatives(gamma1, bend_angle, yoke_phase=0.0, dps=GEO_DPS):
                 v[k] = [R[i][j] for i in range(3) for j in range(3)]
                 v[k].append(psi2 - phi)
             d1 = [(v[1][m] - v[-1][m]) / (2 * h) for m in range(10)]
-            d2 = [(v[1][m] - 2 * v[0][m] + v[-1][m]) / (h * h)
-                  for m in range(10)]
+            d2 = [(v[1][m] - 2 * v[0][m] + v[-1][m]) / (h * h) for m in range(10)]
         f0 = [float(x) for x in v[0]]
         f1 = [float(x) for x in d1]
         f2 = [float(x) for x in d2]
@@ -128,15 +127,14 @@ def geometry_derivatives(gamma1, bend_angle, yoke_phase=0.0, dps=GEO_DPS):
 
 
 def _vee(S):
-    return 0.5 * np.array([S[2, 1] - S[1, 2], S[0, 2] - S[2, 0],
-                           S[1, 0] - S[0, 1]])
+    return 0.5 * np.array([S[2, 1] - S[1, 2], S[0, 2] - S[2, 0], S[1, 0] - S[0, 1]])
 
 
-def state_quantities(t, gamma1, omega1, bend_angle, inertia, J1, J2,
-                     motor_torque, external_torque, yoke_phase=0.0):
+def state_quantities(
+    t, gamma1, omega1, bend_angle, inertia, J1, J2, motor_torque, external_torque, yoke_phase=0.0
+):
     """Solve the Newton-Euler system at one state; returns a dict of floats."""
-    R, R1, R2, (G0, G1, G2) = geometry_derivatives(gamma1, bend_angle,
-                                                   yoke_phase)
+    R, R1, R2, (G0, G1, G2) = geometry_derivatives(gamma1, bend_angle, yoke_phase)
     I = np.asarray(inertia, dtype=float)
     sb, cb = np.sin(bend_angle), np.cos(bend_angle)
     z = np.array([0.0, 0.0, 1.0])
@@ -148,7 +146,7 @@ def state_quantities(t, gamma1, omega1, bend_angle, inertia, J1, J2,
     hB = R1 @ (I * W) + R @ (I * W1)
     Tm = float(motor_torque(t))
     Te = float(external_torque(t))
-    w2 = omega1 ** 2
+    w2 = omega1**2
 
     # unknowns: a1 | tau1 (1..3) | tau2 (4..6) | B1 (7..9) | B2 (10..12)
     A = np.zeros((13, 13))
@@ -189,16 +187,29 @@ def state_quantities(t, gamma1, omega1, bend_angle, inertia, J1, J2,
         load_torque=float(-(tau2 @ z2)),
         input_yoke_moment=float(np.linalg.norm(B1)),
         output_yoke_moment=float(np.linalg.norm(B2)),
-        tau1=tau1, tau2=tau2, B1=B1, B2=B2,
+        tau1=tau1,
+        tau2=tau2,
+        B1=B1,
+        B2=B2,
         crosspiece_angular_velocity=Om,
         crosspiece_kinetic_energy=float(0.5 * Om @ (I * Om)),
         residual=float(np.max(np.abs(A @ x - rhs))),
     )
 
 
-def simulate_multibody(t_eval, bend_angle, inertia, J1, J2, motor_torque,
-                       external_torque, gamma1_0=0.0, omega1_0=10.0,
-                       yoke_phase=0.0, diagnostics=False):
+def simulate_multibody(
+    t_eval,
+    bend_angle,
+    inertia,
+    J1,
+    J2,
+    motor_torque,
+    external_torque,
+    gamma1_0=0.0,
+    omega1_0=10.0,
+    yoke_phase=0.0,
+    diagnostics=False,
+):
     """Integrate the joint from t_eval[0] and return outputs at t_eval.
 
     bend_angle: constant (rad); inertia: (I1, I2, I3) of the cross;
@@ -211,40 +222,56 @@ def simulate_multibody(t_eval, bend_angle, inertia, J1, J2, motor_torque,
     external_work (integral of T_motor omega1 - T_ext omega2) and residual.
     """
     t_eval = np.asarray(t_eval, dtype=float)
-    args = (bend_angle, inertia, J1, J2, motor_torque, external_torque,
-            yoke_phase)
+    args = (bend_angle, inertia, J1, J2, motor_torque, external_torque, yoke_phase)
 
     def rhs(t, y):
         q = state_quantities(t, y[0], y[1], *args)
-        return [y[1], q["input_acceleration"],
-                q["motor_torque"] * y[1] - q["external_torque"]
-                * q["output_speed"]]
+        return [
+            y[1],
+            q["input_acceleration"],
+            q["motor_torque"] * y[1] - q["external_torque"] * q["output_speed"],
+        ]
 
-    sol = solve_ivp(rhs, (t_eval[0], t_eval[-1]),
-                    [float(gamma1_0), float(omega1_0), 0.0],
-                    method="DOP853", rtol=1e-12, atol=1e-12, t_eval=t_eval)
+    sol = solve_ivp(
+        rhs,
+        (t_eval[0], t_eval[-1]),
+        [float(gamma1_0), float(omega1_0), 0.0],
+        method="DOP853",
+        rtol=1e-12,
+        atol=1e-12,
+        t_eval=t_eval,
+    )
     if not sol.success:
         raise RuntimeError(sol.message)
 
-    keys = ("input_acceleration", "output_angle", "output_speed",
-            "output_acceleration", "motor_torque", "input_torque",
-            "load_torque", "input_yoke_moment", "output_yoke_moment")
+    keys = (
+        "input_acceleration",
+        "output_angle",
+        "output_speed",
+        "output_acceleration",
+        "motor_torque",
+        "input_torque",
+        "load_torque",
+        "input_yoke_moment",
+        "output_yoke_moment",
+    )
     extra = ("external_torque", "crosspiece_kinetic_energy", "residual")
     out = {k: np.empty(len(t_eval)) for k in keys + extra}
     for n, t in enumerate(sol.t):
         q = state_quantities(t, sol.y[0, n], sol.y[1, n], *args)
         for k in keys + extra:
             out[k][n] = q[k]
-    res = dict(time=sol.t.copy(), input_angle=sol.y[0].copy(),
-               input_speed=sol.y[1].copy())
+    res = dict(time=sol.t.copy(), input_angle=sol.y[0].copy(), input_speed=sol.y[1].copy())
     for k in keys:
         res[k] = out[k]
     if diagnostics:
         for k in extra:
             res[k] = out[k]
-        res["total_kinetic_energy"] = (0.5 * J1 * res["input_speed"] ** 2
-                                       + 0.5 * J2 * res["output_speed"] ** 2
-                                       + out["crosspiece_kinetic_energy"])
+        res["total_kinetic_energy"] = (
+            0.5 * J1 * res["input_speed"] ** 2
+            + 0.5 * J2 * res["output_speed"] ** 2
+            + out["crosspiece_kinetic_energy"]
+        )
         res["external_work"] = sol.y[2].copy()
         res["nfev"] = sol.nfev
     return res

@@ -43,12 +43,15 @@ def _rotate(axis, angle, v):
 
 
 class PropshaftReference:
-    def __init__(self, side_angles, top_angles, phases, shaft_inertias=None,
-                 crosspiece_inertia=(0, 0, 0)):
+    def __init__(
+        self, side_angles, top_angles, phases, shaft_inertias=None, crosspiece_inertia=(0, 0, 0)
+    ):
         self.n = len(side_angles) - 1
         with mp.workdps(3 * DPS):
-            self.d = [_unit(_vec(1, mp.tan(mp.mpf(t)), mp.tan(mp.mpf(s))))
-                      for s, t in zip(side_angles, top_angles)]
+            self.d = [
+                _unit(_vec(1, mp.tan(mp.mpf(t)), mp.tan(mp.mpf(s))))
+                for s, t in zip(side_angles, top_angles)
+            ]
             z = _vec(0, 0, 1)
             self.e = [_unit(z - d * _dot(z, d)) for d in self.d]
         self.phases = [mp.mpf(p) for p in phases]
@@ -87,11 +90,12 @@ class PropshaftReference:
             g0 = mp.mpf(gamma0)
             h = mp.mpf(10) ** -DPS
             guesses = [g0 + o for o in branch_offsets]
-            samples = [self._construct(g0 + s * h, [x + s * h for x in guesses])
-                       for s in (-1, 0, 1)]
+            samples = [
+                self._construct(g0 + s * h, [x + s * h for x in guesses]) for s in (-1, 0, 1)
+            ]
             (a_m, f_m), (a_0, f_0), (a_p, f_p) = samples
             d1 = [(p - m) / (2 * h) for p, m in zip(a_p, a_m)]
-            d2 = [(p - 2 * c + m) / h ** 2 for p, c, m in zip(a_p, a_0, a_m)]
+            d2 = [(p - 2 * c + m) / h**2 for p, c, m in zip(a_p, a_0, a_m)]
             m_value, m_slope = mp.mpf(0), mp.mpf(0)
             for k in range(self.n - 1):
                 m_value += self.J[k] * d1[k] ** 2
@@ -102,21 +106,24 @@ class PropshaftReference:
                     for row in range(3):
                         R[0][row, col] = f0[col][row]
                         R[1][row, col] = (fp[col][row] - fm[col][row]) / (2 * h)
-                        R[2][row, col] = (fp[col][row] - 2 * f0[col][row] + fm[col][row]) / h ** 2
-                W = R[0].T * R[1]                       # [W]x per unit input speed
-                dW = R[1].T * R[1] + R[0].T * R[2]      # its derivative in gamma_0
+                        R[2][row, col] = (fp[col][row] - 2 * f0[col][row] + fm[col][row]) / h**2
+                W = R[0].T * R[1]  # [W]x per unit input speed
+                dW = R[1].T * R[1] + R[0].T * R[2]  # its derivative in gamma_0
                 w = [(W[2, 1] - W[1, 2]) / 2, (W[0, 2] - W[2, 0]) / 2, (W[1, 0] - W[0, 1]) / 2]
-                dw = [(dW[2, 1] - dW[1, 2]) / 2, (dW[0, 2] - dW[2, 0]) / 2,
-                      (dW[1, 0] - dW[0, 1]) / 2]
+                dw = [
+                    (dW[2, 1] - dW[1, 2]) / 2,
+                    (dW[0, 2] - dW[2, 0]) / 2,
+                    (dW[1, 0] - dW[0, 1]) / 2,
+                ]
                 m_value += sum(i * x * x for i, x in zip(self.I, w))
                 m_slope += sum(2 * i * x * y for i, x, y in zip(self.I, w, dw))
             w0, a0, load = mp.mpf(speed), mp.mpf(acceleration), mp.mpf(load_torque)
             return {
                 "angles": [+x for x in a_0],
                 "speeds": [x * w0 for x in d1],
-                "accelerations": [x * w0 ** 2 + y * a0 for y, x in zip(d1, d2)],
-                "input_torque": load * d1[-1] + m_value * a0 + m_slope * w0 ** 2 / 2,
-                "kinetic_energy": m_value * w0 ** 2 / 2,
+                "accelerations": [x * w0**2 + y * a0 for y, x in zip(d1, d2)],
+                "input_torque": load * d1[-1] + m_value * a0 + m_slope * w0**2 / 2,
+                "kinetic_energy": m_value * w0**2 / 2,
                 "speed_ratio": d1[-1],
             }
 
@@ -135,7 +142,6 @@ class PropshaftReference:
         for (x0, (_, s0)), (x1, (_, s1)) in zip(zip(grid, values), zip(grid[1:], values[1:])):
             if s0 * s1 < 0:
                 with mp.workdps(20):
-                    root = mp.findroot(lambda x: ratio_and_slope(x)[1], (x0, x1),
-                                       solver="anderson")
+                    root = mp.findroot(lambda x: ratio_and_slope(x)[1], (x0, x1), solver="anderson")
                 extremes.append(ratio_and_slope(root)[0])
         return max(extremes) - min(extremes)

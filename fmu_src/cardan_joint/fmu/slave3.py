@@ -17,7 +17,7 @@ import ctypes
 import math
 import sys
 
-from pythonfmu3 import Fmi3Causality, Fmi3Slave, Fmi3Variability, Float64
+from pythonfmu3 import Float64, Fmi3Causality, Fmi3Slave, Fmi3Variability
 from pythonfmu3.default_experiment import DefaultExperiment
 from pythonfmu3.enums import Fmi3Initial, Fmi3Status
 from pythonfmu3.fmi3slave import Fmi3StepResult

@@ -22,7 +22,7 @@ from pathlib import Path
 SOURCES = ("loader.c", "fmi2_calls.c", "fmu_states.c", "python_runtime.c", "runtime_record.c")
 RECORD = "resources/python_runtime.txt"
 _HERE = Path(__file__).resolve().parent
-_EXPORTS = "{ global: fmi2*; local: *; };\n"   # nothing else may interpose in the host
+_EXPORTS = "{ global: fmi2*; local: *; };\n"  # nothing else may interpose in the host
 
 
 class NativeBuildError(RuntimeError):
@@ -35,7 +35,8 @@ def compiler() -> list:
         raise NativeBuildError(
             f"no C compiler: {command[0] if command else '$CC'!r} not found; install one "
             f"(e.g. `apt-get install gcc`) or set $CC to its path. The FMU needs it to build "
-            f"the loader that lets C hosts run it")
+            f"the loader that lets C hosts run it"
+        )
     return command
 
 
@@ -53,9 +54,14 @@ def search_path() -> list:
     import numpy
 
     stdlib = Path(sysconfig.get_path("stdlib"))
-    candidates = [stdlib.parent / f"python{sys.version_info.major}{sys.version_info.minor}.zip",
-                  stdlib, stdlib / "lib-dynload", Path(sysconfig.get_path("purelib")),
-                  Path(sysconfig.get_path("platlib")), Path(numpy.__file__).parent.parent]
+    candidates = [
+        stdlib.parent / f"python{sys.version_info.major}{sys.version_info.minor}.zip",
+        stdlib,
+        stdlib / "lib-dynload",
+        Path(sysconfig.get_path("purelib")),
+        Path(sysconfig.get_path("platlib")),
+        Path(numpy.__file__).parent.parent,
+    ]
     paths = []
     for path in candidates:
         if path.exists() and str(path) not in paths:
@@ -64,13 +70,15 @@ def search_path() -> list:
 
 
 def runtime_record() -> str:
-    lines = ["# The Python this FMU was built with. Hosts without a Python start it from here.",
-             "# Edit to move the FMU, or set CARDAN_JOINT_FMU_PYTHON_LIBRARY, ..._HOME and",
-             "# ..._PATH (':'-separated); see the README, 'Using the FMU in an FMI tool'.",
-             f"version = {sys.version_info.major}.{sys.version_info.minor}",
-             f"library = {shared_libpython()}",
-             f"home = {sys.base_prefix}",
-             f"executable = {sys.executable}"]
+    lines = [
+        "# The Python this FMU was built with. Hosts without a Python start it from here.",
+        "# Edit to move the FMU, or set CARDAN_JOINT_FMU_PYTHON_LIBRARY, ..._HOME and",
+        "# ..._PATH (':'-separated); see the README, 'Using the FMU in an FMI tool'.",
+        f"version = {sys.version_info.major}.{sys.version_info.minor}",
+        f"library = {shared_libpython()}",
+        f"home = {sys.base_prefix}",
+        f"executable = {sys.executable}",
+    ]
     lines += [f"path = {path}" for path in search_path()]
     return "\n".join(lines) + "\n"
 
@@ -78,18 +86,34 @@ def runtime_record() -> str:
 def compile_loader(model_identifier: str, output: Path) -> Path:
     include = Path(sysconfig.get_path("include"))
     if not (include / "Python.h").exists():
-        raise NativeBuildError(f"the build's Python has no headers ({include}/Python.h): "
-                               f"install its development package (e.g. python3-dev)")
+        raise NativeBuildError(
+            f"the build's Python has no headers ({include}/Python.h): "
+            f"install its development package (e.g. python3-dev)"
+        )
     exports = output.parent / "exports.map"
     exports.write_text(_EXPORTS)
-    command = [*compiler(), "-std=gnu11", "-O2", "-fPIC", "-shared", "-pthread",
-               "-Wall", f"-DMODEL_IDENTIFIER=\"{model_identifier}\"", f"-I{include}",
-               *(str(_HERE / source) for source in SOURCES),
-               "-Wl,-z,nodelete", f"-Wl,--version-script={exports}", "-ldl", "-o", str(output)]
+    command = [
+        *compiler(),
+        "-std=gnu11",
+        "-O2",
+        "-fPIC",
+        "-shared",
+        "-pthread",
+        "-Wall",
+        f"-DMODEL_IDENTIFIER=\"{model_identifier}\"",
+        f"-I{include}",
+        *(str(_HERE / source) for source in SOURCES),
+        "-Wl,-z,nodelete",
+        f"-Wl,--version-script={exports}",
+        "-ldl",
+        "-o",
+        str(output),
+    ]
     run = subprocess.run(command, capture_output=True, text=True)
     if run.returncode != 0:
-        raise NativeBuildError(f"compiling the loader failed ({shlex.join(command)}):\n"
-                               f"{run.stdout}{run.stderr}")
+        raise NativeBuildError(
+            f"compiling the loader failed ({shlex.join(command)}):\n{run.stdout}{run.stderr}"
+        )
     return output
 
 
@@ -100,15 +124,20 @@ def install_loader(fmu_path, model_identifier: str) -> None:
     with tempfile.TemporaryDirectory(prefix="cardan_joint_loader_") as workdir:
         loader = compile_loader(model_identifier, Path(workdir) / "loader.so")
         rewritten = Path(workdir) / fmu_path.name
-        with zipfile.ZipFile(fmu_path) as source, \
-                zipfile.ZipFile(rewritten, "w", zipfile.ZIP_DEFLATED) as target:
+        with (
+            zipfile.ZipFile(fmu_path) as source,
+            zipfile.ZipFile(rewritten, "w", zipfile.ZIP_DEFLATED) as target,
+        ):
             if binary not in source.namelist():
                 raise NativeBuildError(f"{fmu_path} has no {binary} to put the loader in front of")
             for item in source.infolist():
                 if item.filename == RECORD:
                     continue
-                name = (f"binaries/linux64/{model_identifier}_pythonfmu.so"
-                        if item.filename == binary else item.filename)
+                name = (
+                    f"binaries/linux64/{model_identifier}_pythonfmu.so"
+                    if item.filename == binary
+                    else item.filename
+                )
                 info = zipfile.ZipInfo(name, item.date_time)
                 info.external_attr, info.compress_type = item.external_attr, zipfile.ZIP_DEFLATED
                 target.writestr(info, source.read(item))

@@ -4,16 +4,17 @@
 revolutions, see `revolutions`) and the time; `step` advances them exactly for
 inputs that are polynomial over the step, or refuses the step and changes
 nothing, returning a `Refusal` (variable, value, limit, time, reason code);
-`outputs` evaluates the closed forms for the current values. Pure Python: the FMU maps its variables onto this object.
+`outputs` evaluates the closed forms for the current values. Pure Python: the
+FMU maps its variables onto this object.
 """
 
-import math
 from operator import itemgetter
 
 from .. import variables as table
+from .refusal import Reason, Refusal
+
 # The kernel itself: the FMU's once-per-step call on floats skips the array dispatch.
 from .response import JointResponse
-from .refusal import Reason, Refusal
 from .response import _response as joint_response_kernel
 from .revolutions import split_angle
 from .values import SavedState, ValueChecks, advance_input, value_ranges

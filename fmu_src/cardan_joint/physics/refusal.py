@@ -27,8 +27,8 @@ class Reason(str, Enum):
     SPEED_OVERFLOW = "speed_overflow"                # input speed beyond its range at step end
     SHAFT_ANGLE = "shaft_angle_invalid"              # a propshaft shaft angle not in (-pi/2, pi/2)
     WORKING_ANGLE_GUARD = "max_working_angle_invalid"  # max_working_angle not in (0, pi/2)
-    WORKING_ANGLE = "working_angle"                  # a joint's working angle >= max_working_angle
-    ROTOR_SPEED = "rotor_speed"                      # the motor's speed beyond its range at step end
+    WORKING_ANGLE = "working_angle"                  # a joint's working angle >= the limit
+    ROTOR_SPEED = "rotor_speed"                      # the motor's speed out of range at step end
 
 
 _LIMIT = "max_bend_angle = {limit} rad ({limit:deg} deg)"
@@ -67,7 +67,8 @@ _TEMPLATES = {
                         "drives the rotor speed to {value} rad/s, beyond the limit {limit} rad/s",
 }
 # Fixed by the reason, so not written in the message.
-_IMPLIED = {Reason.BEND_ANGLE: ("bend_angle", "rad"), Reason.BEND_AT_STEP_END: ("bend_angle", "rad"),
+_IMPLIED = {Reason.BEND_ANGLE: ("bend_angle", "rad"),
+            Reason.BEND_AT_STEP_END: ("bend_angle", "rad"),
             Reason.BEND_PEAK_IN_STEP: ("bend_angle", "rad"),
             Reason.BEND_GUARD: ("max_bend_angle", "rad"), Reason.STEP_SIZE: ("step_size", "s"),
             Reason.ANGLE_OVERFLOW: ("input_angle", "rad"),

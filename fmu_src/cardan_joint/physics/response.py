@@ -30,11 +30,12 @@ import numpy as np
 
 from ._backend import namespace
 
-_new_tuple = tuple.__new__     # skips NamedTuple's Python-level __new__ (once per FMU step)
+_new_tuple = tuple.__new__  # skips NamedTuple's Python-level __new__ (once per FMU step)
 
 
 class JointResponse(NamedTuple):
     """Field names are the FMU's output names (docs/UniversalJoint/README.md), plus three extras."""
+
     cardan_error: Any
     speed_ratio: Any
     output_speed: Any
@@ -61,21 +62,37 @@ class JointResponse(NamedTuple):
     crosspiece_angular_acceleration_3: Any
 
 
-_BLOCK = 8192     # samples per pass on large arrays: the temporaries stay in cache
+_BLOCK = 8192  # samples per pass on large arrays: the temporaries stay in cache
 
 
-def joint_response(psi, bend_angle, input_speed, input_acceleration=0.0,
-                   bend_angle_rate=0.0, bend_angle_acceleration=0.0,
-                   inertia=(0.0, 0.0, 0.0), load_torque=0.0,
-                   quaternion_sign=1.0) -> JointResponse:
+def joint_response(
+    psi,
+    bend_angle,
+    input_speed,
+    input_acceleration=0.0,
+    bend_angle_rate=0.0,
+    bend_angle_acceleration=0.0,
+    inertia=(0.0, 0.0, 0.0),
+    load_torque=0.0,
+    quaternion_sign=1.0,
+) -> JointResponse:
     """All outputs at input-pin angle `psi`.
 
     Scalars or numpy arrays (broadcast) for every argument, including the three
     principal inertias. The quaternion has period 4 pi in psi: a caller passing
     psi reduced modulo 2 pi gives `quaternion_sign` = (-1)^(whole revolutions).
     """
-    args = (psi, bend_angle, input_speed, input_acceleration, bend_angle_rate,
-            bend_angle_acceleration, *inertia, load_torque, quaternion_sign)
+    args = (
+        psi,
+        bend_angle,
+        input_speed,
+        input_acceleration,
+        bend_angle_rate,
+        bend_angle_acceleration,
+        *inertia,
+        load_torque,
+        quaternion_sign,
+    )
     if namespace(*args) is np and np.broadcast(*args).size > 2 * _BLOCK:
         return _in_blocks(args)
     return _response(*args)
@@ -94,8 +111,19 @@ def _in_blocks(args) -> JointResponse:
     return JointResponse(*(row.reshape(shape) for row in out))
 
 
-def _response(psi, bend_angle, input_speed, input_acceleration, bend_angle_rate,
-              bend_angle_acceleration, I1, I2, I3, load_torque, quaternion_sign):
+def _response(
+    psi,
+    bend_angle,
+    input_speed,
+    input_acceleration,
+    bend_angle_rate,
+    bend_angle_acceleration,
+    I1,
+    I2,
+    I3,
+    load_torque,
+    quaternion_sign,
+):
     xp = namespace(psi, bend_angle)
     w1, a1 = input_speed, input_acceleration
     rb, ab = bend_angle_rate, bend_angle_acceleration
@@ -109,7 +137,7 @@ def _response(psi, bend_angle, input_speed, input_acceleration, bend_angle_rate,
     sb = xp.sin(bend_angle)
     cb = xp.cos(bend_angle)
     sc = s * c
-    sbc = sb * c                      # p1 . z2
+    sbc = sb * c  # p1 . z2
     sbs = sb * s
     # D = 1 - (sin b cos psi)^2, written as a sum of squares: no cancellation
     # near the lock-up, where D -> cos^2 b.
@@ -123,8 +151,14 @@ def _response(psi, bend_angle, input_speed, input_acceleration, bend_angle_rate,
     speed_ratio = cb / D
     w2 = (w1 * cb + rb * sb * sc) / D
     D_rate = 2.0 * sbc * (sbs * w1 - cb * c * rb)
-    a2 = (a1 * cb - w1 * rb * sb + ab * sb * sc + rb * rb * cb * sc
-          + rb * w1 * sb * (c - s) * (c + s) - w2 * D_rate) / D
+    a2 = (
+        a1 * cb
+        - w1 * rb * sb
+        + ab * sb * sc
+        + rb * rb * cb * sc
+        + rb * w1 * sb * (c - s) * (c + s)
+        - w2 * D_rate
+    ) / D
 
     # Crosspiece angular velocity and its rate, components in C.
     W1 = w2 * sbc + rb * s
@@ -156,7 +190,30 @@ def _response(psi, bend_angle, input_speed, input_acceleration, bend_angle_rate,
     output_moment = abs(Dd * sbc - M1 * rD)
     hinge_torque = M1 * s - Dd * sb * sc / rD
 
-    return _new_tuple(JointResponse, (
-        cardan_error, speed_ratio, w2, a2, W1, W2, W3, M1, M2, M3, energy,
-        qc * cos_half_rho, qc * sin_half_rho, qs * sin_half_rho, qs * cos_half_rho,
-        input_torque, input_moment, output_moment, hinge_torque, dW1, dW2, dW3))
+    return _new_tuple(
+        JointResponse,
+        (
+            cardan_error,
+            speed_ratio,
+            w2,
+            a2,
+            W1,
+            W2,
+            W3,
+            M1,
+            M2,
+            M3,
+            energy,
+            qc * cos_half_rho,
+            qc * sin_half_rho,
+            qs * sin_half_rho,
+            qs * cos_half_rho,
+            input_torque,
+            input_moment,
+            output_moment,
+            hinge_torque,
+            dW1,
+            dW2,
+            dW3,
+        ),
+    )

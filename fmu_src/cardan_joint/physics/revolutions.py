@@ -13,8 +13,8 @@ from typing import NamedTuple
 
 # 2 pi as a double-double: the double nearest to it and the rest.
 TWO_PI_HI = 2.0 * math.pi
-TWO_PI_LO = 2.4492935982947064e-16   # 2 pi - TWO_PI_HI
-_SPLITTER = 134217729.0              # 2**27 + 1, Dekker's split
+TWO_PI_LO = 2.4492935982947064e-16  # 2 pi - TWO_PI_HI
+_SPLITTER = 134217729.0  # 2**27 + 1, Dekker's split
 
 
 class RevolutionAngle(NamedTuple):
@@ -69,7 +69,7 @@ def _normalized(turns: int, fraction: float, error: float) -> RevolutionAngle:
     if not 0.0 <= fraction <= TWO_PI_HI:
         turns, fraction, error = _shift(turns, fraction, error, math.floor(fraction / TWO_PI_HI))
         fraction, error = _two_sum(fraction, error)
-        if fraction < 0.0 or fraction > TWO_PI_HI:   # the floor landed one off
+        if fraction < 0.0 or fraction > TWO_PI_HI:  # the floor landed one off
             turns, fraction, error = _shift(turns, fraction, error, -1 if fraction < 0.0 else 1)
             fraction, error = _two_sum(fraction, error)
     return _new_tuple(RevolutionAngle, (turns, fraction, error))

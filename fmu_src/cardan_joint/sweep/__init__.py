@@ -20,13 +20,33 @@ from .case import run_case, run_task
 from .command import add_arguments, main, spec_from_arguments
 from .execution import connect, local_cluster, run_dask, run_serial, warm_up
 from .heatmap import cell_edges, plot_heatmaps
-from .spec import (ACCELERATION_LIMIT, FAILED, INERTIA_DISTRIBUTIONS, OK, PEAKS, Case,
-                   SweepSpec)
+from .spec import ACCELERATION_LIMIT, FAILED, INERTIA_DISTRIBUTIONS, OK, PEAKS, Case, SweepSpec
 from .store import CaseStore, SettingsMismatch, to_table, write_table
 from .timing import compare
 
-__all__ = ["ACCELERATION_LIMIT", "FAILED", "INERTIA_DISTRIBUTIONS", "OK", "PEAKS", "Case",
-           "CaseStore", "SettingsMismatch", "SweepSpec", "add_arguments", "cell_edges",
-           "compare", "connect", "local_cluster", "main", "plot_heatmaps", "run_case",
-           "run_dask", "run_serial", "run_task", "spec_from_arguments", "to_table", "warm_up",
-           "write_table"]
+__all__ = [
+    "ACCELERATION_LIMIT",
+    "FAILED",
+    "INERTIA_DISTRIBUTIONS",
+    "OK",
+    "PEAKS",
+    "Case",
+    "CaseStore",
+    "SettingsMismatch",
+    "SweepSpec",
+    "add_arguments",
+    "cell_edges",
+    "compare",
+    "connect",
+    "local_cluster",
+    "main",
+    "plot_heatmaps",
+    "run_case",
+    "run_dask",
+    "run_serial",
+    "run_task",
+    "spec_from_arguments",
+    "to_table",
+    "warm_up",
+    "write_table",
+]

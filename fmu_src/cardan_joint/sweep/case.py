@@ -13,9 +13,16 @@ from pathlib import Path
 from ..units import DEG_TO_RAD, RPM_TO_RAD_PER_S
 from .spec import FAILED, OK, PEAKS, Case, SweepSpec
 
-_RECORDED = ("output_speed", "output_acceleration", "crosspiece_torque_1",
-             "crosspiece_torque_2", "crosspiece_torque_3", "input_torque",
-             "input_yoke_moment", "output_yoke_moment")
+_RECORDED = (
+    "output_speed",
+    "output_acceleration",
+    "crosspiece_torque_1",
+    "crosspiece_torque_2",
+    "crosspiece_torque_3",
+    "input_torque",
+    "input_yoke_moment",
+    "output_yoke_moment",
+)
 
 
 def _failure_message(error):
@@ -29,18 +36,25 @@ def cosimulate(fmu_dir, stop_time, step, inputs, start_values, output):
     """The sweep's one call into the FMU stack (the place to switch how FMUs are run)."""
     from ..simulate import simulate
 
-    return simulate(fmu_dir, stop_time=stop_time, output_interval=step, inputs=inputs,
-                    start_values=start_values, output=output)
+    return simulate(
+        fmu_dir,
+        stop_time=stop_time,
+        output_interval=step,
+        inputs=inputs,
+        start_values=start_values,
+        output=output,
+    )
 
 
 def run_case(fmu_dir, spec: SweepSpec, case: Case) -> dict:
     """Co-simulate one case; return its table row (never raises for a bad case)."""
     import numpy as np
 
-    inertias = {f"crosspiece_inertia_{k}": value
-                for k, value in enumerate(spec.inertias(case.inertia_distribution), 1)}
-    row = {**asdict(case), **inertias, "load_torque": spec.load_torque, "status": OK,
-           "message": ""}
+    inertias = {
+        f"crosspiece_inertia_{k}": value
+        for k, value in enumerate(spec.inertias(case.inertia_distribution), 1)
+    }
+    row = {**asdict(case), **inertias, "load_torque": spec.load_torque, "status": OK, "message": ""}
     speed = case.input_speed_rpm * RPM_TO_RAD_PER_S
     try:
         if speed <= 0.0:
@@ -49,24 +63,45 @@ def run_case(fmu_dir, spec: SweepSpec, case: Case) -> dict:
         start_values = dict(inertias)
         if spec.max_bend_angle_deg is not None:
             start_values["max_bend_angle"] = spec.max_bend_angle_deg * DEG_TO_RAD
-        inputs = {"input_speed": speed, "input_acceleration": 0.0,
-                  "bend_angle": case.bend_angle_deg * DEG_TO_RAD, "bend_angle_rate": 0.0,
-                  "bend_angle_acceleration": 0.0, "load_torque": spec.load_torque}
-        result = cosimulate(fmu_dir, spec.revolutions * spec.steps_per_revolution * step, step,
-                            inputs, start_values, list(_RECORDED))
-        torque = np.sqrt(result["crosspiece_torque_1"] ** 2 + result["crosspiece_torque_2"] ** 2
-                         + result["crosspiece_torque_3"] ** 2)
-        row.update({
-            "peak_output_acceleration": float(np.abs(result["output_acceleration"]).max()),
-            "peak_crosspiece_torque": float(torque.max()),
-            "speed_fluctuation": float(np.ptp(result["output_speed"]) / speed),
-            "peak_input_torque": float(np.abs(result["input_torque"]).max()),
-            "peak_input_yoke_moment": float(result["input_yoke_moment"].max()),
-            "peak_output_yoke_moment": float(result["output_yoke_moment"].max()),
-        })
-    except Exception as error:         # a failed case is a result, not a crash
-        row.update({"status": FAILED, "message": _failure_message(error),
-                    **{name: math.nan for name in PEAKS}})
+        inputs = {
+            "input_speed": speed,
+            "input_acceleration": 0.0,
+            "bend_angle": case.bend_angle_deg * DEG_TO_RAD,
+            "bend_angle_rate": 0.0,
+            "bend_angle_acceleration": 0.0,
+            "load_torque": spec.load_torque,
+        }
+        result = cosimulate(
+            fmu_dir,
+            spec.revolutions * spec.steps_per_revolution * step,
+            step,
+            inputs,
+            start_values,
+            list(_RECORDED),
+        )
+        torque = np.sqrt(
+            result["crosspiece_torque_1"] ** 2
+            + result["crosspiece_torque_2"] ** 2
+            + result["crosspiece_torque_3"] ** 2
+        )
+        row.update(
+            {
+                "peak_output_acceleration": float(np.abs(result["output_acceleration"]).max()),
+                "peak_crosspiece_torque": float(torque.max()),
+                "speed_fluctuation": float(np.ptp(result["output_speed"]) / speed),
+                "peak_input_torque": float(np.abs(result["input_torque"]).max()),
+                "peak_input_yoke_moment": float(result["input_yoke_moment"].max()),
+                "peak_output_yoke_moment": float(result["output_yoke_moment"].max()),
+            }
+        )
+    except Exception as error:  # a failed case is a result, not a crash
+        row.update(
+            {
+                "status": FAILED,
+                "message": _failure_message(error),
+                **{name: math.nan for name in PEAKS},
+            }
+        )
     return row
 
 

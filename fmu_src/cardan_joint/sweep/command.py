@@ -19,62 +19,124 @@ def add_arguments(parser, default_name="design_sweep"):
     defaults = SweepSpec()
     parser.add_argument("--fmu", default=str(DEFAULT_FMU), help="FMU file (default %(default)s)")
     parser.add_argument("--out", default="results", help="output folder (default %(default)s)")
-    parser.add_argument("--name", default=default_name,
-                        help="file stem of the table, figure and case folder "
-                             "(default %(default)s)")
-    parser.add_argument("--bend-angles", type=float, nargs="+", metavar="DEG",
-                        default=list(defaults.bend_angles_deg),
-                        help="bend angles [deg], any spacing (default %(default)s)")
-    parser.add_argument("--speeds", type=float, nargs="+", metavar="RPM",
-                        default=list(defaults.input_speeds_rpm),
-                        help="input shaft speeds [rpm] (default %(default)s)")
-    parser.add_argument("--distributions", nargs="+", default=list(defaults.distributions),
-                        choices=sorted(INERTIA_DISTRIBUTIONS),
-                        help="crosspiece inertia distributions of I0, Mityushov & Misyura's "
-                             "T1..T4 (default: all)")
-    parser.add_argument("--i0", type=float, default=defaults.total_inertia,
-                        help="total crosspiece inertia I0 [kg.m2] (default %(default)s)")
-    parser.add_argument("--load-torque", type=float, default=defaults.load_torque,
-                        help="load torque [N.m] (default %(default)s)")
-    parser.add_argument("--revolutions", type=int, default=defaults.revolutions,
-                        help="input revolutions simulated per case (default %(default)s)")
-    parser.add_argument("--steps-per-revolution", type=int,
-                        default=defaults.steps_per_revolution,
-                        help="communication steps per input revolution (default %(default)s)")
-    parser.add_argument("--max-bend-angle", type=float, default=None, metavar="DEG",
-                        help="the FMU's bend guard for every run (default: the FMU's own)")
+    parser.add_argument(
+        "--name",
+        default=default_name,
+        help="file stem of the table, figure and case folder (default %(default)s)",
+    )
+    parser.add_argument(
+        "--bend-angles",
+        type=float,
+        nargs="+",
+        metavar="DEG",
+        default=list(defaults.bend_angles_deg),
+        help="bend angles [deg], any spacing (default %(default)s)",
+    )
+    parser.add_argument(
+        "--speeds",
+        type=float,
+        nargs="+",
+        metavar="RPM",
+        default=list(defaults.input_speeds_rpm),
+        help="input shaft speeds [rpm] (default %(default)s)",
+    )
+    parser.add_argument(
+        "--distributions",
+        nargs="+",
+        default=list(defaults.distributions),
+        choices=sorted(INERTIA_DISTRIBUTIONS),
+        help="crosspiece inertia distributions of I0, Mityushov & Misyura's T1..T4 (default: all)",
+    )
+    parser.add_argument(
+        "--i0",
+        type=float,
+        default=defaults.total_inertia,
+        help="total crosspiece inertia I0 [kg.m2] (default %(default)s)",
+    )
+    parser.add_argument(
+        "--load-torque",
+        type=float,
+        default=defaults.load_torque,
+        help="load torque [N.m] (default %(default)s)",
+    )
+    parser.add_argument(
+        "--revolutions",
+        type=int,
+        default=defaults.revolutions,
+        help="input revolutions simulated per case (default %(default)s)",
+    )
+    parser.add_argument(
+        "--steps-per-revolution",
+        type=int,
+        default=defaults.steps_per_revolution,
+        help="communication steps per input revolution (default %(default)s)",
+    )
+    parser.add_argument(
+        "--max-bend-angle",
+        type=float,
+        default=None,
+        metavar="DEG",
+        help="the FMU's bend guard for every run (default: the FMU's own)",
+    )
     mode = parser.add_mutually_exclusive_group()
-    mode.add_argument("--scheduler", default=None, metavar="ADDRESS",
-                      help="Dask scheduler, e.g. tcp://host:8786 (default: a LocalCluster)")
+    mode.add_argument(
+        "--scheduler",
+        default=None,
+        metavar="ADDRESS",
+        help="Dask scheduler, e.g. tcp://host:8786 (default: a LocalCluster)",
+    )
     mode.add_argument("--serial", action="store_true", help="run every task in this process")
-    mode.add_argument("--compare", action="store_true",
-                      help="run on Dask and serially, check the tables are identical, "
-                           "print both wall times and the speed-up (nothing resumed)")
-    parser.add_argument("--workers", type=int, default=2,
-                        help="LocalCluster worker processes (default %(default)s)")
-    parser.add_argument("--repeat", type=int, default=1,
-                        help="with --compare: timing repetitions (default %(default)s)")
-    parser.add_argument("--fresh", action="store_true",
-                        help="discard the cases of an earlier run of this sweep (default: "
-                             "resume it, computing only the missing cases)")
+    mode.add_argument(
+        "--compare",
+        action="store_true",
+        help="run on Dask and serially, check the tables are identical, "
+        "print both wall times and the speed-up (nothing resumed)",
+    )
+    parser.add_argument(
+        "--workers", type=int, default=2, help="LocalCluster worker processes (default %(default)s)"
+    )
+    parser.add_argument(
+        "--repeat",
+        type=int,
+        default=1,
+        help="with --compare: timing repetitions (default %(default)s)",
+    )
+    parser.add_argument(
+        "--fresh",
+        action="store_true",
+        help="discard the cases of an earlier run of this sweep (default: "
+        "resume it, computing only the missing cases)",
+    )
     parser.add_argument("--no-progress", action="store_true", help="no progress bar")
 
 
 def spec_from_arguments(args) -> SweepSpec:
-    return SweepSpec(tuple(args.bend_angles), tuple(args.speeds), tuple(args.distributions),
-                     args.i0, args.load_torque, args.revolutions, args.steps_per_revolution,
-                     args.max_bend_angle)
+    return SweepSpec(
+        tuple(args.bend_angles),
+        tuple(args.speeds),
+        tuple(args.distributions),
+        args.i0,
+        args.load_torque,
+        args.revolutions,
+        args.steps_per_revolution,
+        args.max_bend_angle,
+    )
 
 
 def _print_comparison(timings, where):
     print(f"Dask ({where}) and serial tables identical")
     for k, t in enumerate(timings, 1):
-        load = ("" if None in (t["others_dask"], t["others_serial"]) else
-                f"; other processes kept {t['others_serial']:.2f} and {t['others_dask']:.2f}"
-                f" of {os.cpu_count()} CPUs busy")
-        print(f"  run {k}: serial {t['serial']:.1f} s, Dask {t['dask']:.1f} s, speed-up "
-              f"{t['serial'] / t['dask']:.2f} ({t['serial'] / (t['dask'] + t['startup']):.2f}"
-              f" counting {t['startup']:.1f} s of cluster start-up){load}")
+        load = (
+            ""
+            if None in (t["others_dask"], t["others_serial"])
+            else f"; other processes kept {t['others_serial']:.2f} and {t['others_dask']:.2f}"
+            f" of {os.cpu_count()} CPUs busy"
+        )
+        print(
+            f"  run {k}: serial {t['serial']:.1f} s, Dask {t['dask']:.1f} s, speed-up "
+            f"{t['serial'] / t['dask']:.2f} ({t['serial'] / (t['dask'] + t['startup']):.2f}"
+            f" counting {t['startup']:.1f} s of cluster start-up){load}"
+        )
 
 
 def _open_store(folder: Path, spec, fmu, fresh):
@@ -83,8 +145,10 @@ def _open_store(folder: Path, spec, fmu, fresh):
     store = CaseStore(folder, spec, fmu)
     done = len(spec.cases()) - len(store.missing(spec.cases()))
     if done:
-        print(f"resuming: {done} of {len(spec.cases())} cases already in {folder} "
-              f"(--fresh to recompute them)")
+        print(
+            f"resuming: {done} of {len(spec.cases())} cases already in {folder} "
+            f"(--fresh to recompute them)"
+        )
     return store
 
 
@@ -100,23 +164,32 @@ def _run(args, fmu, spec, store, progress):
         client.close()
         if cluster is not None:
             cluster.close()
-    print(f"Dask: {seconds:.1f} s (+ {startup:.1f} s to start or reach the cluster), "
-          f"{store.written} cases computed")
+    print(
+        f"Dask: {seconds:.1f} s (+ {startup:.1f} s to start or reach the cluster), "
+        f"{store.written} cases computed"
+    )
     return table
 
 
 def _summary(table):
     failed, ok = table[table["status"] == FAILED], table[table["status"] == OK]
-    print(f"{len(ok)} ok, {len(failed)} failed; "
-          f"{int(ok['beyond_acceleration_limit'].sum())} beyond {ACCELERATION_LIMIT:g} rad/s2")
+    print(
+        f"{len(ok)} ok, {len(failed)} failed; "
+        f"{int(ok['beyond_acceleration_limit'].sum())} beyond {ACCELERATION_LIMIT:g} rad/s2"
+    )
     for _, row in failed.drop_duplicates("message").head(5).iterrows():
-        print(f"  failed at {row['bend_angle_deg']:g} deg, {row['input_speed_rpm']:g} rpm: "
-              f"{row['message']}")
+        print(
+            f"  failed at {row['bend_angle_deg']:g} deg, {row['input_speed_rpm']:g} rpm: "
+            f"{row['message']}"
+        )
 
 
 def main(argv=None, prog=None, default_name="design_sweep") -> int:
-    parser = argparse.ArgumentParser(prog=prog, description="Design sweep of the Cardan joint "
-                                     "FMU over bend angle x input speed x inertia distribution.")
+    parser = argparse.ArgumentParser(
+        prog=prog,
+        description="Design sweep of the Cardan joint "
+        "FMU over bend angle x input speed x inertia distribution.",
+    )
     add_arguments(parser, default_name)
     args = parser.parse_args(argv)
     spec = spec_from_arguments(args)
@@ -125,18 +198,27 @@ def main(argv=None, prog=None, default_name="design_sweep") -> int:
         print(f"sweep: {fmu} does not exist: build it with `python build_fmu.py`", file=sys.stderr)
         return 1
     progress = not args.no_progress
-    print(f"{len(spec.cases())} co-simulations in {len(spec.tasks())} tasks, "
-          f"{spec.revolutions * spec.steps_per_revolution} steps each")
+    print(
+        f"{len(spec.cases())} co-simulations in {len(spec.tasks())} tasks, "
+        f"{spec.revolutions * spec.steps_per_revolution} steps each"
+    )
     if args.compare:
         table, timings = compare(fmu, spec, args.scheduler, args.workers, args.repeat, progress)
-        _print_comparison(timings, args.scheduler or
-                          f"LocalCluster of {args.workers} worker processes")
+        _print_comparison(
+            timings, args.scheduler or f"LocalCluster of {args.workers} worker processes"
+        )
     else:
-        table = _run(args, fmu, spec, _open_store(out / f"{args.name}.cases", spec, fmu, args.fresh),
-                     progress)
+        table = _run(
+            args,
+            fmu,
+            spec,
+            _open_store(out / f"{args.name}.cases", spec, fmu, args.fresh),
+            progress,
+        )
     stem, figure = out / args.name, out / f"{args.name}.png"
-    existed = {p for p in (stem.with_suffix(".csv"), stem.with_suffix(".parquet"), figure)
-               if p.exists()}
+    existed = {
+        p for p in (stem.with_suffix(".csv"), stem.with_suffix(".parquet"), figure) if p.exists()
+    }
     written = write_table(table, stem) + [plot_heatmaps(table, spec, figure)]
     _summary(table)
     print("wrote " + ", ".join(f"{p}{' (replaced)' if p in existed else ''}" for p in written))

@@ -5,9 +5,10 @@ the table, to the store if there is one (so an interrupted sweep resumes with
 what is missing), and to the progress bar (tqdm, on stderr).
 """
 
+from collections.abc import Callable
 from os import PathLike
 from pathlib import Path
-from typing import TYPE_CHECKING, Callable, Optional
+from typing import TYPE_CHECKING
 
 from .case import run_task
 from .spec import SweepSpec
@@ -26,10 +27,18 @@ class _Collector:
         self.spec, self.store, self.on_rows = spec, store, on_rows
         self.rows = []
         tasks = spec.tasks()
-        self.pending = ([cases for cases in (store.missing(t) for t in tasks) if cases]
-                        if store is not None else tasks)
-        self.bar = tqdm(total=sum(len(t) for t in self.pending), desc=label, unit="case",
-                        disable=not progress, leave=True)
+        self.pending = (
+            [cases for cases in (store.missing(t) for t in tasks) if cases]
+            if store is not None
+            else tasks
+        )
+        self.bar = tqdm(
+            total=sum(len(t) for t in self.pending),
+            desc=label,
+            unit="case",
+            disable=not progress,
+            leave=True,
+        )
 
     def finished(self, rows):
         for row in rows:
@@ -46,41 +55,50 @@ class _Collector:
         return to_table(rows, self.spec)
 
 
-def run_serial(fmu: PathLike, spec: SweepSpec, progress: bool = True,
-               store: Optional[CaseStore] = None,
-               on_rows: Optional[Callable[[list], None]] = None) -> "pandas.DataFrame":
+def run_serial(
+    fmu: PathLike,
+    spec: SweepSpec,
+    progress: bool = True,
+    store: CaseStore | None = None,
+    on_rows: Callable[[list], None] | None = None,
+) -> "pandas.DataFrame":
     """Every task (every missing one, with a store) in this process, in order;
     returns the table (a DataFrame). `on_rows(rows)` is called after each task."""
-    fmu = str(Path(fmu).resolve())
+    path = str(Path(fmu).resolve())
     collector = _Collector(spec, store, progress, "serial", on_rows)
     try:
         for cases in collector.pending:
-            collector.finished(run_task(fmu, spec, cases))
+            collector.finished(run_task(path, spec, cases))
     finally:
         collector.bar.close()
     return collector.table()
 
 
-def run_dask(fmu: PathLike, spec: SweepSpec, client, progress: bool = True,
-             store: Optional[CaseStore] = None,
-             on_rows: Optional[Callable[[list], None]] = None) -> "pandas.DataFrame":
+def run_dask(
+    fmu: PathLike,
+    spec: SweepSpec,
+    client,
+    progress: bool = True,
+    store: CaseStore | None = None,
+    on_rows: Callable[[list], None] | None = None,
+) -> "pandas.DataFrame":
     """Every task (every missing one, with a store) on the client's cluster;
     returns the table (a DataFrame). Rows are stored here as tasks finish; a
     task lost with its worker is rerun by the scheduler and arrives once."""
     from dask.distributed import as_completed
 
-    fmu = str(Path(fmu).resolve())
+    path = str(Path(fmu).resolve())
     collector = _Collector(spec, store, progress, "dask", on_rows)
     tasks = collector.pending
     # pure=False: fresh keys every run, so a repeated sweep is computed again
     # rather than served from the cluster's memory.
-    futures = client.map(run_task, [fmu] * len(tasks), [spec] * len(tasks), tasks, pure=False)
+    futures = client.map(run_task, [path] * len(tasks), [spec] * len(tasks), tasks, pure=False)
     try:
         for future in as_completed(futures):
             collector.finished(future.result())
     finally:
         collector.bar.close()
-        client.cancel(futures)         # an interrupted sweep leaves no work behind
+        client.cancel(futures)  # an interrupted sweep leaves no work behind
     return collector.table()
 
 
@@ -96,16 +114,19 @@ def local_cluster(n_workers: int = 2):
     # tick (only a blocked-loop watchdog) cost the scheduler in this process
     # about 1 CPU-s per sweep.
     with dask.config.set(QUIET_CLUSTER):
-        return LocalCluster(n_workers=n_workers, threads_per_worker=1, processes=True,
-                            dashboard_address=None)
+        return LocalCluster(
+            n_workers=n_workers, threads_per_worker=1, processes=True, dashboard_address=None
+        )
 
 
-QUIET_CLUSTER = {"distributed.worker.profile.enabled": False,
-                 "distributed.admin.tick.interval": "1s",
-                 "distributed.admin.system-monitor.interval": "5s"}
+QUIET_CLUSTER = {
+    "distributed.worker.profile.enabled": False,
+    "distributed.admin.tick.interval": "1s",
+    "distributed.admin.system-monitor.interval": "5s",
+}
 
 
-def connect(scheduler: Optional[str] = None, n_workers: int = 2) -> tuple:
+def connect(scheduler: str | None = None, n_workers: int = 2) -> tuple:
     """(client, cluster or None): a new LocalCluster unless a scheduler address is given."""
     from dask.distributed import Client
 

@@ -12,7 +12,7 @@ import numpy as np
 from ..plotting import pyplot, save_figure
 from .spec import ACCELERATION_LIMIT, SweepSpec
 
-HATCH_COLOR, FAILED_COLOR = "0.55", "0.75"      # seen on dark and light cells
+HATCH_COLOR, FAILED_COLOR = "0.55", "0.75"  # seen on dark and light cells
 
 
 def cell_edges(values) -> np.ndarray:
@@ -22,8 +22,7 @@ def cell_edges(values) -> np.ndarray:
     if len(centres) == 1:
         return centres[0] + np.array([-0.5, 0.5])
     middles = 0.5 * (centres[1:] + centres[:-1])
-    return np.concatenate([[2 * centres[0] - middles[0]], middles,
-                           [2 * centres[-1] - middles[-1]]])
+    return np.concatenate([[2 * centres[0] - middles[0]], middles, [2 * centres[-1] - middles[-1]]])
 
 
 def _grid(table, distribution, column, bends, speeds):
@@ -58,22 +57,49 @@ def plot_heatmaps(table, spec: SweepSpec, path) -> Path:
     x, y = cell_edges(bends), cell_edges(speeds)
     first = spec.distributions[0]
     acceleration = _grid(table, first, "peak_output_acceleration", bends, speeds)
-    panels = [("peak output acceleration [rad/s$^2$]\n(any inertia distribution)",
-               acceleration, "viridis")]
-    panels += [(f"peak crosspiece torque |M| [N.m], {name}",
-                _grid(table, name, "peak_crosspiece_torque", bends, speeds), "magma")
-               for name in spec.distributions]
+    panels = [
+        (
+            "peak output acceleration [rad/s$^2$]\n(any inertia distribution)",
+            acceleration,
+            "viridis",
+        )
+    ]
+    panels += [
+        (
+            f"peak crosspiece torque |M| [N.m], {name}",
+            _grid(table, name, "peak_crosspiece_torque", bends, speeds),
+            "magma",
+        )
+        for name in spec.distributions
+    ]
     torque_norm = _log_norm(np.concatenate([p[1].ravel() for p in panels[1:]]))
 
     columns = 3 if len(panels) > 4 else len(panels)
-    fig, axes = plt.subplots(math.ceil(len(panels) / columns), columns, squeeze=False,
-                             figsize=(5.2 * columns, 4.2 * math.ceil(len(panels) / columns)))
+    fig, axes = plt.subplots(
+        math.ceil(len(panels) / columns),
+        columns,
+        squeeze=False,
+        figsize=(5.2 * columns, 4.2 * math.ceil(len(panels) / columns)),
+    )
     for k, (ax, (title, values, cmap)) in enumerate(zip(axes.flat, panels)):
-        mesh = ax.pcolormesh(x, y, np.ma.masked_invalid(values), cmap=cmap,
-                             norm=_log_norm(values) if k == 0 else torque_norm)
+        mesh = ax.pcolormesh(
+            x,
+            y,
+            np.ma.masked_invalid(values),
+            cmap=cmap,
+            norm=_log_norm(values) if k == 0 else torque_norm,
+        )
         fig.colorbar(mesh, ax=ax, shrink=0.9)
-        _mark(ax, acceleration > ACCELERATION_LIMIT, x, y, fill=False, hatch="///",
-              edgecolor=HATCH_COLOR, linewidth=0)
+        _mark(
+            ax,
+            acceleration > ACCELERATION_LIMIT,
+            x,
+            y,
+            fill=False,
+            hatch="///",
+            edgecolor=HATCH_COLOR,
+            linewidth=0,
+        )
         _mark(ax, np.isnan(acceleration), x, y, color=FAILED_COLOR)
         ax.set_xticks(bends, [f"{b:g}" for b in bends], fontsize=8)
         ax.set_yticks(speeds, [f"{s:g}" for s in speeds], fontsize=8)
@@ -81,17 +107,26 @@ def plot_heatmaps(table, spec: SweepSpec, path) -> Path:
         ax.set_ylabel("input speed [rpm]")
         ax.set_title(title, fontsize=9)
         ax.grid(False)
-    handles = [Patch(facecolor="none", edgecolor=HATCH_COLOR, hatch="///",
-                     label=f"output acceleration > {ACCELERATION_LIMIT:g} rad/s$^2$\n"
-                           "(beyond the usual driveline limit)"),
-               Patch(color=FAILED_COLOR, label="failed run (see the table's message)")]
-    spare = list(axes.flat[len(panels):])
+    handles = [
+        Patch(
+            facecolor="none",
+            edgecolor=HATCH_COLOR,
+            hatch="///",
+            label=f"output acceleration > {ACCELERATION_LIMIT:g} rad/s$^2$\n"
+            "(beyond the usual driveline limit)",
+        ),
+        Patch(color=FAILED_COLOR, label="failed run (see the table's message)"),
+    ]
+    spare = list(axes.flat[len(panels) :])
     for ax in spare:
         ax.axis("off")
     if spare:
         spare[0].legend(handles=handles, loc="center", fontsize=9, frameon=False)
     else:
         fig.legend(handles=handles, loc="lower center", ncol=2, fontsize=8)
-    fig.suptitle(f"Cardan joint design sweep: I0 = {spec.total_inertia:g} kg.m$^2$, "
-                 f"load {spec.load_torque:g} N.m, constant speed and bend", fontsize=11)
+    fig.suptitle(
+        f"Cardan joint design sweep: I0 = {spec.total_inertia:g} kg.m$^2$, "
+        f"load {spec.load_torque:g} N.m, constant speed and bend",
+        fontsize=11,
+    )
     return save_figure(fig, path, dpi=100)

@@ -1,7 +1,6 @@
 """What a design sweep computes: the grid of cases and the settings they share."""
 
 from dataclasses import asdict, dataclass
-from typing import Optional
 
 # Inertia distributions of Mityushov & Misyura (PHYSICS.md), as (I1, I2, I3) / I0.
 INERTIA_DISTRIBUTIONS = {
@@ -14,8 +13,14 @@ INERTIA_DISTRIBUTIONS = {
 # angular acceleration) below 1000 rad/s2 for smooth running.
 ACCELERATION_LIMIT = 1000.0
 OK, FAILED = "ok", "failed"
-PEAKS = ("peak_output_acceleration", "peak_crosspiece_torque", "speed_fluctuation",
-         "peak_input_torque", "peak_input_yoke_moment", "peak_output_yoke_moment")
+PEAKS = (
+    "peak_output_acceleration",
+    "peak_crosspiece_torque",
+    "speed_fluctuation",
+    "peak_input_torque",
+    "peak_input_yoke_moment",
+    "peak_output_yoke_moment",
+)
 GRID = ("bend_angles_deg", "input_speeds_rpm", "distributions")
 
 
@@ -28,8 +33,10 @@ class Case:
     @property
     def key(self) -> str:
         """A name that identifies the case (the same for 10 and 10.0)."""
-        return (f"{float(self.bend_angle_deg)!r}deg_{float(self.input_speed_rpm)!r}rpm_"
-                f"{self.inertia_distribution}")
+        return (
+            f"{float(self.bend_angle_deg)!r}deg_{float(self.input_speed_rpm)!r}rpm_"
+            f"{self.inertia_distribution}"
+        )
 
 
 @dataclass(frozen=True)
@@ -37,19 +44,22 @@ class SweepSpec:
     bend_angles_deg: tuple = (1, 2, 3, 4, 6, 8, 10, 12, 15, 20, 25, 30)
     input_speeds_rpm: tuple = (500, 1000, 1500, 2000, 2500, 3000, 4000)
     distributions: tuple = ("T1", "T2", "T3", "T4")
-    total_inertia: float = 0.039          # I0 [kg.m2], the paper's
-    load_torque: float = 0.0              # [N.m]
+    total_inertia: float = 0.039  # I0 [kg.m2], the paper's
+    load_torque: float = 0.0  # [N.m]
     revolutions: int = 2
-    steps_per_revolution: int = 720       # 0.5 deg per communication step
-    max_bend_angle_deg: Optional[float] = None   # None: the FMU's own guard
+    steps_per_revolution: int = 720  # 0.5 deg per communication step
+    max_bend_angle_deg: float | None = None  # None: the FMU's own guard
 
     def tasks(self) -> list:
         """One task per (bend angle, speed): its cases, one per distribution.
 
         A few co-simulations per task keep Dask's per-task overhead small, and
         the FMU is unzipped once per task."""
-        return [[Case(bend, speed, name) for name in self.distributions]
-                for bend in self.bend_angles_deg for speed in self.input_speeds_rpm]
+        return [
+            [Case(bend, speed, name) for name in self.distributions]
+            for bend in self.bend_angles_deg
+            for speed in self.input_speeds_rpm
+        ]
 
     def cases(self) -> list:
         return [case for task in self.tasks() for case in task]
@@ -59,5 +69,6 @@ class SweepSpec:
         return {name: value for name, value in asdict(self).items() if name not in GRID}
 
     def inertias(self, distribution: str) -> tuple:
-        return tuple(fraction * self.total_inertia
-                     for fraction in INERTIA_DISTRIBUTIONS[distribution])
+        return tuple(
+            fraction * self.total_inertia for fraction in INERTIA_DISTRIBUTIONS[distribution]
+        )

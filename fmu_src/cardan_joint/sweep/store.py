@@ -22,9 +22,21 @@ if TYPE_CHECKING:
     import pandas
 
 SETTINGS_FILE = "settings.json"
-COLUMNS = (["bend_angle_deg", "input_speed_rpm", "inertia_distribution",
-            "crosspiece_inertia_1", "crosspiece_inertia_2", "crosspiece_inertia_3",
-            "load_torque", "status", "message"] + list(PEAKS) + ["beyond_acceleration_limit"])
+COLUMNS = (
+    [
+        "bend_angle_deg",
+        "input_speed_rpm",
+        "inertia_distribution",
+        "crosspiece_inertia_1",
+        "crosspiece_inertia_2",
+        "crosspiece_inertia_3",
+        "load_torque",
+        "status",
+        "message",
+    ]
+    + list(PEAKS)
+    + ["beyond_acceleration_limit"]
+)
 
 
 class SettingsMismatch(ValueError):
@@ -49,7 +61,7 @@ class CaseStore:
     def __init__(self, folder, spec: SweepSpec, fmu=None):
         self.folder = Path(folder)
         self.folder.mkdir(parents=True, exist_ok=True)
-        self.written = 0              # cases written by this object: computed in this run
+        self.written = 0  # cases written by this object: computed in this run
         settings = spec.settings()
         if fmu is not None:
             settings["fmu_sha256"] = hashlib.sha256(Path(fmu).read_bytes()).hexdigest()
@@ -61,7 +73,8 @@ class CaseStore:
                 raise SettingsMismatch(
                     f"{self.folder} holds cases computed with {found}, not {settings}: "
                     f"give the sweep another name or output folder, or start it afresh "
-                    f"(--fresh)")
+                    f"(--fresh)"
+                )
         else:
             _write_atomically(saved, json.dumps(settings, indent=1))
 
@@ -78,8 +91,9 @@ class CaseStore:
         self.written += 1
 
     def rows(self, cases) -> list:
-        return [json.loads(self._path(case).read_text()) for case in cases
-                if self._path(case).is_file()]
+        return [
+            json.loads(self._path(case).read_text()) for case in cases if self._path(case).is_file()
+        ]
 
 
 def to_table(rows, spec: SweepSpec) -> "pandas.DataFrame":
@@ -89,9 +103,11 @@ def to_table(rows, spec: SweepSpec) -> "pandas.DataFrame":
     table = pd.DataFrame(rows).reindex(columns=COLUMNS)
     table["beyond_acceleration_limit"] = table["peak_output_acceleration"] > ACCELERATION_LIMIT
     order = {name: k for k, name in enumerate(spec.distributions)}
-    table = table.sort_values(["bend_angle_deg", "input_speed_rpm", "inertia_distribution"],
-                              key=lambda c: c.map(order) if c.name == "inertia_distribution"
-                              else c, kind="stable")
+    table = table.sort_values(
+        ["bend_angle_deg", "input_speed_rpm", "inertia_distribution"],
+        key=lambda c: c.map(order) if c.name == "inertia_distribution" else c,
+        kind="stable",
+    )
     return table.reset_index(drop=True)
 
 

@@ -30,6 +30,7 @@ def _measured(function, *args, client=None):
 
     Other jobs on the machine skew wall times; the machine's busy time minus
     this process's (and the local workers') tells how much."""
+
     def own():
         workers = sum(client.run(time.process_time).values()) if client else 0.0
         return time.process_time() + workers
@@ -48,8 +49,9 @@ def _dask_run(fmu, spec, scheduler, n_workers, progress):
     (client, cluster), startup = timed(connect, scheduler, n_workers)
     try:
         warm_up(client)
-        table, seconds, others = _measured(run_dask, fmu, spec, client, progress,
-                                           client=client if cluster is not None else None)
+        table, seconds, others = _measured(
+            run_dask, fmu, spec, client, progress, client=client if cluster is not None else None
+        )
     finally:
         client.close()
         if cluster is not None:
@@ -67,13 +69,21 @@ def compare(fmu, spec, scheduler=None, n_workers=2, repeat=1, progress=True):
     workers, took about a quarter more CPU from a serial run beside it."""
     import pandas as pd
 
-    run_task(str(Path(fmu).resolve()), spec, spec.tasks()[0][:1])   # imports, as workers do
+    run_task(str(Path(fmu).resolve()), spec, spec.tasks()[0][:1])  # imports, as workers do
     timings = []
     for _ in range(repeat):
         serial, serial_seconds, serial_others = _measured(run_serial, fmu, spec, progress)
-        on_dask, dask_seconds, startup, dask_others = _dask_run(fmu, spec, scheduler, n_workers,
-                                                                progress)
+        on_dask, dask_seconds, startup, dask_others = _dask_run(
+            fmu, spec, scheduler, n_workers, progress
+        )
         pd.testing.assert_frame_equal(on_dask, serial, check_exact=True)
-        timings.append({"dask": dask_seconds, "serial": serial_seconds, "startup": startup,
-                        "others_dask": dask_others, "others_serial": serial_others})
+        timings.append(
+            {
+                "dask": dask_seconds,
+                "serial": serial_seconds,
+                "startup": startup,
+                "others_dask": dask_others,
+                "others_serial": serial_others,
+            }
+        )
     return on_dask, timings

@@ -10,13 +10,27 @@ does. Pure Python + numpy.
 
 from .chain import ChainState, chain
 from .checks import AngleReport, angle_report, max_operating_angle
-from .fluctuation import (best_phasing, equivalent_angle, speed_ratio_extrema,
-                          speed_ratio_fluctuation)
+from .fluctuation import (
+    best_phasing,
+    equivalent_angle,
+    speed_ratio_extrema,
+    speed_ratio_fluctuation,
+)
 from .geometry import Layout, layout, plane_angle
 from .model import Propshaft
 
 __all__ = [
-    "AngleReport", "ChainState", "Layout", "Propshaft", "angle_report", "best_phasing", "chain",
-    "equivalent_angle", "layout", "max_operating_angle", "plane_angle",
-    "speed_ratio_extrema", "speed_ratio_fluctuation",
+    "AngleReport",
+    "ChainState",
+    "Layout",
+    "Propshaft",
+    "angle_report",
+    "best_phasing",
+    "chain",
+    "equivalent_angle",
+    "layout",
+    "max_operating_angle",
+    "plane_angle",
+    "speed_ratio_extrema",
+    "speed_ratio_fluctuation",
 ]

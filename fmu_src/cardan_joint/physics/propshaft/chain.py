@@ -17,7 +17,7 @@ is exact: the power balance T_1 omega_0 = T_L omega_N + dE/dt holds term by term
 Scalars (the FMU, once per step) or numpy arrays (the fluctuation search).
 """
 
-from typing import Any, NamedTuple, Tuple
+from typing import Any, NamedTuple
 
 from ..response import JointResponse
 from ..response import _response as joint_kernel
@@ -32,15 +32,23 @@ _TORQUE = JointResponse._fields.index("input_torque")
 
 
 class ChainState(NamedTuple):
-    offsets: Tuple[Any, ...]         # o_1 .. o_N (gamma_k - gamma_0, before the branch shift)
-    speeds: Tuple[Any, ...]          # omega_1 .. omega_N
-    accelerations: Tuple[Any, ...]   # alpha_1 .. alpha_N
+    offsets: tuple[Any, ...]  # o_1 .. o_N (gamma_k - gamma_0, before the branch shift)
+    speeds: tuple[Any, ...]  # omega_1 .. omega_N
+    accelerations: tuple[Any, ...]  # alpha_1 .. alpha_N
     input_torque: Any
-    kinetic_energy: Any              # crosspieces and intermediate shafts
+    kinetic_energy: Any  # crosspieces and intermediate shafts
 
 
-def chain(geometry: Layout, angle, speed, acceleration, crosspiece_inertia=(0.0, 0.0, 0.0),
-          shaft_inertias=None, load_torque=0.0, angle_error=0.0) -> ChainState:
+def chain(
+    geometry: Layout,
+    angle,
+    speed,
+    acceleration,
+    crosspiece_inertia=(0.0, 0.0, 0.0),
+    shaft_inertias=None,
+    load_torque=0.0,
+    angle_error=0.0,
+) -> ChainState:
     """Every shaft's motion and the input torque at input angle `angle` (+ `angle_error`,
     the low part of a double-double angle), input speed and acceleration."""
     I1, I2, I3 = crosspiece_inertia
@@ -51,8 +59,9 @@ def chain(geometry: Layout, angle, speed, acceleration, crosspiece_inertia=(0.0,
     w, a = speed, acceleration
     for k, joint in enumerate(geometry.joints):
         base = offset + k * HALF_PI + phases[k] - joint.pin_offset
-        r = joint_kernel(angle + (angle_error + base), joint.working_angle, w, a, 0.0, 0.0,
-                         I1, I2, I3, 0.0, 1.0)
+        r = joint_kernel(
+            angle + (angle_error + base), joint.working_angle, w, a, 0.0, 0.0, I1, I2, I3, 0.0, 1.0
+        )
         offset = offset + phases[k] + joint.twist + r[_CARDAN_ERROR]
         w, a = r[_SPEED], r[_ACCELERATION]
         offsets.append(offset)

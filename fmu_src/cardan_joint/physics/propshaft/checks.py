@@ -18,7 +18,7 @@ so instead of inventing a limit.
 """
 
 import math
-from typing import NamedTuple, Optional, Tuple
+from typing import NamedTuple
 
 from .fluctuation import equivalent_angle, speed_ratio_fluctuation
 
@@ -32,12 +32,12 @@ MAX_ANGLE_TABLE = ((3500.0, 5.0), (4000.0, 4.2), (4500.0, 3.7), (5000.0, 3.2))
 
 
 class AngleReport(NamedTuple):
-    working_angles: Tuple[float, ...]        # rad
+    working_angles: tuple[float, ...]  # rad
     speed_ratio_fluctuation: float
-    equivalent_angle: float                  # rad
-    operating_speed: float                   # rad/s, the speed the table check used
-    max_operating_angle: Optional[float]     # rad, None where the table says nothing
-    warnings: Tuple[str, ...]
+    equivalent_angle: float  # rad
+    operating_speed: float  # rad/s, the speed the table check used
+    max_operating_angle: float | None  # rad, None where the table says nothing
+    warnings: tuple[str, ...]
 
 
 def max_operating_angle(speed: float):
@@ -46,11 +46,15 @@ def max_operating_angle(speed: float):
     (low_rpm, low_deg), (high_rpm, high_deg) = MAX_ANGLE_TABLE[0], MAX_ANGLE_TABLE[-1]
     if rpm > high_rpm:
         # The limit falls with speed: above the table it is below the last entry.
-        return None, (f"{rpm:.0f} rpm is above the table's last row ({high_rpm:.0f} rpm, "
-                      f"{high_deg} deg): no published limit, it is below {high_deg} deg")
+        return None, (
+            f"{rpm:.0f} rpm is above the table's last row ({high_rpm:.0f} rpm, "
+            f"{high_deg} deg): no published limit, it is below {high_deg} deg"
+        )
     if rpm < low_rpm:
-        return None, (f"{rpm:.0f} rpm is below the table's first row ({low_rpm:.0f} rpm, "
-                      f"{low_deg} deg): no limit checked (it is at least {low_deg} deg)")
+        return None, (
+            f"{rpm:.0f} rpm is below the table's first row ({low_rpm:.0f} rpm, "
+            f"{low_deg} deg): no limit checked (it is at least {low_deg} deg)"
+        )
     for (r0, a0), (r1, a1) in zip(MAX_ANGLE_TABLE, MAX_ANGLE_TABLE[1:]):
         if r0 <= rpm <= r1:
             limit = a0 + (a1 - a0) * (rpm - r0) / (r1 - r0)
@@ -64,24 +68,32 @@ def angle_warnings(working_angles, fluctuation, speed):
     warnings = []
     for k, beta in enumerate(working_angles, start=1):
         if beta < MIN_WORKING_ANGLE:
-            warnings.append(f"joint {k} working angle {beta * DEG:.3f} deg is below 0.5 deg: "
-                            f"its needle bearings do not rotate (Spicer rule 1)")
+            warnings.append(
+                f"joint {k} working angle {beta * DEG:.3f} deg is below 0.5 deg: "
+                f"its needle bearings do not rotate (Spicer rule 1)"
+            )
     for k in range(1, len(working_angles)):
         first, second = working_angles[k - 1], working_angles[k]
         if abs(first - second) > EQUAL_WITHIN:
-            warnings.append(f"shaft {k}: working angles {first * DEG:.3f} deg (joint {k}) and "
-                            f"{second * DEG:.3f} deg (joint {k + 1}) differ by more than "
-                            f"1 deg (Spicer rule 2)")
+            warnings.append(
+                f"shaft {k}: working angles {first * DEG:.3f} deg (joint {k}) and "
+                f"{second * DEG:.3f} deg (joint {k + 1}) differ by more than "
+                f"1 deg (Spicer rule 2)"
+            )
     limit, how = max_operating_angle(speed)
     largest = max(working_angles)
     if limit is None and abs(speed) * RPM > MAX_ANGLE_TABLE[-1][0]:
         warnings.append(f"operating speed {how}; largest working angle {largest * DEG:.3f} deg")
     elif limit is not None and largest > limit:
-        warnings.append(f"working angle {largest * DEG:.3f} deg exceeds the maximum operating "
-                        f"angle {how} (Spicer's table)")
+        warnings.append(
+            f"working angle {largest * DEG:.3f} deg exceeds the maximum operating "
+            f"angle {how} (Spicer's table)"
+        )
     if fluctuation > FLUCTUATION_LIMIT:
-        warnings.append(f"residual speed-ratio fluctuation {fluctuation:.3g} exceeds 0.0027 "
-                        f"(ELBE: U = tan b sin b <= 0.0027, about a 3 deg single joint)")
+        warnings.append(
+            f"residual speed-ratio fluctuation {fluctuation:.3g} exceeds 0.0027 "
+            f"(ELBE: U = tan b sin b <= 0.0027, about a 3 deg single joint)"
+        )
     return tuple(warnings), limit
 
 
@@ -89,5 +101,11 @@ def angle_report(geometry, speed: float) -> AngleReport:
     """The checks for a `geometry.Layout` at driveshaft speed `speed` (rad/s)."""
     fluctuation = speed_ratio_fluctuation(geometry)
     warnings, limit = angle_warnings(geometry.working_angles, fluctuation, speed)
-    return AngleReport(geometry.working_angles, fluctuation, equivalent_angle(fluctuation),
-                       float(speed), limit, warnings)
+    return AngleReport(
+        geometry.working_angles,
+        fluctuation,
+        equivalent_angle(fluctuation),
+        float(speed),
+        limit,
+        warnings,
+    )

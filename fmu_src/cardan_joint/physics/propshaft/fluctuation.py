@@ -17,10 +17,11 @@ import numpy as np
 from .chain import chain
 from .geometry import Layout, plane_angle, wrapped
 
-_GRID = 512             # samples per half revolution; extrema closer than pi/512 merge
-_BISECTIONS = 30        # bracket pi/512 / 2**30 = 6e-12 rad
-_SEARCH_GRID = 24       # phasings per shaft in the multi-joint search, over [0, pi)
-_SEARCH_SAMPLES = 64    # input angles per half revolution in that search
+_GRID = 512  # samples per half revolution; extrema closer than pi/512 merge
+_BISECTIONS = 30  # bracket pi/512 / 2**30 = 6e-12 rad
+_SEARCH_GRID = 24  # phasings per shaft in the multi-joint search, over [0, pi)
+_SEARCH_SAMPLES = 64  # input angles per half revolution in that search
+
 
 def ratio_and_slope(geometry: Layout, angle):
     """(omega_N/omega_0, its derivative in gamma_0) at input angle(s) `angle`."""

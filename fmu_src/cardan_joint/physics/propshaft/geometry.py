@@ -15,7 +15,7 @@ once per start.
 """
 
 import math
-from typing import NamedTuple, Tuple
+from typing import NamedTuple
 
 from ..revolutions import split_angle
 
@@ -43,8 +43,13 @@ def shaft_direction(side_angle: float, top_angle: float):
 
 def reference_vector(direction):
     """e: the unit vector normal to `direction` nearest +z (defined for |side angle| < 90 deg)."""
-    return _unit((-direction[2] * direction[0], -direction[2] * direction[1],
-                  1.0 - direction[2] * direction[2]))
+    return _unit(
+        (
+            -direction[2] * direction[0],
+            -direction[2] * direction[1],
+            1.0 - direction[2] * direction[2],
+        )
+    )
 
 
 def signed_angle(u, v, axis) -> float:
@@ -60,18 +65,19 @@ def wrapped(angle: float) -> float:
 
 
 class JointGeometry(NamedTuple):
-    working_angle: float     # beta_k, in [0, pi)
-    pin_offset: float        # b_k: from e_{k-1} to X_k about d_{k-1}
-    twist: float             # c_k = a_k - b_k, reduced to (-pi, pi]
-    plane_normal: tuple      # Y_k, the joint's hinge axis
+    working_angle: float  # beta_k, in [0, pi)
+    pin_offset: float  # b_k: from e_{k-1} to X_k about d_{k-1}
+    twist: float  # c_k = a_k - b_k, reduced to (-pi, pi]
+    plane_normal: tuple  # Y_k, the joint's hinge axis
 
 
 class Layout(NamedTuple):
     """A propshaft's geometry: N + 1 shafts, N joints, N - 1 yoke phasings."""
-    directions: Tuple[tuple, ...]
-    references: Tuple[tuple, ...]
-    joints: Tuple[JointGeometry, ...]
-    phases: Tuple[float, ...]            # phi_1 .. phi_{N-1}, reduced to (-pi, pi]
+
+    directions: tuple[tuple, ...]
+    references: tuple[tuple, ...]
+    joints: tuple[JointGeometry, ...]
+    phases: tuple[float, ...]  # phi_1 .. phi_{N-1}, reduced to (-pi, pi]
 
     @property
     def working_angles(self):
@@ -103,12 +109,16 @@ def layout(side_angles, top_angles, phases=()) -> Layout:
     if len(side_angles) != len(top_angles) or len(side_angles) < 2:
         raise ValueError("give side and top angles for the same number (>= 2) of shafts")
     if len(phases) != len(side_angles) - 2:
-        raise ValueError(f"{len(side_angles) - 2} yoke phasing(s) expected for "
-                         f"{len(side_angles)} shafts, got {len(phases)}")
+        raise ValueError(
+            f"{len(side_angles) - 2} yoke phasing(s) expected for "
+            f"{len(side_angles)} shafts, got {len(phases)}"
+        )
     directions = tuple(shaft_direction(s, t) for s, t in zip(side_angles, top_angles))
     references = tuple(reference_vector(d) for d in directions)
-    joints = tuple(_joint(directions[k - 1], references[k - 1], directions[k], references[k])
-                   for k in range(1, len(directions)))
+    joints = tuple(
+        _joint(directions[k - 1], references[k - 1], directions[k], references[k])
+        for k in range(1, len(directions))
+    )
     return Layout(directions, references, joints, tuple(wrapped(float(p)) for p in phases))
 
 

@@ -10,8 +10,8 @@ fixed at `start`; the fluctuation search runs once, at the first output read.
 import math
 
 from ...propshaft_variables import propshaft_table
-from ..revolutions import split_angle
 from ..refusal import Reason, Refusal
+from ..revolutions import split_angle
 from ..values import SavedState, ValueChecks, advance_input, value_ranges
 from .chain import chain
 from .checks import angle_warnings
@@ -53,15 +53,19 @@ class Propshaft(ValueChecks, SavedState):
         if not valid:
             return
         self._inertia = tuple(getattr(self, n) for n in self._inertias)
-        self._crosspiece = (self.crosspiece_inertia_1, self.crosspiece_inertia_2,
-                            self.crosspiece_inertia_3)
+        self._crosspiece = (
+            self.crosspiece_inertia_1,
+            self.crosspiece_inertia_2,
+            self.crosspiece_inertia_3,
+        )
         self.layout = self._geometry()
         self.parameter_fault = self._working_angle_problem(self.layout)
         if self.parameter_fault:
             return
         # Shaft angles start on the branch nearest the input angle (the contract).
-        offsets = chain(self.layout, self._angle.fraction, 0.0, 0.0,
-                        angle_error=self._angle.fraction_error).offsets
+        offsets = chain(
+            self.layout, self._angle.fraction, 0.0, 0.0, angle_error=self._angle.fraction_error
+        ).offsets
         self._shifts = tuple(TWO_PI * round(o / TWO_PI) for o in offsets)
 
     def _angle_problem(self):
@@ -71,25 +75,48 @@ class Propshaft(ValueChecks, SavedState):
         for name in self._sides + self._tops:
             value = getattr(self, name)
             if not abs(value) < HALF_PI:
-                return Refusal(Reason.SHAFT_ANGLE, name, value, math.copysign(HALF_PI, value),
-                               self.time, "rad", kind="parameter")
+                return Refusal(
+                    Reason.SHAFT_ANGLE,
+                    name,
+                    value,
+                    math.copysign(HALF_PI, value),
+                    self.time,
+                    "rad",
+                    kind="parameter",
+                )
         guard = self.max_working_angle
         if not 0.0 < guard < HALF_PI:
-            return Refusal(Reason.WORKING_ANGLE_GUARD, "max_working_angle", guard,
-                           0.0 if guard <= 0.0 else HALF_PI, self.time, "rad", kind="parameter")
+            return Refusal(
+                Reason.WORKING_ANGLE_GUARD,
+                "max_working_angle",
+                guard,
+                0.0 if guard <= 0.0 else HALF_PI,
+                self.time,
+                "rad",
+                kind="parameter",
+            )
         return None
 
     def _geometry(self):
-        return layout([getattr(self, n) for n in self._sides],
-                      [getattr(self, n) for n in self._tops],
-                      [getattr(self, n) for n in self._phases])
+        return layout(
+            [getattr(self, n) for n in self._sides],
+            [getattr(self, n) for n in self._tops],
+            [getattr(self, n) for n in self._phases],
+        )
 
     def _working_angle_problem(self, geometry):
         guard = self.max_working_angle
         for k, beta in enumerate(geometry.working_angles, start=1):
             if not beta < guard:
-                return Refusal(Reason.WORKING_ANGLE, f"joint_{k}_working_angle", beta, guard,
-                               self.time, "rad", kind="parameter")
+                return Refusal(
+                    Reason.WORKING_ANGLE,
+                    f"joint_{k}_working_angle",
+                    beta,
+                    guard,
+                    self.time,
+                    "rad",
+                    kind="parameter",
+                )
         return None
 
     def parameter_problem(self):
@@ -113,8 +140,14 @@ class Propshaft(ValueChecks, SavedState):
         problem = self.step_problem(step_size)
         if problem:
             return problem
-        advanced = advance_input(self._angle, self.input_speed, self.input_acceleration,
-                                 step_size, self._speed_limit, self.time)
+        advanced = advance_input(
+            self._angle,
+            self.input_speed,
+            self.input_acceleration,
+            step_size,
+            self._speed_limit,
+            self.time,
+        )
         if isinstance(advanced, Refusal):
             return advanced
         self._angle, self.input_speed = advanced
@@ -128,8 +161,16 @@ class Propshaft(ValueChecks, SavedState):
         return float(self._angle)
 
     def _chain(self, fraction, error):
-        return chain(self.layout, fraction, self.input_speed, self.input_acceleration,
-                     self._crosspiece, self._inertia, self.load_torque, error)
+        return chain(
+            self.layout,
+            fraction,
+            self.input_speed,
+            self.input_acceleration,
+            self._crosspiece,
+            self._inertia,
+            self.load_torque,
+            error,
+        )
 
     def fluctuation(self) -> float:
         # Kept with its geometry: a restart (setup, initialization, state restore)
@@ -148,13 +189,20 @@ class Propshaft(ValueChecks, SavedState):
         for k in range(self.joints - 1):
             values += [angles[k], state.speeds[k], state.accelerations[k]]
         fluctuation = self.fluctuation()
-        return (*values, angles[-1], state.speeds[-1], state.accelerations[-1],
-                state.input_torque, state.kinetic_energy, *self.layout.working_angles,
-                fluctuation, equivalent_angle(fluctuation))
+        return (
+            *values,
+            angles[-1],
+            state.speeds[-1],
+            state.accelerations[-1],
+            state.input_torque,
+            state.kinetic_energy,
+            *self.layout.working_angles,
+            fluctuation,
+            equivalent_angle(fluctuation),
+        )
 
     def warnings(self):
         """The industry's angle checks at the current input speed (never refusals)."""
         if self.parameter_fault:
             return ()
-        return angle_warnings(self.layout.working_angles, self.fluctuation(),
-                              self.input_speed)[0]
+        return angle_warnings(self.layout.working_angles, self.fluctuation(), self.input_speed)[0]
