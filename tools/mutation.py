@@ -264,6 +264,14 @@ MUTATIONS = (
         "        for name, value in values.items():\n            setattr(self, name, value)\n",
         (GUARDS, SLAVE_GUARDS, "-k", "state"),
     ),
+    # The motor's own guard (its value checks are the ones above).
+    Mutation(
+        "motor: rotor speed at the step's end",
+        "fmu_src/cardan_joint/physics/driveline.py",
+        "if not abs(speed) <= self._SPEED_LIMIT:",
+        "if False:",
+        ("tests/test_driveline.py", "tests/test_refusal.py", "-k", "unusable_inputs or reads_back"),
+    ),
     # The slave: what the FMU does with a refusal, illegal calls, states.
     Mutation(
         "slave: refused step returns Discard",
@@ -363,7 +371,7 @@ MUTATIONS = (
     Mutation(
         "slave: deserialized bytes that are no JSON",
         CORE,
-        'return {"invalid_state": f"{cls._API}DeSerializeFMU{cls._STATE} got no valid "',
+        'return {"invalid_state": reason}',
         "raise",
         (SLAVE_GUARDS, "-k", "state"),
     ),

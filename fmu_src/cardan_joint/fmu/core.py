@@ -280,5 +280,5 @@ class SlaveCore:
                 raise ValueError("not a serialized FMU state of this project")
             return state
         except Exception as error:
-            return {"invalid_state": f"{cls._API}DeSerializeFMU{cls._STATE} got no valid "
-                                     f"state: {error}"}
+            reason = f"{cls._API}DeSerializeFMU{cls._STATE} got no valid state: {error}"
+            return {"invalid_state": reason}
