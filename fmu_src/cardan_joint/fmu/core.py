@@ -19,6 +19,7 @@ before its pythonfmu base and provides `_STATUS` (its status enumeration),
 import json
 import math
 from operator import attrgetter
+from typing import Any
 
 from .. import __version__
 from .. import variables as joint_table
@@ -70,10 +71,19 @@ class SlaveCore:
     # The model's variable table; a subclass for another model sets it, `_new_model`
     # and `live_outputs` (the leading outputs that follow the model's state even
     # while inputs are invalid); the flat indices follow.
-    table = joint_table
+    table: Any = joint_table
     live_outputs = ("input_angle",)
     owner = "joint"                 # what stays put in messages
     _refs = References(joint_table, live_outputs)
+    # Set by each FMI version's slave: its status enumeration, "fmi2"/"fmi3" and
+    # "state"/"State" (for messages naming FMI functions).
+    _STATUS: Any
+    _API: str
+    _STATE: str
+
+    def _report(self, message: str, status) -> None:
+        """Log `message` with `status` (each FMI version's slave says how)."""
+        raise NotImplementedError
 
     def __init_subclass__(cls, **kwargs):
         super().__init_subclass__(**kwargs)
