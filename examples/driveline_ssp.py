@@ -31,13 +31,15 @@ STOP_TIME, STEP = 1.0, 1e-3
 def host_convergence(ssp, steps=(1e-3, 5e-4, 2.5e-4), stop_time=0.5):
     """{step: largest |FMPy - libcosim| of the motor speed}: the hosts differ only in
     the first step's inputs (see the README), so this falls in proportion to the step."""
-    return {h: system.host_difference(system.run_fmpy(ssp, stop_time, h),
-                                      system.run_libcosim(ssp, stop_time, h))["Motor.speed"]
-            for h in steps}
+    return {
+        h: system.host_difference(
+            system.run_fmpy(ssp, stop_time, h), system.run_libcosim(ssp, stop_time, h)
+        )["Motor.speed"]
+        for h in steps
+    }
 
 
-def loop_stability(fmus, drive, folder, ratios=(0.5, 0.9, 2.0), steps=(1e-3, 1e-4),
-                   n_steps=200):
+def loop_stability(fmus, drive, folder, ratios=(0.5, 0.9, 2.0), steps=(1e-3, 1e-4), n_steps=200):
     """{(inertia ratio, step): True if the torque loop stays bounded over `n_steps`} on a
     straight, massless drive element (the load's inertia meets the motor's unchanged)."""
     motor_inertia = system.MOTOR_PARAMETERS["rotor_inertia"]
@@ -45,14 +47,17 @@ def loop_stability(fmus, drive, folder, ratios=(0.5, 0.9, 2.0), steps=(1e-3, 1e-
     outcome = {}
     for ratio in ratios:
         ssp = system.write_driveline_ssp(
-            Path(folder) / f"ratio_{ratio}.ssp", fmus, drive,
+            Path(folder) / f"ratio_{ratio}.ssp",
+            fmus,
+            drive,
             drive_parameters=system.STRAIGHT_DRIVE_PARAMETERS.get(drive),
-            load={"inertia": ratio * motor_inertia})
+            load={"inertia": ratio * motor_inertia},
+        )
         for h in steps:
             try:
                 rows = system.run_libcosim(ssp, n_steps * h, h)
                 outcome[ratio, h] = bool(np.max(np.abs(rows["Motor.acceleration"])) < 10 * rigid)
-            except RuntimeError:        # a step refused: the loop ran away
+            except RuntimeError:  # a step refused: the loop ran away
                 outcome[ratio, h] = False
     return outcome
 
@@ -63,12 +68,23 @@ def plot(fmpy_rows, libcosim_rows, path, drive):
     rpm = RAD_PER_S_TO_RPM
     for rows, style, host in ((libcosim_rows, "-", "libcosim"), (fmpy_rows, "--", "FMPy")):
         axes[0].plot(rows["time"], rows["Motor.speed"] * rpm, style, label=f"motor ({host})")
-        axes[0].plot(rows["time"], rows["Drive.output_speed"] * rpm, style, lw=0.7,
-                     label=f"load shaft ({host})")
-        axes[1].plot(rows["time"], rows["Drive.input_torque"], style, lw=0.7,
-                     label=f"drive input torque ({host})")
-        axes[1].plot(rows["time"], rows["Load.torque"], style, lw=0.7,
-                     label=f"load torque ({host})")
+        axes[0].plot(
+            rows["time"],
+            rows["Drive.output_speed"] * rpm,
+            style,
+            lw=0.7,
+            label=f"load shaft ({host})",
+        )
+        axes[1].plot(
+            rows["time"],
+            rows["Drive.input_torque"],
+            style,
+            lw=0.7,
+            label=f"drive input torque ({host})",
+        )
+        axes[1].plot(
+            rows["time"], rows["Load.torque"], style, lw=0.7, label=f"load torque ({host})"
+        )
     difference = fmpy_rows["Motor.speed"] - libcosim_rows["Motor.speed"][1:]
     axes[2].plot(fmpy_rows["time"], difference * rpm)
     axes[0].set_ylabel("speed [rpm]")
@@ -84,8 +100,9 @@ def plot(fmpy_rows, libcosim_rows, path, drive):
 
 def main(argv=None):
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
-    parser.add_argument("--drive", default=system.DRIVE,
-                        help="drive element model (default: %(default)s)")
+    parser.add_argument(
+        "--drive", default=system.DRIVE, help="drive element model (default: %(default)s)"
+    )
     parser.add_argument("--out", default="results", help="folder for the results")
     args = parser.parse_args(argv)
     out = output_folder(args)
@@ -97,8 +114,10 @@ def main(argv=None):
         results.write_csv(fmpy_rows, out / "driveline_ssp_fmpy.csv")
         results.write_csv(libcosim_rows, out / "driveline_ssp_libcosim.csv")
         plot(fmpy_rows, libcosim_rows, out / "driveline_ssp.png", args.drive)
-        print(f"wrote {ssp}, {out / 'driveline_ssp_fmpy.csv'}, "
-              f"{out / 'driveline_ssp_libcosim.csv'} and {out / 'driveline_ssp.png'}")
+        print(
+            f"wrote {ssp}, {out / 'driveline_ssp_fmpy.csv'}, "
+            f"{out / 'driveline_ssp_libcosim.csv'} and {out / 'driveline_ssp.png'}"
+        )
         print("largest |FMPy - libcosim| of the motor speed over 0.5 s:")
         for h, difference in host_convergence(ssp).items():
             print(f"  step {h:g} s: {difference:.3e} rad/s")

@@ -60,8 +60,9 @@ def propshaft_fmu_path(tmp_path_factory) -> Path:
 def propshaft_unzipped(propshaft_fmu_path, tmp_path_factory):
     from fmpy import extract
 
-    directory = extract(str(propshaft_fmu_path),
-                        unzipdir=str(tmp_path_factory.mktemp("propshaft_unzipped")))
+    directory = extract(
+        str(propshaft_fmu_path), unzipdir=str(tmp_path_factory.mktemp("propshaft_unzipped"))
+    )
     yield directory
     shutil.rmtree(directory, ignore_errors=True)
 

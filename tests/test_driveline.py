@@ -29,12 +29,16 @@ def driveline_ssp(component_fmus, request, tmp_path_factory):
     # The session's FMU of the drive model (built once for all tests).
     session_fixture = {"UniversalJoint": "fmu_path", "Propshaft": "propshaft_fmu_path"}
     drive = request.getfixturevalue(session_fixture[system.DRIVE])
-    fmus = {"Motor": component_fmus["Motor"], system.DRIVE_INSTANCE: drive,
-            "Load": component_fmus["Load"]}
+    fmus = {
+        "Motor": component_fmus["Motor"],
+        system.DRIVE_INSTANCE: drive,
+        "Load": component_fmus["Load"],
+    }
     return system.write_driveline_ssp(folder / "Driveline.ssp", fmus)
 
 
 # --- physics ---------------------------------------------------------------
+
 
 def _ode_reference(motor, load_torques, steps):
     """The motor's speed and angle by a tight numerical integration of
@@ -43,9 +47,11 @@ def _ode_reference(motor, load_torques, steps):
 
     w, angle, out = motor.speed_start, motor.angle_start, []
     for load_torque, h in zip(load_torques, steps):
+
         def rhs(t, y, load_torque=load_torque):
             torque = motor.stall_torque * (1.0 - y[0] / motor.no_load_speed)
             return [(torque - load_torque) / motor.rotor_inertia, y[0]]
+
         solution = solve_ivp(rhs, (0.0, h), [w, angle], method="DOP853", rtol=1e-13, atol=1e-12)
         w, angle = solution.y[:, -1]
         out.append((w, angle))
@@ -54,8 +60,9 @@ def _ode_reference(motor, load_torques, steps):
 
 def test_motor_steps_follow_the_exact_run_up_at_any_step_size():
     rng = np.random.default_rng(7)
-    motor = Motor(stall_torque=80.0, no_load_speed=150.0, rotor_inertia=0.1, speed_start=5.0,
-                  angle_start=1.0)
+    motor = Motor(
+        stall_torque=80.0, no_load_speed=150.0, rotor_inertia=0.1, speed_start=5.0, angle_start=1.0
+    )
     steps = rng.uniform(1e-4, 0.2, 30)
     loads = rng.uniform(-50.0, 70.0, 30)
     reference = _ode_reference(motor, loads, steps)
@@ -78,8 +85,7 @@ def test_motor_run_up_from_rest_is_the_exponential():
         motor.step(0.01)
         t = 0.01 * k
         assert motor.speed == pytest.approx(final * (1 - math.exp(-t / tau)), rel=1e-12)
-        assert motor.angle == pytest.approx(final * (t - tau * (1 - math.exp(-t / tau))),
-                                            rel=1e-11)
+        assert motor.angle == pytest.approx(final * (t - tau * (1 - math.exp(-t / tau))), rel=1e-11)
 
 
 def test_load_torque_is_inertia_drag_and_constant():
@@ -88,12 +94,15 @@ def test_load_torque_is_inertia_drag_and_constant():
     assert load.outputs() == (0.4 * -5.0 + 0.2 * 12.0 - 3.0,)
 
 
-@pytest.mark.parametrize("change, words", [
-    ({"load_torque": math.nan}, ["input load_torque = nan", "not a finite number"]),
-    ({"load_torque": 2e9}, ["load_torque = 2000000000.0 N.m", "[-1000000000.0, 1000000000.0]"]),
-    # Within range, but it would drive the rotor past its speed limit in this step.
-    ({"load_torque": 9e8}, ["rotor speed to", "beyond the limit 100000.0 rad/s"]),
-])
+@pytest.mark.parametrize(
+    "change, words",
+    [
+        ({"load_torque": math.nan}, ["input load_torque = nan", "not a finite number"]),
+        ({"load_torque": 2e9}, ["load_torque = 2000000000.0 N.m", "[-1000000000.0, 1000000000.0]"]),
+        # Within range, but it would drive the rotor past its speed limit in this step.
+        ({"load_torque": 9e8}, ["rotor speed to", "beyond the limit 100000.0 rad/s"]),
+    ],
+)
 def test_motor_refuses_unusable_inputs_and_keeps_its_state(change, words):
     motor = Motor(stall_torque=60.0, no_load_speed=100.0, rotor_inertia=0.3)
     motor.step(0.5)
@@ -114,13 +123,18 @@ def test_bad_step_sizes_and_parameters_are_refused():
     assert "step size = -0.1 s" in motor.step(-0.1).message
     motor = Motor(rotor_inertia=0.0)
     refusal = motor.step(1e-3)
-    assert (refusal.code, refusal.variable, refusal.value, refusal.limit) == \
-        (Reason.OUT_OF_RANGE, "rotor_inertia", 0.0, 1e-9)
+    assert (refusal.code, refusal.variable, refusal.value, refusal.limit) == (
+        Reason.OUT_OF_RANGE,
+        "rotor_inertia",
+        0.0,
+        1e-9,
+    )
     assert "parameter rotor_inertia = 0.0 kg.m2 is outside its range" in refusal.message
     assert "input speed = inf" in Load(speed=math.inf).step(1e-3).message
 
 
 # --- FMUs ------------------------------------------------------------------
+
 
 @pytest.mark.parametrize("name", ["Motor", "Load"])
 def test_component_fmus_pass_validation_with_units_and_dependencies(component_fmus, name):
@@ -135,8 +149,9 @@ def test_component_fmus_pass_validation_with_units_and_dependencies(component_fm
         torque = description.outputs[0]
         assert {v.name for v in torque.dependencies} == {"speed", "acceleration"}
     else:
-        dependencies = {u.variable.name: {v.name for v in u.dependencies}
-                        for u in description.outputs}
+        dependencies = {
+            u.variable.name: {v.name for v in u.dependencies} for u in description.outputs
+        }
         assert dependencies["acceleration"] == {"load_torque"} and dependencies["speed"] == set()
 
 
@@ -147,14 +162,19 @@ def test_motor_fmu_refuses_a_nan_load_torque_and_says_why(component_fmus):
         motor.step(0.1)
         speed = motor.get("speed")
         motor.set(load_torque=math.nan)
-        assert motor.try_step(0.1) == 2                                   # fmi2Discard
-        assert any(text.startswith("t = 0.1 s: input load_torque = nan N.m is not a finite "
-                                   "number (limit 1000000000.0 N.m); step of 0.1 s refused, "
-                                   "the motor stays at t = 0.1 s") for _, _, text in messages)
+        assert motor.try_step(0.1) == 2  # fmi2Discard
+        assert any(
+            text.startswith(
+                "t = 0.1 s: input load_torque = nan N.m is not a finite "
+                "number (limit 1000000000.0 N.m); step of 0.1 s refused, "
+                "the motor stays at t = 0.1 s"
+            )
+            for _, _, text in messages
+        )
         motor.set(load_torque=10.0)
         assert motor.get("speed") == speed
         # Parameters are fixed after initialization: the change is refused, not applied.
-        assert motor.try_set(stall_torque=1.0) == 3                       # fmi2Error
+        assert motor.try_set(stall_torque=1.0) == 3  # fmi2Error
         assert any("parameter stall_torque is fixed" in text for _, _, text in messages)
 
 
@@ -165,7 +185,7 @@ def test_motor_fmu_holds_only_the_outputs_that_depend_on_an_invalid_input(compon
         motor.step(0.1)
         valid = motor.get_outputs()
         motor.set(load_torque=math.inf)
-        assert motor.get_outputs() == valid       # acceleration held, the rest unchanged
+        assert motor.get_outputs() == valid  # acceleration held, the rest unchanged
         assert any("outputs that depend on it are held" in text for _, _, text in messages)
 
 
@@ -184,15 +204,22 @@ def test_motor_fmu_state_round_trips_through_bytes(component_fmus):
 
 # --- the SSP system --------------------------------------------------------
 
+
 def test_ssp_holds_the_three_fmus_connections_and_parameter_sets(driveline_ssp):
     from fmpy.ssp.ssd import read_ssd
 
-    ssd = read_ssd(str(driveline_ssp))        # validates against the SSP schema
+    ssd = read_ssd(str(driveline_ssp))  # validates against the SSP schema
     assert [c.name for c in ssd.system.elements] == ["Motor", system.DRIVE_INSTANCE, "Load"]
     assert len(ssd.system.connections) == 6
     names = zipfile.ZipFile(driveline_ssp).namelist()
-    assert {"resources/Motor.fmu", f"resources/{system.DRIVE}.fmu", "resources/Load.fmu",
-            "resources/Motor.ssv", "resources/Drive.ssv", "resources/Load.ssv"} <= set(names)
+    assert {
+        "resources/Motor.fmu",
+        f"resources/{system.DRIVE}.fmu",
+        "resources/Load.fmu",
+        "resources/Motor.ssv",
+        "resources/Drive.ssv",
+        "resources/Load.ssv",
+    } <= set(names)
 
 
 def test_ssp_writer_refuses_a_connection_to_a_missing_connector(tmp_path, component_fmus):
@@ -219,11 +246,19 @@ def test_both_hosts_apply_the_parameter_sets_and_differ_only_by_the_first_step(d
 
 def test_example_writes_the_ssp_both_csvs_and_the_plot(tmp_path):
     pytest.importorskip("libcosimpy")
-    run = subprocess.run([sys.executable, str(ROOT / "examples" / "driveline_ssp.py"),
-                          "--out", str(tmp_path)], capture_output=True, text=True, cwd=ROOT)
+    run = subprocess.run(
+        [sys.executable, str(ROOT / "examples" / "driveline_ssp.py"), "--out", str(tmp_path)],
+        capture_output=True,
+        text=True,
+        cwd=ROOT,
+    )
     assert run.returncode == 0, run.stderr
-    for name in ("Driveline.ssp", "driveline_ssp_fmpy.csv", "driveline_ssp_libcosim.csv",
-                 "driveline_ssp.png"):
+    for name in (
+        "Driveline.ssp",
+        "driveline_ssp_fmpy.csv",
+        "driveline_ssp_libcosim.csv",
+        "driveline_ssp.png",
+    ):
         assert (tmp_path / name).stat().st_size > 0
     with open(tmp_path / "driveline_ssp_libcosim.csv") as stream:
         rows = list(csv.reader(stream))
@@ -247,10 +282,14 @@ def _jacobi_master(ssp_path, stop_time, h, first_values):
     try:
         for component in find_components(read_ssd(str(ssp_path)).system):
             name = component.name
-            starts = {key.split(".", 1)[1]: value for key, value in parameters.items()
-                      if key.startswith(name + ".")}
-            instances[name] = JointInstance.open(f"{unzipped}/{component.source}", name=name,
-                                                 start_values=starts)
+            starts = {
+                key.split(".", 1)[1]: value
+                for key, value in parameters.items()
+                if key.startswith(name + ".")
+            }
+            instances[name] = JointInstance.open(
+                f"{unzipped}/{component.source}", name=name, start_values=starts
+            )
         values = dict(first_values)
         rows = {key: [] for key in system.RECORDED}
         for k in range(round(stop_time / h)):

@@ -39,12 +39,21 @@ def test_fmpy_validates_it_and_reads_every_unit_and_display_unit(fmi3_path, fmi3
     assert [v.name for v in md.modelVariables[1:]] == [g.name for g in GROUPS]
     for group in GROUPS:
         v = variables[group.name]
-        assert (v.type, v.causality, v.variability) == ("Float64", group.causality,
-                                                        group.variability)
-        assert (v.unit, v.displayUnit, v.description) == (group.unit, group.display_unit,
-                                                          group.description)
-        assert tuple(None if x is None else float(x) for x in (v.min, v.max, v.start)) == \
-            (group.min, group.max, group.start)
+        assert (v.type, v.causality, v.variability) == (
+            "Float64",
+            group.causality,
+            group.variability,
+        )
+        assert (v.unit, v.displayUnit, v.description) == (
+            group.unit,
+            group.display_unit,
+            group.description,
+        )
+        assert tuple(None if x is None else float(x) for x in (v.min, v.max, v.start)) == (
+            group.min,
+            group.max,
+            group.start,
+        )
         if v.displayUnit:
             assert v.displayUnit in [d.name for d in units[v.unit].displayUnits]
         size = int(v.dimensions[0].start) if v.dimensions else 1
@@ -53,34 +62,50 @@ def test_fmpy_validates_it_and_reads_every_unit_and_display_unit(fmi3_path, fmi3
     assert list(structure) == [g.name for g in GROUPS if g.causality == "output"]
     for group in GROUPS:
         if group.causality == "output":
-            assert sorted(d.name for d in structure[group.name].dependencies) == \
-                sorted(group.depends_on)
+            assert sorted(d.name for d in structure[group.name].dependencies) == sorted(
+                group.depends_on
+            )
     assert [u.variable.name for u in md.initialUnknowns] == list(structure)
-    assert (md.defaultExperiment.startTime, md.defaultExperiment.stopTime,
-            md.defaultExperiment.stepSize) == ("0.0", "2.0", "0.001")
+    assert (
+        md.defaultExperiment.startTime,
+        md.defaultExperiment.stopTime,
+        md.defaultExperiment.stepSize,
+    ) == ("0.0", "2.0", "0.001")
     assert md.coSimulation.canGetAndSetFMUstate and md.coSimulation.canSerializeFMUstate
     assert md.coSimulation.canHandleVariableCommunicationStepSize
 
 
 def test_log_categories_are_those_of_the_fmi2_fmu(fmi3_description, model_description):
-    assert [c.name for c in fmi3_description.logCategories] == \
-        [c.name for c in model_description.logCategories]
+    assert [c.name for c in fmi3_description.logCategories] == [
+        c.name for c in model_description.logCategories
+    ]
 
 
 def _polynomial_laws(rng, horizon):
     """Random quadratic input laws over [0, horizon]: value, rate and acceleration at t."""
-    scale = np.array([1.0, 1.0 / horizon, 1.0 / horizon ** 2])
-    c = {"input_speed": rng.uniform(-300, 300, 3) * scale,
-         "bend_angle": rng.uniform(-0.4, 0.4, 3) * scale,      # stays inside the guard
-         "load_torque": rng.uniform(-500, 500, 3) * scale}
+    scale = np.array([1.0, 1.0 / horizon, 1.0 / horizon**2])
+    c = {
+        "input_speed": rng.uniform(-300, 300, 3) * scale,
+        "bend_angle": rng.uniform(-0.4, 0.4, 3) * scale,  # stays inside the guard
+        "load_torque": rng.uniform(-500, 500, 3) * scale,
+    }
 
     def inputs(t):
         s, b, load = (np.polynomial.polynomial.polyval(t, c[n]) for n in INPUT_LAWS)
-        ds, db = (np.polynomial.polynomial.polyval(t, np.polynomial.polynomial.polyder(c[n]))
-                  for n in ("input_speed", "bend_angle"))
+        ds, db = (
+            np.polynomial.polynomial.polyval(t, np.polynomial.polynomial.polyder(c[n]))
+            for n in ("input_speed", "bend_angle")
+        )
         ddb = 2.0 * c["bend_angle"][2]
-        return dict(input_speed=s, input_acceleration=ds, bend_angle=b, bend_angle_rate=db,
-                    bend_angle_acceleration=ddb, load_torque=load)
+        return dict(
+            input_speed=s,
+            input_acceleration=ds,
+            bend_angle=b,
+            bend_angle_rate=db,
+            bend_angle_acceleration=ddb,
+            load_torque=load,
+        )
+
     return inputs
 
 
@@ -88,18 +113,23 @@ def _same(a, b):
     return a == b or abs(a - b) <= 1e-15 * max(abs(a), abs(b))
 
 
-@pytest.mark.parametrize("seed, step_size, steps", [(1, 1e-3, 300), (2, 0.01, 150),
-                                                    (3, 0.1, 40), (4, 0.37, 20)])
-def test_every_output_equals_the_fmi2_fmus_at_every_point(model_description, unzipped_fmu,
-                                                          fmi3_description, fmi3_unzipped,
-                                                          seed, step_size, steps):
+@pytest.mark.parametrize(
+    "seed, step_size, steps", [(1, 1e-3, 300), (2, 0.01, 150), (3, 0.1, 40), (4, 0.37, 20)]
+)
+def test_every_output_equals_the_fmi2_fmus_at_every_point(
+    model_description, unzipped_fmu, fmi3_description, fmi3_unzipped, seed, step_size, steps
+):
     rng = np.random.default_rng(seed)
     inputs = _polynomial_laws(rng, steps * step_size)
-    parameters = dict(yoke_phase=rng.uniform(-3, 3), input_angle_start=rng.uniform(-10, 10),
-                      crosspiece_inertia_2=rng.uniform(0.01, 0.1))
-    joints = [JointInstance(md, unzipped, name=f"same{seed}", start_values=parameters)
-              for md, unzipped in ((model_description, unzipped_fmu),
-                                   (fmi3_description, fmi3_unzipped))]
+    parameters = dict(
+        yoke_phase=rng.uniform(-3, 3),
+        input_angle_start=rng.uniform(-10, 10),
+        crosspiece_inertia_2=rng.uniform(0.01, 0.1),
+    )
+    joints = [
+        JointInstance(md, unzipped, name=f"same{seed}", start_values=parameters)
+        for md, unzipped in ((model_description, unzipped_fmu), (fmi3_description, fmi3_unzipped))
+    ]
     try:
         for k in range(steps + 1):
             values = {n: float(v) for n, v in inputs(k * step_size).items()}
@@ -131,16 +161,21 @@ def test_a_bad_input_is_refused_with_its_message_and_nothing_is_lost(joint3):
     before = _state_bytes(joint3)
     # Ends below the guard, crosses it mid-step (vertex of the bend parabola).
     joint3.set(bend_angle=1.3, bend_angle_rate=4.0, bend_angle_acceleration=-80.0)
-    assert joint3.try_step(0.1) == 2                     # fmi3Discard
+    assert joint3.try_step(0.1) == 2  # fmi3Discard
     status, category, message = joint3.messages[-1]
     assert (status, category) == (2, "logStatusDiscard")
-    for words in ("bend_angle", "max_bend_angle", "1.3962634015954636", "t = 0.05 s",
-                  "stays at t = 0.05 s"):
+    for words in (
+        "bend_angle",
+        "max_bend_angle",
+        "1.3962634015954636",
+        "t = 0.05 s",
+        "stays at t = 0.05 s",
+    ):
         assert words in message
     joint3.set(bend_angle=0.3, bend_angle_rate=0.0, bend_angle_acceleration=0.0)
     assert _state_bytes(joint3) == before
     assert joint3.get_outputs() == outputs
-    joint3.step(0.1)                                     # continues with corrected inputs
+    joint3.step(0.1)  # continues with corrected inputs
     assert joint3.get("time")["time"] == pytest.approx(0.15)
 
 
@@ -158,10 +193,10 @@ def test_bad_calls_are_errors_in_the_log_never_fatal(joint3):
     assert "value reference 999" in joint3.messages[-1][2]
     assert joint3.fmu.getInt32([1], 1) == [0]
     assert "no Int32 variables" in joint3.messages[-1][2]
-    joint3.fmu.setFloat64([1, 3], [1.0])                 # too few values: nothing set
+    joint3.fmu.setFloat64([1, 3], [1.0])  # too few values: nothing set
     assert "nothing set" in joint3.messages[-1][2]
     assert {status for status, _, _ in joint3.messages} == {3}
-    joint3.step(0.01)                                    # still alive
+    joint3.step(0.01)  # still alive
 
 
 def test_state_round_trips_bit_for_bit(joint3, fmi3_description, fmi3_unzipped):
@@ -207,8 +242,12 @@ def test_reset_returns_to_the_start_values(joint3):
 
 
 def test_many_instances_in_one_process_are_independent(fmi3_description, fmi3_unzipped):
-    joints = [JointInstance(fmi3_description, fmi3_unzipped, name=f"j{i}",
-                            start_values={"input_speed": 1.0 + i}) for i in range(40)]
+    joints = [
+        JointInstance(
+            fmi3_description, fmi3_unzipped, name=f"j{i}", start_values={"input_speed": 1.0 + i}
+        )
+        for i in range(40)
+    ]
     try:
         for joint in joints:
             joint.step(0.1)
@@ -230,7 +269,7 @@ def test_an_internal_fault_in_a_step_is_an_error_status_not_an_exception(monkeyp
     monkeypatch.setattr(slave._model, "step", lambda step_size: 1 / 0)
     assert slave.do_step(0.0, 0.1).status == Fmi3Status.error
     assert "internal error in do_step: ZeroDivisionError" in slave.log_queue[-1].msg
-    assert slave.get_float64([0])[0] == 0.0                # the clock stays at the step's start
+    assert slave.get_float64([0])[0] == 0.0  # the clock stays at the step's start
 
 
 def test_the_model_description_carries_the_builds_start_values():
@@ -244,22 +283,25 @@ def test_the_model_description_carries_the_builds_start_values():
     assert float(variables["max_bend_angle"].get("start")) == math.nextafter(1.2, 2.0)
 
 
-def test_an_invalid_input_holds_the_same_outputs_as_fmi2(model_description, unzipped_fmu,
-                                                         fmi3_description, fmi3_unzipped):
+def test_an_invalid_input_holds_the_same_outputs_as_fmi2(
+    model_description, unzipped_fmu, fmi3_description, fmi3_unzipped
+):
     messages = []
-    joints = [JointInstance(model_description, unzipped_fmu, name="held2"),
-              JointInstance(fmi3_description, fmi3_unzipped, name="held3", messages=messages)]
+    joints = [
+        JointInstance(model_description, unzipped_fmu, name="held2"),
+        JointInstance(fmi3_description, fmi3_unzipped, name="held3", messages=messages),
+    ]
     try:
         for joint in joints:
             joint.set(input_speed=40.0, load_torque=100.0)
             joint.step(0.1)
-        valid = [joint.get_flat_outputs() for joint in joints][1]    # what each holds
+        valid = [joint.get_flat_outputs() for joint in joints][1]  # what each holds
         for joint in joints:
             joint.set(input_speed=20.0, load_torque=math.nan)
         fmi2, fmi3 = (joint.get_flat_outputs() for joint in joints)
         assert fmi3 == fmi2
-        assert fmi3["input_torque"] == valid["input_torque"]          # held
-        assert fmi3["output_speed"] != valid["output_speed"]          # follows the speed
+        assert fmi3["input_torque"] == valid["input_torque"]  # held
+        assert fmi3["output_speed"] != valid["output_speed"]  # follows the speed
         assert messages[-1][:2] == (1, "logStatusWarning") and "load_torque" in messages[-1][2]
     finally:
         for joint in joints:

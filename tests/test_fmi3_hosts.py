@@ -15,10 +15,17 @@ def test_simulate_with_input_signals_matches_fmi2(fmu_path, fmi3_path):
     from fmpy import simulate_fmu
 
     signal = np.zeros(3, dtype=[("time", float), ("input_speed", float), ("bend_angle", float)])
-    signal["time"], signal["input_speed"], signal["bend_angle"] = (0, .1, .2), (10, 50, 20), \
-        (0.1, 0.5, 0.3)
-    runs = [simulate(fmu, stop_time=0.2, output_interval=0.01, inputs=signal,
-                     output=list(table.OUTPUTS)) for fmu in (fmu_path, fmi3_path)]
+    signal["time"], signal["input_speed"], signal["bend_angle"] = (
+        (0, 0.1, 0.2),
+        (10, 50, 20),
+        (0.1, 0.5, 0.3),
+    )
+    runs = [
+        simulate(
+            fmu, stop_time=0.2, output_interval=0.01, inputs=signal, output=list(table.OUTPUTS)
+        )
+        for fmu in (fmu_path, fmi3_path)
+    ]
     assert runs[1].dtype["crosspiece_quaternion"].shape == (4,)
     assert runs[1]["time"][-1] == pytest.approx(0.2)
     fmi2, fmi3 = flat_columns(runs[0]), flat_columns(runs[1])
@@ -30,8 +37,10 @@ def test_simulate_with_input_signals_matches_fmi2(fmu_path, fmi3_path):
 
 
 def test_simulate_raises_with_the_message_and_the_result_so_far(fmi3_path):
-    signal = np.array([(0.0, 0.3), (0.2, 0.3), (0.2, 1.5), (0.5, 1.5)],
-                      dtype=[("time", float), ("bend_angle", float)])
+    signal = np.array(
+        [(0.0, 0.3), (0.2, 0.3), (0.2, 1.5), (0.5, 1.5)],
+        dtype=[("time", float), ("bend_angle", float)],
+    )
     with pytest.raises(SimulationError) as refused:
         simulate(fmi3_path, stop_time=0.5, output_interval=0.1, inputs=signal)
     assert "bend_angle = 1.5 rad" in str(refused.value) and "max_bend_angle" in str(refused.value)
@@ -62,8 +71,7 @@ def test_a_host_without_a_logger_gets_the_message_on_stderr(fmi3_path, tmp_path)
         except Exception as refusal:
             print("refused", refusal.status)
     """)
-    run = subprocess.run([sys.executable, "-c", script], capture_output=True, text=True,
-                         timeout=60)
+    run = subprocess.run([sys.executable, "-c", script], capture_output=True, text=True, timeout=60)
     assert run.returncode == 0, run.stderr
     assert "refused 2" in run.stdout
     assert "DISCARD: t = 0.0 s: input bend_angle = 1.5 rad" in run.stderr
@@ -75,7 +83,24 @@ def test_the_cli_writes_the_same_columns_for_either_fmu(fmu_path, fmi3_path, tmp
     tables = []
     for fmu in (fmu_path, fmi3_path):
         out = tmp_path / f"{fmu.parent.name}.csv"
-        assert main(["simulate", "--fmu", str(fmu), "--set", "bend_angle=0.4", "--stop-time",
-                     "0.05", "--step", "0.01", "--output", str(out), "--no-progress"]) == 0
+        assert (
+            main(
+                [
+                    "simulate",
+                    "--fmu",
+                    str(fmu),
+                    "--set",
+                    "bend_angle=0.4",
+                    "--stop-time",
+                    "0.05",
+                    "--step",
+                    "0.01",
+                    "--output",
+                    str(out),
+                    "--no-progress",
+                ]
+            )
+            == 0
+        )
         tables.append(out.read_text())
     assert tables[0] == tables[1]

@@ -15,7 +15,7 @@ def test_open_unzips_and_removes_its_copy_on_leaving_the_block(fmu_path):
         joint.step(0.5)
         assert joint.get("input_angle") == {"input_angle": 1.5}
     assert not os.path.exists(unzipped)
-    joint.close()                               # a second close does nothing
+    joint.close()  # a second close does nothing
 
 
 def test_a_directory_is_used_as_is_and_left_in_place(unzipped_fmu):
@@ -23,7 +23,7 @@ def test_a_directory_is_used_as_is_and_left_in_place(unzipped_fmu):
         with fmu.instance("a") as a, fmu.instance("b", start_values={"input_speed": 2.0}) as b:
             a.step(1.0)
             b.step(1.0)
-            assert a.values("input_angle") == [10.0]          # the FMU's default speed
+            assert a.values("input_angle") == [10.0]  # the FMU's default speed
             assert b.values("input_angle") == [2.0]
     assert os.path.isdir(unzipped_fmu)
 
@@ -58,10 +58,11 @@ def test_the_message_sink_receives_the_fmus_log(model_description, unzipped_fmu)
     assert any("bend_angle" in text for _, _, text in messages)
 
 
-def test_a_state_serialized_in_one_instance_restores_in_another(model_description,
-                                                                unzipped_fmu):
-    with JointInstance(model_description, unzipped_fmu, start_values={"input_speed": 7.0}) \
-            as joint, JointInstance(model_description, unzipped_fmu, name="other") as other:
+def test_a_state_serialized_in_one_instance_restores_in_another(model_description, unzipped_fmu):
+    with (
+        JointInstance(model_description, unzipped_fmu, start_values={"input_speed": 7.0}) as joint,
+        JointInstance(model_description, unzipped_fmu, name="other") as other,
+    ):
         joint.step(0.3)
         state = joint.get_state()
         serialized = joint.serialize_state(state)

@@ -6,8 +6,9 @@ from cardan_joint.variables import fmi3_array_table, markdown_table
 
 ROOT = Path(__file__).resolve().parents[1]
 README = (ROOT / "README.md").read_text()
-TEST_COMMAND = ('python3 -m venv .venv && .venv/bin/pip install -e ".[test]" '
-                '&& .venv/bin/python -m pytest')
+TEST_COMMAND = (
+    'python3 -m venv .venv && .venv/bin/pip install -e ".[test]" && .venv/bin/python -m pytest'
+)
 
 
 def test_variable_table_is_generated_from_the_metadata_table():
@@ -48,8 +49,12 @@ def test_readme_states_how_many_tests_the_suite_runs(request):
     import pytest
 
     config = request.config
-    if config.args_source != pytest.Config.ArgsSource.TESTPATHS or config.option.keyword \
-            or config.option.markexpr or config.option.deselect:
+    if (
+        config.args_source != pytest.Config.ArgsSource.TESTPATHS
+        or config.option.keyword
+        or config.option.markexpr
+        or config.option.deselect
+    ):
         pytest.skip("only a run of the whole suite knows its size")
     stated = int(re.search(r"installs and runs (\d+) tests", README).group(1))
     assert stated == len(request.session.items), "update the test count in the README"

@@ -15,14 +15,21 @@ from cardan_joint.simulate import RefusalError, SimulationError, simulate
 GUARD = table.BY_NAME["max_bend_angle"].start
 # One way to meet each reason: (start values, step size).
 CAUSES = {
-    Reason.NOT_FINITE: [(dict(input_speed=math.nan), 0.1), (dict(load_torque=-math.inf), 0.1),
-                        (dict(yoke_phase=math.inf), 0.1), (dict(bend_angle=math.nan), 0.1)],
-    Reason.OUT_OF_RANGE: [(dict(input_acceleration=-1.5e8), 0.1),
-                          (dict(crosspiece_inertia_3=-1e-300), 0.1)],
+    Reason.NOT_FINITE: [
+        (dict(input_speed=math.nan), 0.1),
+        (dict(load_torque=-math.inf), 0.1),
+        (dict(yoke_phase=math.inf), 0.1),
+        (dict(bend_angle=math.nan), 0.1),
+    ],
+    Reason.OUT_OF_RANGE: [
+        (dict(input_acceleration=-1.5e8), 0.1),
+        (dict(crosspiece_inertia_3=-1e-300), 0.1),
+    ],
     Reason.BEND_ANGLE: [(dict(bend_angle=-1.5), 0.1)],
     Reason.BEND_AT_STEP_END: [(dict(bend_angle=1.3, bend_angle_rate=1.0 / 3.0), 0.5)],
-    Reason.BEND_PEAK_IN_STEP: [(dict(bend_angle=-1.38, bend_angle_rate=-2.0,
-                                     bend_angle_acceleration=100.0), 0.04)],
+    Reason.BEND_PEAK_IN_STEP: [
+        (dict(bend_angle=-1.38, bend_angle_rate=-2.0, bend_angle_acceleration=100.0), 0.04)
+    ],
     Reason.BEND_GUARD: [(dict(max_bend_angle=1.6), 0.1), (dict(max_bend_angle=-0.0), 0.1)],
     Reason.STEP_SIZE: [({}, -math.inf), ({}, math.nan), ({}, -5e-324)],
     Reason.ANGLE_OVERFLOW: [(dict(input_speed=-0.1), 1e17)],
@@ -32,8 +39,9 @@ CAUSES = {
     Reason.WORKING_ANGLE_GUARD: [(dict(max_working_angle=2.0), 0.1)],
     Reason.WORKING_ANGLE: [(dict(shaft_1_side_angle=0.6, max_working_angle=0.5), 0.1)],
     # The motor's.
-    Reason.ROTOR_SPEED: [(dict(load_torque=9e8, stall_torque=60.0, no_load_speed=100.0,
-                               rotor_inertia=0.3), 0.1)],
+    Reason.ROTOR_SPEED: [
+        (dict(load_torque=9e8, stall_torque=60.0, no_load_speed=100.0, rotor_inertia=0.3), 0.1)
+    ],
 }
 PROPSHAFT_REASONS = {Reason.SHAFT_ANGLE, Reason.WORKING_ANGLE_GUARD, Reason.WORKING_ANGLE}
 MOTOR_REASONS = {Reason.ROTOR_SPEED}
@@ -62,15 +70,18 @@ def test_each_refusal_reads_back_exactly_from_its_message(reason, time):
         line = f"{refusal.message}; step of {step_size!r} s refused, the joint stays at t = 1.0 s"
         back = Refusal.from_message(line)
         assert back == refusal and back.message == refusal.message
-        assert [repr(x) for x in (back.value, back.limit, back.time)] == \
-            [repr(x) for x in (refusal.value, refusal.limit, refusal.time)]
+        assert [repr(x) for x in (back.value, back.limit, back.time)] == [
+            repr(x) for x in (refusal.value, refusal.limit, refusal.time)
+        ]
         assert back.details == refusal.details or math.isnan(refusal.value)
 
 
 def test_the_message_names_variable_value_limit_and_time():
     refusal = CardanJoint(bend_angle=1.5).step(0.1)
-    assert refusal.message == ("t = 0.0 s: input bend_angle = 1.5 rad (85.9437 deg) is not below "
-                               "the limit max_bend_angle = 1.3962634015954636 rad (80 deg)")
+    assert refusal.message == (
+        "t = 0.0 s: input bend_angle = 1.5 rad (85.9437 deg) is not below "
+        "the limit max_bend_angle = 1.3962634015954636 rad (80 deg)"
+    )
     assert refusal.at(2.5).time == 2.5 and refusal.at(2.5).message.startswith("t = 2.5 s: ")
 
 
@@ -80,12 +91,20 @@ def test_text_without_a_refusal_is_not_parsed():
 
 
 def test_simulate_raises_the_refusal_with_its_fields(fmu_path):
-    u = np.array([(0.0, 0.5), (0.5, 0.5), (0.5, 1.5), (1.0, 1.5)],
-                 dtype=[("time", float), ("bend_angle", float)])
+    u = np.array(
+        [(0.0, 0.5), (0.5, 0.5), (0.5, 1.5), (1.0, 1.5)],
+        dtype=[("time", float), ("bend_angle", float)],
+    )
     with pytest.raises(RefusalError) as error:
         simulate(fmu_path, stop_time=1.0, output_interval=0.1, inputs=u)
     e = error.value
     assert isinstance(e, SimulationError) and e.result["time"][-1] == 0.5 and e.messages
-    assert (e.variable, e.value, e.limit, e.time, e.code, e.unit) == \
-        ("bend_angle", 1.5, GUARD, 0.5, Reason.BEND_ANGLE, "rad")
+    assert (e.variable, e.value, e.limit, e.time, e.code, e.unit) == (
+        "bend_angle",
+        1.5,
+        GUARD,
+        0.5,
+        Reason.BEND_ANGLE,
+        "rad",
+    )
     assert e.refusal.message in str(e)

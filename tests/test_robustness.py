@@ -15,30 +15,49 @@ from cardan_joint.physics import CardanJoint
 from cardan_joint.simulate import SimulationError, simulate
 
 DISCARD = 2
-GOOD = dict(input_speed=12.0, input_acceleration=3.0, bend_angle=0.4, bend_angle_rate=0.05,
-            bend_angle_acceleration=-0.1, load_torque=80.0)
+GOOD = dict(
+    input_speed=12.0,
+    input_acceleration=3.0,
+    bend_angle=0.4,
+    bend_angle_rate=0.05,
+    bend_angle_acceleration=-0.1,
+    load_torque=80.0,
+)
 GUARD = table.BY_NAME["max_bend_angle"].start
 
 BAD_INPUTS = {
     "bend angle at the guard": (dict(bend_angle=GUARD), 0.01, ["bend_angle", "max_bend_angle"]),
-    "bend angle beyond the guard": (dict(bend_angle=-1.5), 0.01,
-                                    ["bend_angle = -1.5", "max_bend_angle"]),
+    "bend angle beyond the guard": (
+        dict(bend_angle=-1.5),
+        0.01,
+        ["bend_angle = -1.5", "max_bend_angle"],
+    ),
     "bend rate reaching the guard within the step": (
-        dict(bend_angle=1.3, bend_angle_rate=20.0), 0.01, ["bend_angle", "bend_angle_rate = 20.0",
-                                                           "max_bend_angle"]),
+        dict(bend_angle=1.3, bend_angle_rate=20.0),
+        0.01,
+        ["bend_angle", "bend_angle_rate = 20.0", "max_bend_angle"],
+    ),
     "NaN input speed": (dict(input_speed=math.nan), 0.01, ["input_speed = nan", "finite"]),
-    "infinite input acceleration": (dict(input_acceleration=math.inf), 0.01,
-                                    ["input_acceleration = inf"]),
+    "infinite input acceleration": (
+        dict(input_acceleration=math.inf),
+        0.01,
+        ["input_acceleration = inf"],
+    ),
     "NaN bend angle rate": (dict(bend_angle_rate=math.nan), 0.01, ["bend_angle_rate = nan"]),
     "infinite load torque": (dict(load_torque=-math.inf), 0.01, ["load_torque = -inf"]),
     "negative step": ({}, -0.01, ["step size = -0.01", "> 0"]),
     "zero step": ({}, 0.0, ["step size = 0.0", "> 0"]),
     "NaN step": ({}, math.nan, ["step size = nan"]),
-    "speed beyond its physical range": (dict(input_speed=1e308), 0.01,
-                                        ["input_speed = 1e+308", "outside its range", "100000.0"]),
-    "step overflowing the input angle": (dict(bend_angle_rate=0.0, bend_angle_acceleration=0.0),
-                                         1e305, ["input_speed = ", "overflows",
-                                                     "rad per step"]),
+    "speed beyond its physical range": (
+        dict(input_speed=1e308),
+        0.01,
+        ["input_speed = 1e+308", "outside its range", "100000.0"],
+    ),
+    "step overflowing the input angle": (
+        dict(bend_angle_rate=0.0, bend_angle_acceleration=0.0),
+        1e305,
+        ["input_speed = ", "overflows", "rad per step"],
+    ),
 }
 
 
@@ -82,34 +101,39 @@ def test_bad_input_is_refused_named_and_loses_nothing(model_description, unzippe
         twin.close()
 
 
-@pytest.mark.parametrize("parameter, value, words", [
-    ("max_bend_angle", 1.6, ["max_bend_angle = 1.6", "pi/2"]),
-    ("max_bend_angle", 0.0, ["max_bend_angle = 0.0"]),
-    ("crosspiece_inertia_2", -0.01, ["crosspiece_inertia_2 = -0.01", "range [0.0, "]),
-    ("input_angle_start", 1e18, ["input_angle_start = 1e+18", "range"]),
-    ("yoke_phase", math.nan, ["yoke_phase = nan", "finite"]),
-    ("input_angle_start", math.inf, ["input_angle_start = inf"]),
-])
-def test_bad_parameters_refuse_every_step_and_say_why(model_description, unzipped_fmu,
-                                                      parameter, value, words):
+@pytest.mark.parametrize(
+    "parameter, value, words",
+    [
+        ("max_bend_angle", 1.6, ["max_bend_angle = 1.6", "pi/2"]),
+        ("max_bend_angle", 0.0, ["max_bend_angle = 0.0"]),
+        ("crosspiece_inertia_2", -0.01, ["crosspiece_inertia_2 = -0.01", "range [0.0, "]),
+        ("input_angle_start", 1e18, ["input_angle_start = 1e+18", "range"]),
+        ("yoke_phase", math.nan, ["yoke_phase = nan", "finite"]),
+        ("input_angle_start", math.inf, ["input_angle_start = inf"]),
+    ],
+)
+def test_bad_parameters_refuse_every_step_and_say_why(
+    model_description, unzipped_fmu, parameter, value, words
+):
     messages = []
-    joint = JointInstance(model_description, unzipped_fmu, start_values={parameter: value},
-                          messages=messages)
+    joint = JointInstance(
+        model_description, unzipped_fmu, start_values={parameter: value}, messages=messages
+    )
     try:
-        assert joint.init_status == 3                                               # fmi2Error
-        assert any(all(w in m[2] for w in words) for m in messages if m[0] == 3)   # ... and why
+        assert joint.init_status == 3  # fmi2Error
+        assert any(all(w in m[2] for w in words) for m in messages if m[0] == 3)  # ... and why
         for _ in range(3):
             assert joint.try_step(0.01) == DISCARD
         assert all(w in messages[-1][2] for w in words)
     finally:
-        joint.close()                          # terminate and free stay safe
+        joint.close()  # terminate and free stay safe
 
 
 def test_parameters_cannot_change_after_initialization(model_description, unzipped_fmu):
     messages = []
     joint = JointInstance(model_description, unzipped_fmu, messages=messages)
     try:
-        assert joint.try_set(crosspiece_inertia_1=5.0) == 3                # fmi2Error
+        assert joint.try_set(crosspiece_inertia_1=5.0) == 3  # fmi2Error
         assert joint.get("crosspiece_inertia_1")["crosspiece_inertia_1"] == 0.026
         assert "parameter crosspiece_inertia_1 is fixed" in messages[-1][2]
         assert joint.try_step(0.01) == 0
@@ -118,15 +142,18 @@ def test_parameters_cannot_change_after_initialization(model_description, unzipp
 
 
 def test_plain_simulate_fmu_shows_the_message_on_the_terminal(fmu_path):
-    script = ("import numpy as np\nfrom fmpy import simulate_fmu\n"
-              "u = np.array([(0.0, 0.5), (0.5, 0.5), (0.5, 1.5), (1.0, 1.5)],"
-              " dtype=[('time', float), ('bend_angle', float)])\n"
-              f"r = simulate_fmu({str(fmu_path)!r}, stop_time=1.0, output_interval=0.1, input=u)\n"
-              "print('stopped at', r['time'][-1])\n")
-    run = subprocess.run([sys.executable, "-c", script], capture_output=True, text=True,
-                         timeout=120)
+    script = (
+        "import numpy as np\nfrom fmpy import simulate_fmu\n"
+        "u = np.array([(0.0, 0.5), (0.5, 0.5), (0.5, 1.5), (1.0, 1.5)],"
+        " dtype=[('time', float), ('bend_angle', float)])\n"
+        f"r = simulate_fmu({str(fmu_path)!r}, stop_time=1.0, output_interval=0.1, input=u)\n"
+        "print('stopped at', r['time'][-1])\n"
+    )
+    run = subprocess.run(
+        [sys.executable, "-c", script], capture_output=True, text=True, timeout=120
+    )
     assert run.returncode == 0
-    assert "stopped at 0.5" in run.stdout                 # FMPy stops early, silently
+    assert "stopped at 0.5" in run.stdout  # FMPy stops early, silently
     # ... but the FMU says why: on stderr, as FMPy's default logger cannot be trusted
     # with logging off (its proxy may still point at a freed logger of an earlier run)
     assert "Discard: t = 0.5 s: input bend_angle = 1.5 rad" in run.stderr
@@ -134,19 +161,28 @@ def test_plain_simulate_fmu_shows_the_message_on_the_terminal(fmu_path):
 
 
 def test_simulate_entry_point_raises_with_the_message(fmu_path):
-    u = np.array([(0.0, 0.5), (0.5, 0.5), (0.5, 1.5), (1.0, 1.5)],
-                 dtype=[("time", float), ("bend_angle", float)])
-    with pytest.raises(SimulationError,
-                       match=r"input bend_angle = 1.5 rad .* max_bend_angle") as error:
+    u = np.array(
+        [(0.0, 0.5), (0.5, 0.5), (0.5, 1.5), (1.0, 1.5)],
+        dtype=[("time", float), ("bend_angle", float)],
+    )
+    with pytest.raises(
+        SimulationError, match=r"input bend_angle = 1.5 rad .* max_bend_angle"
+    ) as error:
         simulate(fmu_path, stop_time=1.0, output_interval=0.1, inputs=u)
     assert error.value.result["time"][-1] == 0.5
 
 
 def test_state_rollback_is_bit_for_bit_after_ten_thousand_steps(model_description, unzipped_fmu):
     rng = np.random.default_rng(3)
-    inputs = [dict(input_speed=rng.uniform(5, 50), input_acceleration=rng.uniform(-5, 5),
-                   bend_angle=rng.uniform(-1, 1), load_torque=rng.uniform(-50, 50))
-              for _ in range(10_000)]
+    inputs = [
+        dict(
+            input_speed=rng.uniform(5, 50),
+            input_acceleration=rng.uniform(-5, 5),
+            bend_angle=rng.uniform(-1, 1),
+            load_torque=rng.uniform(-50, 50),
+        )
+        for _ in range(10_000)
+    ]
     joint = JointInstance(model_description, unzipped_fmu)
 
     def run():
@@ -163,7 +199,7 @@ def test_state_rollback_is_bit_for_bit_after_ten_thousand_steps(model_descriptio
         saved = joint.get_state()
         serialized = joint.serialize_state(saved)
         first = run()
-        other = joint.get_state()          # a second, independent copy
+        other = joint.get_state()  # a second, independent copy
         joint.set_state(saved)
         assert run() == first
         joint.set_state(other)
@@ -191,7 +227,7 @@ def test_state_includes_the_revolution_counter(model_description, unzipped_fmu):
         saved = joint.get_state()
         angle = joint.get("input_angle", "crosspiece_quaternion_0")
         for _ in range(10):
-            joint.step(0.1)                     # ~800 revolutions
+            joint.step(0.1)  # ~800 revolutions
         joint.set_state(saved)
         assert joint.get("input_angle", "crosspiece_quaternion_0") == angle
         joint.free_state(saved)
@@ -224,13 +260,18 @@ def test_a_hundred_instances_in_one_process_are_independent(model_description, u
     joints, models = [], []
     try:
         for k in range(100):
-            start = dict(bend_angle=-1.2 + 0.024 * k, yoke_phase=0.05 * k, input_speed=1.0 + k,
-                         crosspiece_inertia_3=0.001 * k)
-            joints.append(JointInstance(model_description, unzipped_fmu, name=f"joint{k}",
-                                        start_values=start))
+            start = dict(
+                bend_angle=-1.2 + 0.024 * k,
+                yoke_phase=0.05 * k,
+                input_speed=1.0 + k,
+                crosspiece_inertia_3=0.001 * k,
+            )
+            joints.append(
+                JointInstance(model_description, unzipped_fmu, name=f"joint{k}", start_values=start)
+            )
             models.append(CardanJoint(**start))
         for step in range(30):
-            for k in np.random.default_rng(step).permutation(100):   # interleaved, shuffled
+            for k in np.random.default_rng(step).permutation(100):  # interleaved, shuffled
                 joints[k].set(load_torque=float(step * k))
                 models[k].load_torque = float(step * k)
                 joints[k].step(0.003)
@@ -242,12 +283,14 @@ def test_a_hundred_instances_in_one_process_are_independent(model_description, u
             joint.close()
 
 
-def test_builds_with_other_names_and_defaults_coexist_in_one_process(tmp_path, model_description,
-                                                                   unzipped_fmu):
+def test_builds_with_other_names_and_defaults_coexist_in_one_process(
+    tmp_path, model_description, unzipped_fmu
+):
     from fmpy import extract, read_model_description
 
-    other = build_fmu(tmp_path, "--name=OtherJoint", "--set", "bend_angle=0.2",
-                      "--set", "max_bend_angle=0.3")
+    other = build_fmu(
+        tmp_path, "--name=OtherJoint", "--set", "bend_angle=0.2", "--set", "max_bend_angle=0.3"
+    )
     same_name = build_fmu(tmp_path / "b", "--set", "bend_angle=0.7")
     loaded = []
     try:
@@ -274,12 +317,19 @@ def test_libcosim_and_fmpy_agree_on_a_ten_second_run(fmu_path):
 
     from cardan_joint.cosim import run_libcosim
 
-    inputs = dict(input_speed=10.0, input_acceleration=0.0, bend_angle=0.5, bend_angle_rate=0.0,
-                  bend_angle_acceleration=0.0, load_torque=40.0)
+    inputs = dict(
+        input_speed=10.0,
+        input_acceleration=0.0,
+        bend_angle=0.5,
+        bend_angle_rate=0.0,
+        bend_angle_acceleration=0.0,
+        load_torque=40.0,
+    )
     names = list(table.OUTPUTS)
     cosim = run_libcosim(fmu_path, 10.0, 1e-3, inputs, names)
-    fmpy = simulate_fmu(str(fmu_path), stop_time=10.0, output_interval=1e-3, start_values=inputs,
-                        output=names)
+    fmpy = simulate_fmu(
+        str(fmu_path), stop_time=10.0, output_interval=1e-3, start_values=inputs, output=names
+    )
     assert len(cosim["time"]) == len(fmpy) == 10_001
     np.testing.assert_allclose(cosim["time"], fmpy["time"], rtol=0, atol=1e-12)
     for name in names:
@@ -287,32 +337,36 @@ def test_libcosim_and_fmpy_agree_on_a_ten_second_run(fmu_path):
         assert np.max(np.abs(cosim[name] - fmpy[name])) <= 1e-9 * scale, name
 
 
-def test_calls_for_other_types_and_bad_references_are_errors_not_fatal(model_description,
-                                                                      unzipped_fmu):
+def test_calls_for_other_types_and_bad_references_are_errors_not_fatal(
+    model_description, unzipped_fmu
+):
     messages = []
     joint = JointInstance(model_description, unzipped_fmu, messages=messages)
     try:
         fmu = joint.fmu
-        for call, arguments in ((fmu.getInteger, ([0],)), (fmu.getBoolean, ([0],)),
-                                (fmu.setInteger, ([0], [1])), (fmu.setBoolean, ([0], [True])),
-                                (fmu.getReal, ([9999],))):
-            assert status_of(call, *arguments) == 3      # fmi2Error, never fmi2Fatal
+        for call, arguments in (
+            (fmu.getInteger, ([0],)),
+            (fmu.getBoolean, ([0],)),
+            (fmu.setInteger, ([0], [1])),
+            (fmu.setBoolean, ([0], [True])),
+            (fmu.getReal, ([9999],)),
+        ):
+            assert status_of(call, *arguments) == 3  # fmi2Error, never fmi2Fatal
         assert any("no Real variable has value reference 9999" in m[2] for m in messages)
         assert any("no Integer variables" in m[2] for m in messages)
-        assert joint.try_step(0.01) == 0        # still alive and well
+        assert joint.try_step(0.01) == 0  # still alive and well
     finally:
         joint.close()
 
 
-def test_a_garbage_serialized_state_is_refused_and_changes_nothing(model_description,
-                                                                   unzipped_fmu):
+def test_a_garbage_serialized_state_is_refused_and_changes_nothing(model_description, unzipped_fmu):
     messages = []
     joint = JointInstance(model_description, unzipped_fmu, messages=messages)
     try:
         joint.step(0.05)
         before = all_reals(joint)
         state = joint.deserialize_state(b"not a state at all")
-        assert status_of(joint.set_state, state) == 3       # fmi2Error
+        assert status_of(joint.set_state, state) == 3  # fmi2Error
         joint.free_state(state)
         assert "fmi2SetFMUstate ignored" in messages[-1][2]
         assert all_reals(joint) == before
@@ -321,11 +375,11 @@ def test_a_garbage_serialized_state_is_refused_and_changes_nothing(model_descrip
         joint.close()
 
 
-def test_outputs_in_initialization_mode_see_the_parameters_at_once(model_description,
-                                                                   unzipped_fmu):
+def test_outputs_in_initialization_mode_see_the_parameters_at_once(model_description, unzipped_fmu):
     outputs = ("input_angle", "output_angle", "crosspiece_quaternion_0")
-    with JointInstance(model_description, unzipped_fmu, name="init", start_time=3.0,
-                       exit_initialization=False) as joint:
+    with JointInstance(
+        model_description, unzipped_fmu, name="init", start_time=3.0, exit_initialization=False
+    ) as joint:
         joint.set(input_angle_start=1.0, yoke_phase=0.5)
         in_init = joint.values(*outputs)
         joint.exit_initialization_mode()
@@ -345,9 +399,9 @@ def test_invalid_load_holds_only_the_outputs_that_depend_on_it(model_description
         expected = dict(zip(table.OUTPUTS, model.outputs()))
         for name in table.OUTPUTS:
             if "load_torque" in table.BY_NAME[name].depends_on:
-                assert now[name] == held[name], name          # held: depends on the NaN
+                assert now[name] == held[name], name  # held: depends on the NaN
             else:
-                assert now[name] == expected[name], name      # follows the valid inputs
+                assert now[name] == expected[name], name  # follows the valid inputs
         assert now["output_speed"] != held["output_speed"]
     finally:
         joint.close()
@@ -372,19 +426,24 @@ def test_a_refused_step_leaves_the_clock_alone():
     slave.exit_initialization_mode()
     assert slave.do_step(0.0, 0.5) is True
     saved = slave._get_fmu_state()
-    slave.set_real([2], [1.5])                          # beyond the guard
+    slave.set_real([2], [1.5])  # beyond the guard
     assert slave.do_step(123.0, 0.5) is False
     assert slave._get_fmu_state()["joint"]["time"] == saved["joint"]["time"] == 0.5
 
 
-@pytest.mark.parametrize("setting, words", [("bend_angle=2.0", "bend_angle = 2.0"),
-                                             ("bend_angle=abc", "abc"),
-                                             ("nonsense=1", "nonsense")])
+@pytest.mark.parametrize(
+    "setting, words",
+    [("bend_angle=2.0", "bend_angle = 2.0"), ("bend_angle=abc", "abc"), ("nonsense=1", "nonsense")],
+)
 def test_build_refuses_bad_start_values_with_a_message(tmp_path, setting, words):
     from conftest import ROOT
 
-    run = subprocess.run([sys.executable, str(ROOT / "build_fmu.py"), "--dest", str(tmp_path),
-                          "--set", setting], capture_output=True, text=True, timeout=120)
+    run = subprocess.run(
+        [sys.executable, str(ROOT / "build_fmu.py"), "--dest", str(tmp_path), "--set", setting],
+        capture_output=True,
+        text=True,
+        timeout=120,
+    )
     assert run.returncode != 0
     assert words in run.stderr and "Traceback" not in run.stderr
     assert not list(tmp_path.glob("*.fmu"))

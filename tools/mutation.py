@@ -29,6 +29,10 @@ sys.path.insert(0, str(ROOT / "fmu_src"))
 from cardan_joint import variables as table  # noqa: E402
 
 COPIED = ("fmu_src", "tests", "build_fmu.py", "pyproject.toml", "README.md")
+RESTORED = (
+    "        values = {name: float(state[name]) "
+    "for name in self.table.INPUTS + self.table.PARAMETERS}\n"
+)
 MODEL = "fmu_src/cardan_joint/physics/model.py"
 VALUES = "fmu_src/cardan_joint/physics/values.py"
 SLAVE = "fmu_src/cardan_joint/fmu/slave.py"
@@ -201,9 +205,11 @@ MUTATIONS = (
     Mutation(
         "bend angle at step end (slow path)",
         MODEL,
-        "candidates.append((Reason.BEND_AT_STEP_END, step_size,\n"
-        "                               beta + step_size * (rate + 0.5 * acc * step_size)))",
-        "pass",
+        "                    Reason.BEND_AT_STEP_END,\n"
+        "                    step_size,\n"
+        "                    beta + step_size * (rate + 0.5 * acc * step_size),\n",
+        "                    Reason.BEND_AT_STEP_END,\n                    step_size,\n"
+        "                    beta,\n",
         (GUARDS, "-k", "bend"),
     ),
     Mutation(
@@ -259,9 +265,9 @@ MUTATIONS = (
     Mutation(
         "restore: all or nothing",
         VALUES,
-        "                  for name in self.table.INPUTS + self.table.PARAMETERS}\n",
-        "                  for name in self.table.INPUTS + self.table.PARAMETERS}\n"
-        "        for name, value in values.items():\n            setattr(self, name, value)\n",
+        RESTORED,
+        RESTORED
+        + "        for name, value in values.items():\n            setattr(self, name, value)\n",
         (GUARDS, SLAVE_GUARDS, "-k", "state"),
     ),
     # The motor's own guard (its value checks are the ones above).
@@ -290,8 +296,10 @@ MUTATIONS = (
     Mutation(
         "slave: invalid inputs hold outputs",
         CORE,
-        "            if problem:\n                self._report(f\"{problem.at(model.time).message}",
-        "            if False:\n                self._report(f\"{problem.at(model.time).message}",
+        "            if problem:\n                self._report(\n"
+        "                    f\"{problem.at(model.time).message}; outputs that depend on it \"",
+        "            if False:\n                self._report(\n"
+        "                    f\"{problem.at(model.time).message}; outputs that depend on it \"",
         (SLAVE_GUARDS, "-k", "held"),
     ),
     Mutation(
@@ -356,8 +364,9 @@ MUTATIONS = (
     Mutation(
         "slave: a state of another version",
         CORE,
-        "if (len(held_outputs) != len(self.table.OUTPUTS)\n"
-        "                    or len(held_inputs) != len(self.table.INPUTS)):",
+        "if len(held_outputs) != len(self.table.OUTPUTS) or len(held_inputs) != len(\n"
+        "                self.table.INPUTS\n"
+        "            ):",
         "if False:",
         (SLAVE_GUARDS, "-k", "state"),
     ),

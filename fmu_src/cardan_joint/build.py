@@ -23,8 +23,14 @@ from .models import model as find_model
 
 PACKAGE_DIR = Path(__file__).resolve().parent
 # What an FMU needs at run time: the rest of the package runs in the host only.
-RUNTIME = ("__init__.py", "variables.py", "propshaft_variables.py", "driveline_variables.py",
-           "physics", "fmu")
+RUNTIME = (
+    "__init__.py",
+    "variables.py",
+    "propshaft_variables.py",
+    "driveline_variables.py",
+    "physics",
+    "fmu",
+)
 DEFAULT_MODEL = "UniversalJoint"
 FMI_VERSIONS = (2, 3)
 
@@ -36,8 +42,9 @@ class BuildError(RuntimeError):
 def _runtime_files(script: Path):
     for entry in RUNTIME:
         path = PACKAGE_DIR / entry
-        yield from (sorted(p for p in path.rglob("*.py") if p != script)
-                    if path.is_dir() else [path])
+        yield from (
+            sorted(p for p in path.rglob("*.py") if p != script) if path.is_dir() else [path]
+        )
 
 
 def _fingerprint(script: Path, model_name: str, start_values: dict, settings: dict) -> str:
@@ -45,8 +52,9 @@ def _fingerprint(script: Path, model_name: str, start_values: dict, settings: di
     for path in [script, *_runtime_files(script)]:
         digest.update(str(path.relative_to(PACKAGE_DIR)).encode())
         digest.update(path.read_bytes())
-    digest.update(json.dumps([model_name, sorted(start_values.items()),
-                              sorted(settings.items())]).encode())
+    digest.update(
+        json.dumps([model_name, sorted(start_values.items()), sorted(settings.items())]).encode()
+    )
     return digest.hexdigest()[:12]
 
 
@@ -66,8 +74,14 @@ def _rewrite(script: str, pattern: str, replacement: str, what: str, required: b
     return script
 
 
-def _stage(workdir: Path, script_template: Path, model_name: str, start_values: dict,
-           settings: dict, fingerprint: str) -> Path:
+def _stage(
+    workdir: Path,
+    script_template: Path,
+    model_name: str,
+    start_values: dict,
+    settings: dict,
+    fingerprint: str,
+) -> Path:
     package = f"cardan_joint_{fingerprint}"
     target = workdir / package
     target.mkdir()
@@ -82,12 +96,23 @@ def _stage(workdir: Path, script_template: Path, model_name: str, start_values: 
     base = re.search(r"^class \w+\(([\w, ]+)\):", script, flags=re.M)
     if base is None:
         raise BuildError(f"{script_template} has no slave class for the build to rename")
-    script = _rewrite(script, r"^class \w+\([\w, ]+\):", f"class {model_name}({base.group(1)}):",
-                      "class", True)
-    script = _rewrite(script, r"^    start_overrides = \{\}$",
-                      f"    start_overrides = {start_values!r}", "start_overrides", True)
-    script = _rewrite(script, r"^    build_settings = \{\}$",
-                      f"    build_settings = {settings!r}", "build_settings", bool(settings))
+    script = _rewrite(
+        script, r"^class \w+\([\w, ]+\):", f"class {model_name}({base.group(1)}):", "class", True
+    )
+    script = _rewrite(
+        script,
+        r"^    start_overrides = \{\}$",
+        f"    start_overrides = {start_values!r}",
+        "start_overrides",
+        True,
+    )
+    script = _rewrite(
+        script,
+        r"^    build_settings = \{\}$",
+        f"    build_settings = {settings!r}",
+        "build_settings",
+        bool(settings),
+    )
     script_path = workdir / f"{script_template.stem.lower()}_{fingerprint}.py"
     script_path.write_text(script)
     return script_path
@@ -101,9 +126,15 @@ def _fmu_builder(fmi_version: int):
     return FmuBuilder
 
 
-def build(dest="dist", model_name: str | None = None, start_values: dict | None = None,
-          validate: bool = True, model: str = DEFAULT_MODEL, settings: dict | None = None,
-          fmi_version: int = 2) -> Path:
+def build(
+    dest="dist",
+    model_name: str | None = None,
+    start_values: dict | None = None,
+    validate: bool = True,
+    model: str = DEFAULT_MODEL,
+    settings: dict | None = None,
+    fmi_version: int = 2,
+) -> Path:
     """Build `<dest>/<model_name>.fmu` (FMI 3: `<dest>/fmi3/<model_name>.fmu`);
     raise BuildError unless FMPy validates it."""
     try:
@@ -115,8 +146,10 @@ def build(dest="dist", model_name: str | None = None, start_values: dict | None 
     if not re.fullmatch(r"[A-Za-z_][A-Za-z0-9_]*", model_name):
         raise BuildError(f"model name {model_name!r} must be a Python identifier")
     if fmi_version not in spec.scripts:
-        raise BuildError(f"{model} is built for FMI {', '.join(map(str, spec.scripts))} only, "
-                         f"not FMI {fmi_version}")
+        raise BuildError(
+            f"{model} is built for FMI {', '.join(map(str, spec.scripts))} only, "
+            f"not FMI {fmi_version}"
+        )
     script_template = spec.scripts[fmi_version]
     start_values = _check_start_values(spec, start_values or {}, settings)
     dest = Path(dest).resolve() / ("fmi3" if fmi_version == 3 else "")
@@ -124,8 +157,9 @@ def build(dest="dist", model_name: str | None = None, start_values: dict | None 
     fingerprint = _fingerprint(script_template, model_name, start_values, settings)
     builder = _fmu_builder(fmi_version)
     with tempfile.TemporaryDirectory(prefix="cardan_joint_build_") as workdir:
-        script = _stage(Path(workdir), script_template, model_name, start_values, settings,
-                        fingerprint)
+        script = _stage(
+            Path(workdir), script_template, model_name, start_values, settings, fingerprint
+        )
         package_dir = script.parent / f"cardan_joint_{fingerprint}"
         try:
             fmu = builder.build_FMU(script, dest=dest, project_files=[package_dir])
@@ -133,13 +167,15 @@ def build(dest="dist", model_name: str | None = None, start_values: dict | None 
             # pythonfmu imported the staged script and package: drop them, so a
             # second build in this process cannot pick up this one's code. (Third-
             # party modules they imported stay: numpy cannot be imported twice.)
-            for name in [n for n in sys.modules if n.split(".")[0] in (package_dir.name,
-                                                                         script.stem)]:
+            for name in [
+                n for n in sys.modules if n.split(".")[0] in (package_dir.name, script.stem)
+            ]:
                 del sys.modules[name]
     fmu = Path(fmu)
     # --- native loader (issue 11): C hosts run the FMU without any set-up ---
     # FMI 2 binaries only: the FMI 3 binary is pythonfmu3's own (see the README).
     from .native import NativeBuildError, install_loader
+
     try:
         if fmi_version == 2:
             install_loader(fmu, model_name)
@@ -171,37 +207,74 @@ def _parse_start_values(pairs):
 
 
 def main(argv=None, prog=None) -> int:
-    parser = argparse.ArgumentParser(prog=prog, description="Build and validate an FMU of this "
-                                     "project (default: the UniversalJoint FMU).")
-    parser.add_argument("--model", default=DEFAULT_MODEL, choices=sorted(MODELS),
-                        help="which model to build (default: %(default)s)")
-    parser.add_argument("--fmi-version", type=int, default=2, choices=FMI_VERSIONS,
-                        help="FMI version (default: 2; FMI 3 goes to DEST/fmi3/)")
+    parser = argparse.ArgumentParser(
+        prog=prog,
+        description="Build and validate an FMU of this project (default: the UniversalJoint FMU).",
+    )
+    parser.add_argument(
+        "--model",
+        default=DEFAULT_MODEL,
+        choices=sorted(MODELS),
+        help="which model to build (default: %(default)s)",
+    )
+    parser.add_argument(
+        "--fmi-version",
+        type=int,
+        default=2,
+        choices=FMI_VERSIONS,
+        help="FMI version (default: 2; FMI 3 goes to DEST/fmi3/)",
+    )
     parser.add_argument("--dest", default="dist", help="output folder (default: dist)")
-    parser.add_argument("--name", default=None,
-                        help="model name and FMU file name (default: the model's own name)")
-    parser.add_argument("--set", action="append", default=[], metavar="NAME=VALUE",
-                        help="start value of an input or parameter, e.g. --set bend_angle=0.2")
-    parser.add_argument("--joints", type=int, default=None, metavar="N",
-                        help="Propshaft only: number of joints, 2 (Propshaft, the default), "
-                             "3 or 4 (Propshaft3, Propshaft4)")
-    parser.add_argument("--cross-check", action="store_true",
-                        help="also write DEST/cross-check/fmus/2.0/cs/linux64/... with the "
-                             "reference run (fmi-cross-check layout; default model only)")
+    parser.add_argument(
+        "--name", default=None, help="model name and FMU file name (default: the model's own name)"
+    )
+    parser.add_argument(
+        "--set",
+        action="append",
+        default=[],
+        metavar="NAME=VALUE",
+        help="start value of an input or parameter, e.g. --set bend_angle=0.2",
+    )
+    parser.add_argument(
+        "--joints",
+        type=int,
+        default=None,
+        metavar="N",
+        help="Propshaft only: number of joints, 2 (Propshaft, the default), "
+        "3 or 4 (Propshaft3, Propshaft4)",
+    )
+    parser.add_argument(
+        "--cross-check",
+        action="store_true",
+        help="also write DEST/cross-check/fmus/2.0/cs/linux64/... with the "
+        "reference run (fmi-cross-check layout; default model only)",
+    )
     args = parser.parse_args(argv)
     settings = {}
     if args.joints is not None:
         if "joints" not in MODELS[args.model].default_settings:
             parser.error(f"--joints does not apply to {args.model}")
         settings["joints"] = args.joints
-    if args.cross_check and (args.model != DEFAULT_MODEL or args.fmi_version != 2
-                             or args.name not in (None, DEFAULT_MODEL) or args.set):
-        parser.error("--cross-check takes the default model: its reference run assumes the "
-                     "default FMI 2 UniversalJoint with its start values (no --model, "
-                     "--fmi-version, --name or --set)")
+    if args.cross_check and (
+        args.model != DEFAULT_MODEL
+        or args.fmi_version != 2
+        or args.name not in (None, DEFAULT_MODEL)
+        or args.set
+    ):
+        parser.error(
+            "--cross-check takes the default model: its reference run assumes the "
+            "default FMI 2 UniversalJoint with its start values (no --model, "
+            "--fmi-version, --name or --set)"
+        )
     try:
-        fmu = build(args.dest, args.name, _parse_start_values(args.set), model=args.model,
-                    settings=settings, fmi_version=args.fmi_version)
+        fmu = build(
+            args.dest,
+            args.name,
+            _parse_start_values(args.set),
+            model=args.model,
+            settings=settings,
+            fmi_version=args.fmi_version,
+        )
     except BuildError as error:
         print(f"build_fmu: {error}", file=sys.stderr)
         return 1

@@ -36,6 +36,7 @@ class UsageError(Exception):
 
 # --- simulate: turning arguments into FMPy inputs ---------------------------
 
+
 def parse_assignments(pairs):
     """--set NAME=VALUE ... -> (constant inputs, parameter start values)."""
     inputs, parameters = {}, {}
@@ -56,11 +57,14 @@ def parse_assignments(pairs):
 def _settable_kind(name, where):
     variable = table.BY_NAME.get(name)
     if variable is None:
-        raise UsageError(f"{where}: unknown variable {name!r}; inputs are "
-                         f"{', '.join(table.INPUTS)}; parameters are {', '.join(table.PARAMETERS)}")
+        raise UsageError(
+            f"{where}: unknown variable {name!r}; inputs are "
+            f"{', '.join(table.INPUTS)}; parameters are {', '.join(table.PARAMETERS)}"
+        )
     if variable.causality not in ("input", "parameter"):
-        raise UsageError(f"{where}: {name!r} is an {variable.causality}; only inputs and "
-                         f"parameters can be set")
+        raise UsageError(
+            f"{where}: {name!r} is an {variable.causality}; only inputs and parameters can be set"
+        )
     return variable.causality
 
 
@@ -77,8 +81,10 @@ def read_input_csv(path):
         raise UsageError(f"{path}: no 'time' column (columns: {', '.join(header)})")
     for name in header:
         if name != "time" and _settable_kind(name, f"{path}, column {name!r}") != "input":
-            raise UsageError(f"{path}, column {name!r}: a parameter is fixed for the run; "
-                             f"set it with --set {name}=VALUE")
+            raise UsageError(
+                f"{path}, column {name!r}: a parameter is fixed for the run; "
+                f"set it with --set {name}=VALUE"
+            )
     for name in header:
         if not np.all(np.isfinite(signal[name])):
             raise UsageError(f"{path}, column {name!r}: every value must be a finite number")
@@ -97,13 +103,13 @@ def input_signal(constants, csv_signal, defaults, stop_time):
     clash = sorted(given & set(constants))
     if clash:
         raise UsageError(f"{', '.join(clash)} given both by --set and in the input CSV")
-    times = (csv_signal["time"] if csv_signal is not None
-             else np.array([0.0, max(stop_time, 0.0)]))
+    times = csv_signal["time"] if csv_signal is not None else np.array([0.0, max(stop_time, 0.0)])
     signal = np.zeros(len(times), dtype=[("time", float)] + [(n, float) for n in table.INPUTS])
     signal["time"] = times
     for name in table.INPUTS:
-        signal[name] = (csv_signal[name] if name in given
-                        else constants.get(name, defaults.get(name, 0.0)))
+        signal[name] = (
+            csv_signal[name] if name in given else constants.get(name, defaults.get(name, 0.0))
+        )
     return signal
 
 
@@ -111,11 +117,14 @@ def _start_values(fmu):
     from fmpy import read_model_description
 
     description = read_model_description(str(fmu))
-    return ({v.name: float(v.start) for v in description.modelVariables if v.start is not None},
-            description.defaultExperiment)
+    return (
+        {v.name: float(v.start) for v in description.modelVariables if v.start is not None},
+        description.defaultExperiment,
+    )
 
 
 # --- simulate: output -------------------------------------------------------
+
 
 def _written(path: Path, existed: bool) -> str:
     return f"{path} (replaced)" if existed else str(path)
@@ -129,8 +138,10 @@ def write_outputs(result, output: Path, plot: Path, names, title) -> str:
         from .plotting import plot_time_series
 
         plot_time_series(result, names, plot, title)
-        return f"{_written(output, existed[output])} ({len(result)} rows) and " \
-               f"{_written(plot, existed[plot])}"
+        return (
+            f"{_written(output, existed[output])} ({len(result)} rows) and "
+            f"{_written(plot, existed[plot])}"
+        )
     return f"{_written(output, existed[output])} (no rows)"
 
 
@@ -151,10 +162,13 @@ def _progress_callback(stop_time, step, show):
 def _refusal(error, stop_time) -> str:
     """Where a refused run stopped, rounded, and the FMU's reasons."""
     reached = float(error.result["time"][-1]) if len(error.result) else 0.0
-    reasons = [text for status, _, text in error.messages
-               if status in ("discard", "error", "fatal")] or ["(the FMU gave no reason)"]
-    return (f"the FMU refused a step: stopped at t = {reached:.6g} s of {stop_time:.6g} s\n  "
-            + "\n  ".join(reasons))
+    reasons = [
+        text for status, _, text in error.messages if status in ("discard", "error", "fatal")
+    ] or ["(the FMU gave no reason)"]
+    return (
+        f"the FMU refused a step: stopped at t = {reached:.6g} s of {stop_time:.6g} s\n  "
+        + "\n  ".join(reasons)
+    )
 
 
 def simulate_command(args):
@@ -166,9 +180,13 @@ def simulate_command(args):
     constants, parameters = parse_assignments(args.set)
     csv_signal = read_input_csv(args.input) if args.input else None
     starts, experiment = _start_values(fmu)
-    stop_time = (args.stop_time if args.stop_time is not None
-                 else float(csv_signal["time"][-1]) if csv_signal is not None
-                 else float(experiment.stopTime))
+    stop_time = (
+        args.stop_time
+        if args.stop_time is not None
+        else float(csv_signal["time"][-1])
+        if csv_signal is not None
+        else float(experiment.stopTime)
+    )
     step = args.step
     if not (math.isfinite(stop_time) and stop_time > 0):
         raise UsageError(f"--stop-time {stop_time!r} must be a number > 0")
@@ -185,61 +203,104 @@ def simulate_command(args):
     plot = Path(args.plot) if args.plot else output.with_suffix(".png")
     title = f"{fmu.name}: {steps} steps of {step:.6g} s"
     try:
-        result = simulate(fmu, stop_time=stop_time, output_interval=step, inputs=signal,
-                          start_values=parameters, output=list(table.INPUTS + table.OUTPUTS),
-                          step_finished=step_finished)
+        result = simulate(
+            fmu,
+            stop_time=stop_time,
+            output_interval=step,
+            inputs=signal,
+            start_values=parameters,
+            output=list(table.INPUTS + table.OUTPUTS),
+            step_finished=step_finished,
+        )
     except SimulationError as error:
-        written = write_outputs(flat_columns(error.result), output, plot, args.plot_variables,
-                                f"{title} (refused)")
-        print(f"{PROG} simulate: {_refusal(error, stop_time)}\n"
-              f"wrote the run up to the refusal: {written}", file=sys.stderr)
+        written = write_outputs(
+            flat_columns(error.result), output, plot, args.plot_variables, f"{title} (refused)"
+        )
+        print(
+            f"{PROG} simulate: {_refusal(error, stop_time)}\n"
+            f"wrote the run up to the refusal: {written}",
+            file=sys.stderr,
+        )
         return 1
     finally:
         if bar:
             bar.close()
-    result = flat_columns(result)                    # an FMI 3 FMU's arrays, as FMI 2 columns
+    result = flat_columns(result)  # an FMI 3 FMU's arrays, as FMI 2 columns
     print(f"wrote {write_outputs(result, output, plot, args.plot_variables, title)}")
     return 0
 
 
 # --- the command ------------------------------------------------------------
 
+
 def _parser():
-    parser = argparse.ArgumentParser(prog=PROG, description="Build, simulate and sweep the "
-                                     "exact Cardan joint FMU (UniversalJoint).")
+    parser = argparse.ArgumentParser(
+        prog=PROG,
+        description="Build, simulate and sweep the exact Cardan joint FMU (UniversalJoint).",
+    )
     commands = parser.add_subparsers(dest="command", required=True, metavar="COMMAND")
-    commands.add_parser("build", add_help=False,
-                        help="build and validate the FMU (options: cardan-joint build --help)")
     commands.add_parser(
-        "sweep", add_help=False,
-        help="design sweep on Dask or serially (options: cardan-joint sweep --help)")
-    run = commands.add_parser("simulate", help="co-simulate the FMU with FMPy",
-                              description="Co-simulate the FMU from constant inputs (--set) "
-                              "and/or an input CSV; write an output CSV and a PNG plot. Inputs "
-                              "hold over each step with their rates: give input_acceleration "
-                              "and bend_angle_rate columns with speed and bend angle columns "
-                              "for an exact run.")
+        "build",
+        add_help=False,
+        help="build and validate the FMU (options: cardan-joint build --help)",
+    )
+    commands.add_parser(
+        "sweep",
+        add_help=False,
+        help="design sweep on Dask or serially (options: cardan-joint sweep --help)",
+    )
+    run = commands.add_parser(
+        "simulate",
+        help="co-simulate the FMU with FMPy",
+        description="Co-simulate the FMU from constant inputs (--set) "
+        "and/or an input CSV; write an output CSV and a PNG plot. Inputs "
+        "hold over each step with their rates: give input_acceleration "
+        "and bend_angle_rate columns with speed and bend angle columns "
+        "for an exact run.",
+    )
     from .simulate import DEFAULT_FMU
+
     run.add_argument("--fmu", default=str(DEFAULT_FMU), help="FMU file (default %(default)s)")
-    run.add_argument("--set", action="append", default=[], metavar="NAME=VALUE",
-                     help="constant input or parameter value, e.g. --set bend_angle=0.3 "
-                          "(SI units: rad, rad/s, N.m, kg.m2)")
-    run.add_argument("--input", metavar="CSV",
-                     help="input CSV: a 'time' column and input-name columns")
-    run.add_argument("--stop-time", type=float, default=None,
-                     help="[s] (default: the CSV's last time, else the FMU's default experiment)")
-    run.add_argument("--step", type=float, default=1e-3,
-                     help="communication step [s] (default %(default)s)")
-    run.add_argument("--output", default=DEFAULT_OUTPUT,
-                     help="output CSV (default %(default)s; an existing file is replaced, "
-                          "and the command says so)")
+    run.add_argument(
+        "--set",
+        action="append",
+        default=[],
+        metavar="NAME=VALUE",
+        help="constant input or parameter value, e.g. --set bend_angle=0.3 "
+        "(SI units: rad, rad/s, N.m, kg.m2)",
+    )
+    run.add_argument(
+        "--input", metavar="CSV", help="input CSV: a 'time' column and input-name columns"
+    )
+    run.add_argument(
+        "--stop-time",
+        type=float,
+        default=None,
+        help="[s] (default: the CSV's last time, else the FMU's default experiment)",
+    )
+    run.add_argument(
+        "--step", type=float, default=1e-3, help="communication step [s] (default %(default)s)"
+    )
+    run.add_argument(
+        "--output",
+        default=DEFAULT_OUTPUT,
+        help="output CSV (default %(default)s; an existing file is replaced, "
+        "and the command says so)",
+    )
     run.add_argument("--plot", default=None, help="plot PNG (default: the output CSV's name, .png)")
-    run.add_argument("--plot-variables", nargs="+", default=list(DEFAULT_PLOT_VARIABLES),
-                     metavar="NAME", help="variables to plot (default: %(default)s)")
+    run.add_argument(
+        "--plot-variables",
+        nargs="+",
+        default=list(DEFAULT_PLOT_VARIABLES),
+        metavar="NAME",
+        help="variables to plot (default: %(default)s)",
+    )
     progress = run.add_mutually_exclusive_group()
-    progress.add_argument("--progress", action="store_true",
-                          help=f"always show a progress bar (default: from {PROGRESS_MIN_STEPS} "
-                               "steps on)")
+    progress.add_argument(
+        "--progress",
+        action="store_true",
+        help=f"always show a progress bar (default: from {PROGRESS_MIN_STEPS} steps on)",
+    )
     progress.add_argument("--no-progress", action="store_true", help="no progress bar")
     return parser
 
@@ -251,9 +312,11 @@ def main(argv=None) -> int:
     try:
         if args.command == "build":
             from .build import main as build_main
+
             return build_main(rest, prog=f"{PROG} build")
         if args.command == "sweep":
             from .sweep import main as sweep_main
+
             return sweep_main(rest, prog=f"{PROG} sweep", default_name=SWEEP_NAME)
         if rest:
             parser.error(f"unrecognized arguments: {' '.join(rest)}")
@@ -264,7 +327,7 @@ def main(argv=None) -> int:
     except KeyboardInterrupt:
         print(f"{PROG} {args.command}: interrupted", file=sys.stderr)
         return 130
-    except Exception as error:       # noqa: BLE001 - the user gets a message, not a traceback
+    except Exception as error:  # noqa: BLE001 - the user gets a message, not a traceback
         print(f"{PROG} {args.command}: {type(error).__name__}: {error}", file=sys.stderr)
         return 1
 

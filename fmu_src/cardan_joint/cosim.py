@@ -62,21 +62,26 @@ def _steps(stop_time, step_size):
     step_ns, stop_ns = _ns(step_size), _ns(stop_time)
     n_steps = round(stop_ns / step_ns) if step_ns > 0 else 0
     if step_ns <= 0 or n_steps < 1 or n_steps * step_ns != stop_ns:
-        raise ValueError(f"stop_time {stop_time} is not a positive whole number of steps "
-                         f"{step_size}")
+        raise ValueError(
+            f"stop_time {stop_time} is not a positive whole number of steps {step_size}"
+        )
     return step_ns, n_steps
 
 
 def _real_references(execution, index, where):
     from libcosimpy.CosimEnums import CosimVariableType
 
-    refs = {v.name.decode(): v.reference for v in execution.slave_variables(index)
-            if CosimVariableType(v.type) is CosimVariableType.REAL}
+    refs = {
+        v.name.decode(): v.reference
+        for v in execution.slave_variables(index)
+        if CosimVariableType(v.type) is CosimVariableType.REAL
+    }
 
     def ref(name):
         if name not in refs:
             raise KeyError(f"{name!r} is not a Real variable of {where}")
         return refs[name]
+
     return ref
 
 
@@ -91,22 +96,41 @@ def _observe_and_run(execution, observed, n_steps, step_ns):
     observer = CosimObserver.create_time_series(n)  # the default one keeps only the last 10000
     _check(execution.add_observer(observer), "adding observer")
     for key, (index, reference) in observed.items():
-        _check(observer.start_time_series(index, reference, CosimVariableType.REAL),
-               f"observing {key}")
+        _check(
+            observer.start_time_series(index, reference, CosimVariableType.REAL), f"observing {key}"
+        )
 
     _check(execution.step(n_steps), "stepping")
 
     get_samples = libcosimc().cosim_observer_slave_get_real_samples
     get_samples.restype = ctypes.c_int64
-    get_samples.argtypes = [ctypes.c_void_p, ctypes.c_int, ctypes.c_uint32, ctypes.c_int64,
-                            ctypes.c_size_t, ctypes.c_void_p, ctypes.c_void_p, ctypes.c_void_p]
+    get_samples.argtypes = [
+        ctypes.c_void_p,
+        ctypes.c_int,
+        ctypes.c_uint32,
+        ctypes.c_int64,
+        ctypes.c_size_t,
+        ctypes.c_void_p,
+        ctypes.c_void_p,
+        ctypes.c_void_p,
+    ]
     result: dict[str, np.ndarray] = {}
     for key, (index, reference) in observed.items():
         values, steps, times = np.empty(n), np.empty(n, np.int64), np.empty(n, np.int64)
-        got = get_samples(ctypes.cast(observer.ptr(), ctypes.c_void_p), index, reference, 0, n,
-                          values.ctypes.data, steps.ctypes.data, times.ctypes.data)
-        _check(got == n and np.array_equal(steps, np.arange(n)),
-               f"reading {key} ({got} of {n} samples)")
+        got = get_samples(
+            ctypes.cast(observer.ptr(), ctypes.c_void_p),
+            index,
+            reference,
+            0,
+            n,
+            values.ctypes.data,
+            steps.ctypes.data,
+            times.ctypes.data,
+        )
+        _check(
+            got == n and np.array_equal(steps, np.arange(n)),
+            f"reading {key} ({got} of {n} samples)",
+        )
         result.setdefault("time", times / _NS)
         result[key] = values
     if "time" not in result:
@@ -115,8 +139,14 @@ def _observe_and_run(execution, observed, n_steps, step_ns):
     return result
 
 
-def run_libcosim(fmu_path, stop_time, step_size, inputs: dict[str, float], outputs: list[str],
-                 start_values: dict[str, float] | None = None) -> dict[str, np.ndarray]:
+def run_libcosim(
+    fmu_path,
+    stop_time,
+    step_size,
+    inputs: dict[str, float],
+    outputs: list[str],
+    start_values: dict[str, float] | None = None,
+) -> dict[str, np.ndarray]:
     """Simulate one FMU alone in libcosim with constant real ``inputs``.
 
     ``inputs`` and ``start_values`` (real parameters or inputs) are set as initial
@@ -138,8 +168,9 @@ def run_libcosim(fmu_path, stop_time, step_size, inputs: dict[str, float], outpu
     ref = _real_references(execution, index, fmu_path)
     for name, value in {**(start_values or {}), **inputs}.items():
         _check(execution.real_initial_value(index, ref(name), float(value)), f"setting {name}")
-    result = _observe_and_run(execution, {name: (index, ref(name)) for name in outputs},
-                              n_steps, step_ns)
+    result = _observe_and_run(
+        execution, {name: (index, ref(name)) for name in outputs}, n_steps, step_ns
+    )
     del execution, slave  # execution first: it owns the FMU instance
     return result
 

@@ -34,14 +34,25 @@ DRIVE_PARAMETERS = {
 # A straight drive without inertia of its own: the load's inertia meets the motor's
 # unchanged (the example's stability demonstration).
 STRAIGHT_DRIVE_PARAMETERS = {
-    "UniversalJoint": {"bend_angle": 0.0, "crosspiece_inertia_1": 0.0,
-                       "crosspiece_inertia_2": 0.0, "crosspiece_inertia_3": 0.0},
-    "Propshaft": {**{f"shaft_{i}_{view}_angle": 0.0 for i in range(3) for view in ("side", "top")},
-                  "shaft_1_inertia": 0.0, "crosspiece_inertia_1": 0.0,
-                  "crosspiece_inertia_2": 0.0, "crosspiece_inertia_3": 0.0},
+    "UniversalJoint": {
+        "bend_angle": 0.0,
+        "crosspiece_inertia_1": 0.0,
+        "crosspiece_inertia_2": 0.0,
+        "crosspiece_inertia_3": 0.0,
+    },
+    "Propshaft": {
+        **{f"shaft_{i}_{view}_angle": 0.0 for i in range(3) for view in ("side", "top")},
+        "shaft_1_inertia": 0.0,
+        "crosspiece_inertia_1": 0.0,
+        "crosspiece_inertia_2": 0.0,
+        "crosspiece_inertia_3": 0.0,
+    },
 }
-MOTOR_PARAMETERS = {"stall_torque": 120.0, "no_load_speed": 157.07963267948966,
-                    "rotor_inertia": 0.2}
+MOTOR_PARAMETERS = {
+    "stall_torque": 120.0,
+    "no_load_speed": 157.07963267948966,
+    "rotor_inertia": 0.2,
+}
 LOAD_PARAMETERS = {"inertia": 0.05, "drag": 0.05, "constant_torque": 20.0}
 
 CONNECTIONS = [
@@ -52,9 +63,16 @@ CONNECTIONS = [
     ("Load", "torque", DRIVE_INSTANCE, "load_torque"),
     (DRIVE_INSTANCE, "input_torque", "Motor", "load_torque"),
 ]
-RECORDED = ["Motor.speed", "Motor.acceleration", "Motor.angle", "Motor.motor_torque",
-            f"{DRIVE_INSTANCE}.output_speed", f"{DRIVE_INSTANCE}.output_acceleration",
-            f"{DRIVE_INSTANCE}.input_torque", "Load.torque"]
+RECORDED = [
+    "Motor.speed",
+    "Motor.acceleration",
+    "Motor.angle",
+    "Motor.motor_torque",
+    f"{DRIVE_INSTANCE}.output_speed",
+    f"{DRIVE_INSTANCE}.output_acceleration",
+    f"{DRIVE_INSTANCE}.input_torque",
+    "Load.torque",
+]
 
 
 def _connectors(instance):
@@ -76,12 +94,22 @@ def build_fmus(dest, drive: str = DRIVE) -> dict:
     """Build the Motor, Load and drive FMUs into `dest`; return {instance: path}."""
     from .build import build
 
-    return {"Motor": build(dest, model="Motor"), DRIVE_INSTANCE: build(dest, model=drive),
-            "Load": build(dest, model="Load")}
+    return {
+        "Motor": build(dest, model="Motor"),
+        DRIVE_INSTANCE: build(dest, model=drive),
+        "Load": build(dest, model="Load"),
+    }
 
 
-def write_driveline_ssp(path, fmus: dict, drive: str = DRIVE, stop_time: float = 2.0,
-                        motor=None, load=None, drive_parameters=None) -> Path:
+def write_driveline_ssp(
+    path,
+    fmus: dict,
+    drive: str = DRIVE,
+    stop_time: float = 2.0,
+    motor=None,
+    load=None,
+    drive_parameters=None,
+) -> Path:
     """Write the system as an SSP archive. `fmus`: {instance: FMU path} as from
     `build_fmus`; parameter dicts override the defaults above."""
     parameters = {
@@ -89,8 +117,10 @@ def write_driveline_ssp(path, fmus: dict, drive: str = DRIVE, stop_time: float =
         DRIVE_INSTANCE: {**DRIVE_PARAMETERS.get(drive, {}), **(drive_parameters or {})},
         "Load": {**LOAD_PARAMETERS, **(load or {})},
     }
-    components = [Component(name, fmus[name], _connectors(name), parameters[name])
-                  for name in ("Motor", DRIVE_INSTANCE, "Load")]
+    components = [
+        Component(name, fmus[name], _connectors(name), parameters[name])
+        for name in ("Motor", DRIVE_INSTANCE, "Load")
+    ]
     return write_ssp(path, "Driveline", components, CONNECTIONS, stop_time)
 
 
@@ -106,8 +136,12 @@ def run_fmpy(ssp_path, stop_time: float, step_size: float) -> dict:
     from fmpy.ssp.simulation import simulate_ssp
 
     n = round(stop_time / step_size)
-    result = simulate_ssp(str(ssp_path), stop_time=(n - 0.5) * step_size, step_size=step_size,
-                          parameter_set=fmpy_parameter_set(ssp_path))
+    result = simulate_ssp(
+        str(ssp_path),
+        stop_time=(n - 0.5) * step_size,
+        step_size=step_size,
+        parameter_set=fmpy_parameter_set(ssp_path),
+    )
     if len(result) != n:
         raise RuntimeError(f"simulate_ssp made {len(result)} steps, not {n}")
     rows = {"time": np.arange(1, n + 1) * step_size}
@@ -126,4 +160,3 @@ def host_difference(fmpy_rows: dict, libcosim_rows: dict, keys=RECORDED) -> dict
     """Largest |FMPy - libcosim| per variable over the common time points."""
     assert np.allclose(fmpy_rows["time"], libcosim_rows["time"][1:], rtol=0, atol=1e-12)
     return {key: float(np.max(np.abs(fmpy_rows[key] - libcosim_rows[key][1:]))) for key in keys}
-

@@ -10,8 +10,11 @@ signal, so completing the inputs changes nothing but the noise.
 import numpy as np
 
 # Inputs the FMU carries along a rate when no one sets them (see "Step semantics").
-_RATES = {"input_speed": ("input_acceleration",), "bend_angle_rate": ("bend_angle_acceleration",),
-          "bend_angle": ("bend_angle_rate", "bend_angle_acceleration")}
+_RATES = {
+    "input_speed": ("input_acceleration",),
+    "bend_angle_rate": ("bend_angle_acceleration",),
+    "bend_angle": ("bend_angle_rate", "bend_angle_acceleration"),
+}
 
 
 def complete_inputs(inputs, starts: dict, stop_time: float, step: float) -> np.ndarray:
@@ -24,22 +27,32 @@ def complete_inputs(inputs, starts: dict, stop_time: float, step: float) -> np.n
     names = tuple(name for name in starts if name not in rates) + tuple(rates)
     if not isinstance(inputs, dict):
         given = set(inputs.dtype.names)
-        moving = {n for n in names if n not in given and any(
-            r in given or starts[r] != 0.0 for r in rates.get(n, ()))}
+        moving = {
+            n
+            for n in names
+            if n not in given and any(r in given or starts[r] != 0.0 for r in rates.get(n, ()))
+        }
         if moving:
-            return inputs        # the FMU carries these along given rates: leave them unset
-        signal = np.zeros(len(inputs), dtype=inputs.dtype.descr +
-                          [(n, float) for n in names if n not in given])
+            return inputs  # the FMU carries these along given rates: leave them unset
+        signal = np.zeros(
+            len(inputs), dtype=inputs.dtype.descr + [(n, float) for n in names if n not in given]
+        )
         for name in signal.dtype.names:
             signal[name] = inputs[name] if name in given else starts[name]
         return signal
     value = {name: float(inputs.get(name, starts[name])) for name in names}
     # Linear pieces are exact between two points; a bend angle carried by its
     # acceleration is a parabola, given at every communication point.
-    curved = "bend_angle" in rates and "bend_angle" not in inputs and \
-        value["bend_angle_acceleration"] != 0.0
-    t = (np.linspace(0.0, stop_time, max(1, round(stop_time / step)) + 1) if curved
-         else np.array([0.0, stop_time]))
+    curved = (
+        "bend_angle" in rates
+        and "bend_angle" not in inputs
+        and value["bend_angle_acceleration"] != 0.0
+    )
+    t = (
+        np.linspace(0.0, stop_time, max(1, round(stop_time / step)) + 1)
+        if curved
+        else np.array([0.0, stop_time])
+    )
     signal = np.zeros(len(t), dtype=[("time", float)] + [(n, float) for n in names])
     signal["time"] = t
     for name in names:
@@ -49,6 +62,9 @@ def complete_inputs(inputs, starts: dict, stop_time: float, step: float) -> np.n
     if "bend_angle_rate" in rates and "bend_angle_rate" not in inputs:
         signal["bend_angle_rate"] = value["bend_angle_rate"] + value["bend_angle_acceleration"] * t
     if "bend_angle" in rates and "bend_angle" not in inputs:
-        signal["bend_angle"] = (value["bend_angle"] + value["bend_angle_rate"] * t
-                                + 0.5 * value["bend_angle_acceleration"] * t * t)
+        signal["bend_angle"] = (
+            value["bend_angle"]
+            + value["bend_angle_rate"] * t
+            + 0.5 * value["bend_angle_acceleration"] * t * t
+        )
     return signal

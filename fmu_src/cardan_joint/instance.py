@@ -23,7 +23,7 @@ from math import prod
 from pathlib import Path
 from typing import Any
 
-Message = tuple[int, str, str]          # (FMI status, category, text)
+Message = tuple[int, str, str]  # (FMI status, category, text)
 
 
 def _slave(model_description, unzipped: str, name: str):
@@ -32,8 +32,11 @@ def _slave(model_description, unzipped: str, name: str):
 
     fmi3 = model_description.fmiVersion.startswith("3")
     return (FMU3Slave if fmi3 else FMU2Slave)(
-        guid=model_description.guid, unzipDirectory=unzipped,
-        modelIdentifier=model_description.coSimulation.modelIdentifier, instanceName=name)
+        guid=model_description.guid,
+        unzipDirectory=unzipped,
+        modelIdentifier=model_description.coSimulation.modelIdentifier,
+        instanceName=name,
+    )
 
 
 # FMI 3 differs in its call sequence, its value getters (arrays) and its names for
@@ -48,7 +51,9 @@ def logging_callbacks(sink: Any):
     callbacks = fmi2CallbackFunctions()
     callbacks.logger = fmi2CallbackLoggerTYPE(
         lambda env, instance, status, category, message: sink.append(
-            (status, category.decode(), message.decode())))
+            (status, category.decode(), message.decode())
+        )
+    )
     callbacks.allocateMemory = defaultCallbacks.allocateMemory
     callbacks.freeMemory = defaultCallbacks.freeMemory
     return callbacks
@@ -75,29 +80,45 @@ class JointInstance:
     `exit_initialization_mode()`.
     """
 
-    def __init__(self, model_description, unzipped, name: str = "joint",
-                 start_values: dict[str, float] | None = None, start_time: float = 0.0,
-                 messages: Any = None, exit_initialization: bool = True):
+    def __init__(
+        self,
+        model_description,
+        unzipped,
+        name: str = "joint",
+        start_values: dict[str, float] | None = None,
+        start_time: float = 0.0,
+        messages: Any = None,
+        exit_initialization: bool = True,
+    ):
         version = model_description.fmiVersion
         if version not in _SLAVES:
-            raise ValueError(f"FMI version {version} of {model_description.modelName!r} is not "
-                             f"supported; supported: {', '.join(sorted(_SLAVES))}")
+            raise ValueError(
+                f"FMI version {version} of {model_description.modelName!r} is not "
+                f"supported; supported: {', '.join(sorted(_SLAVES))}"
+            )
         self.model_description = model_description
         self.references = {v.name: v.valueReference for v in model_description.modelVariables}
-        self.outputs = [v.name for v in model_description.modelVariables
-                        if v.causality == "output"]
+        self.outputs = [v.name for v in model_description.modelVariables if v.causality == "output"]
         self.fmi3 = version.startswith("3")
         # Elements per variable (FMI 3 arrays; 1 for a scalar).
-        self.sizes = {v.name: prod(int(d.start) for d in getattr(v, "dimensions", None) or [])
-                      for v in model_description.modelVariables}
+        self.sizes = {
+            v.name: prod(int(d.start) for d in getattr(v, "dimensions", None) or [])
+            for v in model_description.modelVariables
+        }
         self.fmu = _SLAVES[version](model_description, str(unzipped), name)
         self._cleanup: list[Callable[[], None]] = []
         if self.fmi3:
             # FMPy keeps the callback on the FMU object, so it outlives the instance.
             self.callbacks = None
-            self.fmu.instantiate(logMessage=None if messages is None else (
-                lambda env, status, category, message: messages.append(
-                    (status, category.decode(), message.decode()))))
+            self.fmu.instantiate(
+                logMessage=None
+                if messages is None
+                else (
+                    lambda env, status, category, message: messages.append(
+                        (status, category.decode(), message.decode())
+                    )
+                )
+            )
         else:
             # Kept on the instance: ctypes callbacks must outlive the FMU.
             self.callbacks = None if messages is None else logging_callbacks(messages)
@@ -160,8 +181,10 @@ class JointInstance:
         if not self.fmi3:
             return self.fmu.getReal(self._refs(names))
         flat = iter(self.fmu.getFloat64(self._refs(names), sum(self.sizes[n] for n in names)))
-        return [[next(flat) for _ in range(self.sizes[n])] if self.sizes[n] > 1 else next(flat)
-                for n in names]
+        return [
+            [next(flat) for _ in range(self.sizes[n])] if self.sizes[n] > 1 else next(flat)
+            for n in names
+        ]
 
     def get(self, *names: str) -> dict[str, float]:
         return dict(zip(names, self.values(*names)))
@@ -176,8 +199,11 @@ class JointInstance:
         rows = {g.name: g.rows for g in fmi3_variables() if len(g.rows) > 1}
         values = {}
         for name, value in self.get_outputs().items():
-            values.update(zip((row.name for row in rows[name]), value)
-                          if isinstance(value, list) else [(name, value)])
+            values.update(
+                zip((row.name for row in rows[name]), value)
+                if isinstance(value, list)
+                else [(name, value)]
+            )
         return values
 
     def step(self, step_size: float) -> None:
@@ -203,12 +229,14 @@ class JointInstance:
         (self.fmu.freeFMUState if self.fmi3 else self.fmu.freeFMUstate)(state)
 
     def serialize_state(self, state) -> bytes:
-        return bytes((self.fmu.serializeFMUState if self.fmi3
-                      else self.fmu.serializeFMUstate)(state))
+        return bytes(
+            (self.fmu.serializeFMUState if self.fmi3 else self.fmu.serializeFMUstate)(state)
+        )
 
     def deserialize_state(self, serialized: bytes):
-        return (self.fmu.deserializeFMUState if self.fmi3
-                else self.fmu.deSerializeFMUstate)(serialized)
+        return (self.fmu.deserializeFMUState if self.fmi3 else self.fmu.deSerializeFMUstate)(
+            serialized
+        )
 
     def close(self) -> None:
         """Terminate and free the instance (and remove what `open` unzipped); once."""
@@ -216,7 +244,7 @@ class JointInstance:
             action = self._cleanup.pop()
             try:
                 action()
-            finally:        # the rest runs even when one step fails
+            finally:  # the rest runs even when one step fails
                 self.close()
 
 

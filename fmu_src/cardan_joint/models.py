@@ -25,8 +25,10 @@ def _check_values(values: Mapping[str, float], table, make, owner: str = "") -> 
     only and the model `make(**values)` can run with them."""
     unknown = sorted(set(values) - set(table.INPUTS) - set(table.PARAMETERS))
     if unknown:
-        raise StartValueError(f"cannot set start value of {', '.join(unknown)}: only inputs "
-                              f"and parameters{owner} have start values")
+        raise StartValueError(
+            f"cannot set start value of {', '.join(unknown)}: only inputs "
+            f"and parameters{owner} have start values"
+        )
     model = make(**values)
     problem = model.parameter_problem() or model.input_problem()
     if problem:
@@ -45,10 +47,15 @@ def _check_propshaft_start_values(values: Mapping[str, float], settings: Mapping
 
     joints = settings.get("joints")
     if joints not in JOINTS:
-        raise StartValueError(f"--joints {joints!r}: the Propshaft is built for "
-                              f"{', '.join(map(str, JOINTS))} joints")
-    _check_values(values, propshaft_table(joints), lambda **v: Propshaft(joints, **v),
-                  f" of the {joints}-joint Propshaft")
+        raise StartValueError(
+            f"--joints {joints!r}: the Propshaft is built for {', '.join(map(str, JOINTS))} joints"
+        )
+    _check_values(
+        values,
+        propshaft_table(joints),
+        lambda **v: Propshaft(joints, **v),
+        f" of the {joints}-joint Propshaft",
+    )
 
 
 def _propshaft_name(settings: Mapping) -> str:
@@ -58,11 +65,13 @@ def _propshaft_name(settings: Mapping) -> str:
 
 def _component_start_value_checker(class_name: str):
     """Start-value check for the stepped model `physics.driveline.<class_name>`."""
+
     def check(values: Mapping[str, float], settings: Mapping) -> None:
         from .physics import driveline
 
         model_class = getattr(driveline, class_name)
         _check_values(values, model_class.table, model_class)
+
     return check
 
 
@@ -75,6 +84,7 @@ class Model:
     start values into its `start_overrides = {}` line and the settings into
     its `build_settings = {}` line (when it has one).
     """
+
     key: str
     scripts: dict[int, Path]
     check_start_values: Callable[[Mapping[str, float], Mapping], None]

@@ -83,8 +83,15 @@ def flat_columns(result: np.ndarray) -> np.ndarray:
     return flat
 
 
-def simulate(fmu=DEFAULT_FMU, stop_time=None, output_interval=None, inputs=None,
-             start_values=None, output=None, **fmpy_options):
+def simulate(
+    fmu=DEFAULT_FMU,
+    stop_time=None,
+    output_interval=None,
+    inputs=None,
+    start_values=None,
+    output=None,
+    **fmpy_options,
+):
     """Co-simulate the FMU; return FMPy's structured result array.
 
     `inputs`: an FMPy structured array (field "time" plus input names), or a
@@ -103,19 +110,27 @@ def simulate(fmu=DEFAULT_FMU, stop_time=None, output_interval=None, inputs=None,
     description = read_model_description(fmu)
     experiment = description.defaultExperiment
     stop_time = float(experiment.stopTime) if stop_time is None else stop_time
-    output_interval = (float(experiment.stepSize) if output_interval is None else output_interval)
+    output_interval = float(experiment.stepSize) if output_interval is None else output_interval
     if inputs is not None:
-        starts = {v.name: float((start_values or {}).get(v.name, v.start))
-                  for v in description.modelVariables if v.causality == "input"}
+        starts = {
+            v.name: float((start_values or {}).get(v.name, v.start))
+            for v in description.modelVariables
+            if v.causality == "input"
+        }
         # Every input gets a signal: FMPy warns otherwise.
         inputs = complete_inputs(inputs, starts, stop_time, output_interval)
 
     messages = []
 
-    def collect(*arguments):     # FMI 2 passes (component, instance, ...), FMI 3 (environment, ...)
+    def collect(*arguments):  # FMI 2 passes (component, instance, ...), FMI 3 (environment, ...)
         status, category, message = arguments[-3:]
-        messages.append((_STATUS.get(status, str(status)), category.decode(errors="replace"),
-                         message.decode(errors="replace")))
+        messages.append(
+            (
+                _STATUS.get(status, str(status)),
+                category.decode(errors="replace"),
+                message.decode(errors="replace"),
+            )
+        )
 
     fmi3 = description.fmiVersion.startswith("3")
     if fmi3 and output is not None:
@@ -128,11 +143,18 @@ def simulate(fmu=DEFAULT_FMU, stop_time=None, output_interval=None, inputs=None,
         return step_finished is None or step_finished(time, recorder)
 
     try:
-        result = simulate_fmu(fmu, stop_time=stop_time, output_interval=output_interval,
-                              input=inputs, start_values=start_values or {}, output=output,
-                              debug_logging=True, logger=collect,
-                              step_finished=keep_recorder if fmi3 else step_finished,
-                              **fmpy_options)
+        result = simulate_fmu(
+            fmu,
+            stop_time=stop_time,
+            output_interval=output_interval,
+            input=inputs,
+            start_values=start_values or {},
+            output=output,
+            debug_logging=True,
+            logger=collect,
+            step_finished=keep_recorder if fmi3 else step_finished,
+            **fmpy_options,
+        )
     except FMICallException:
         if not fmi3 or not messages:
             raise
@@ -140,8 +162,10 @@ def simulate(fmu=DEFAULT_FMU, stop_time=None, output_interval=None, inputs=None,
     problems = [m for m in messages if m[0] in ("discard", "error", "fatal")]
     reached = float(result["time"][-1]) if len(result) else float("nan")
     if problems or not reached >= stop_time - 1e-9 * max(1.0, abs(stop_time)):
-        detail = "\n  ".join(f"{status}: {text}" for status, _, text in problems) or \
-            "(the FMU gave no reason)"
+        detail = (
+            "\n  ".join(f"{status}: {text}" for status, _, text in problems)
+            or "(the FMU gave no reason)"
+        )
         text = f"the FMU stopped at t = {reached!r} s of {stop_time!r} s:\n  {detail}"
         refusal = first_refusal(text for _, _, text in problems)
         if refusal is None:

@@ -14,9 +14,11 @@ from dataclasses import dataclass, field
 from pathlib import Path
 from xml.etree.ElementTree import Element, SubElement, indent, tostring
 
-_NS = {"ssd": "http://ssp-standard.org/SSP1/SystemStructureDescription",
-       "ssc": "http://ssp-standard.org/SSP1/SystemStructureCommon",
-       "ssv": "http://ssp-standard.org/SSP1/SystemStructureParameterValues"}
+_NS = {
+    "ssd": "http://ssp-standard.org/SSP1/SystemStructureDescription",
+    "ssc": "http://ssp-standard.org/SSP1/SystemStructureCommon",
+    "ssv": "http://ssp-standard.org/SSP1/SystemStructureParameterValues",
+}
 FMU_TYPE = "application/x-fmu-sharedlibrary"
 SSV_TYPE = "application/x-ssp-parameter-set"
 
@@ -25,6 +27,7 @@ SSV_TYPE = "application/x-ssp-parameter-set"
 class Component:
     """One FMU in the system: its instance name, FMU file, the variables connected
     (name -> "input" or "output") and its parameter values (bare variable names)."""
+
     name: str
     fmu: Path
     connectors: Mapping[str, str]
@@ -59,7 +62,7 @@ def _xml(root: Element) -> bytes:
 
 
 def parameter_set_xml(name: str, values: Mapping[str, float]) -> bytes:
-    ssv = lambda tag: _qualified("ssv", tag)   # noqa: E731
+    ssv = lambda tag: _qualified("ssv", tag)  # noqa: E731
     root = _root(ssv("ParameterSet"), ("ssv",), version="1.0", name=name)
     parameters = SubElement(root, ssv("Parameters"))
     for parameter, value in values.items():
@@ -68,53 +71,71 @@ def parameter_set_xml(name: str, values: Mapping[str, float]) -> bytes:
     return _xml(root)
 
 
-def system_structure_xml(name: str, components: list[Component], connections: list[Connection],
-                         stop_time: float) -> bytes:
-    ssd = lambda tag: _qualified("ssd", tag)   # noqa: E731
+def system_structure_xml(
+    name: str, components: list[Component], connections: list[Connection], stop_time: float
+) -> bytes:
+    ssd = lambda tag: _qualified("ssd", tag)  # noqa: E731
     root = _root(ssd("SystemStructureDescription"), ("ssd", "ssc"), version="1.0", name=name)
     system = SubElement(root, ssd("System"), name=name)
     elements = SubElement(system, ssd("Elements"))
     for component in components:
-        node = SubElement(elements, ssd("Component"), name=component.name,
-                          source=component.source, type=FMU_TYPE)
+        node = SubElement(
+            elements, ssd("Component"), name=component.name, source=component.source, type=FMU_TYPE
+        )
         connectors = SubElement(node, ssd("Connectors"))
         for connector, kind in component.connectors.items():
-            SubElement(SubElement(connectors, ssd("Connector"), name=connector, kind=kind),
-                       _qualified("ssc", "Real"))
+            SubElement(
+                SubElement(connectors, ssd("Connector"), name=connector, kind=kind),
+                _qualified("ssc", "Real"),
+            )
         if component.parameters:
             bindings = SubElement(node, ssd("ParameterBindings"))
-            SubElement(bindings, ssd("ParameterBinding"), type=SSV_TYPE,
-                       source=component.parameter_source)
+            SubElement(
+                bindings, ssd("ParameterBinding"), type=SSV_TYPE, source=component.parameter_source
+            )
     wires = SubElement(system, ssd("Connections"))
     for start_element, start_connector, end_element, end_connector in connections:
-        SubElement(wires, ssd("Connection"), startElement=start_element,
-                   startConnector=start_connector, endElement=end_element,
-                   endConnector=end_connector)
+        SubElement(
+            wires,
+            ssd("Connection"),
+            startElement=start_element,
+            startConnector=start_connector,
+            endElement=end_element,
+            endConnector=end_connector,
+        )
     SubElement(root, ssd("DefaultExperiment"), startTime="0.0", stopTime=repr(float(stop_time)))
     return _xml(root)
 
 
-def write_ssp(path, name: str, components: list[Component], connections: list[Connection],
-              stop_time: float) -> Path:
+def write_ssp(
+    path, name: str, components: list[Component], connections: list[Connection], stop_time: float
+) -> Path:
     """Write the SSP archive `path`; return its path."""
     by_name = {c.name: c for c in components}
     for start_element, start_connector, end_element, end_connector in connections:
-        for element, connector, kind in ((start_element, start_connector, "output"),
-                                         (end_element, end_connector, "input")):
+        for element, connector, kind in (
+            (start_element, start_connector, "output"),
+            (end_element, end_connector, "input"),
+        ):
             if by_name.get(element) is None or by_name[element].connectors.get(connector) != kind:
-                raise ValueError(f"connection {start_element}.{start_connector} -> "
-                                 f"{end_element}.{end_connector}: {element} has no {kind} "
-                                 f"connector {connector!r}")
+                raise ValueError(
+                    f"connection {start_element}.{start_connector} -> "
+                    f"{end_element}.{end_connector}: {element} has no {kind} "
+                    f"connector {connector!r}"
+                )
     path = Path(path)
     path.parent.mkdir(parents=True, exist_ok=True)
     with zipfile.ZipFile(path, "w", zipfile.ZIP_DEFLATED) as archive:
-        archive.writestr("SystemStructure.ssd",
-                         system_structure_xml(name, components, connections, stop_time))
+        archive.writestr(
+            "SystemStructure.ssd", system_structure_xml(name, components, connections, stop_time)
+        )
         for component in components:
             archive.write(component.fmu, component.source)
             if component.parameters:
-                archive.writestr(component.parameter_source,
-                                 parameter_set_xml(component.name, component.parameters))
+                archive.writestr(
+                    component.parameter_source,
+                    parameter_set_xml(component.name, component.parameters),
+                )
     return path
 
 
@@ -129,7 +150,12 @@ def fmpy_parameter_set(ssp_path):
         for binding in component.parameterBindings:
             for parameter_set in binding.parameterValues:
                 for parameter in parameter_set.parameters:
-                    merged.parameters.append(Parameter(
-                        name=f"{component.name}.{binding.prefix or ''}{parameter.name}",
-                        type=parameter.type, value=parameter.value, unit=parameter.unit))
+                    merged.parameters.append(
+                        Parameter(
+                            name=f"{component.name}.{binding.prefix or ''}{parameter.name}",
+                            type=parameter.type,
+                            value=parameter.value,
+                            unit=parameter.unit,
+                        )
+                    )
     return merged

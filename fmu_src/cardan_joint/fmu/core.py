@@ -43,14 +43,17 @@ class References:
         self.known = table.INPUTS + table.PARAMETERS
         self.names = self.known + table.OUTPUTS
         self.first_output = len(self.known)
-        assert tuple(v.name for v in table.VARIABLES) == self.names, \
+        assert tuple(v.name for v in table.VARIABLES) == self.names, (
             "flat indices assume inputs, then parameters, then outputs"
-        assert table.OUTPUTS[:len(live_outputs)] == live_outputs, \
+        )
+        assert table.OUTPUTS[: len(live_outputs)] == live_outputs, (
             "the outputs that follow the state while inputs are invalid come first"
+        )
         self.inputs = range(len(table.INPUTS))
         self.nan_outputs = (math.nan,) * len(table.OUTPUTS)
-        self.output_dependencies = tuple(frozenset(table.BY_NAME[n].depends_on)
-                                         for n in table.OUTPUTS)
+        self.output_dependencies = tuple(
+            frozenset(table.BY_NAME[n].depends_on) for n in table.OUTPUTS
+        )
         getter = attrgetter(*table.INPUTS)
         self.inputs_of = getter if len(table.INPUTS) > 1 else lambda model: (getter(model),)
         # What FMPy and most masters pass every step: all inputs, all outputs, in order.
@@ -62,8 +65,10 @@ class SlaveCore:
     author = "Cardan joint FMU team"
     license = "MIT"
     version = __version__
-    description = ("Exact Cardan (Hooke) universal joint: output shaft motion, crosspiece "
-                   "orientation and dynamics, input torque and secondary couples")
+    description = (
+        "Exact Cardan (Hooke) universal joint: output shaft motion, crosspiece "
+        "orientation and dynamics, input torque and secondary couples"
+    )
     # Each slave makes its library's DefaultExperiment of these.
     experiment = {"start_time": 0.0, "stop_time": 2.0, "step_size": 1e-3}
     # Start values that differ from the table's, written in by the build script.
@@ -73,7 +78,7 @@ class SlaveCore:
     # while inputs are invalid); the flat indices follow.
     table: Any = joint_table
     live_outputs = ("input_angle",)
-    owner = "joint"                 # what stays put in messages
+    owner = "joint"  # what stays put in messages
     _refs = References(joint_table, live_outputs)
     # Set by each FMI version's slave: its status enumeration, "fmi2"/"fmi3" and
     # "state"/"State" (for messages naming FMI functions).
@@ -102,7 +107,7 @@ class SlaveCore:
         self._model = self._new_model()
         self._start_time = 0.0
         self._initialized = False
-        self._outputs = None            # cached outputs; None = recompute on next read
+        self._outputs = None  # cached outputs; None = recompute on next read
         self._inputs_checked = False
         self._outputs_held, self._inputs_held = refs.nan_outputs, refs.inputs_of(self._model)
         if not (self._model.parameter_fault or self._model.input_problem()):
@@ -110,8 +115,9 @@ class SlaveCore:
 
     def _fault(self, where: str, error: BaseException) -> None:
         try:
-            self._report(f"internal error in {where}: {type(error).__name__}: {error}",
-                         self._STATUS.error)
+            self._report(
+                f"internal error in {where}: {type(error).__name__}: {error}", self._STATUS.error
+            )
         except Exception:
             pass
 
@@ -129,8 +135,10 @@ class SlaveCore:
             self._initialized = True
             problem = self._model.parameter_fault
             if problem:
-                self._report(f"{problem.message}; every step will be refused until it is fixed",
-                             self._STATUS.error)
+                self._report(
+                    f"{problem.message}; every step will be refused until it is fixed",
+                    self._STATUS.error,
+                )
             for message in self._initialization_warnings():
                 self._report(message, self._STATUS.warning)
         except Exception as error:
@@ -146,9 +154,11 @@ class SlaveCore:
             problem = model.step(step_size)
             if problem:
                 model.time = time
-                self._report(f"{problem.message}; step of {step_size!r} s refused, the "
-                             f"{self.owner} stays at t = {current_time!r} s",
-                             self._STATUS.discard)
+                self._report(
+                    f"{problem.message}; step of {step_size!r} s refused, the "
+                    f"{self.owner} stays at t = {current_time!r} s",
+                    self._STATUS.discard,
+                )
                 return self._STATUS.discard
             self._outputs = None
             self._inputs_checked = True
@@ -164,8 +174,11 @@ class SlaveCore:
         if not self._inputs_checked:
             problem = model.parameter_fault or model.input_problem()
             if problem:
-                self._report(f"{problem.at(model.time).message}; outputs that depend on it "
-                             f"are held at the last valid inputs", self._STATUS.warning)
+                self._report(
+                    f"{problem.at(model.time).message}; outputs that depend on it "
+                    f"are held at the last valid inputs",
+                    self._STATUS.warning,
+                )
                 return self._held_outputs(model)
             self._inputs_checked = True
         self._outputs = self._outputs_held = model.outputs()
@@ -176,8 +189,10 @@ class SlaveCore:
         """Outputs with invalid inputs: each output that depends on an invalid input
         keeps its last valid value, the others (and the live outputs, the state)
         follow the valid inputs, as the declared dependencies promise."""
-        live = (tuple(getattr(model, name) for name in self.live_outputs)
-                + self._outputs_held[len(self.live_outputs):])
+        live = (
+            tuple(getattr(model, name) for name in self.live_outputs)
+            + self._outputs_held[len(self.live_outputs) :]
+        )
         if model.parameter_fault:
             return live
         invalid = model.invalid_inputs()
@@ -191,8 +206,10 @@ class SlaveCore:
         finally:
             for name, value in zip(inputs, current):
                 setattr(model, name, value)
-        return tuple(live[i] if dependencies & invalid else fresh[i]
-                     for i, dependencies in enumerate(self._refs.output_dependencies))
+        return tuple(
+            live[i] if dependencies & invalid else fresh[i]
+            for i, dependencies in enumerate(self._refs.output_dependencies)
+        )
 
     def _get_flat(self, indices):
         """Values at flat indices; raises IndexError for an index out of range."""
@@ -201,8 +218,9 @@ class SlaveCore:
         if indices == refs.all_outputs:
             return list(outputs)
         model, first = self._model, refs.first_output
-        return [outputs[i - first] if i >= first else getattr(model, refs.known[i])
-                for i in indices]
+        return [
+            outputs[i - first] if i >= first else getattr(model, refs.known[i]) for i in indices
+        ]
 
     def _set_flat(self, indices, values, setter: str):
         """Set inputs and parameters by flat index; anything else is reported
@@ -219,19 +237,24 @@ class SlaveCore:
             parameters_changed = False
             for i, value in zip(indices, values):
                 if not 0 <= i < refs.first_output:
-                    self._report(f"{setter} on {self._name_of(i)} ignored: only inputs and "
-                                 f"parameters can be set", self._STATUS.error)
+                    self._report(
+                        f"{setter} on {self._name_of(i)} ignored: only inputs and "
+                        f"parameters can be set",
+                        self._STATUS.error,
+                    )
                 elif i in refs.inputs:
                     setattr(model, known[i], float(value))
                 elif self._initialized:
-                    self._report(f"parameter {known[i]} = {value!r} ignored: fixed "
-                                 f"parameters cannot change after initialization",
-                                 self._STATUS.error)
+                    self._report(
+                        f"parameter {known[i]} = {value!r} ignored: fixed "
+                        f"parameters cannot change after initialization",
+                        self._STATUS.error,
+                    )
                 else:
                     setattr(model, known[i], float(value))
                     parameters_changed = True
             if parameters_changed:
-                self._restart()        # outputs in initialization mode see them at once
+                self._restart()  # outputs in initialization mode see them at once
             self._outputs = None
             self._inputs_checked = False
         except Exception as error:
@@ -245,10 +268,13 @@ class SlaveCore:
 
     def _get_fmu_state(self):
         try:
-            return {"joint": self._model.state(), "start_time": self._start_time,
-                    "initialized": self._initialized,
-                    "outputs_held": list(self._outputs_held),
-                    "inputs_held": list(self._inputs_held)}
+            return {
+                "joint": self._model.state(),
+                "start_time": self._start_time,
+                "initialized": self._initialized,
+                "outputs_held": list(self._outputs_held),
+                "inputs_held": list(self._inputs_held),
+            }
         except Exception as error:
             self._fault(f"{self._API}GetFMU{self._STATE}", error)
             return {"invalid_state": f"{self._API}GetFMU{self._STATE} failed: {error}"}
@@ -259,16 +285,20 @@ class SlaveCore:
                 raise ValueError(state["invalid_state"])
             held_outputs = tuple(float(v) for v in state["outputs_held"])
             held_inputs = tuple(float(v) for v in state["inputs_held"])
-            if (len(held_outputs) != len(self.table.OUTPUTS)
-                    or len(held_inputs) != len(self.table.INPUTS)):
+            if len(held_outputs) != len(self.table.OUTPUTS) or len(held_inputs) != len(
+                self.table.INPUTS
+            ):
                 raise ValueError("the state is from another version of the FMU")
-            self._model.restore(state["joint"])           # all or nothing
+            self._model.restore(state["joint"])  # all or nothing
             self._start_time = float(state["start_time"])
             self._initialized = bool(state["initialized"])
             self._outputs_held, self._inputs_held = held_outputs, held_inputs
         except Exception as error:
-            self._report(f"{self._API}SetFMU{self._STATE} ignored, the {self.owner} keeps its "
-                         f"state: {type(error).__name__}: {error}", self._STATUS.error)
+            self._report(
+                f"{self._API}SetFMU{self._STATE} ignored, the {self.owner} keeps its "
+                f"state: {type(error).__name__}: {error}",
+                self._STATUS.error,
+            )
         finally:
             self._outputs = None
             self._inputs_checked = False

@@ -11,8 +11,10 @@ from .slave import CardanJointSlave
 
 
 class MotorSlave(CardanJointSlave):
-    description = ("Motor with a linear torque-speed characteristic and rotor inertia, "
-                   "integrated exactly over each step")
+    description = (
+        "Motor with a linear torque-speed characteristic and rotor inertia, "
+        "integrated exactly over each step"
+    )
     table = MOTOR
     live_outputs = ()
     owner = "motor"

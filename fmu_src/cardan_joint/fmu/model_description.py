@@ -17,8 +17,9 @@ def _unit_definitions(table) -> Element:
     node = Element("UnitDefinitions")
     for unit in table.UNITS.values():
         unit_node = SubElement(node, "Unit", name=unit.name)
-        SubElement(unit_node, "BaseUnit",
-                   {base: str(exponent) for base, exponent in unit.exponents})
+        SubElement(
+            unit_node, "BaseUnit", {base: str(exponent) for base, exponent in unit.exponents}
+        )
         for display, factor in unit.display:
             SubElement(unit_node, "DisplayUnit", name=display, factor=_number(factor))
     return node

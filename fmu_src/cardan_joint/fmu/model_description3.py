@@ -10,8 +10,11 @@ from xml.etree.ElementTree import Element, SubElement
 
 from .model_description import _number, _unit_definitions
 
-CAPABILITIES = {"canHandleVariableCommunicationStepSize": "true",
-                "canGetAndSetFMUState": "true", "canSerializeFMUState": "true"}
+CAPABILITIES = {
+    "canHandleVariableCommunicationStepSize": "true",
+    "canGetAndSetFMUState": "true",
+    "canSerializeFMUState": "true",
+}
 
 
 def complete(root: Element, groups, starts, table) -> Element:
@@ -29,12 +32,18 @@ def complete(root: Element, groups, starts, table) -> Element:
     for node in root.find("ModelVariables"):
         reference[node.get("name")] = node.get("valueReference")
         group = by_name.get(node.get("name"))
-        if group is None:                      # the independent variable
+        if group is None:  # the independent variable
             continue
         start = _number(starts[group.name]) if group.name in starts else None
-        attributes = {"unit": group.unit, "displayUnit": group.display_unit, "start": start,
-                      **{a: None if getattr(group, a) is None else _number(getattr(group, a))
-                         for a in ("min", "max")}}
+        attributes = {
+            "unit": group.unit,
+            "displayUnit": group.display_unit,
+            "start": start,
+            **{
+                a: None if getattr(group, a) is None else _number(getattr(group, a))
+                for a in ("min", "max")
+            },
+        }
         node.attrib.update({k: v for k, v in attributes.items() if v})
 
     structure = root.find("ModelStructure")
@@ -43,8 +52,9 @@ def complete(root: Element, groups, starts, table) -> Element:
     outputs = [group for group in groups if group.causality == "output"]
     for group in outputs:
         dependencies = " ".join(reference[name] for name in group.depends_on)
-        SubElement(structure, "Output", valueReference=reference[group.name],
-                   dependencies=dependencies)
+        SubElement(
+            structure, "Output", valueReference=reference[group.name], dependencies=dependencies
+        )
     for group in outputs:
         # At initialization an output depends on the inputs and on the parameters
         # (yoke phase, start angle, inertias), so no narrower list is declared.

@@ -7,9 +7,11 @@ from .slave import CardanJointSlave
 
 
 class PropshaftSlave(CardanJointSlave):
-    description = ("Propshaft of several exact Cardan joints in 3-D: working angles from "
-                   "side and top views, yoke phasing, intermediate shaft inertia, input "
-                   "torque, speed-ratio fluctuation and the joint makers' angle checks")
+    description = (
+        "Propshaft of several exact Cardan joints in 3-D: working angles from "
+        "side and top views, yoke phasing, intermediate shaft inertia, input "
+        "torque, speed-ratio fluctuation and the joint makers' angle checks"
+    )
     # Written in by the build script: {"joints": N}.
     build_settings: dict = {}
     table = propshaft_table(2)

@@ -23,6 +23,7 @@ from .model_description import complete
 class CardanJointSlave(SlaveCore, Fmi2Slave):
     """The UniversalJoint's slave; another model's FMI 2 slave subclasses it and sets
     `table`, `_new_model` (and `live_outputs`, `owner`, `description`)."""
+
     default_experiment = DefaultExperiment(**SlaveCore.experiment)
     log_categories = log_categories("fmi2")
     _STATUS, _API, _STATE = Fmi2Status, "fmi2", "state"
@@ -37,15 +38,24 @@ class CardanJointSlave(SlaveCore, Fmi2Slave):
         causality = Fmi2Causality[variable.causality]
         initial = Fmi2Initial[variable.initial] if variable.initial else None
         reference = len(self.vars)
-        self.register_variable(Real(
-            variable.name, causality=causality, description=variable.description,
-            variability=Fmi2Variability[variable.variability], initial=initial,
-            getter=lambda: self.get_real([reference])[0],
-            setter=lambda value: self.set_real([reference], [value])))
+        self.register_variable(
+            Real(
+                variable.name,
+                causality=causality,
+                description=variable.description,
+                variability=Fmi2Variability[variable.variability],
+                initial=initial,
+                getter=lambda: self.get_real([reference])[0],
+                setter=lambda value: self.set_real([reference], [value]),
+            )
+        )
 
     def to_xml(self, model_options=None):
-        options = {"canGetAndSetFMUstate": True, "canSerializeFMUstate": True,
-                   **(model_options or {})}
+        options = {
+            "canGetAndSetFMUstate": True,
+            "canSerializeFMUstate": True,
+            **(model_options or {}),
+        }
         return complete(super().to_xml(options), self.table)
 
     def _report(self, message: str, status: Fmi2Status) -> None:
@@ -74,8 +84,9 @@ class CardanJointSlave(SlaveCore, Fmi2Slave):
         except Exception as error:
             bad = [vr for vr in vrs if not 0 <= vr < len(self._refs.names)]
             if bad:
-                self._report(f"get_real: no Real variable has value reference {bad[0]}",
-                             Fmi2Status.error)
+                self._report(
+                    f"get_real: no Real variable has value reference {bad[0]}", Fmi2Status.error
+                )
             else:
                 self._fault("get_real", error)
             return [math.nan] * len(vrs)
@@ -86,8 +97,9 @@ class CardanJointSlave(SlaveCore, Fmi2Slave):
     # The FMU has Real variables only; pythonfmu's typed accessors would raise
     # (fmi2Fatal) on any other call, so these refuse politely instead.
     def _no_such_variables(self, kind, vrs):
-        self._report(f"the FMU has no {kind} variables (value references {list(vrs)})",
-                     Fmi2Status.error)
+        self._report(
+            f"the FMU has no {kind} variables (value references {list(vrs)})", Fmi2Status.error
+        )
 
     def get_integer(self, vrs):
         self._no_such_variables("Integer", vrs)

@@ -31,12 +31,12 @@ TIME_REFERENCE = 0
 GROUPS = table.fmi3_variables()
 # Value reference -> the flat indices (FMI 2 value references) it holds.
 _NAMES = References(table, SlaveCore.live_outputs).names
-_FLAT = ((),) + tuple(tuple(_NAMES.index(row.name) for row in group.rows)
-                      for group in GROUPS)
-_SIZE = tuple(len(flat) or 1 for flat in _FLAT)     # elements per value reference
+_FLAT = ((),) + tuple(tuple(_NAMES.index(row.name) for row in group.rows) for group in GROUPS)
+_SIZE = tuple(len(flat) or 1 for flat in _FLAT)  # elements per value reference
 _LONGEST = max(_SIZE)
-_SETTABLE = frozenset(vr for vr, group in enumerate(GROUPS, start=1)
-                      if group.causality in ("input", "parameter"))
+_SETTABLE = frozenset(
+    vr for vr, group in enumerate(GROUPS, start=1) if group.causality in ("input", "parameter")
+)
 _STEP_RESULTS = {status: Fmi3StepResult(status=status) for status in Fmi3Status}
 # cppfmu::Logger (pythonfmu3 0.3.4, pinned): { void* environment; callback logMessage; ... }.
 _LOGGER_CALLBACK_OFFSET = ctypes.sizeof(ctypes.c_void_p)
@@ -63,19 +63,32 @@ class CardanJointSlave3(SlaveCore, Fmi3Slave):
         # The builder instantiates without a logger (no C layer, nothing to crash).
         self._log_to_host = "logger" not in kwargs or _host_has_logger(kwargs["logger"])
         self._init_model()
-        self.register_variable(Float64("time", causality=Fmi3Causality.independent,
-                                       variability=Fmi3Variability.continuous,
-                                       description="Simulation time"))
+        self.register_variable(
+            Float64(
+                "time",
+                causality=Fmi3Causality.independent,
+                variability=Fmi3Variability.continuous,
+                description="Simulation time",
+            )
+        )
         for group in GROUPS:
             self._register(group)
 
     def _register(self, group):
         initial = Fmi3Initial[group.initial] if group.initial else None
         dimensions = [Dimension(start=str(len(group.rows)))] if len(group.rows) > 1 else []
-        self.register_variable(Float64(
-            group.name, causality=Fmi3Causality[group.causality], description=group.description,
-            variability=Fmi3Variability[group.variability], initial=initial,
-            dimensions=dimensions, getter=lambda: None, setter=lambda value: None))
+        self.register_variable(
+            Float64(
+                group.name,
+                causality=Fmi3Causality[group.causality],
+                description=group.description,
+                variability=Fmi3Variability[group.variability],
+                initial=initial,
+                dimensions=dimensions,
+                getter=lambda: None,
+                setter=lambda value: None,
+            )
+        )
 
     def to_xml(self, model_options=None):
         starts = {name: getattr(self._model, name) for name in self._refs.known}
@@ -91,8 +104,9 @@ class CardanJointSlave3(SlaveCore, Fmi3Slave):
         if message != self._last_message:
             self._last_message = message
             try:
-                sys.stderr.write(f"[{self.modelName} {self.instance_name}] "
-                                 f"{status.name.upper()}: {message}\n")
+                sys.stderr.write(
+                    f"[{self.modelName} {self.instance_name}] {status.name.upper()}: {message}\n"
+                )
                 sys.stderr.flush()
             except Exception:
                 pass
@@ -121,8 +135,9 @@ class CardanJointSlave3(SlaveCore, Fmi3Slave):
             return indices
         except IndexError:
             bad = next(vr for vr in vrs if not 0 <= vr < len(_FLAT))
-            self._report(f"{caller}: no Float64 variable has value reference {bad}",
-                         Fmi3Status.error)
+            self._report(
+                f"{caller}: no Float64 variable has value reference {bad}", Fmi3Status.error
+            )
             return None
 
     def get_float64(self, vrs):
@@ -130,10 +145,16 @@ class CardanJointSlave3(SlaveCore, Fmi3Slave):
             indices = self._flat_indices(vrs, "fmi3GetFloat64")
             if indices is None:
                 return [math.nan] * (_LONGEST * len(vrs))
-            if TIME_REFERENCE in vrs:       # the one value reference with no flat index
-                return [value for vr in vrs for value in
-                        ([self._model.time] if vr == TIME_REFERENCE
-                         else self._get_flat(list(_FLAT[vr])))]
+            if TIME_REFERENCE in vrs:  # the one value reference with no flat index
+                return [
+                    value
+                    for vr in vrs
+                    for value in (
+                        [self._model.time]
+                        if vr == TIME_REFERENCE
+                        else self._get_flat(list(_FLAT[vr]))
+                    )
+                ]
             return self._get_flat(indices)
         except Exception as error:
             self._fault("fmi3GetFloat64", error)
@@ -146,19 +167,23 @@ class CardanJointSlave3(SlaveCore, Fmi3Slave):
                 return
             sizes = [_SIZE[vr] for vr in vrs]
             if len(values) != sum(sizes):
-                self._report(f"fmi3SetFloat64: {len(values)} values for {sum(sizes)} "
-                             f"elements of value references {list(vrs)}: nothing set",
-                             Fmi3Status.error)
+                self._report(
+                    f"fmi3SetFloat64: {len(values)} values for {sum(sizes)} "
+                    f"elements of value references {list(vrs)}: nothing set",
+                    Fmi3Status.error,
+                )
                 return
             refused = [vr for vr in vrs if vr not in _SETTABLE]
             if refused:
                 names = ", ".join(self._fmi3_name(vr) for vr in refused)
-                self._report(f"fmi3SetFloat64 on {names} ignored: only inputs and parameters "
-                             f"can be set", Fmi3Status.error)
+                self._report(
+                    f"fmi3SetFloat64 on {names} ignored: only inputs and parameters can be set",
+                    Fmi3Status.error,
+                )
                 starts = [sum(sizes[:k]) for k in range(len(vrs))]
                 kept = [k for k, vr in enumerate(vrs) if vr in _SETTABLE]
                 indices = [i for k in kept for i in _FLAT[vrs[k]]]
-                values = [v for k in kept for v in values[starts[k]:starts[k] + sizes[k]]]
+                values = [v for k in kept for v in values[starts[k] : starts[k] + sizes[k]]]
             self._set_flat(indices, values, "fmi3SetFloat64")
         except Exception as error:
             self._fault("fmi3SetFloat64", error)
@@ -170,8 +195,9 @@ class CardanJointSlave3(SlaveCore, Fmi3Slave):
     # The FMU has Float64 variables only; pythonfmu3's typed accessors would raise
     # (fmi3Fatal) on any other call, so these refuse politely instead.
     def _no_such_variables(self, kind, vrs, fill):
-        self._report(f"the FMU has no {kind} variables (value references {list(vrs)})",
-                     Fmi3Status.error)
+        self._report(
+            f"the FMU has no {kind} variables (value references {list(vrs)})", Fmi3Status.error
+        )
         return [fill] * (_LONGEST * len(vrs))
 
     def get_int32(self, vrs):

@@ -10,20 +10,34 @@ call per FMU step) and on numpy arrays (broadcast, no Python loops);
 from .driveline import Load, Motor
 from .model import CardanJoint
 from .quantities import (
-                         cardan_error,
-                         degree_of_unevenness,
-                         max_cardan_error,
-                         output_angle,
-                         output_speed,
-                         roll_angle,
-                         speed_ratio,
+    cardan_error,
+    degree_of_unevenness,
+    max_cardan_error,
+    output_angle,
+    output_speed,
+    roll_angle,
+    speed_ratio,
 )
 from .refusal import Reason, Refusal
 from .response import JointResponse, joint_response
 from .revolutions import RevolutionAngle, advance, split_angle
 
 __all__ = [
-    "CardanJoint", "JointResponse", "Load", "Motor", "Reason", "Refusal", "RevolutionAngle",
-    "advance", "cardan_error", "degree_of_unevenness", "joint_response", "max_cardan_error",
-    "output_angle", "output_speed", "roll_angle", "speed_ratio", "split_angle",
+    "CardanJoint",
+    "JointResponse",
+    "Load",
+    "Motor",
+    "Reason",
+    "Refusal",
+    "RevolutionAngle",
+    "advance",
+    "cardan_error",
+    "degree_of_unevenness",
+    "joint_response",
+    "max_cardan_error",
+    "output_angle",
+    "output_speed",
+    "roll_angle",
+    "speed_ratio",
+    "split_angle",
 ]

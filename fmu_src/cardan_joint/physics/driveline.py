@@ -25,14 +25,16 @@ from .values import ValueChecks, value_ranges
 
 class _TableModel(ValueChecks):
     """Inputs and parameters as attributes with the table's start values; the checks."""
+
     table = None
 
     def __init__(self, **values):
         table = self.table
         unknown = set(values) - set(table.INPUTS) - set(table.PARAMETERS)
         if unknown:
-            raise TypeError(f"unknown {type(self).__name__} variable(s): "
-                            f"{', '.join(sorted(unknown))}")
+            raise TypeError(
+                f"unknown {type(self).__name__} variable(s): {', '.join(sorted(unknown))}"
+            )
         for name, value in {**table.start_values(), **values}.items():
             setattr(self, name, float(value))
         self._input_ranges = value_ranges(table.BY_NAME, table.INPUTS)
@@ -110,8 +112,15 @@ class Motor(_TableModel):
         approach = -math.expm1(-h / tau)
         speed = omega + (omega_eq - omega) * approach
         if not abs(speed) <= self._SPEED_LIMIT:
-            return Refusal(Reason.ROTOR_SPEED, "speed", speed, self._SPEED_LIMIT, self.time,
-                           "rad/s", {"load_torque": self.load_torque, "step_size": h})
+            return Refusal(
+                Reason.ROTOR_SPEED,
+                "speed",
+                speed,
+                self._SPEED_LIMIT,
+                self.time,
+                "rad/s",
+                {"load_torque": self.load_torque, "step_size": h},
+            )
         self.angle += omega_eq * h + (omega - omega_eq) * tau * approach
         self.speed = speed
         return None
@@ -129,7 +138,7 @@ class Load(_TableModel):
     table = LOAD
 
     def _advance(self, h):
-        return None         # no state: the torque follows the shaft motion it is given
+        return None  # no state: the torque follows the shaft motion it is given
 
     def outputs(self) -> tuple:
         """Values of `LOAD.OUTPUTS`: torque = J a + c omega + T0."""

@@ -57,7 +57,7 @@ class CardanJoint(ValueChecks, SavedState):
         once, and a change takes effect at the next `start`.
         """
         self.time = float(time)
-        self.parameter_fault = self.parameter_problem()     # fixed until the next start
+        self.parameter_fault = self.parameter_problem()  # fixed until the next start
         valid = not self.parameter_fault
         self._angle = split_angle(self.input_angle_start if valid else 0.0)
         # The phase is reduced to whole turns plus a fraction too, so a large or
@@ -90,12 +90,16 @@ class CardanJoint(ValueChecks, SavedState):
         # it always takes the slow path, which names the first problem.
         beta, rate, acc = self.bend_angle, self.bend_angle_rate, self.bend_angle_acceleration
         guard = self.max_bend_angle
-        if (abs(self.input_speed) <= _SPEED_LIMIT
-                and abs(self.input_acceleration) <= _ACCELERATION_LIMIT
-                and abs(rate) <= _RATE_LIMIT and abs(acc) <= _BEND_ACCELERATION_LIMIT
-                and abs(self.load_torque) <= _LOAD_LIMIT and abs(beta) < guard
-                and abs(beta + step_size * (rate + 0.5 * acc * step_size)) < guard
-                and (rate * acc >= 0.0 or -rate / acc >= step_size)):
+        if (
+            abs(self.input_speed) <= _SPEED_LIMIT
+            and abs(self.input_acceleration) <= _ACCELERATION_LIMIT
+            and abs(rate) <= _RATE_LIMIT
+            and abs(acc) <= _BEND_ACCELERATION_LIMIT
+            and abs(self.load_torque) <= _LOAD_LIMIT
+            and abs(beta) < guard
+            and abs(beta + step_size * (rate + 0.5 * acc * step_size)) < guard
+            and (rate * acc >= 0.0 or -rate / acc >= step_size)
+        ):
             return None
         return self._explain_input_problem(step_size)
 
@@ -106,9 +110,15 @@ class CardanJoint(ValueChecks, SavedState):
         guard = self.max_bend_angle
         reason, after, worst = self._largest_bend(step_size)
         if abs(worst) >= guard:
-            details = {} if reason is Reason.BEND_ANGLE else {
-                "after": after, "bend_angle_rate": self.bend_angle_rate,
-                "bend_angle_acceleration": self.bend_angle_acceleration}
+            details = (
+                {}
+                if reason is Reason.BEND_ANGLE
+                else {
+                    "after": after,
+                    "bend_angle_rate": self.bend_angle_rate,
+                    "bend_angle_acceleration": self.bend_angle_acceleration,
+                }
+            )
             return Refusal(reason, "bend_angle", worst, guard, self.time, "rad", details)
         return None
 
@@ -125,12 +135,18 @@ class CardanJoint(ValueChecks, SavedState):
         beta, rate, acc = self.bend_angle, self.bend_angle_rate, self.bend_angle_acceleration
         candidates = [(Reason.BEND_ANGLE, 0.0, beta)]
         if step_size > 0.0:
-            candidates.append((Reason.BEND_AT_STEP_END, step_size,
-                               beta + step_size * (rate + 0.5 * acc * step_size)))
+            candidates.append(
+                (
+                    Reason.BEND_AT_STEP_END,
+                    step_size,
+                    beta + step_size * (rate + 0.5 * acc * step_size),
+                )
+            )
             if acc != 0.0 and 0.0 < -rate / acc < step_size:
                 vertex = -rate / acc
-                candidates.append((Reason.BEND_PEAK_IN_STEP, vertex,
-                                   beta + vertex * (rate + 0.5 * acc * vertex)))
+                candidates.append(
+                    (Reason.BEND_PEAK_IN_STEP, vertex, beta + vertex * (rate + 0.5 * acc * vertex))
+                )
         return max(candidates, key=lambda c: abs(c[2]))
 
     def step(self, step_size: float):
@@ -140,8 +156,9 @@ class CardanJoint(ValueChecks, SavedState):
         if problem:
             return problem
         h = step_size
-        advanced = advance_input(self._angle, self.input_speed, self.input_acceleration, h,
-                                 _SPEED_LIMIT, self.time)
+        advanced = advance_input(
+            self._angle, self.input_speed, self.input_acceleration, h, _SPEED_LIMIT, self.time
+        )
         if isinstance(advanced, Refusal):
             return advanced
         self._angle, self.input_speed = advanced
@@ -162,9 +179,18 @@ class CardanJoint(ValueChecks, SavedState):
         psi = angle.fraction + (phase.fraction + (angle.fraction_error + phase.fraction_error))
         sign = -1.0 if (angle.turns + phase.turns) & 1 else 1.0
         return joint_response_kernel(
-            psi, self.bend_angle, self.input_speed, self.input_acceleration,
-            self.bend_angle_rate, self.bend_angle_acceleration, self.crosspiece_inertia_1,
-            self.crosspiece_inertia_2, self.crosspiece_inertia_3, self.load_torque, sign)
+            psi,
+            self.bend_angle,
+            self.input_speed,
+            self.input_acceleration,
+            self.bend_angle_rate,
+            self.bend_angle_acceleration,
+            self.crosspiece_inertia_1,
+            self.crosspiece_inertia_2,
+            self.crosspiece_inertia_3,
+            self.load_torque,
+            sign,
+        )
 
     def outputs(self) -> tuple:
         """Values of `variables.OUTPUTS`, in order; raises nothing for valid inputs."""

@@ -16,65 +16,74 @@ from .. import variables as table
 
 
 class Reason(str, Enum):
-    NOT_FINITE = "not_finite"                        # NaN or infinite input or parameter
-    OUT_OF_RANGE = "out_of_range"                    # outside the variable's physical range
-    BEND_ANGLE = "bend_angle"                        # |bend angle| >= max_bend_angle now
-    BEND_AT_STEP_END = "bend_angle_at_step_end"      # ... at the end of the step
-    BEND_PEAK_IN_STEP = "bend_angle_peak_in_step"    # ... at the parabola's vertex inside it
-    BEND_GUARD = "max_bend_angle_invalid"            # max_bend_angle not in (0, pi/2)
-    STEP_SIZE = "step_size"                          # step size not finite and > 0
-    ANGLE_OVERFLOW = "angle_overflow"                # input angle advancing by > 1e15 rad
-    SPEED_OVERFLOW = "speed_overflow"                # input speed beyond its range at step end
-    SHAFT_ANGLE = "shaft_angle_invalid"              # a propshaft shaft angle not in (-pi/2, pi/2)
+    NOT_FINITE = "not_finite"  # NaN or infinite input or parameter
+    OUT_OF_RANGE = "out_of_range"  # outside the variable's physical range
+    BEND_ANGLE = "bend_angle"  # |bend angle| >= max_bend_angle now
+    BEND_AT_STEP_END = "bend_angle_at_step_end"  # ... at the end of the step
+    BEND_PEAK_IN_STEP = "bend_angle_peak_in_step"  # ... at the parabola's vertex inside it
+    BEND_GUARD = "max_bend_angle_invalid"  # max_bend_angle not in (0, pi/2)
+    STEP_SIZE = "step_size"  # step size not finite and > 0
+    ANGLE_OVERFLOW = "angle_overflow"  # input angle advancing by > 1e15 rad
+    SPEED_OVERFLOW = "speed_overflow"  # input speed beyond its range at step end
+    SHAFT_ANGLE = "shaft_angle_invalid"  # a propshaft shaft angle not in (-pi/2, pi/2)
     WORKING_ANGLE_GUARD = "max_working_angle_invalid"  # max_working_angle not in (0, pi/2)
-    WORKING_ANGLE = "working_angle"                  # a joint's working angle >= the limit
-    ROTOR_SPEED = "rotor_speed"                      # the motor's speed out of range at step end
+    WORKING_ANGLE = "working_angle"  # a joint's working angle >= the limit
+    ROTOR_SPEED = "rotor_speed"  # the motor's speed out of range at step end
 
 
 _LIMIT = "max_bend_angle = {limit} rad ({limit:deg} deg)"
-_IN_STEP = (" with bend_angle_rate = {bend_angle_rate} rad/s and bend_angle_acceleration = "
-            "{bend_angle_acceleration} rad/s2: not below the limit " + _LIMIT)
-_OVERFLOW = ("input_speed = {input_speed} rad/s with input_acceleration = {input_acceleration} "
-             "rad/s2 over a step of {step_size} s overflows: ")
+_IN_STEP = (
+    " with bend_angle_rate = {bend_angle_rate} rad/s and bend_angle_acceleration = "
+    "{bend_angle_acceleration} rad/s2: not below the limit " + _LIMIT
+)
+_OVERFLOW = (
+    "input_speed = {input_speed} rad/s with input_acceleration = {input_acceleration} "
+    "rad/s2 over a step of {step_size} s overflows: "
+)
 _TEMPLATES = {
     Reason.NOT_FINITE: "{kind} {variable} = {value} {unit} is not a finite number "
-                       "(limit {limit} {unit})",
+    "(limit {limit} {unit})",
     Reason.OUT_OF_RANGE: "{kind} {variable} = {value} {unit} is outside its range "
-                         "[{low}, {high}] {unit} (limit {limit} {unit})",
+    "[{low}, {high}] {unit} (limit {limit} {unit})",
     Reason.BEND_ANGLE: "input bend_angle = {value} rad ({value:deg} deg) is not below the limit "
-                       + _LIMIT,
+    + _LIMIT,
     Reason.BEND_AT_STEP_END: "input bend_angle reaches {value} rad ({value:deg} deg) at the end "
-                             "of the step, {after} s on," + _IN_STEP,
+    "of the step, {after} s on," + _IN_STEP,
     Reason.BEND_PEAK_IN_STEP: "input bend_angle peaks at {value} rad ({value:deg} deg) {after} s "
-                              "into the step," + _IN_STEP,
+    "into the step," + _IN_STEP,
     Reason.BEND_GUARD: "parameter max_bend_angle = {value} rad ({value:deg} deg) must lie "
-                       "strictly between 0 and pi/2 (90 deg, where the joint locks; "
-                       "limit {limit} rad)",
+    "strictly between 0 and pi/2 (90 deg, where the joint locks; "
+    "limit {limit} rad)",
     Reason.STEP_SIZE: "communication step size = {value} s must be a finite number > {limit} s",
     Reason.ANGLE_OVERFLOW: _OVERFLOW + "the input angle would advance by {value} rad, beyond "
-                                       "the limit {limit} rad per step",
+    "the limit {limit} rad per step",
     Reason.SPEED_OVERFLOW: _OVERFLOW + "the speed would reach {value} rad/s at the step's end, "
-                                       "beyond the limit {limit} rad/s",
+    "beyond the limit {limit} rad/s",
     Reason.SHAFT_ANGLE: "parameter {variable} = {value} rad ({value:deg} deg) must lie strictly "
-                        "between -pi/2 and pi/2 (a shaft cannot point across the driveline; "
-                        "limit {limit} rad)",
+    "between -pi/2 and pi/2 (a shaft cannot point across the driveline; "
+    "limit {limit} rad)",
     Reason.WORKING_ANGLE_GUARD: "parameter max_working_angle = {value} rad ({value:deg} deg) must "
-                                "lie strictly between 0 and pi/2 (90 deg, where a joint locks; "
-                                "limit {limit} rad)",
+    "lie strictly between 0 and pi/2 (90 deg, where a joint locks; "
+    "limit {limit} rad)",
     Reason.WORKING_ANGLE: "{variable} = {value} rad ({value:deg} deg) is not below the limit "
-                          "max_working_angle = {limit} rad ({limit:deg} deg)",
+    "max_working_angle = {limit} rad ({limit:deg} deg)",
     Reason.ROTOR_SPEED: "input load_torque = {load_torque} N.m over a step of {step_size} s "
-                        "drives the rotor speed to {value} rad/s, beyond the limit {limit} rad/s",
+    "drives the rotor speed to {value} rad/s, beyond the limit {limit} rad/s",
 }
 # Fixed by the reason, so not written in the message.
-_IMPLIED = {Reason.BEND_ANGLE: ("bend_angle", "rad"),
-            Reason.BEND_AT_STEP_END: ("bend_angle", "rad"),
-            Reason.BEND_PEAK_IN_STEP: ("bend_angle", "rad"),
-            Reason.BEND_GUARD: ("max_bend_angle", "rad"), Reason.STEP_SIZE: ("step_size", "s"),
-            Reason.ANGLE_OVERFLOW: ("input_angle", "rad"),
-            Reason.SPEED_OVERFLOW: ("input_speed", "rad/s"), Reason.SHAFT_ANGLE: (None, "rad"),
-            Reason.WORKING_ANGLE_GUARD: ("max_working_angle", "rad"),
-            Reason.WORKING_ANGLE: (None, "rad"), Reason.ROTOR_SPEED: ("speed", "rad/s")}
+_IMPLIED = {
+    Reason.BEND_ANGLE: ("bend_angle", "rad"),
+    Reason.BEND_AT_STEP_END: ("bend_angle", "rad"),
+    Reason.BEND_PEAK_IN_STEP: ("bend_angle", "rad"),
+    Reason.BEND_GUARD: ("max_bend_angle", "rad"),
+    Reason.STEP_SIZE: ("step_size", "s"),
+    Reason.ANGLE_OVERFLOW: ("input_angle", "rad"),
+    Reason.SPEED_OVERFLOW: ("input_speed", "rad/s"),
+    Reason.SHAFT_ANGLE: (None, "rad"),
+    Reason.WORKING_ANGLE_GUARD: ("max_working_angle", "rad"),
+    Reason.WORKING_ANGLE: (None, "rad"),
+    Reason.ROTOR_SPEED: ("speed", "rad/s"),
+}
 _PREFIX = "t = {time} s: "
 _FLOAT = r"-?(?:inf|nan|[0-9][0-9.e+-]*)"
 _PLACEHOLDER = re.compile(r"\{(\w+)(?::deg)?\}")
@@ -85,10 +94,10 @@ def _pattern(template):
     """The regular expression that reads `template`'s fields back."""
     parts, seen, position = [], set(), 0
     for match in _PLACEHOLDER.finditer(template):
-        parts.append(re.escape(template[position:match.start()]))
+        parts.append(re.escape(template[position : match.start()]))
         name = match.group(1)
         if match.group(0).endswith(":deg}"):
-            parts.append(r"[^ ()]+")                    # derived from a parsed field
+            parts.append(r"[^ ()]+")  # derived from a parsed field
         elif name in seen:
             parts.append(f"(?P={name})")
         else:
@@ -127,8 +136,14 @@ class Refusal:
     @property
     def text(self) -> str:
         """The explanation without the time."""
-        fields = {"kind": self.kind, "variable": self.variable, "unit": self.unit,
-                  "value": self.value, "limit": self.limit, **self.details}
+        fields = {
+            "kind": self.kind,
+            "variable": self.variable,
+            "unit": self.unit,
+            "value": self.value,
+            "limit": self.limit,
+            **self.details,
+        }
 
         def render(match):
             value = fields[match.group(1)]
@@ -147,16 +162,29 @@ class Refusal:
 
     def at(self, time: float) -> "Refusal":
         """The same refusal at another time."""
-        return Refusal(self.code, self.variable, self.value, self.limit, time, self.unit,
-                       dict(self.details), self.kind)
+        return Refusal(
+            self.code,
+            self.variable,
+            self.value,
+            self.limit,
+            time,
+            self.unit,
+            dict(self.details),
+            self.kind,
+        )
 
     def _key(self):
         names = sorted(self.details)
         numbers = (self.value, self.limit, self.time, *(self.details[n] for n in names))
-        return (self.code, self.variable, self.unit, tuple(names),
-                tuple(repr(float(x)) for x in numbers))
+        return (
+            self.code,
+            self.variable,
+            self.unit,
+            tuple(names),
+            tuple(repr(float(x)) for x in numbers),
+        )
 
-    def __eq__(self, other):        # by repr, so that a NaN value equals itself
+    def __eq__(self, other):  # by repr, so that a NaN value equals itself
         return isinstance(other, Refusal) and self._key() == other._key()
 
     def __hash__(self):
@@ -172,10 +200,19 @@ class Refusal:
                 found = match.groupdict()
                 variable, unit = _IMPLIED.get(reason, (None, None))
                 variable, unit = variable or found.get("variable"), unit or found.get("unit")
-                numbers = {name: float(value) for name, value in found.items()
-                           if name not in _TEXT_FIELDS}
-                return cls(reason, variable, numbers.pop("value"), numbers.pop("limit"),
-                           numbers.pop("time"), unit, numbers, found.get("kind", ""))
+                numbers = {
+                    name: float(value) for name, value in found.items() if name not in _TEXT_FIELDS
+                }
+                return cls(
+                    reason,
+                    variable,
+                    numbers.pop("value"),
+                    numbers.pop("limit"),
+                    numbers.pop("time"),
+                    unit,
+                    numbers,
+                    found.get("kind", ""),
+                )
         raise ValueError(f"no refusal in {text!r}")
 
 

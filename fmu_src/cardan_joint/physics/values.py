@@ -14,8 +14,11 @@ MAX_INCREMENT = 1e15
 
 def value_ranges(by_name, names, *excluded):
     """(name, min, max, unit) of each of `names` that has a range in the table."""
-    return tuple((n, by_name[n].min, by_name[n].max, by_name[n].unit)
-                 for n in names if by_name[n].min is not None and n not in excluded)
+    return tuple(
+        (n, by_name[n].min, by_name[n].max, by_name[n].unit)
+        for n in names
+        if by_name[n].min is not None and n not in excluded
+    )
 
 
 class ValueChecks:
@@ -32,15 +35,28 @@ class ValueChecks:
             value = getattr(self, name)
             if not math.isfinite(value):
                 variable = by_name[name]
-                yield Refusal(Reason.NOT_FINITE, name, value,
-                              self._non_finite_limit(name, variable), self.time, variable.unit,
-                              kind=variable.causality)
+                yield Refusal(
+                    Reason.NOT_FINITE,
+                    name,
+                    value,
+                    self._non_finite_limit(name, variable),
+                    self.time,
+                    variable.unit,
+                    kind=variable.causality,
+                )
         for name, low, high, unit in ranges:
             value = getattr(self, name)
             if math.isfinite(value) and not low <= value <= high:
-                yield Refusal(Reason.OUT_OF_RANGE, name, value, crossed_limit(value, low, high),
-                              self.time, unit, {"low": low, "high": high},
-                              by_name[name].causality)
+                yield Refusal(
+                    Reason.OUT_OF_RANGE,
+                    name,
+                    value,
+                    crossed_limit(value, low, high),
+                    self.time,
+                    unit,
+                    {"low": low, "high": high},
+                    by_name[name].causality,
+                )
 
     def _value_problem(self, names, ranges):
         """The first bad value, or None."""
@@ -61,11 +77,19 @@ def advance_input(angle, speed, acceleration, h, speed_limit, time):
     increment = h * (speed + 0.5 * acceleration * h)
     overflow = {"input_speed": speed, "input_acceleration": acceleration, "step_size": h}
     if not abs(increment) <= MAX_INCREMENT:
-        return Refusal(Reason.ANGLE_OVERFLOW, "input_angle", increment, MAX_INCREMENT, time,
-                       "rad", overflow)
+        return Refusal(
+            Reason.ANGLE_OVERFLOW, "input_angle", increment, MAX_INCREMENT, time, "rad", overflow
+        )
     if not abs(speed + acceleration * h) <= speed_limit:
-        return Refusal(Reason.SPEED_OVERFLOW, "input_speed", speed + acceleration * h,
-                       speed_limit, time, "rad/s", overflow)
+        return Refusal(
+            Reason.SPEED_OVERFLOW,
+            "input_speed",
+            speed + acceleration * h,
+            speed_limit,
+            time,
+            "rad/s",
+            overflow,
+        )
     return advance(angle, increment), speed + acceleration * h
 
 
@@ -77,17 +101,18 @@ class SavedState:
         """Everything that defines the model, as JSON-serialisable values."""
         values = {name: getattr(self, name) for name in self.table.INPUTS + self.table.PARAMETERS}
         a = self._angle
-        values.update(time=self.time, turns=a.turns, fraction=a.fraction,
-                      fraction_error=a.fraction_error)
+        values.update(
+            time=self.time, turns=a.turns, fraction=a.fraction, fraction_error=a.fraction_error
+        )
         return values
 
     def restore(self, state: dict) -> None:
         """Take a `state()`; all or nothing (a malformed state raises and changes nothing)."""
-        values = {name: float(state[name])
-                  for name in self.table.INPUTS + self.table.PARAMETERS}
+        values = {name: float(state[name]) for name in self.table.INPUTS + self.table.PARAMETERS}
         time = float(state["time"])
-        angle = RevolutionAngle(int(state["turns"]), float(state["fraction"]),
-                                float(state["fraction_error"]))
+        angle = RevolutionAngle(
+            int(state["turns"]), float(state["fraction"]), float(state["fraction_error"])
+        )
         for name, value in values.items():
             setattr(self, name, value)
         self.start(time)
