@@ -37,7 +37,7 @@ class SimulationError(RuntimeError):
     """The FMU refused a step or reported an error; `messages` holds its log,
     `result` the run up to there."""
 
-    refusal: Refusal | None = None
+    refusal: "Refusal | None" = None
 
     def __init__(self, text: str, messages: list[Message], result: np.ndarray) -> None:
         super().__init__(text)
@@ -50,7 +50,7 @@ class RefusalError(SimulationError):
     `value`, `limit`, `time`, `code` (a `Reason`) and `unit` are attributes."""
 
     def __init__(
-        self, text: str, messages: list[Message], result: np.ndarray, refusal: Refusal
+        self, text: str, messages: list[Message], result: np.ndarray, refusal: "Refusal"
     ) -> None:
         super().__init__(text, messages, result)
         self.refusal = refusal
@@ -58,7 +58,7 @@ class RefusalError(SimulationError):
         self.time, self.code, self.unit = refusal.time, refusal.code, refusal.unit
 
 
-def first_refusal(texts: Iterable[str]) -> Refusal | None:
+def first_refusal(texts: Iterable[str]) -> "Refusal | None":
     """The first `Refusal` written in `texts` (the FMU's log), or None."""
     from .physics.refusal import Refusal
 
