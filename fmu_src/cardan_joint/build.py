@@ -127,7 +127,7 @@ def _fmu_builder(fmi_version: int):
 
 
 def build(
-    dest="dist",
+    dest: str | Path = "dist",
     model_name: str | None = None,
     start_values: dict | None = None,
     validate: bool = True,

@@ -40,7 +40,9 @@ Things worth knowing:
 from __future__ import annotations
 
 import ctypes
+from collections.abc import Mapping
 from pathlib import Path
+from typing import Any
 
 import numpy as np
 
@@ -85,7 +87,9 @@ def _real_references(execution, index, where):
     return ref
 
 
-def _observe_and_run(execution, observed, n_steps, step_ns):
+def _observe_and_run(
+    execution: Any, observed: Mapping[str, tuple[int, int]], n_steps: int, step_ns: int
+) -> dict[str, np.ndarray]:
     """Step `execution` `n_steps` times recording `observed` = {key: (slave index,
     value reference)}; return {"time": t, key: values} with n_steps + 1 samples."""
     from libcosimpy._internal import libcosimc

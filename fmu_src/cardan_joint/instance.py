@@ -24,6 +24,8 @@ from pathlib import Path
 from typing import Any
 
 Message = tuple[int, str, str]  # (FMI status, category, text)
+# FMPy's opaque handle of a saved FMU state (fmi2FMUstate / fmi3FMUState pointer).
+FMUState = Any
 
 
 def _slave(model_description, unzipped: str, name: str):
@@ -44,7 +46,7 @@ def _slave(model_description, unzipped: str, name: str):
 _SLAVES = {"2.0": _slave, "3.0": _slave}
 
 
-def logging_callbacks(sink: Any):
+def logging_callbacks(sink: Any) -> Any:
     """FMI 2 callbacks whose logger appends (status, category, message) to `sink`."""
     from fmpy.fmi2 import defaultCallbacks, fmi2CallbackFunctions, fmi2CallbackLoggerTYPE
 
@@ -82,14 +84,14 @@ class JointInstance:
 
     def __init__(
         self,
-        model_description,
-        unzipped,
+        model_description: Any,
+        unzipped: str | Path,
         name: str = "joint",
         start_values: dict[str, float] | None = None,
         start_time: float = 0.0,
         messages: Any = None,
         exit_initialization: bool = True,
-    ):
+    ) -> None:
         version = model_description.fmiVersion
         if version not in _SLAVES:
             raise ValueError(
@@ -197,7 +199,7 @@ class JointInstance:
         from .variables import fmi3_variables
 
         rows = {g.name: g.rows for g in fmi3_variables() if len(g.rows) > 1}
-        values = {}
+        values: dict[str, float] = {}
         for name, value in self.get_outputs().items():
             values.update(
                 zip((row.name for row in rows[name]), value)
@@ -219,21 +221,21 @@ class JointInstance:
         """Set; return the FMI status (fmi2Error for a call FMI does not allow)."""
         return status_of(self.set, **values)
 
-    def get_state(self):
+    def get_state(self) -> FMUState:
         return self.fmu.getFMUState() if self.fmi3 else self.fmu.getFMUstate()
 
-    def set_state(self, state) -> None:
+    def set_state(self, state: FMUState) -> None:
         (self.fmu.setFMUState if self.fmi3 else self.fmu.setFMUstate)(state)
 
-    def free_state(self, state) -> None:
+    def free_state(self, state: FMUState) -> None:
         (self.fmu.freeFMUState if self.fmi3 else self.fmu.freeFMUstate)(state)
 
-    def serialize_state(self, state) -> bytes:
+    def serialize_state(self, state: FMUState) -> bytes:
         return bytes(
             (self.fmu.serializeFMUState if self.fmi3 else self.fmu.serializeFMUstate)(state)
         )
 
-    def deserialize_state(self, serialized: bytes):
+    def deserialize_state(self, serialized: bytes) -> FMUState:
         return (self.fmu.deserializeFMUState if self.fmi3 else self.fmu.deSerializeFMUstate)(
             serialized
         )
@@ -251,14 +253,14 @@ class JointInstance:
 class ExtractedFMU:
     """An FMU unzipped once, for any number of instances; a directory is used as is."""
 
-    def __init__(self, fmu: str | Path):
+    def __init__(self, fmu: str | Path) -> None:
         from fmpy import extract, read_model_description
 
         self.model_description = read_model_description(str(fmu))
         self._owned = not Path(fmu).is_dir()
         self.directory = extract(str(fmu)) if self._owned else str(fmu)
 
-    def instance(self, name: str = "joint", **arguments) -> JointInstance:
+    def instance(self, name: str = "joint", **arguments: Any) -> JointInstance:
         return JointInstance(self.model_description, self.directory, name=name, **arguments)
 
     def close(self) -> None:

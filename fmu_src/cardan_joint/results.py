@@ -13,8 +13,12 @@ Parquet engine (pyarrow) is installed.
 from collections.abc import Iterable, Mapping, Sequence
 from os import PathLike
 from pathlib import Path
+from typing import TYPE_CHECKING
 
 import numpy as np
+
+if TYPE_CHECKING:  # pandas is imported where a table is written or read
+    import pandas as pd
 
 PathType = str | PathLike
 
@@ -102,7 +106,7 @@ def write_rows(rows: Sequence[Mapping[str, object]], path: PathType) -> Path:
     return path
 
 
-def write_table(table, stem: PathType, parquet: bool = True) -> list:
+def write_table(table: "pd.DataFrame", stem: PathType, parquet: bool = True) -> list[Path]:
     """Write a pandas table to <stem>.csv, and <stem>.parquet when `parquet` and
     a Parquet engine is installed; returns the paths written."""
     stem = _parent_made(stem)
@@ -117,7 +121,7 @@ def write_table(table, stem: PathType, parquet: bool = True) -> list:
     return written
 
 
-def read_table(path: PathType):
+def read_table(path: PathType) -> "pd.DataFrame":
     """A table written by `write_table` or `write_rows` (CSV or Parquet) as a DataFrame."""
     import pandas as pd
 

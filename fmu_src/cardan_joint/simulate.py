@@ -13,16 +13,23 @@ the FMI 2 columns).
 
 import warnings
 from collections import Counter
+from collections.abc import Iterable, Mapping, Sequence
 from pathlib import Path
+from typing import TYPE_CHECKING, Any
 
 import numpy as np
 
 from . import variables as table
 
+if TYPE_CHECKING:  # imported in first_refusal at run time, where it is needed
+    from .physics.refusal import Refusal
+
 DEFAULT_FMU = Path("dist") / "UniversalJoint.fmu"
 # FMI 2 variable name -> the FMI 3 variable holding it (itself, or its array).
 _FMI3_NAME = {row.name: group.name for group in table.fmi3_variables() for row in group.rows}
 _FMI3_GROUPS = {group.name: group for group in table.fmi3_variables()}
+# (status name, category, text) of one FMU log message.
+Message = tuple[str, str, str]
 _STATUS = {0: "ok", 1: "warning", 2: "discard", 3: "error", 4: "fatal", 5: "pending"}
 
 
@@ -30,9 +37,9 @@ class SimulationError(RuntimeError):
     """The FMU refused a step or reported an error; `messages` holds its log,
     `result` the run up to there."""
 
-    refusal = None
+    refusal: "Refusal | None" = None
 
-    def __init__(self, text, messages, result):
+    def __init__(self, text: str, messages: list[Message], result: np.ndarray) -> None:
         super().__init__(text)
         self.messages = messages
         self.result = result
@@ -42,14 +49,16 @@ class RefusalError(SimulationError):
     """A SimulationError whose first problem is a `Refusal`: its `variable`,
     `value`, `limit`, `time`, `code` (a `Reason`) and `unit` are attributes."""
 
-    def __init__(self, text, messages, result, refusal):
+    def __init__(
+        self, text: str, messages: list[Message], result: np.ndarray, refusal: "Refusal"
+    ) -> None:
         super().__init__(text, messages, result)
         self.refusal = refusal
         self.variable, self.value, self.limit = refusal.variable, refusal.value, refusal.limit
         self.time, self.code, self.unit = refusal.time, refusal.code, refusal.unit
 
 
-def first_refusal(texts):
+def first_refusal(texts: Iterable[str]) -> "Refusal | None":
     """The first `Refusal` written in `texts` (the FMU's log), or None."""
     from .physics.refusal import Refusal
 
@@ -61,7 +70,7 @@ def first_refusal(texts):
     return None
 
 
-def fmi3_names(names):
+def fmi3_names(names: Iterable[str]) -> list[str]:
     """The FMI 3 variables holding the named FMI 2 (or FMI 3) variables, in order."""
     return list(dict.fromkeys(_FMI3_NAME.get(name, name) for name in names))
 
@@ -69,12 +78,15 @@ def fmi3_names(names):
 def flat_columns(result: np.ndarray) -> np.ndarray:
     """The result with each FMI 3 array column split into its FMI 2 variables
     (an FMI 2 result comes back unchanged): the same columns for either FMU."""
-    fields = []
-    for name in result.dtype.names:
+    names = result.dtype.names
+    if names is None:
+        raise ValueError("flat_columns takes a structured result array (FMPy's)")
+    fields: list[tuple[str, np.dtype | type[float]]] = []
+    for name in names:
         rows = _FMI3_GROUPS[name].rows if result.dtype[name].shape else ()
         fields += [(row.name, float) for row in rows] or [(name, result.dtype[name])]
     flat = np.zeros(len(result), dtype=fields)
-    for name in result.dtype.names:
+    for name in names:
         if result.dtype[name].shape:
             for i, row in enumerate(_FMI3_GROUPS[name].rows):
                 flat[row.name] = result[name][:, i]
@@ -84,14 +96,14 @@ def flat_columns(result: np.ndarray) -> np.ndarray:
 
 
 def simulate(
-    fmu=DEFAULT_FMU,
-    stop_time=None,
-    output_interval=None,
-    inputs=None,
-    start_values=None,
-    output=None,
-    **fmpy_options,
-):
+    fmu: str | Path = DEFAULT_FMU,
+    stop_time: float | None = None,
+    output_interval: float | None = None,
+    inputs: np.ndarray | Mapping[str, float] | None = None,
+    start_values: Mapping[str, float] | None = None,
+    output: Sequence[str] | None = None,
+    **fmpy_options: Any,
+) -> np.ndarray:
     """Co-simulate the FMU; return FMPy's structured result array.
 
     `inputs`: an FMPy structured array (field "time" plus input names), or a
@@ -120,7 +132,7 @@ def simulate(
         # Every input gets a signal: FMPy warns otherwise.
         inputs = complete_inputs(inputs, starts, stop_time, output_interval)
 
-    messages = []
+    messages: list[Message] = []
 
     def collect(*arguments):  # FMI 2 passes (component, instance, ...), FMI 3 (environment, ...)
         status, category, message = arguments[-3:]
@@ -136,7 +148,8 @@ def simulate(
     if fmi3 and output is not None:
         output = fmi3_names(output)
     # FMPy raises on an FMI 3 refusal, losing its recorder: keep it for the partial result.
-    recorders, step_finished = [], fmpy_options.pop("step_finished", None)
+    recorders: list[Any] = []  # FMPy's Recorder (its class is private)
+    step_finished = fmpy_options.pop("step_finished", None)
 
     def keep_recorder(time, recorder):
         recorders[:1] = [recorder]

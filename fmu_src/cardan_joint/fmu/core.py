@@ -77,7 +77,7 @@ class SlaveCore:
     # and `live_outputs` (the leading outputs that follow the model's state even
     # while inputs are invalid); the flat indices follow.
     table: Any = joint_table
-    live_outputs = ("input_angle",)
+    live_outputs: tuple[str, ...] = ("input_angle",)
     owner = "joint"  # what stays put in messages
     _refs = References(joint_table, live_outputs)
     # Set by each FMI version's slave: its status enumeration, "fmi2"/"fmi3" and

@@ -13,6 +13,14 @@ def _number(value: float) -> str:
     return repr(float(value))
 
 
+def child(node: Element, tag: str) -> Element:
+    """`node`'s `tag` element; a model description without it cannot be completed."""
+    found = node.find(tag)
+    if found is None:
+        raise ValueError(f"model description: <{node.tag}> has no <{tag}> element")
+    return found
+
+
 def _unit_definitions(table) -> Element:
     node = Element("UnitDefinitions")
     for unit in table.UNITS.values():
@@ -29,16 +37,16 @@ def complete(root: Element, table=joint_table) -> Element:
     """`root` with units, ranges and ModelStructure from `table` (the joint's by
     default; any `variables.VariableTable` for another model)."""
     children = list(root)
-    position = next(i for i, child in enumerate(children) if child.tag == "CoSimulation") + 1
+    position = next(i for i, node in enumerate(children) if node.tag == "CoSimulation") + 1
     root.insert(position, _unit_definitions(table))
 
     index = {}
-    for i, scalar in enumerate(root.find("ModelVariables"), start=1):
+    for i, scalar in enumerate(child(root, "ModelVariables"), start=1):
         variable = table.BY_NAME[scalar.get("name")]
         index[variable.name] = i
         if variable.initial and scalar.get("initial") is None:
             scalar.set("initial", variable.initial)
-        real = scalar.find("Real")
+        real = child(scalar, "Real")
         real.set("unit", variable.unit)
         if variable.display_unit:
             real.set("displayUnit", variable.display_unit)
@@ -47,9 +55,9 @@ def complete(root: Element, table=joint_table) -> Element:
             if value is not None:
                 real.set(attribute, _number(value))
 
-    structure = root.find("ModelStructure")
-    for child in list(structure):
-        structure.remove(child)
+    structure = child(root, "ModelStructure")
+    for node in list(structure):
+        structure.remove(node)
     outputs = SubElement(structure, "Outputs")
     initial_unknowns = SubElement(structure, "InitialUnknowns")
     for name in table.OUTPUTS:

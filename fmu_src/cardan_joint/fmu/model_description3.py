@@ -8,7 +8,7 @@ all from `variables.py`, with the same unit definitions as the FMI 2.0 FMU.
 
 from xml.etree.ElementTree import Element, SubElement
 
-from .model_description import _number, _unit_definitions
+from .model_description import _number, _unit_definitions, child
 
 CAPABILITIES = {
     "canHandleVariableCommunicationStepSize": "true",
@@ -17,20 +17,27 @@ CAPABILITIES = {
 }
 
 
+def _attribute(node: Element, name: str) -> str:
+    value = node.get(name)
+    if value is None:
+        raise ValueError(f"model description: a <{node.tag}> has no {name} attribute")
+    return value
+
+
 def complete(root: Element, groups, starts, table) -> Element:
     """`groups`: `variables.fmi3_variables()`, the order the slave registered them in
     (after the independent variable `time`); `starts`: name -> start value (the
     build's, which may differ from the table's)."""
-    cosimulation = root.find("CoSimulation")
+    cosimulation = child(root, "CoSimulation")
     for name, value in CAPABILITIES.items():
         cosimulation.set(name, value)
     if root.find("UnitDefinitions") is None:
         root.insert(list(root).index(cosimulation) + 1, _unit_definitions(table))
 
     by_name = {group.name: group for group in groups}
-    reference = {}
-    for node in root.find("ModelVariables"):
-        reference[node.get("name")] = node.get("valueReference")
+    reference: dict[str, str] = {}
+    for node in child(root, "ModelVariables"):
+        reference[_attribute(node, "name")] = _attribute(node, "valueReference")
         group = by_name.get(node.get("name"))
         if group is None:  # the independent variable
             continue
@@ -46,9 +53,9 @@ def complete(root: Element, groups, starts, table) -> Element:
         }
         node.attrib.update({k: v for k, v in attributes.items() if v})
 
-    structure = root.find("ModelStructure")
-    for child in list(structure):
-        structure.remove(child)
+    structure = child(root, "ModelStructure")
+    for node in list(structure):
+        structure.remove(node)
     outputs = [group for group in groups if group.causality == "output"]
     for group in outputs:
         dependencies = " ".join(reference[name] for name in group.depends_on)

@@ -7,13 +7,17 @@ arrays. numpy >= 2 spells the inverse trigonometric functions like `math`
 """
 
 import math
+from typing import Any
 
 import numpy as np
 
 _SCALARS = (float, int)
 
+# What the closed forms take and give: a plain number or a numpy array (broadcast).
+Real = float | np.ndarray
 
-def namespace(*values):
+
+def namespace(*values: object) -> Any:
     for value in values:
         if not isinstance(value, _SCALARS):
             return np

@@ -19,16 +19,17 @@ checks are the joint's (`values.ValueChecks`).
 import math
 
 from ..driveline_variables import LOAD, MOTOR
+from ..variables import VariableTable
 from .refusal import Reason, Refusal
-from .values import ValueChecks, value_ranges
+from .values import ValueChecks, bounds, value_ranges
 
 
 class _TableModel(ValueChecks):
     """Inputs and parameters as attributes with the table's start values; the checks."""
 
-    table = None
+    table: VariableTable
 
-    def __init__(self, **values):
+    def __init__(self, **values: float) -> None:
         table = self.table
         unknown = set(values) - set(table.INPUTS) - set(table.PARAMETERS)
         if unknown:
@@ -46,16 +47,16 @@ class _TableModel(ValueChecks):
         self.time = float(time)
         self.parameter_fault = self.parameter_problem()
 
-    def parameter_problem(self):
+    def parameter_problem(self) -> Refusal | None:
         return self._value_problem(self.table.PARAMETERS, self._parameter_ranges)
 
-    def input_problem(self, step_size: float = 0.0):
+    def input_problem(self, step_size: float = 0.0) -> Refusal | None:
         return self._value_problem(self.table.INPUTS, self._input_ranges)
 
     def invalid_inputs(self) -> set:
         return {r.variable for r in self._bad_values(self.table.INPUTS, self._input_ranges)}
 
-    def step(self, step_size: float):
+    def step(self, step_size: float) -> Refusal | None:
         """Advance by `step_size`; return None, or the Refusal of the step (then
         nothing has changed, the clock neither)."""
         problem = self.step_problem(step_size) or self._advance(step_size)
@@ -64,7 +65,11 @@ class _TableModel(ValueChecks):
         self.time += step_size
         return None
 
-    def _variables(self):
+    def _advance(self, h: float) -> Refusal | None:
+        """Move the state `h` s on, or refuse (then nothing has changed)."""
+        raise NotImplementedError(f"{type(self).__name__} must advance its state")
+
+    def _variables(self) -> tuple[str, ...]:
         return self.table.INPUTS + self.table.PARAMETERS
 
     def state(self) -> dict:
@@ -83,7 +88,17 @@ class _TableModel(ValueChecks):
 
 class Motor(_TableModel):
     table = MOTOR
-    _SPEED_LIMIT = MOTOR.BY_NAME["speed_start"].max
+    _SPEED_LIMIT = bounds(MOTOR.BY_NAME["speed_start"])[1]
+
+    # `MOTOR`'s input and parameters (set by __init__), then the rotor's state.
+    load_torque: float
+    stall_torque: float
+    no_load_speed: float
+    rotor_inertia: float
+    speed_start: float
+    angle_start: float
+    speed: float
+    angle: float
 
     def start(self, time: float) -> None:
         super().start(time)
@@ -106,7 +121,7 @@ class Motor(_TableModel):
     def time_constant(self) -> float:
         return self.rotor_inertia / self.drag_constant
 
-    def _advance(self, h):
+    def _advance(self, h: float) -> Refusal | None:
         tau, omega, omega_eq = self.time_constant(), self.speed, self.equilibrium_speed()
         # -expm1(-h/tau) = 1 - exp(-h/tau) keeps full precision when h << tau.
         approach = -math.expm1(-h / tau)
@@ -130,14 +145,21 @@ class Motor(_TableModel):
         torque = self.torque(self.speed)
         return (self.speed, (torque - self.load_torque) / self.rotor_inertia, self.angle, torque)
 
-    def _variables(self):
+    def _variables(self) -> tuple[str, ...]:
         return super()._variables() + ("speed", "angle")
 
 
 class Load(_TableModel):
     table = LOAD
 
-    def _advance(self, h):
+    # `LOAD`'s inputs and parameters, set by __init__.
+    speed: float
+    acceleration: float
+    inertia: float
+    drag: float
+    constant_torque: float
+
+    def _advance(self, h: float) -> Refusal | None:
         return None  # no state: the torque follows the shaft motion it is given
 
     def outputs(self) -> tuple:

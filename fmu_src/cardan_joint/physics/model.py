@@ -11,13 +11,14 @@ FMU maps its variables onto this object.
 from operator import itemgetter
 
 from .. import variables as table
+from ..variables import Variable
 from .refusal import Reason, Refusal
 
 # The kernel itself: the FMU's once-per-step call on floats skips the array dispatch.
 from .response import JointResponse
 from .response import _response as joint_response_kernel
 from .revolutions import split_angle
-from .values import SavedState, ValueChecks, advance_input, value_ranges
+from .values import SavedState, ValueChecks, advance_input, bounds, value_ranges
 
 
 def _ranges(names, *excluded):
@@ -29,18 +30,33 @@ _INPUT_RANGES = _ranges(table.INPUTS, "bend_angle")
 _PARAMETER_RANGES = _ranges(table.PARAMETERS, "max_bend_angle")
 # The fast path of `input_problem` checks |x| <= max, so the ranges must be symmetric.
 assert all(low == -high for _, low, high, _ in _INPUT_RANGES), "input ranges must be symmetric"
-_SPEED_LIMIT = table.BY_NAME["input_speed"].max
-_ACCELERATION_LIMIT = table.BY_NAME["input_acceleration"].max
-_RATE_LIMIT = table.BY_NAME["bend_angle_rate"].max
-_BEND_ACCELERATION_LIMIT = table.BY_NAME["bend_angle_acceleration"].max
-_LOAD_LIMIT = table.BY_NAME["load_torque"].max
+_SPEED_LIMIT = bounds(table.BY_NAME["input_speed"])[1]
+_ACCELERATION_LIMIT = bounds(table.BY_NAME["input_acceleration"])[1]
+_RATE_LIMIT = bounds(table.BY_NAME["bend_angle_rate"])[1]
+_BEND_ACCELERATION_LIMIT = bounds(table.BY_NAME["bend_angle_acceleration"])[1]
+_LOAD_LIMIT = bounds(table.BY_NAME["load_torque"])[1]
 _FROM_RESPONSE = itemgetter(*(JointResponse._fields.index(name) for name in table.OUTPUTS[2:]))
 
 
 class CardanJoint(ValueChecks, SavedState):
     table = table
 
-    def __init__(self, **values):
+    # Inputs and parameters (`variables.INPUTS`, `variables.PARAMETERS`): __init__
+    # sets each from the table, so the names here must be the table's.
+    input_speed: float
+    input_acceleration: float
+    bend_angle: float
+    bend_angle_rate: float
+    bend_angle_acceleration: float
+    load_torque: float
+    yoke_phase: float
+    input_angle_start: float
+    crosspiece_inertia_1: float
+    crosspiece_inertia_2: float
+    crosspiece_inertia_3: float
+    max_bend_angle: float
+
+    def __init__(self, **values: float) -> None:
         unknown = set(values) - set(table.INPUTS) - set(table.PARAMETERS)
         if unknown:
             raise TypeError(f"unknown joint variable(s): {', '.join(sorted(unknown))}")
@@ -64,13 +80,13 @@ class CardanJoint(ValueChecks, SavedState):
         # negative phase costs no precision; its turns enter the quaternion's sign.
         self._phase = split_angle(self.yoke_phase if valid else 0.0)
 
-    def _non_finite_limit(self, name, variable):
+    def _non_finite_limit(self, name: str, variable: Variable) -> float:
         # The bend angle's limit is the max_bend_angle parameter, not its table range.
         if name == "bend_angle":
             return self.max_bend_angle
         return super()._non_finite_limit(name, variable)
 
-    def parameter_problem(self):
+    def parameter_problem(self) -> Refusal | None:
         """The Refusal that keeps the parameters from running, or None."""
         problem = self._value_problem(table.PARAMETERS, _PARAMETER_RANGES)
         if problem:
@@ -83,7 +99,7 @@ class CardanJoint(ValueChecks, SavedState):
 
     # --- stepping ----------------------------------------------------------
 
-    def input_problem(self, step_size: float = 0.0):
+    def input_problem(self, step_size: float = 0.0) -> Refusal | None:
         """The Refusal of the inputs over [time, time + step_size], or None."""
         # Fast path for the common case, once per FMU step: every range at once and
         # the bend angle at both ends of the step. NaN fails every comparison, so
@@ -103,7 +119,7 @@ class CardanJoint(ValueChecks, SavedState):
             return None
         return self._explain_input_problem(step_size)
 
-    def _explain_input_problem(self, step_size):
+    def _explain_input_problem(self, step_size: float) -> Refusal | None:
         problem = self._value_problem(table.INPUTS, _INPUT_RANGES)
         if problem:
             return problem
@@ -149,7 +165,7 @@ class CardanJoint(ValueChecks, SavedState):
                 )
         return max(candidates, key=lambda c: abs(c[2]))
 
-    def step(self, step_size: float):
+    def step(self, step_size: float) -> Refusal | None:
         """Advance by `step_size`; return None, or the Refusal of the step (then
         nothing has changed)."""
         problem = self.step_problem(step_size)

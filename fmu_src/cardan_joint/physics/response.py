@@ -28,7 +28,7 @@ from typing import Any, NamedTuple
 
 import numpy as np
 
-from ._backend import namespace
+from ._backend import Real, namespace
 
 _new_tuple = tuple.__new__  # skips NamedTuple's Python-level __new__ (once per FMU step)
 
@@ -66,15 +66,15 @@ _BLOCK = 8192  # samples per pass on large arrays: the temporaries stay in cache
 
 
 def joint_response(
-    psi,
-    bend_angle,
-    input_speed,
-    input_acceleration=0.0,
-    bend_angle_rate=0.0,
-    bend_angle_acceleration=0.0,
-    inertia=(0.0, 0.0, 0.0),
-    load_torque=0.0,
-    quaternion_sign=1.0,
+    psi: Real,
+    bend_angle: Real,
+    input_speed: Real,
+    input_acceleration: Real = 0.0,
+    bend_angle_rate: Real = 0.0,
+    bend_angle_acceleration: Real = 0.0,
+    inertia: tuple[Real, Real, Real] = (0.0, 0.0, 0.0),
+    load_torque: Real = 0.0,
+    quaternion_sign: Real = 1.0,
 ) -> JointResponse:
     """All outputs at input-pin angle `psi`.
 

@@ -3,7 +3,10 @@ state, shared by every stepped model (the joint, the propshaft): one Refusal
 per bad value, one state format."""
 
 import math
+from collections.abc import Iterator, Mapping
+from typing import Protocol
 
+from ..variables import Variable
 from .refusal import Reason, Refusal, crossed_limit
 from .revolutions import RevolutionAngle, advance
 
@@ -12,23 +15,59 @@ from .revolutions import RevolutionAngle, advance
 MAX_INCREMENT = 1e15
 
 
-def value_ranges(by_name, names, *excluded):
+class Table(Protocol):
+    """What the checks read of a variable table: the `variables` module itself
+    or a `variables.VariableTable` (read-only, so either one matches)."""
+
+    @property
+    def BY_NAME(self) -> Mapping[str, Variable]: ...
+
+    @property
+    def INPUTS(self) -> tuple[str, ...]: ...
+
+    @property
+    def PARAMETERS(self) -> tuple[str, ...]: ...
+
+
+Range = tuple[str, float, float, str]
+
+
+def value_ranges(by_name: Mapping[str, Variable], names, *excluded: str) -> tuple[Range, ...]:
     """(name, min, max, unit) of each of `names` that has a range in the table."""
     return tuple(
-        (n, by_name[n].min, by_name[n].max, by_name[n].unit)
+        (n, *bounds(by_name[n]), by_name[n].unit)
         for n in names
         if by_name[n].min is not None and n not in excluded
     )
 
 
+def bounds(variable: Variable) -> tuple[float, float]:
+    """(min, max) of a checked variable; only outputs may have a one-sided range."""
+    if variable.min is None or variable.max is None:
+        raise ValueError(
+            f"{variable.name} ({variable.causality}) is checked, so it needs both "
+            f"min and max, not min={variable.min}, max={variable.max}"
+        )
+    return variable.min, variable.max
+
+
 class ValueChecks:
     """Refusals for bad attribute values of a model object with a variable `table`."""
 
-    def _non_finite_limit(self, name, variable):
-        """The limit a NaN or infinite `name` is reported against: its range's bound."""
-        return crossed_limit(getattr(self, name), variable.min, variable.max)
+    # What the host model provides: its table, its clock, the parameters' refusal
+    # (fixed at `start`) and the check of its inputs over a step.
+    table: Table
+    time: float
+    parameter_fault: Refusal | None
 
-    def _bad_values(self, names, ranges):
+    def input_problem(self, step_size: float = 0.0) -> Refusal | None:
+        raise NotImplementedError(f"{type(self).__name__} must check its inputs")
+
+    def _non_finite_limit(self, name: str, variable: Variable) -> float:
+        """The limit a NaN or infinite `name` is reported against: its range's bound."""
+        return crossed_limit(getattr(self, name), *bounds(variable))
+
+    def _bad_values(self, names, ranges) -> Iterator[Refusal]:
         """A Refusal for each of `names` not finite or outside its range."""
         by_name = self.table.BY_NAME
         for name in names:
@@ -58,11 +97,11 @@ class ValueChecks:
                     by_name[name].causality,
                 )
 
-    def _value_problem(self, names, ranges):
+    def _value_problem(self, names, ranges) -> Refusal | None:
         """The first bad value, or None."""
         return next(self._bad_values(names, ranges), None)
 
-    def step_problem(self, step_size: float):
+    def step_problem(self, step_size: float) -> Refusal | None:
         """The Refusal of a step of `step_size` from now, or None."""
         if not (math.isfinite(step_size) and step_size > 0.0):
             return Refusal(Reason.STEP_SIZE, "step_size", step_size, 0.0, self.time, "s")
@@ -71,7 +110,14 @@ class ValueChecks:
         return self.input_problem(step_size)
 
 
-def advance_input(angle, speed, acceleration, h, speed_limit, time):
+def advance_input(
+    angle: RevolutionAngle,
+    speed: float,
+    acceleration: float,
+    h: float,
+    speed_limit: float,
+    time: float,
+) -> tuple[RevolutionAngle, float] | Refusal:
     """(new angle, new speed) after `h` s at constant acceleration, or the
     Refusal of a step that would overflow."""
     increment = h * (speed + 0.5 * acceleration * h)
@@ -96,6 +142,13 @@ def advance_input(angle, speed, acceleration, h, speed_limit, time):
 class SavedState:
     """state()/restore() of a model with a variable `table`, a clock and an input
     angle kept as exact revolutions; `start(time)` re-derives everything else."""
+
+    table: Table
+    time: float
+    _angle: RevolutionAngle
+
+    def start(self, time: float) -> None:
+        raise NotImplementedError(f"{type(self).__name__} must define its start")
 
     def state(self) -> dict:
         """Everything that defines the model, as JSON-serialisable values."""

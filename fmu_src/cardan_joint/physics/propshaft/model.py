@@ -16,13 +16,24 @@ from ..values import SavedState, ValueChecks, advance_input, value_ranges
 from .chain import chain
 from .checks import angle_warnings
 from .fluctuation import equivalent_angle, speed_ratio_fluctuation
-from .geometry import HALF_PI, TWO_PI, layout
+from .geometry import HALF_PI, TWO_PI, Layout, layout
 
 
 class Propshaft(ValueChecks, SavedState):
-    def __init__(self, joints: int = 2, **values):
+    # The inputs and parameters every layout has, set from the table by __init__;
+    # the per-shaft angles, phases and inertias are read by name (`getattr`).
+    input_speed: float
+    input_acceleration: float
+    load_torque: float
+    input_angle_start: float
+    crosspiece_inertia_1: float
+    crosspiece_inertia_2: float
+    crosspiece_inertia_3: float
+    max_working_angle: float
+
+    def __init__(self, joints: int = 2, **values: float) -> None:
         self.table = table = propshaft_table(joints)
-        self._fluctuation = None
+        self._fluctuation: tuple[Layout, float] | None = None
         self.joints = joints
         unknown = set(values) - set(table.INPUTS) - set(table.PARAMETERS)
         if unknown:
@@ -134,7 +145,7 @@ class Propshaft(ValueChecks, SavedState):
     def invalid_inputs(self) -> set:
         return {r.variable for r in self._bad_values(self.table.INPUTS, self._input_ranges)}
 
-    def step(self, step_size: float):
+    def step(self, step_size: float) -> Refusal | None:
         """Advance by `step_size`; return None, or why the step was refused (then
         nothing has changed)."""
         problem = self.step_problem(step_size)

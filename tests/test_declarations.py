@@ -1,0 +1,56 @@
+"""What the type checker is told holds at run time: the models declare exactly
+the variables their tables give them, and the checks that replaced `None`
+slipping through (a one-sided range, a missing XML element) name what is wrong."""
+
+from xml.etree.ElementTree import Element, SubElement
+
+import pytest
+
+from cardan_joint import variables as table
+from cardan_joint.driveline_variables import LOAD, MOTOR
+from cardan_joint.fmu import model_description, model_description3
+from cardan_joint.physics import CardanJoint, Load, Motor
+from cardan_joint.physics.propshaft import Propshaft
+from cardan_joint.physics.values import value_ranges
+from cardan_joint.propshaft_variables import propshaft_table
+
+
+@pytest.mark.parametrize(
+    "model, variables, state",
+    [(CardanJoint, table, ()), (Motor, MOTOR, ("speed", "angle")), (Load, LOAD, ())],
+    ids=["joint", "motor", "load"],
+)
+def test_models_declare_exactly_their_tables_inputs_and_parameters(model, variables, state):
+    declared = set(model.__annotations__) - {"table"}
+    assert declared == {*variables.INPUTS, *variables.PARAMETERS, *state}
+    instance = model()
+    assert all(isinstance(getattr(instance, name), float) for name in declared)
+
+
+def test_the_propshafts_declared_variables_are_in_every_layouts_table():
+    declared = set(Propshaft.__annotations__)
+    for joints in (2, 3):
+        names = set(propshaft_table(joints).INPUTS) | set(propshaft_table(joints).PARAMETERS)
+        assert declared <= names
+        assert all(isinstance(getattr(Propshaft(joints), n), float) for n in declared)
+
+
+def test_a_checked_variable_with_a_one_sided_range_is_refused_by_name():
+    one_sided = table.Variable("torque_limit", "input", "N.m", "a limit", 0.0, None, 0.0, None)
+    with pytest.raises(ValueError, match=r"torque_limit \(input\).*min=0.0, max=None"):
+        value_ranges({"torque_limit": one_sided}, ("torque_limit",))
+
+
+def test_a_model_description_without_model_variables_names_the_missing_element():
+    root = Element("fmiModelDescription")
+    SubElement(root, "CoSimulation")
+    with pytest.raises(ValueError, match="<fmiModelDescription> has no <ModelVariables>"):
+        model_description.complete(root)
+
+
+def test_an_fmi3_variable_without_a_value_reference_is_named():
+    root = Element("fmiModelDescription")
+    SubElement(root, "CoSimulation")
+    SubElement(SubElement(root, "ModelVariables"), "Float64", name="time")
+    with pytest.raises(ValueError, match="<Float64> has no valueReference"):
+        model_description3.complete(root, table.fmi3_variables(), {}, table)
