@@ -25,6 +25,8 @@ PACKAGE_DIR = Path(__file__).resolve().parent
 # What an FMU needs at run time: the rest of the package runs in the host only.
 RUNTIME = (
     "__init__.py",
+    "units.py",
+    "variable_schema.py",
     "variables.py",
     "propshaft_variables.py",
     "driveline_variables.py",

@@ -19,6 +19,7 @@ from pathlib import Path
 
 from . import results
 from . import variables as table
+from .run_inputs import UsageError, input_signal, parse_assignments, read_input_csv, start_values
 
 PROG = "cardan-joint"
 DEFAULT_PLOT_VARIABLES = ("output_speed", "output_acceleration", "cardan_error", "input_torque")
@@ -28,99 +29,6 @@ PROGRESS_MIN_STEPS = 20_000
 # of another command or of an example (results/demo.csv, results/design_sweep.*).
 DEFAULT_OUTPUT = "results/simulate.csv"
 SWEEP_NAME = "sweep"
-
-
-class UsageError(Exception):
-    """Bad command-line input: the message names what is wrong."""
-
-
-# --- simulate: turning arguments into FMPy inputs ---------------------------
-
-
-def parse_assignments(pairs):
-    """--set NAME=VALUE ... -> (constant inputs, parameter start values)."""
-    inputs, parameters = {}, {}
-    for pair in pairs:
-        name, sep, text = pair.partition("=")
-        name = name.strip()
-        if not sep:
-            raise UsageError(f"--set takes NAME=VALUE, got {pair!r}")
-        kind = _settable_kind(name, f"--set {pair}")
-        try:
-            value = float(text)
-        except ValueError:
-            raise UsageError(f"--set {pair}: {text.strip()!r} is not a number") from None
-        (inputs if kind == "input" else parameters)[name] = value
-    return inputs, parameters
-
-
-def _settable_kind(name, where):
-    variable = table.BY_NAME.get(name)
-    if variable is None:
-        raise UsageError(
-            f"{where}: unknown variable {name!r}; inputs are "
-            f"{', '.join(table.INPUTS)}; parameters are {', '.join(table.PARAMETERS)}"
-        )
-    if variable.causality not in ("input", "parameter"):
-        raise UsageError(
-            f"{where}: {name!r} is an {variable.causality}; only inputs and parameters can be set"
-        )
-    return variable.causality
-
-
-def read_input_csv(path):
-    """A CSV with a `time` column and input-name columns -> FMPy's structured array."""
-    import numpy as np
-
-    try:
-        signal = results.read_csv(path)
-    except results.ResultFileError as error:
-        raise UsageError(f"input file {error}") from None
-    header = list(signal.dtype.names)
-    if "time" not in header:
-        raise UsageError(f"{path}: no 'time' column (columns: {', '.join(header)})")
-    for name in header:
-        if name != "time" and _settable_kind(name, f"{path}, column {name!r}") != "input":
-            raise UsageError(
-                f"{path}, column {name!r}: a parameter is fixed for the run; "
-                f"set it with --set {name}=VALUE"
-            )
-    for name in header:
-        if not np.all(np.isfinite(signal[name])):
-            raise UsageError(f"{path}, column {name!r}: every value must be a finite number")
-    times = signal["time"]
-    if not np.all(np.isfinite(times)) or np.any(np.diff(times) < 0):
-        raise UsageError(f"{path}: the time column must be finite and non-decreasing")
-    return signal
-
-
-def input_signal(constants, csv_signal, defaults, stop_time):
-    """Every input of the FMU as one signal: CSV columns as given, the others
-    constant (from --set, else the FMU's start values), so no input is left unset."""
-    import numpy as np
-
-    given = set(csv_signal.dtype.names) - {"time"} if csv_signal is not None else set()
-    clash = sorted(given & set(constants))
-    if clash:
-        raise UsageError(f"{', '.join(clash)} given both by --set and in the input CSV")
-    times = csv_signal["time"] if csv_signal is not None else np.array([0.0, max(stop_time, 0.0)])
-    signal = np.zeros(len(times), dtype=[("time", float)] + [(n, float) for n in table.INPUTS])
-    signal["time"] = times
-    for name in table.INPUTS:
-        signal[name] = (
-            csv_signal[name] if name in given else constants.get(name, defaults.get(name, 0.0))
-        )
-    return signal
-
-
-def _start_values(fmu):
-    from fmpy import read_model_description
-
-    description = read_model_description(str(fmu))
-    return (
-        {v.name: float(v.start) for v in description.modelVariables if v.start is not None},
-        description.defaultExperiment,
-    )
 
 
 # --- simulate: output -------------------------------------------------------
@@ -179,7 +87,7 @@ def simulate_command(args):
         raise UsageError(f"{fmu} does not exist: build it with `{PROG} build`")
     constants, parameters = parse_assignments(args.set)
     csv_signal = read_input_csv(args.input) if args.input else None
-    starts, experiment = _start_values(fmu)
+    starts, experiment = start_values(fmu)
     stop_time = (
         args.stop_time
         if args.stop_time is not None

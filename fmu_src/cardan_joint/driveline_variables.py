@@ -5,8 +5,8 @@ table is a `variables.VariableTable`, as the Propshaft's, declaring only the
 units it uses. Pure data: the physics reads its defaults and ranges here.
 """
 
+from .variable_schema import Unit, Variable, VariableTable
 from .variables import UNITS as _JOINT_UNITS
-from .variables import Unit, Variable, VariableTable
 
 _UNITS = {
     **_JOINT_UNITS,

@@ -9,7 +9,9 @@ from dataclasses import replace
 from functools import cache
 
 from . import variables as joint
-from .variables import DEG, HALF_PI, Variable, VariableTable
+from .units import DEG_TO_RAD
+from .variable_schema import Variable, VariableTable
+from .variables import HALF_PI
 
 _IN, _PAR, _OUT = "input", "parameter", "output"
 _SPEED = ("input_speed",)
@@ -21,7 +23,7 @@ JOINTS = (2, 3, 4)
 def _default_side_angle(shaft: int) -> float:
     # A parallel (Z) layout: every joint works at 2.5 deg, consecutive joints
     # cancel pairwise.
-    return (2.0 if shaft % 2 == 0 else -0.5) / DEG
+    return (2.0 if shaft % 2 == 0 else -0.5) * DEG_TO_RAD
 
 
 def _geometry(joints):
@@ -216,10 +218,10 @@ def propshaft_table(joints: int = 2) -> VariableTable:
             _PAR,
             "rad",
             "Largest working angle accepted; a layout reaching it is refused",
-            30.0 / DEG,
+            30.0 * DEG_TO_RAD,
             "deg",
             0.0,
             HALF_PI,
         ),
     ]
-    return VariableTable(inputs + parameters + _outputs(joints))
+    return VariableTable(inputs + parameters + _outputs(joints), joint.UNITS)

@@ -13,24 +13,9 @@ import os
 import re
 from dataclasses import dataclass
 
-# Conversion factors, named for their direction (X_TO_Y multiplies a value in X
-# into Y). Defined here because the FMU ships this file (build.RUNTIME), and the
-# display units below need them; everyone else imports them from `units`.
-RAD_TO_DEG = 180.0 / math.pi
-DEG_TO_RAD = math.pi / 180.0
-RAD_PER_S_TO_RPM = 30.0 / math.pi
-RPM_TO_RAD_PER_S = math.pi / 30.0
-# physics/model.py (owned by the physics package) still reads `table.DEG`:
-# kept as an alias of RAD_TO_DEG until it imports cardan_joint.units itself.
-DEG = RAD_TO_DEG
-
-
-@dataclass(frozen=True)
-class Unit:
-    name: str
-    exponents: tuple  # ((base unit, exponent), ...) of FMI's BaseUnit
-    display: tuple = ()  # ((display unit, factor), ...): display = factor * value
-
+from . import variable_schema
+from .units import DEG_TO_RAD, RAD_PER_S_TO_RPM, RAD_TO_DEG
+from .variable_schema import _IN, _OUT, _PAR, Unit, Variable, _names
 
 UNITS = {
     u.name: u
@@ -62,319 +47,83 @@ _ACCELERATION = (
 _TORQUE = _ACCELERATION + ("load_torque",)
 
 
-@dataclass(frozen=True)
-class Variable:
-    name: str
-    causality: str  # "input", "parameter" or "output"
-    unit: str
-    description: str
-    start: float | None = None
-    display_unit: str | None = None
-    min: float | None = None
-    max: float | None = None
-    depends_on: tuple = ()  # outputs only
-
-    @property
-    def variability(self) -> str:
-        return "fixed" if self.causality == "parameter" else "continuous"
-
-    @property
-    def initial(self) -> str | None:
-        return {"parameter": "exact", "output": "calculated"}.get(self.causality)
-
-
 HALF_PI = 0.5 * math.pi
-_IN, _PAR, _OUT = "input", "parameter", "output"
 
+# A table, one row per variable: kept as rows rather than one argument per line.
+# fmt: off
 VARIABLES = (
     # Inputs: polynomial in time over a step (speed with its acceleration, bend
     # angle with its rate and acceleration); the start values run a default demo.
     # Their ranges are physical bounds, generous for any driveline, that keep every
     # output finite; a step with an input outside them is refused.
     Variable("input_speed", _IN, "rad/s", "Input shaft speed omega1", 10.0, "rpm", -1e5, 1e5),
-    Variable(
-        "input_acceleration",
-        _IN,
-        "rad/s2",
-        "Input shaft acceleration a1 = d(omega1)/dt",
-        0.0,
-        "rpm/s",
-        -1e8,
-        1e8,
-    ),
-    Variable(
-        "bend_angle",
-        _IN,
-        "rad",
-        "Bend angle beta between the shafts (0 = straight)",
-        math.pi / 6,
-        "deg",
-        -HALF_PI,
-        HALF_PI,
-    ),
-    Variable(
-        "bend_angle_rate", _IN, "rad/s", "Bend angle rate d(beta)/dt", 0.0, "deg/s", -1e3, 1e3
-    ),
-    Variable(
-        "bend_angle_acceleration",
-        _IN,
-        "rad/s2",
-        "Bend angle acceleration d2(beta)/dt2",
-        0.0,
-        "deg/s2",
-        -1e6,
-        1e6,
-    ),
-    Variable(
-        "load_torque",
-        _IN,
-        "N.m",
-        "Load torque T_L the driven machine takes from the output shaft",
-        0.0,
-        None,
-        -1e9,
-        1e9,
-    ),
+    Variable("input_acceleration", _IN, "rad/s2", "Input shaft acceleration a1 = d(omega1)/dt",
+             0.0, "rpm/s", -1e8, 1e8),
+    Variable("bend_angle", _IN, "rad", "Bend angle beta between the shafts (0 = straight)",
+             math.pi / 6, "deg", -HALF_PI, HALF_PI),
+    Variable("bend_angle_rate", _IN, "rad/s", "Bend angle rate d(beta)/dt", 0.0, "deg/s",
+             -1e3, 1e3),
+    Variable("bend_angle_acceleration", _IN, "rad/s2", "Bend angle acceleration d2(beta)/dt2",
+             0.0, "deg/s2", -1e6, 1e6),
+    Variable("load_torque", _IN, "N.m", "Load torque T_L the driven machine takes from the "
+             "output shaft", 0.0, None, -1e9, 1e9),
     # Parameters.
     # Angles beyond 1e15 rad have no fractional digits left in a float.
-    Variable(
-        "yoke_phase",
-        _PAR,
-        "rad",
-        "Input-yoke pin angle from the bend plane at zero "
-        "input angle (0: Wikipedia/maker/Tataru convention; 90 deg: Mityushov & Misyura)",
-        0.0,
-        "deg",
-        -1e15,
-        1e15,
-    ),
-    Variable(
-        "input_angle_start",
-        _PAR,
-        "rad",
-        "Input shaft angle gamma1 at the start time",
-        0.0,
-        "deg",
-        -1e15,
-        1e15,
-    ),
-    Variable(
-        "crosspiece_inertia_1",
-        _PAR,
-        "kg.m2",
-        "Crosspiece principal moment of inertia about the input-yoke pin",
-        0.026,
-        None,
-        0.0,
-        1e6,
-    ),
-    Variable(
-        "crosspiece_inertia_2",
-        _PAR,
-        "kg.m2",
-        "Crosspiece principal moment of inertia about the output-yoke pin",
-        0.026,
-        None,
-        0.0,
-        1e6,
-    ),
-    Variable(
-        "crosspiece_inertia_3",
-        _PAR,
-        "kg.m2",
-        "Crosspiece principal moment of inertia about the normal of the cross",
-        0.026,
-        None,
-        0.0,
-        1e6,
-    ),
-    Variable(
-        "max_bend_angle",
-        _PAR,
-        "rad",
-        "Largest |bend angle| accepted; a step reaching it is refused (the joint locks at 90 deg)",
-        80.0 * DEG_TO_RAD,
-        "deg",
-        0.0,
-        HALF_PI,
-    ),
+    Variable("yoke_phase", _PAR, "rad", "Input-yoke pin angle from the bend plane at zero "
+             "input angle (0: Wikipedia/maker/Tataru convention; 90 deg: Mityushov & Misyura)",
+             0.0, "deg", -1e15, 1e15),
+    Variable("input_angle_start", _PAR, "rad", "Input shaft angle gamma1 at the start time",
+             0.0, "deg", -1e15, 1e15),
+    Variable("crosspiece_inertia_1", _PAR, "kg.m2", "Crosspiece principal moment of inertia "
+             "about the input-yoke pin", 0.026, None, 0.0, 1e6),
+    Variable("crosspiece_inertia_2", _PAR, "kg.m2", "Crosspiece principal moment of inertia "
+             "about the output-yoke pin", 0.026, None, 0.0, 1e6),
+    Variable("crosspiece_inertia_3", _PAR, "kg.m2", "Crosspiece principal moment of inertia "
+             "about the normal of the cross", 0.026, None, 0.0, 1e6),
+    Variable("max_bend_angle", _PAR, "rad", "Largest |bend angle| accepted; a step reaching "
+             "it is refused (the joint locks at 90 deg)", 80.0 * DEG_TO_RAD, "deg", 0.0, HALF_PI),
     # Outputs.
     Variable("input_angle", _OUT, "rad", "Input shaft angle gamma1", display_unit="deg"),
-    Variable(
-        "output_angle",
-        _OUT,
-        "rad",
-        "Output shaft angle gamma2 = gamma1 + cardan error (continuous)",
-        display_unit="deg",
-        depends_on=_POSE,
-    ),
-    Variable(
-        "output_speed",
-        _OUT,
-        "rad/s",
-        "Output shaft speed omega2",
-        display_unit="rpm",
-        depends_on=_SPEED,
-    ),
-    Variable(
-        "output_acceleration",
-        _OUT,
-        "rad/s2",
-        "Output shaft acceleration a2",
-        display_unit="rpm/s",
-        depends_on=_ACCELERATION,
-    ),
-    Variable(
-        "cardan_error",
-        _OUT,
-        "rad",
-        "Cardan error gamma2 - gamma1",
-        display_unit="deg",
-        depends_on=_POSE,
-    ),
-    Variable(
-        "speed_ratio",
-        _OUT,
-        "1",
-        "Speed ratio cos(beta)/D = omega2/omega1 at constant bend angle",
-        min=0.0,
-        depends_on=_POSE,
-    ),
-    Variable(
-        "crosspiece_angular_velocity_1",
-        _OUT,
-        "rad/s",
-        "Crosspiece angular velocity about the input-yoke pin",
-        display_unit="rpm",
-        depends_on=_SPEED,
-    ),
-    Variable(
-        "crosspiece_angular_velocity_2",
-        _OUT,
-        "rad/s",
-        "Crosspiece angular velocity about the output-yoke pin",
-        display_unit="rpm",
-        depends_on=_SPEED,
-    ),
-    Variable(
-        "crosspiece_angular_velocity_3",
-        _OUT,
-        "rad/s",
-        "Crosspiece angular velocity about the cross normal",
-        display_unit="rpm",
-        depends_on=_SPEED,
-    ),
-    Variable(
-        "crosspiece_torque_1",
-        _OUT,
-        "N.m",
-        "Resultant torque on the crosspiece (Euler), input-pin component",
-        depends_on=_ACCELERATION,
-    ),
-    Variable(
-        "crosspiece_torque_2",
-        _OUT,
-        "N.m",
-        "Resultant torque on the crosspiece (Euler), output-pin component",
-        depends_on=_ACCELERATION,
-    ),
-    Variable(
-        "crosspiece_torque_3",
-        _OUT,
-        "N.m",
-        "Resultant torque on the crosspiece (Euler), normal component",
-        depends_on=_ACCELERATION,
-    ),
-    Variable(
-        "crosspiece_kinetic_energy",
-        _OUT,
-        "J",
-        "Crosspiece kinetic energy",
-        min=0.0,
-        depends_on=_SPEED,
-    ),
-    Variable(
-        "crosspiece_quaternion_0",
-        _OUT,
-        "1",
-        "Crosspiece orientation quaternion, scalar part",
-        min=-1.0,
-        max=1.0,
-        depends_on=_POSE,
-    ),
-    Variable(
-        "crosspiece_quaternion_1",
-        _OUT,
-        "1",
-        "Crosspiece orientation quaternion, x part",
-        min=-1.0,
-        max=1.0,
-        depends_on=_POSE,
-    ),
-    Variable(
-        "crosspiece_quaternion_2",
-        _OUT,
-        "1",
-        "Crosspiece orientation quaternion, y part",
-        min=-1.0,
-        max=1.0,
-        depends_on=_POSE,
-    ),
-    Variable(
-        "crosspiece_quaternion_3",
-        _OUT,
-        "1",
-        "Crosspiece orientation quaternion, z part",
-        min=-1.0,
-        max=1.0,
-        depends_on=_POSE,
-    ),
-    Variable(
-        "input_torque", _OUT, "N.m", "Torque T1 the input shaft must supply", depends_on=_TORQUE
-    ),
-    Variable(
-        "input_yoke_moment",
-        _OUT,
-        "N.m",
-        "Secondary couple on the input yoke (bending moment normal to the input shaft)",
-        min=0.0,
-        depends_on=_TORQUE,
-    ),
-    Variable(
-        "output_yoke_moment",
-        _OUT,
-        "N.m",
-        "Secondary couple on the output yoke (bending moment normal to the output shaft)",
-        min=0.0,
-        depends_on=_TORQUE,
-    ),
+    Variable("output_angle", _OUT, "rad", "Output shaft angle gamma2 = gamma1 + cardan error "
+             "(continuous)", display_unit="deg", depends_on=_POSE),
+    Variable("output_speed", _OUT, "rad/s", "Output shaft speed omega2", display_unit="rpm",
+             depends_on=_SPEED),
+    Variable("output_acceleration", _OUT, "rad/s2", "Output shaft acceleration a2",
+             display_unit="rpm/s", depends_on=_ACCELERATION),
+    Variable("cardan_error", _OUT, "rad", "Cardan error gamma2 - gamma1", display_unit="deg",
+             depends_on=_POSE),
+    Variable("speed_ratio", _OUT, "1", "Speed ratio cos(beta)/D = omega2/omega1 at constant "
+             "bend angle", min=0.0, depends_on=_POSE),
+    Variable("crosspiece_angular_velocity_1", _OUT, "rad/s", "Crosspiece angular velocity "
+             "about the input-yoke pin", display_unit="rpm", depends_on=_SPEED),
+    Variable("crosspiece_angular_velocity_2", _OUT, "rad/s", "Crosspiece angular velocity "
+             "about the output-yoke pin", display_unit="rpm", depends_on=_SPEED),
+    Variable("crosspiece_angular_velocity_3", _OUT, "rad/s", "Crosspiece angular velocity "
+             "about the cross normal", display_unit="rpm", depends_on=_SPEED),
+    Variable("crosspiece_torque_1", _OUT, "N.m", "Resultant torque on the crosspiece (Euler), "
+             "input-pin component", depends_on=_ACCELERATION),
+    Variable("crosspiece_torque_2", _OUT, "N.m", "Resultant torque on the crosspiece (Euler), "
+             "output-pin component", depends_on=_ACCELERATION),
+    Variable("crosspiece_torque_3", _OUT, "N.m", "Resultant torque on the crosspiece (Euler), "
+             "normal component", depends_on=_ACCELERATION),
+    Variable("crosspiece_kinetic_energy", _OUT, "J", "Crosspiece kinetic energy", min=0.0,
+             depends_on=_SPEED),
+    Variable("crosspiece_quaternion_0", _OUT, "1", "Crosspiece orientation quaternion, scalar "
+             "part", min=-1.0, max=1.0, depends_on=_POSE),
+    Variable("crosspiece_quaternion_1", _OUT, "1", "Crosspiece orientation quaternion, x part",
+             min=-1.0, max=1.0, depends_on=_POSE),
+    Variable("crosspiece_quaternion_2", _OUT, "1", "Crosspiece orientation quaternion, y part",
+             min=-1.0, max=1.0, depends_on=_POSE),
+    Variable("crosspiece_quaternion_3", _OUT, "1", "Crosspiece orientation quaternion, z part",
+             min=-1.0, max=1.0, depends_on=_POSE),
+    Variable("input_torque", _OUT, "N.m", "Torque T1 the input shaft must supply",
+             depends_on=_TORQUE),
+    Variable("input_yoke_moment", _OUT, "N.m", "Secondary couple on the input yoke (bending "
+             "moment normal to the input shaft)", min=0.0, depends_on=_TORQUE),
+    Variable("output_yoke_moment", _OUT, "N.m", "Secondary couple on the output yoke (bending "
+             "moment normal to the output shaft)", min=0.0, depends_on=_TORQUE),
 )
-
-
-class VariableTable:
-    """One model's variables with the lookups every wrapper needs; this module
-    is itself the UniversalJoint's table (same attribute names), other models
-    build one (e.g. `propshaft_variables.propshaft_table`)."""
-
-    def __init__(self, variables, units=None):
-        """`units`: the unit definitions (name -> Unit) its description declares;
-        the joint's by default."""
-        self.VARIABLES = tuple(variables)
-        self.BY_NAME = {v.name: v for v in self.VARIABLES}
-        self.INPUTS = _names(self.VARIABLES, _IN)
-        self.PARAMETERS = _names(self.VARIABLES, _PAR)
-        self.OUTPUTS = _names(self.VARIABLES, _OUT)
-        self.UNITS = UNITS if units is None else units
-
-    def start_values(self) -> dict:
-        return start_values(self.VARIABLES)
-
-    def markdown_table(self) -> str:
-        return markdown_table(self.VARIABLES)
-
-
-def _names(variables, causality):
-    return tuple(v.name for v in variables if v.causality == causality)
+# fmt: on
 
 
 BY_NAME = {v.name: v for v in VARIABLES}
@@ -433,24 +182,13 @@ def fmi3_variables() -> tuple:
     )
 
 
-def start_values(variables=VARIABLES) -> dict:
-    return {v.name: v.start for v in variables if v.start is not None}
+def start_values() -> dict:
+    return variable_schema.start_values(VARIABLES)
 
 
-def markdown_table(variables=VARIABLES) -> str:
-    """A README's variable table (a test keeps each README in step with its table)."""
-    rows = [
-        "| name | causality | unit (display) | start | range | description |",
-        "|---|---|---|---|---|---|",
-    ]
-    for v in variables:
-        unit = v.unit + (f" ({v.display_unit})" if v.display_unit else "")
-        start = "" if v.start is None else f"{v.start:.6g}"
-        low = "" if v.min is None else f"{v.min:.6g}"
-        high = "" if v.max is None else f"{v.max:.6g}"
-        span = f"[{low}, {high}]" if (low or high) else ""
-        rows.append(f"| `{v.name}` | {v.causality} | {unit} | {start} | {span} | {v.description} |")
-    return "\n".join(rows) + "\n"
+def markdown_table() -> str:
+    """The README's variable table (a test keeps the README in step)."""
+    return variable_schema.markdown_table(VARIABLES)
 
 
 def fmi3_array_table() -> str:

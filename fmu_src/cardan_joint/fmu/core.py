@@ -17,48 +17,12 @@ before its pythonfmu base and provides `_STATUS` (its status enumeration),
 """
 
 import json
-import math
-from operator import attrgetter
 from typing import Any
 
 from .. import __version__
 from .. import variables as joint_table
 from ..physics.model import CardanJoint
-
-
-def log_categories(api: str) -> dict:
-    return {
-        "logStatusWarning": "Warnings: outputs held at the last valid inputs.",
-        "logStatusDiscard": "Refused steps: the variable, its value, the limit and the time.",
-        "logStatusError": "Errors: invalid parameters, calls FMI does not allow, internal faults.",
-        "logStatusFatal": f"Not used: the FMU never ends in {api}Fatal on its own.",
-        "logAll": "All messages.",
-    }
-
-
-class References:
-    """Flat indices of one variable table: inputs, then parameters, then outputs."""
-
-    def __init__(self, table, live_outputs):
-        self.known = table.INPUTS + table.PARAMETERS
-        self.names = self.known + table.OUTPUTS
-        self.first_output = len(self.known)
-        assert tuple(v.name for v in table.VARIABLES) == self.names, (
-            "flat indices assume inputs, then parameters, then outputs"
-        )
-        assert table.OUTPUTS[: len(live_outputs)] == live_outputs, (
-            "the outputs that follow the state while inputs are invalid come first"
-        )
-        self.inputs = range(len(table.INPUTS))
-        self.nan_outputs = (math.nan,) * len(table.OUTPUTS)
-        self.output_dependencies = tuple(
-            frozenset(table.BY_NAME[n].depends_on) for n in table.OUTPUTS
-        )
-        getter = attrgetter(*table.INPUTS)
-        self.inputs_of = getter if len(table.INPUTS) > 1 else lambda model: (getter(model),)
-        # What FMPy and most masters pass every step: all inputs, all outputs, in order.
-        self.all_inputs = list(self.inputs)
-        self.all_outputs = list(range(self.first_output, len(self.names)))
+from .references import References
 
 
 class SlaveCore:

@@ -16,8 +16,9 @@ from pythonfmu import Fmi2Causality, Fmi2Slave, Fmi2Variability, Real
 from pythonfmu.default_experiment import DefaultExperiment
 from pythonfmu.enums import Fmi2Initial, Fmi2Status
 
-from .core import SlaveCore, log_categories
+from .core import SlaveCore
 from .model_description import complete
+from .references import log_categories
 
 
 class CardanJointSlave(SlaveCore, Fmi2Slave):

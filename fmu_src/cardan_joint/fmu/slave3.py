@@ -24,8 +24,9 @@ from pythonfmu3.fmi3slave import Fmi3StepResult
 from pythonfmu3.variables import Dimension
 
 from .. import variables as table
-from .core import References, SlaveCore, log_categories
+from .core import SlaveCore
 from .model_description3 import complete
+from .references import References, log_categories
 
 TIME_REFERENCE = 0
 GROUPS = table.fmi3_variables()

@@ -19,7 +19,7 @@ checks are the joint's (`values.ValueChecks`).
 import math
 
 from ..driveline_variables import LOAD, MOTOR
-from ..variables import VariableTable
+from ..variable_schema import VariableTable
 from .refusal import Reason, Refusal
 from .values import ValueChecks, bounds, value_ranges
 

@@ -11,7 +11,7 @@ FMU maps its variables onto this object.
 from operator import itemgetter
 
 from .. import variables as table
-from ..variables import Variable
+from ..variable_schema import Variable
 from .refusal import Reason, Refusal
 
 # The kernel itself: the FMU's once-per-step call on floats skips the array dispatch.

@@ -13,6 +13,7 @@ from dataclasses import dataclass, field
 from enum import Enum
 
 from .. import variables as table
+from ..units import RAD_TO_DEG
 
 
 class Reason(str, Enum):
@@ -148,7 +149,7 @@ class Refusal:
         def render(match):
             value = fields[match.group(1)]
             if match.group(0).endswith(":deg}"):
-                return f"{value * table.DEG:.6g}"
+                return f"{value * RAD_TO_DEG:.6g}"
             return repr(float(value)) if isinstance(value, (int, float)) else value
 
         return _PLACEHOLDER.sub(render, _TEMPLATES[self.code])

@@ -6,7 +6,7 @@ import math
 from collections.abc import Iterator, Mapping
 from typing import Protocol
 
-from ..variables import Variable
+from ..variable_schema import Variable
 from .refusal import Reason, Refusal, crossed_limit
 from .revolutions import RevolutionAngle, advance
 

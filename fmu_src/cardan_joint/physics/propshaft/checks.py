@@ -17,15 +17,13 @@ linearly (our choice, the maker publishes points); outside them the report says
 so instead of inventing a limit.
 """
 
-import math
 from typing import NamedTuple
 
+from ...units import DEG_TO_RAD, RAD_PER_S_TO_RPM, RAD_TO_DEG
 from .fluctuation import equivalent_angle, speed_ratio_fluctuation
 
-DEG = 180.0 / math.pi
-RPM = 30.0 / math.pi
-MIN_WORKING_ANGLE = 0.5 / DEG
-EQUAL_WITHIN = 1.0 / DEG
+MIN_WORKING_ANGLE = 0.5 * DEG_TO_RAD
+EQUAL_WITHIN = 1.0 * DEG_TO_RAD
 FLUCTUATION_LIMIT = 0.0027
 # (driveshaft rpm, maximum operating angle in deg), Spicer's table.
 MAX_ANGLE_TABLE = ((3500.0, 5.0), (4000.0, 4.2), (4500.0, 3.7), (5000.0, 3.2))
@@ -42,7 +40,7 @@ class AngleReport(NamedTuple):
 
 def max_operating_angle(speed: float):
     """(limit in rad or None, how it was found) for a driveshaft speed in rad/s."""
-    rpm = abs(speed) * RPM
+    rpm = abs(speed) * RAD_PER_S_TO_RPM
     (low_rpm, low_deg), (high_rpm, high_deg) = MAX_ANGLE_TABLE[0], MAX_ANGLE_TABLE[-1]
     if rpm > high_rpm:
         # The limit falls with speed: above the table it is below the last entry.
@@ -58,7 +56,10 @@ def max_operating_angle(speed: float):
     for (r0, a0), (r1, a1) in zip(MAX_ANGLE_TABLE, MAX_ANGLE_TABLE[1:]):
         if r0 <= rpm <= r1:
             limit = a0 + (a1 - a0) * (rpm - r0) / (r1 - r0)
-            return limit / DEG, f"{limit:.3g} deg at {rpm:.0f} rpm (linear between table rows)"
+            return (
+                limit * DEG_TO_RAD,
+                f"{limit:.3g} deg at {rpm:.0f} rpm (linear between table rows)",
+            )
     raise AssertionError("unreachable: the table covers [first, last]")
 
 
@@ -69,24 +70,26 @@ def angle_warnings(working_angles, fluctuation, speed):
     for k, beta in enumerate(working_angles, start=1):
         if beta < MIN_WORKING_ANGLE:
             warnings.append(
-                f"joint {k} working angle {beta * DEG:.3f} deg is below 0.5 deg: "
+                f"joint {k} working angle {beta * RAD_TO_DEG:.3f} deg is below 0.5 deg: "
                 f"its needle bearings do not rotate (Spicer rule 1)"
             )
     for k in range(1, len(working_angles)):
         first, second = working_angles[k - 1], working_angles[k]
         if abs(first - second) > EQUAL_WITHIN:
             warnings.append(
-                f"shaft {k}: working angles {first * DEG:.3f} deg (joint {k}) and "
-                f"{second * DEG:.3f} deg (joint {k + 1}) differ by more than "
+                f"shaft {k}: working angles {first * RAD_TO_DEG:.3f} deg (joint {k}) and "
+                f"{second * RAD_TO_DEG:.3f} deg (joint {k + 1}) differ by more than "
                 f"1 deg (Spicer rule 2)"
             )
     limit, how = max_operating_angle(speed)
     largest = max(working_angles)
-    if limit is None and abs(speed) * RPM > MAX_ANGLE_TABLE[-1][0]:
-        warnings.append(f"operating speed {how}; largest working angle {largest * DEG:.3f} deg")
+    if limit is None and abs(speed) * RAD_PER_S_TO_RPM > MAX_ANGLE_TABLE[-1][0]:
+        warnings.append(
+            f"operating speed {how}; largest working angle {largest * RAD_TO_DEG:.3f} deg"
+        )
     elif limit is not None and largest > limit:
         warnings.append(
-            f"working angle {largest * DEG:.3f} deg exceeds the maximum operating "
+            f"working angle {largest * RAD_TO_DEG:.3f} deg exceeds the maximum operating "
             f"angle {how} (Spicer's table)"
         )
     if fluctuation > FLUCTUATION_LIMIT:

@@ -1,0 +1,85 @@
+"""What a variable table is made of: units, variables and a model's table.
+
+Pure data types with the lookups every wrapper needs (FMI 2 and FMI 3
+registration, model descriptions, README tables); the tables themselves are
+`variables` (the UniversalJoint), `propshaft_variables` and
+`driveline_variables`. No FMI import: the physics reads its defaults from them.
+"""
+
+from collections.abc import Mapping
+from dataclasses import dataclass
+
+_IN, _PAR, _OUT = "input", "parameter", "output"
+
+
+@dataclass(frozen=True)
+class Unit:
+    name: str
+    exponents: tuple  # ((base unit, exponent), ...) of FMI's BaseUnit
+    display: tuple = ()  # ((display unit, factor), ...): display = factor * value
+
+
+@dataclass(frozen=True)
+class Variable:
+    name: str
+    causality: str  # "input", "parameter" or "output"
+    unit: str
+    description: str
+    start: float | None = None
+    display_unit: str | None = None
+    min: float | None = None
+    max: float | None = None
+    depends_on: tuple = ()  # outputs only
+
+    @property
+    def variability(self) -> str:
+        return "fixed" if self.causality == "parameter" else "continuous"
+
+    @property
+    def initial(self) -> str | None:
+        return {"parameter": "exact", "output": "calculated"}.get(self.causality)
+
+
+class VariableTable:
+    """One model's variables with the lookups every wrapper needs. The module
+    `variables` is itself the UniversalJoint's table (same attribute names);
+    other models build one (e.g. `propshaft_variables.propshaft_table`)."""
+
+    def __init__(self, variables, units: Mapping[str, Unit]):
+        """`units`: the unit definitions (name -> Unit) its description declares."""
+        self.VARIABLES = tuple(variables)
+        self.BY_NAME = {v.name: v for v in self.VARIABLES}
+        self.INPUTS = _names(self.VARIABLES, _IN)
+        self.PARAMETERS = _names(self.VARIABLES, _PAR)
+        self.OUTPUTS = _names(self.VARIABLES, _OUT)
+        self.UNITS = dict(units)
+
+    def start_values(self) -> dict:
+        return start_values(self.VARIABLES)
+
+    def markdown_table(self) -> str:
+        return markdown_table(self.VARIABLES)
+
+
+def _names(variables, causality):
+    return tuple(v.name for v in variables if v.causality == causality)
+
+
+def start_values(variables) -> dict:
+    return {v.name: v.start for v in variables if v.start is not None}
+
+
+def markdown_table(variables) -> str:
+    """A README's variable table (a test keeps each README in step with its table)."""
+    rows = [
+        "| name | causality | unit (display) | start | range | description |",
+        "|---|---|---|---|---|---|",
+    ]
+    for v in variables:
+        unit = v.unit + (f" ({v.display_unit})" if v.display_unit else "")
+        start = "" if v.start is None else f"{v.start:.6g}"
+        low = "" if v.min is None else f"{v.min:.6g}"
+        high = "" if v.max is None else f"{v.max:.6g}"
+        span = f"[{low}, {high}]" if (low or high) else ""
+        rows.append(f"| `{v.name}` | {v.causality} | {unit} | {start} | {span} | {v.description} |")
+    return "\n".join(rows) + "\n"

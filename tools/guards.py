@@ -1,0 +1,379 @@
+"""The guards the mutation run disables (tools/mutation.py): for each, the
+text that is the guard in its file, what replaces it, and the tests that must
+notice. tests/test_mutation_list.py checks that each target text occurs exactly
+once, so a refactor cannot orphan a guard."""
+
+import difflib
+import sys
+from dataclasses import dataclass
+from pathlib import Path
+
+ROOT = Path(__file__).resolve().parents[1]
+sys.path.insert(0, str(ROOT / "fmu_src"))
+from cardan_joint import variables as table  # noqa: E402
+
+COPIED = ("fmu_src", "tests", "build_fmu.py", "pyproject.toml", "README.md")
+RESTORED = (
+    "        values = {name: float(state[name]) "
+    "for name in self.table.INPUTS + self.table.PARAMETERS}\n"
+)
+MODEL = "fmu_src/cardan_joint/physics/model.py"
+VALUES = "fmu_src/cardan_joint/physics/values.py"
+SLAVE = "fmu_src/cardan_joint/fmu/slave.py"
+CORE = "fmu_src/cardan_joint/fmu/core.py"
+GUARDS = "tests/test_guards.py"
+SLAVE_GUARDS = "tests/test_slave_guards.py"
+ROBUSTNESS = "tests/test_robustness.py"
+
+
+@dataclass(frozen=True)
+class Mutation:
+    guard: str
+    path: str
+    target: str  # must occur exactly once in `path`
+    replacement: str
+    tests: tuple  # pytest arguments: the tests expected to catch it
+
+    @property
+    def what(self):
+        """The changed lines only: `removed` -> `added`."""
+        diff = list(difflib.ndiff(self.target.splitlines(), self.replacement.splitlines()))
+        removed = " ".join(line[2:].strip() for line in diff if line.startswith("- "))
+        added = " ".join(line[2:].strip() for line in diff if line.startswith("+ "))
+        return f"`{removed}` -> `{added}`" if removed else f"insert `{added}`"
+
+
+FINITE_LOOP = (
+    "        for name in names:\n            value = getattr(self, name)\n"
+    "            if not math.isfinite(value):"
+)
+INPUT_RANGES = '_INPUT_RANGES = _ranges(table.INPUTS, "bend_angle")'
+PARAMETER_RANGES = '_PARAMETER_RANGES = _ranges(table.PARAMETERS, "max_bend_angle")'
+RANGED_INPUTS = (
+    "input_speed",
+    "input_acceleration",
+    "bend_angle_rate",
+    "bend_angle_acceleration",
+    "load_torque",
+)
+RANGED_PARAMETERS = (
+    "yoke_phase",
+    "input_angle_start",
+    "crosspiece_inertia_1",
+    "crosspiece_inertia_2",
+    "crosspiece_inertia_3",
+)
+ALL_INPUTS = table.INPUTS
+PARAMETERS = RANGED_PARAMETERS + ("max_bend_angle",)
+FAST_PATH = {
+    "input_speed": "abs(self.input_speed) <= _SPEED_LIMIT",
+    "input_acceleration": "abs(self.input_acceleration) <= _ACCELERATION_LIMIT",
+    "bend_angle_rate": "abs(rate) <= _RATE_LIMIT",
+    "bend_angle_acceleration": "abs(acc) <= _BEND_ACCELERATION_LIMIT",
+    "load_torque": "abs(self.load_torque) <= _LOAD_LIMIT",
+}
+PEAK_TESTS = (GUARDS, SLAVE_GUARDS, "-k", "peak")
+
+
+def _skip(name):
+    return FINITE_LOOP.replace(
+        "for name in names:", f"for name in [n for n in names if n != {name!r}]:"
+    )
+
+
+MUTATIONS = (
+    # Inputs: finiteness and range, each variable alone, in the slow path and the fast path.
+    *(
+        Mutation(
+            f"input {n} finite", VALUES, FINITE_LOOP, _skip(n), (GUARDS, "-k", "non_finite_input")
+        )
+        for n in ALL_INPUTS
+    ),
+    *(
+        Mutation(
+            f"input {n} range (slow path)",
+            MODEL,
+            INPUT_RANGES,
+            INPUT_RANGES.replace('"bend_angle"', f'"bend_angle", {n!r}'),
+            (GUARDS, "-k", "input"),
+        )
+        for n in RANGED_INPUTS
+    ),
+    *(
+        Mutation(
+            f"input {n} range (fast path)", MODEL, FAST_PATH[n], "True", (GUARDS, "-k", "input")
+        )
+        for n in RANGED_INPUTS
+    ),
+    Mutation(
+        "inputs: any bad value (slow path)",
+        MODEL,
+        "self._value_problem(table.INPUTS, _INPUT_RANGES)",
+        "None",
+        (GUARDS, "-k", "input"),
+    ),
+    # Parameters, checked once per start.
+    *(
+        Mutation(
+            f"parameter {n} finite", VALUES, FINITE_LOOP, _skip(n), (GUARDS, "-k", "parameter")
+        )
+        for n in PARAMETERS
+    ),
+    *(
+        Mutation(
+            f"parameter {n} range",
+            MODEL,
+            PARAMETER_RANGES,
+            PARAMETER_RANGES.replace('"max_bend_angle"', f'"max_bend_angle", {n!r}'),
+            (GUARDS, "-k", "parameter"),
+        )
+        for n in RANGED_PARAMETERS
+    ),
+    Mutation(
+        "parameter max_bend_angle in (0, pi/2)",
+        MODEL,
+        "if not 0.0 < guard < table.HALF_PI:",
+        "if False:",
+        (GUARDS, "-k", "max_bend_angle"),
+    ),
+    Mutation(
+        "bad parameters refuse every step",
+        VALUES,
+        "if self.parameter_fault:\n            return self.parameter_fault.at(self.time)",
+        "if False:\n            return self.parameter_fault.at(self.time)",
+        (GUARDS, "-k", "parameter or max_bend_angle"),
+    ),
+    Mutation(
+        "bad input_angle_start not used as the start angle",
+        MODEL,
+        "split_angle(self.input_angle_start if valid else 0.0)",
+        "split_angle(self.input_angle_start)",
+        (GUARDS, "-k", "parameter"),
+    ),
+    Mutation(
+        "bad yoke_phase not used as the phase",
+        MODEL,
+        "split_angle(self.yoke_phase if valid else 0.0)",
+        "split_angle(self.yoke_phase)",
+        (GUARDS, "-k", "parameter"),
+    ),
+    # The bend angle: now, at the step's end, at the peak inside the step; both paths.
+    Mutation(
+        "bend angle now (fast path)",
+        MODEL,
+        "and abs(beta) < guard",
+        "and True",
+        (GUARDS, "-k", "bend"),
+    ),
+    Mutation(
+        "bend angle at step end (fast path)",
+        MODEL,
+        "abs(beta + step_size * (rate + 0.5 * acc * step_size)) < guard",
+        "True",
+        (GUARDS, "-k", "bend"),
+    ),
+    Mutation(
+        "bend peak inside the step (fast path)",
+        MODEL,
+        "(rate * acc >= 0.0 or -rate / acc >= step_size)",
+        "True",
+        PEAK_TESTS,
+    ),
+    Mutation(
+        "bend angle now (slow path)",
+        MODEL,
+        "candidates = [(Reason.BEND_ANGLE, 0.0, beta)]",
+        "candidates = [(Reason.BEND_ANGLE, 0.0, 0.0)]",
+        (GUARDS, "-k", "bend"),
+    ),
+    Mutation(
+        "bend angle at step end (slow path)",
+        MODEL,
+        "                    Reason.BEND_AT_STEP_END,\n"
+        "                    step_size,\n"
+        "                    beta + step_size * (rate + 0.5 * acc * step_size),\n",
+        "                    Reason.BEND_AT_STEP_END,\n                    step_size,\n"
+        "                    beta,\n",
+        (GUARDS, "-k", "bend"),
+    ),
+    Mutation(
+        "bend peak inside the step (slow path)",
+        MODEL,
+        "if acc != 0.0 and 0.0 < -rate / acc < step_size:",
+        "if False:",
+        PEAK_TESTS,
+    ),
+    Mutation(
+        "bend angle against max_bend_angle (slow path)",
+        MODEL,
+        "if abs(worst) >= guard:",
+        "if False:",
+        (GUARDS, "-k", "bend"),
+    ),
+    Mutation(
+        "bend angle marks its outputs invalid",
+        MODEL,
+        "if not abs(self.bend_angle) < self.max_bend_angle:",
+        "if False:",
+        (GUARDS, "-k", "bend"),
+    ),
+    # The step itself.
+    Mutation(
+        "step size finite",
+        VALUES,
+        "if not (math.isfinite(step_size) and step_size > 0.0):",
+        "if not (step_size > 0.0):",
+        (GUARDS, "-k", "step_size"),
+    ),
+    Mutation(
+        "step size positive",
+        VALUES,
+        "if not (math.isfinite(step_size) and step_size > 0.0):",
+        "if not (math.isfinite(step_size)):",
+        (GUARDS, "-k", "step_size"),
+    ),
+    Mutation(
+        "angle overflow",
+        VALUES,
+        "if not abs(increment) <= MAX_INCREMENT:",
+        "if False:",
+        (GUARDS, "-k", "beyond_float_precision"),
+    ),
+    Mutation(
+        "speed at the step's end",
+        VALUES,
+        "if not abs(speed + acceleration * h) <= speed_limit:",
+        "if False:",
+        (GUARDS, "-k", "speed_range"),
+    ),
+    Mutation(
+        "restore: all or nothing",
+        VALUES,
+        RESTORED,
+        RESTORED
+        + "        for name, value in values.items():\n            setattr(self, name, value)\n",
+        (GUARDS, SLAVE_GUARDS, "-k", "state"),
+    ),
+    # The motor's own guard (its value checks are the ones above).
+    Mutation(
+        "motor: rotor speed at the step's end",
+        "fmu_src/cardan_joint/physics/driveline.py",
+        "if not abs(speed) <= self._SPEED_LIMIT:",
+        "if False:",
+        ("tests/test_driveline.py", "tests/test_refusal.py", "-k", "unusable_inputs or reads_back"),
+    ),
+    # The slave: what the FMU does with a refusal, illegal calls, states.
+    Mutation(
+        "slave: refused step returns Discard",
+        CORE,
+        "            if problem:\n                model.time = time\n",
+        "            if False:\n                model.time = time\n",
+        (SLAVE_GUARDS, "-k", "step"),
+    ),
+    Mutation(
+        "slave: refused step leaves the clock",
+        CORE,
+        "                model.time = time\n                self._report(",
+        "                self._report(",
+        (f"{ROBUSTNESS}::test_a_refused_step_leaves_the_clock_alone",),
+    ),
+    Mutation(
+        "slave: invalid inputs hold outputs",
+        CORE,
+        "            if problem:\n                self._report(\n"
+        "                    f\"{problem.at(model.time).message}; outputs that depend on it \"",
+        "            if False:\n                self._report(\n"
+        "                    f\"{problem.at(model.time).message}; outputs that depend on it \"",
+        (SLAVE_GUARDS, "-k", "held"),
+    ),
+    Mutation(
+        "slave: held outputs follow the declared dependencies",
+        CORE,
+        "live[i] if dependencies & invalid else fresh[i]",
+        "fresh[i]",
+        (f"{ROBUSTNESS}::test_invalid_load_holds_only_the_outputs_that_depend_on_it",),
+    ),
+    Mutation(
+        "slave: bad parameters are an error at initialization",
+        CORE,
+        "            problem = self._model.parameter_fault\n            if problem:",
+        "            problem = self._model.parameter_fault\n            if False:",
+        (SLAVE_GUARDS, "-k", "initialization"),
+    ),
+    Mutation(
+        "slave: set on an output or unknown reference",
+        CORE,
+        "if not 0 <= i < refs.first_output:",
+        "if False:",
+        (SLAVE_GUARDS, "-k", "setting"),
+    ),
+    Mutation(
+        "slave: parameter set after initialization",
+        CORE,
+        "elif self._initialized:",
+        "elif False:",
+        (SLAVE_GUARDS, "-k", "after_initialization"),
+    ),
+    Mutation(
+        "slave: get of an unknown reference",
+        SLAVE,
+        "            if bad:\n",
+        "            if False:\n",
+        (SLAVE_GUARDS, "-k", "unknown_reference"),
+    ),
+    *(
+        Mutation(
+            f"slave: {call} on the Real-only FMU",
+            SLAVE,
+            f"def {call}(self, vrs",
+            f"def _unused_{call}(self, vrs",
+            (SLAVE_GUARDS, "-k", "other_variable_types"),
+        )
+        for call in (
+            "get_integer",
+            "get_boolean",
+            "get_string",
+            "set_integer",
+            "set_boolean",
+            "set_string",
+        )
+    ),
+    Mutation(
+        "slave: a marked invalid state",
+        CORE,
+        'if "invalid_state" in state:',
+        "if False:",
+        (SLAVE_GUARDS, "-k", "state"),
+    ),
+    Mutation(
+        "slave: a state of another version",
+        CORE,
+        "if len(held_outputs) != len(self.table.OUTPUTS) or len(held_inputs) != len(\n"
+        "                self.table.INPUTS\n"
+        "            ):",
+        "if False:",
+        (SLAVE_GUARDS, "-k", "state"),
+    ),
+    Mutation(
+        "slave: deserialized bytes that are no dict",
+        CORE,
+        "if not isinstance(state, dict):",
+        "if False:",
+        (SLAVE_GUARDS, "-k", "state"),
+    ),
+    Mutation(
+        "slave: deserialized bytes that are no JSON",
+        CORE,
+        'return {"invalid_state": reason}',
+        "raise",
+        (SLAVE_GUARDS, "-k", "state"),
+    ),
+    # The build, called as a library: the caller's sys.modules as it was.
+    Mutation(
+        "build: drops its staged modules",
+        "fmu_src/cardan_joint/build.py",
+        "n.split(\".\")[0] in (package_dir.name,",
+        "n.split(\".\")[0] in (package_dir.name + \"_\",",
+        ("tests/test_build.py",),
+    ),
+)
