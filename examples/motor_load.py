@@ -24,6 +24,7 @@ from cardan_joint import results
 from cardan_joint.plotting import save_figure
 from cardan_joint.simulate import DEFAULT_FMU
 
+# (A keyword dict like tests/test_robustness.py's inputs: alike in shape only.)
 DEFAULTS = dict(
     bend_angle=math.radians(30.0),
     yoke_phase=0.0,

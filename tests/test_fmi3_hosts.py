@@ -36,6 +36,8 @@ def test_simulate_with_input_signals_matches_fmi2(fmu_path, fmi3_path):
     np.testing.assert_array_equal(plain["crosspiece_torque"], runs[1]["crosspiece_torque"])
 
 
+# The FMI 2.0 counterpart, alike in shape: test_refusal.py's
+# test_simulate_raises_the_refusal_with_its_fields.
 def test_simulate_raises_with_the_message_and_the_result_so_far(fmi3_path):
     signal = np.array(
         [(0.0, 0.3), (0.2, 0.3), (0.2, 1.5), (0.5, 1.5)],

@@ -185,6 +185,8 @@ def test_a_working_angle_at_the_limit_refuses_every_step_and_says_why(
         shaft.close()
 
 
+# Same open/step/close shape as tests/test_robustness.py's refusal tests (duplicates
+# tool): each drives its own FMU, and the shared part is JointInstance already.
 def test_a_non_finite_input_is_refused_and_loses_nothing(description, propshaft_unzipped):
     messages = []
     shaft = JointInstance(description, propshaft_unzipped, messages=messages)

@@ -83,6 +83,7 @@ class Propshaft(ValueChecks, SavedState):
         problem = self._value_problem(self.table.PARAMETERS, self._parameter_ranges)
         if problem:
             return problem
+        # Built like values.ValueChecks' refusals (one Refusal call per reason).
         for name in self._sides + self._tops:
             value = getattr(self, name)
             if not abs(value) < HALF_PI:
