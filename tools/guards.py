@@ -235,6 +235,13 @@ MUTATIONS = (
     Mutation(
         "angle overflow",
         VALUES,
+        "if abs(increment) <= MAX_INCREMENT and abs(end_speed) <= speed_limit:",
+        "if abs(end_speed) <= speed_limit:",
+        (GUARDS, "-k", "beyond_float_precision"),
+    ),
+    Mutation(
+        "angle overflow named as such",
+        VALUES,
         "if not abs(increment) <= MAX_INCREMENT:",
         "if False:",
         (GUARDS, "-k", "beyond_float_precision"),
@@ -242,8 +249,8 @@ MUTATIONS = (
     Mutation(
         "speed at the step's end",
         VALUES,
-        "if not abs(speed + acceleration * h) <= speed_limit:",
-        "if False:",
+        "if abs(increment) <= MAX_INCREMENT and abs(end_speed) <= speed_limit:",
+        "if abs(increment) <= MAX_INCREMENT:",
         (GUARDS, "-k", "speed_range"),
     ),
     Mutation(

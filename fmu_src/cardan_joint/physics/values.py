@@ -121,22 +121,17 @@ def advance_input(
     """(new angle, new speed) after `h` s at constant acceleration, or the
     Refusal of a step that would overflow."""
     increment = h * (speed + 0.5 * acceleration * h)
+    end_speed = speed + acceleration * h
+    if abs(increment) <= MAX_INCREMENT and abs(end_speed) <= speed_limit:  # once per step
+        return advance(angle, increment), end_speed
     overflow = {"input_speed": speed, "input_acceleration": acceleration, "step_size": h}
     if not abs(increment) <= MAX_INCREMENT:
         return Refusal(
             Reason.ANGLE_OVERFLOW, "input_angle", increment, MAX_INCREMENT, time, "rad", overflow
         )
-    if not abs(speed + acceleration * h) <= speed_limit:
-        return Refusal(
-            Reason.SPEED_OVERFLOW,
-            "input_speed",
-            speed + acceleration * h,
-            speed_limit,
-            time,
-            "rad/s",
-            overflow,
-        )
-    return advance(angle, increment), speed + acceleration * h
+    return Refusal(
+        Reason.SPEED_OVERFLOW, "input_speed", end_speed, speed_limit, time, "rad/s", overflow
+    )
 
 
 class SavedState:
