@@ -41,6 +41,7 @@ from .timing import ROOT, machine
 from .vectorized import vector_rows, vectorized, worker_scalar, worker_trigonometry, worker_vector
 
 DEFAULT_OUTPUT = ROOT / "benchmarks" / "results.md"
+QUICK_OUTPUT = ROOT / "results" / "benchmarks_quick.md"
 COMMAND = "python -m benchmarks"
 
 
@@ -174,8 +175,9 @@ def main(argv=None):
     parser.add_argument(
         "--output",
         type=Path,
-        default=DEFAULT_OUTPUT,
-        help="markdown file to write (default: benchmarks/results.md)",
+        default=None,
+        help="markdown file to write (default: benchmarks/results.md; with --quick, "
+        f"{QUICK_OUTPUT.relative_to(ROOT)}: a smoke run never replaces the measured tables)",
     )
     parser.add_argument(
         "--fmu", type=Path, help="a built UniversalJoint.fmu (default: build the working tree's)"
@@ -190,9 +192,16 @@ def main(argv=None):
     with tempfile.TemporaryDirectory(prefix="cardan_benchmarks_") as workdir:
         results = run_all(sizes, args.fmu, Path(workdir))
     text = report(results, sizes, args.quick, time.perf_counter() - started)
-    print(text)
-    args.output.parent.mkdir(parents=True, exist_ok=True)
-    args.output.write_text(text)
+    output = args.output or (QUICK_OUTPUT if args.quick else DEFAULT_OUTPUT)
+    if args.quick:
+        print(
+            f"quick run: every benchmark ran on tiny sizes (its numbers measure nothing); "
+            f"tables in {output}"
+        )
+    else:
+        print(text)
+    output.parent.mkdir(parents=True, exist_ok=True)
+    output.write_text(text)
     return 0
 
 
