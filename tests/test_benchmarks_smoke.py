@@ -45,7 +45,8 @@ def test_quick_run_writes_every_row(fmu_path, tmp_path):
     )
     assert run.returncode == 0, run.stdout + run.stderr
     text = output.read_text()
-    assert text.strip() == run.stdout.strip()  # printed and written alike
+    # A quick run says where its tables went instead of printing numbers that measure nothing.
+    assert run.stdout.strip().endswith(f"tables in {output}")
     lines = text.splitlines()
     assert "| benchmark | result | goal | met |" in lines
     for row in SUMMARY_ROWS:

@@ -99,6 +99,8 @@ def test_simulate_raises_the_refusal_with_its_fields(fmu_path):
         simulate(fmu_path, stop_time=1.0, output_interval=0.1, inputs=u)
     e = error.value
     assert isinstance(e, SimulationError) and e.result["time"][-1] == 0.5 and e.messages
+    # One row per time, the last one the good point (not the refused inputs).
+    assert np.all(np.diff(e.result["time"]) > 0)
     assert (e.variable, e.value, e.limit, e.time, e.code, e.unit) == (
         "bend_angle",
         1.5,

@@ -95,6 +95,15 @@ def flat_columns(result: np.ndarray) -> np.ndarray:
     return flat
 
 
+def _without_repeated_end(result: np.ndarray) -> np.ndarray:
+    """A refused FMI 2.0 run's result without the row FMPy adds at the refusal's
+    time: it pairs the refused inputs with the held outputs of the row before."""
+    end = len(result)
+    while end > 1 and result["time"][end - 1] <= result["time"][end - 2]:
+        end -= 1
+    return result[:end]
+
+
 def simulate(
     fmu: str | Path = DEFAULT_FMU,
     stop_time: float | None = None,
@@ -180,6 +189,7 @@ def simulate(
             or "(the FMU gave no reason)"
         )
         text = f"the FMU stopped at t = {reached!r} s of {stop_time!r} s:\n  {detail}"
+        result = _without_repeated_end(result)
         refusal = first_refusal(text for _, _, text in problems)
         if refusal is None:
             raise SimulationError(text, messages, result)

@@ -119,8 +119,10 @@ class SlaveCore:
             if problem:
                 model.time = time
                 self._report(
-                    f"{problem.message}; step of {step_size!r} s refused, the "
-                    f"{self.owner} stays at t = {current_time!r} s",
+                    # 12 digits: a master's step sizes and clocks carry float noise
+                    # (0.0010000000000000009); the refusal itself keeps repr for exactness.
+                    f"{problem.message}; step of {step_size:.12g} s refused, the "
+                    f"{self.owner} stays at t = {current_time:.12g} s",
                     self._STATUS.discard,
                 )
                 return self._STATUS.discard
