@@ -14,7 +14,7 @@ leave a fluctuation, and the phasing the helper returns (the angle between the
 joint planes) cancels it.
 
     python build_fmu.py --model Propshaft && python examples/propshaft_layout.py
-        -> docs/img/propshaft_layout.png (--out to write elsewhere)
+        -> results/propshaft_layout.png (the README's figure: --out docs/img)
 """
 
 import math
@@ -83,7 +83,7 @@ def plot(before, after, phase, path):
 
 
 def main(argv=None):
-    parser = example_parser(__doc__, default_out=str(Path("docs") / "img"))
+    parser = example_parser(__doc__)
     parser.set_defaults(fmu=str(Path("dist") / "Propshaft.fmu"))
     args = parser.parse_args(argv)
     out = output_folder(args)

@@ -1,5 +1,6 @@
 """The `cardan-joint` command, run as a user runs it (separate processes)."""
 
+import re
 import subprocess
 import sys
 from pathlib import Path
@@ -181,8 +182,8 @@ def test_a_refused_run_writes_what_it_computed_and_says_where_it_stopped(built_f
 def test_an_overwritten_output_is_named_as_replaced(built_fmu, tmp_path):
     out = tmp_path / "again.csv"
     args = ("simulate", "--fmu", built_fmu, "--stop-time", "0.01", "--output", out)
-    assert "(replaced)" not in cardan_joint(*args).stdout
-    assert f"{out} (replaced)" in cardan_joint(*args).stdout
+    assert "replaced" not in cardan_joint(*args).stdout
+    assert re.search(rf"{re.escape(str(out))} \(\d+ rows, replaced\)", cardan_joint(*args).stdout)
 
 
 def test_every_option_has_help():

@@ -383,4 +383,29 @@ MUTATIONS = (
         "n.split(\".\")[0] in (package_dir.name + \"_\",",
         ("tests/test_build.py",),
     ),
+    # Plumbing that keeps a user's result and messages clean.
+    Mutation(
+        "simulate: a refused run ends at its last good point",
+        "fmu_src/cardan_joint/simulate.py",
+        "        result = _without_repeated_end(result)\n",
+        "",
+        ("tests/test_refusal.py", "-k", "simulate_raises"),
+    ),
+    Mutation(
+        "sweep: Dask missing names its extra",
+        "fmu_src/cardan_joint/sweep/command.py",
+        "    if not args.serial:\n        try:\n            require(",
+        "    if False:\n        try:\n            require(",
+        ("tests/test_extras.py", "-k", "sweep"),
+    ),
+    Mutation(
+        "cosim: libcosimpy missing names its extra",
+        "fmu_src/cardan_joint/cosim.py",
+        '    require("libcosimpy", "cosim", "running in libcosim")\n'
+        "    from libcosimpy.CosimExecution import CosimExecution\n"
+        "    from libcosimpy.CosimLogging import CosimLogLevel, log_output_level\n\n",
+        "    from libcosimpy.CosimExecution import CosimExecution\n"
+        "    from libcosimpy.CosimLogging import CosimLogLevel, log_output_level\n\n",
+        ("tests/test_extras.py", "-k", "libcosim_runs"),
+    ),
 )

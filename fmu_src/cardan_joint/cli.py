@@ -34,8 +34,9 @@ SWEEP_NAME = "sweep"
 # --- simulate: output -------------------------------------------------------
 
 
-def _written(path: Path, existed: bool) -> str:
-    return f"{path} (replaced)" if existed else str(path)
+def _written(path: Path, existed: bool, detail: str = "") -> str:
+    notes = ", ".join(note for note in (detail, "replaced" if existed else "") if note)
+    return f"{path} ({notes})" if notes else str(path)
 
 
 def write_outputs(result, output: Path, plot: Path, names, title) -> str:
@@ -47,10 +48,10 @@ def write_outputs(result, output: Path, plot: Path, names, title) -> str:
 
         plot_time_series(result, names, plot, title)
         return (
-            f"{_written(output, existed[output])} ({len(result)} rows) and "
+            f"{_written(output, existed[output], f'{len(result)} rows')} and "
             f"{_written(plot, existed[plot])}"
         )
-    return f"{_written(output, existed[output])} (no rows)"
+    return _written(output, existed[output], "no rows: no plot")
 
 
 def _progress_callback(stop_time, step, show):

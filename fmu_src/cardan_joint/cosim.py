@@ -46,6 +46,8 @@ from typing import Any
 
 import numpy as np
 
+from .extras import require
+
 _NS = 1_000_000_000
 
 
@@ -158,6 +160,7 @@ def run_libcosim(
     number of steps. Returns ``{"time": t, name: values, ...}`` with
     ``round(stop_time / step_size) + 1`` samples starting at t = 0.
     """
+    require("libcosimpy", "cosim", "running in libcosim")
     from libcosimpy.CosimExecution import CosimExecution
     from libcosimpy.CosimLogging import CosimLogLevel, log_output_level
     from libcosimpy.CosimSlave import CosimLocalSlave
@@ -179,18 +182,23 @@ def run_libcosim(
     return result
 
 
-def run_libcosim_ssp(ssp_path, stop_time, step_size, outputs: list[str]) -> dict[str, np.ndarray]:
+def run_libcosim_ssp(
+    ssp_path, stop_time, step_size, outputs: list[str], log_level: str = "warning"
+) -> dict[str, np.ndarray]:
     """Simulate the SSP archive ``ssp_path`` in libcosim with its own connections and
     component-level parameter bindings (libcosim ignores system-level ones).
 
     ``outputs`` are "Component.variable" names; the result has them and "time",
     ``round(stop_time / step_size) + 1`` samples from t = 0 as in ``run_libcosim``.
+    ``log_level`` ("error" for runs whose FMU warnings are expected) is libcosim's
+    process-wide stderr level.
     """
+    require("libcosimpy", "cosim", "running in libcosim")
     from libcosimpy.CosimExecution import CosimExecution
     from libcosimpy.CosimLogging import CosimLogLevel, log_output_level
 
     step_ns, n_steps = _steps(stop_time, step_size)
-    log_output_level(CosimLogLevel.WARNING)
+    log_output_level(CosimLogLevel[log_level.upper()])
     execution = CosimExecution.from_ssp_file(str(Path(ssp_path).resolve()), step_size=step_ns)
     _check(execution.num_slaves() > 0, f"loading {ssp_path}")
     observed = {}

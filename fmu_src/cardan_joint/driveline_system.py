@@ -149,11 +149,11 @@ def run_fmpy(ssp_path, stop_time: float, step_size: float) -> dict:
     return rows
 
 
-def run_libcosim(ssp_path, stop_time: float, step_size: float) -> dict:
+def run_libcosim(ssp_path, stop_time: float, step_size: float, log_level="warning") -> dict:
     """OSP libcosim on the same SSP; samples from t = 0 (initial outputs) on."""
     from .cosim import run_libcosim_ssp
 
-    return run_libcosim_ssp(ssp_path, stop_time, step_size, RECORDED)
+    return run_libcosim_ssp(ssp_path, stop_time, step_size, RECORDED, log_level)
 
 
 def host_difference(fmpy_rows: dict, libcosim_rows: dict, keys=RECORDED) -> dict:

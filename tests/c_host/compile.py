@@ -26,3 +26,11 @@ def compile_host(output: Path) -> Path:
         check=True,
     )
     return output
+
+
+if __name__ == "__main__":
+    import sys
+
+    if len(sys.argv) != 2:
+        sys.exit("usage: python tests/c_host/compile.py OUTPUT  (then: OUTPUT run DIR 1000 0.001)")
+    print(compile_host(Path(sys.argv[1])))

@@ -6,6 +6,7 @@ import shutil
 import sys
 from pathlib import Path
 
+from ..extras import MissingExtra, require
 from .execution import connect, run_dask, run_serial
 from .heatmap import plot_heatmaps
 from .spec import ACCELERATION_LIMIT, FAILED, INERTIA_DISTRIBUTIONS, OK, SweepSpec
@@ -197,6 +198,12 @@ def main(argv=None, prog=None, default_name="design_sweep") -> int:
     if not fmu.is_file():
         print(f"sweep: {fmu} does not exist: build it with `python build_fmu.py`", file=sys.stderr)
         return 1
+    if not args.serial:
+        try:
+            require("distributed", "sweep", "a sweep on Dask (--serial runs without it)")
+        except MissingExtra as error:
+            print(f"sweep: {error}", file=sys.stderr)
+            return 1
     progress = not args.no_progress
     print(
         f"{len(spec.cases())} co-simulations in {len(spec.tasks())} tasks, "

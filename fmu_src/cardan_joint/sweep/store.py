@@ -70,8 +70,13 @@ class CaseStore:
         if saved.is_file():
             found = json.loads(saved.read_text())
             if found != settings:
+                differing = "; ".join(
+                    f"{key} {found.get(key)!r} there, {settings.get(key)!r} now"
+                    for key in sorted(set(found) | set(settings))
+                    if found.get(key) != settings.get(key)
+                )
                 raise SettingsMismatch(
-                    f"{self.folder} holds cases computed with {found}, not {settings}: "
+                    f"{self.folder} holds cases computed with other settings ({differing}): "
                     f"give the sweep another name or output folder, or start it afresh "
                     f"(--fresh)"
                 )

@@ -1,0 +1,54 @@
+"""A missing optional dependency gives the extra to install, not a traceback."""
+
+import subprocess
+import sys
+from pathlib import Path
+
+import pytest
+
+from cardan_joint.extras import MissingExtra, require
+
+ROOT = Path(__file__).resolve().parents[1]
+
+
+def test_require_names_the_module_and_the_extra(monkeypatch):
+    monkeypatch.setitem(sys.modules, "libcosimpy", None)  # as if not installed
+    with pytest.raises(MissingExtra, match=r"needs libcosimpy.*pip install -e '\.\[cosim\]'"):
+        require("libcosimpy", "cosim", "running in libcosim")
+    require("numpy", "core", "anything")  # installed: no error
+
+
+def test_libcosim_runs_without_libcosimpy_say_which_extra(monkeypatch, tmp_path):
+    from cardan_joint.cosim import run_libcosim_ssp
+
+    monkeypatch.setitem(sys.modules, "libcosimpy", None)
+    with pytest.raises(MissingExtra, match=r"\[cosim\]"):
+        run_libcosim_ssp(tmp_path / "none.ssp", 1.0, 1e-3, ["Motor.speed"])
+
+
+def test_a_dask_sweep_without_dask_stops_with_the_extra(monkeypatch, fmu_path, tmp_path, capsys):
+    from cardan_joint.sweep import main
+
+    monkeypatch.setitem(sys.modules, "distributed", None)
+    assert main(["--fmu", str(fmu_path), "--out", str(tmp_path)]) == 1
+    assert "pip install -e '.[sweep]'" in capsys.readouterr().err
+    assert not list(tmp_path.iterdir())  # stopped before any work
+
+
+def test_the_driveline_example_without_libcosimpy_stops_with_the_extra(tmp_path):
+    run = subprocess.run(
+        [
+            sys.executable,
+            "-c",
+            "import runpy, sys; sys.modules['libcosimpy'] = None; "
+            "runpy.run_path('examples/driveline_ssp.py')['main'](['--out', sys.argv[1]])",
+            str(tmp_path / "out"),
+        ],
+        capture_output=True,
+        text=True,
+        cwd=ROOT,
+        timeout=120,
+    )
+    assert run.returncode == 1
+    assert "Traceback" not in run.stderr and "pip install -e '.[cosim]'" in run.stderr
+    assert not (tmp_path / "out").exists()
