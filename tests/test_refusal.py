@@ -96,11 +96,12 @@ def test_simulate_raises_the_refusal_with_its_fields(fmu_path):
         dtype=[("time", float), ("bend_angle", float)],
     )
     with pytest.raises(RefusalError) as error:
-        simulate(fmu_path, stop_time=1.0, output_interval=0.1, inputs=u)
+        simulate(fmu_path, stop_time=1.0, output_interval=0.1, inputs=u, output=["bend_angle"])
     e = error.value
     assert isinstance(e, SimulationError) and e.result["time"][-1] == 0.5 and e.messages
     # One row per time, the last one the good point (not the refused inputs).
-    assert np.all(np.diff(e.result["time"]) > 0)
+    assert np.all(np.diff(e.result["time"]) > 0) and e.result["bend_angle"][-1] == 0.5
+    assert "step of 0.1 s refused, the joint stays at t = 0.5 s" in str(e)
     assert (e.variable, e.value, e.limit, e.time, e.code, e.unit) == (
         "bend_angle",
         1.5,

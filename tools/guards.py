@@ -387,8 +387,8 @@ MUTATIONS = (
     Mutation(
         "simulate: a refused run ends at its last good point",
         "fmu_src/cardan_joint/simulate.py",
-        "        result = _without_repeated_end(result)\n",
-        "",
+        "            result = _without_repeated_end(result)\n",
+        "            pass\n",
         ("tests/test_refusal.py", "-k", "simulate_raises"),
     ),
     Mutation(

@@ -1,6 +1,6 @@
 """Run the FMU in OSP libcosim through its Python wrapper ``libcosimpy``.
 
-``pip install libcosimpy`` (checked with 0.0.6, manylinux_2_28 wheel). The wheel
+``pip install -e '.[cosim]'`` installs it (checked with 0.0.6, manylinux_2_28 wheel). The wheel
 bundles ``libcosimc.so`` with libcosim, FMI Library and Boost linked in, so no
 system package is needed. It is imported lazily: this module imports without it.
 
@@ -198,7 +198,10 @@ def run_libcosim_ssp(
     from libcosimpy.CosimLogging import CosimLogLevel, log_output_level
 
     step_ns, n_steps = _steps(stop_time, step_size)
-    log_output_level(CosimLogLevel[log_level.upper()])
+    levels = CosimLogLevel.__members__
+    if log_level.upper() not in levels:
+        raise ValueError(f"log_level {log_level!r} is none of {', '.join(map(str.lower, levels))}")
+    log_output_level(levels[log_level.upper()])
     execution = CosimExecution.from_ssp_file(str(Path(ssp_path).resolve()), step_size=step_ns)
     _check(execution.num_slaves() > 0, f"loading {ssp_path}")
     observed = {}

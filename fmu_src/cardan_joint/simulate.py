@@ -189,7 +189,8 @@ def simulate(
             or "(the FMU gave no reason)"
         )
         text = f"the FMU stopped at t = {reached!r} s of {stop_time!r} s:\n  {detail}"
-        result = _without_repeated_end(result)
+        if not fmi3:  # FMI 3.0 in event mode records two rows at an event
+            result = _without_repeated_end(result)
         refusal = first_refusal(text for _, _, text in problems)
         if refusal is None:
             raise SimulationError(text, messages, result)

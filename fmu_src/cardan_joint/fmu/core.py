@@ -25,6 +25,12 @@ from ..physics.model import CardanJoint
 from .references import References
 
 
+def _readable(seconds: float) -> str:
+    """A master's step sizes and clocks carry float noise (0.0010000000000000009):
+    12 digits hide it, in the same style as the refusal's own exact values (1.0)."""
+    return repr(float(f"{seconds:.12g}"))
+
+
 class SlaveCore:
     author = "Cardan joint FMU team"
     license = "MIT"
@@ -119,10 +125,8 @@ class SlaveCore:
             if problem:
                 model.time = time
                 self._report(
-                    # 12 digits: a master's step sizes and clocks carry float noise
-                    # (0.0010000000000000009); the refusal itself keeps repr for exactness.
-                    f"{problem.message}; step of {step_size:.12g} s refused, the "
-                    f"{self.owner} stays at t = {current_time:.12g} s",
+                    f"{problem.message}; step of {_readable(step_size)} s refused, the "
+                    f"{self.owner} stays at t = {_readable(current_time)} s",
                     self._STATUS.discard,
                 )
                 return self._STATUS.discard

@@ -71,7 +71,8 @@ class CaseStore:
             found = json.loads(saved.read_text())
             if found != settings:
                 differing = "; ".join(
-                    f"{key} {found.get(key)!r} there, {settings.get(key)!r} now"
+                    f"{key} {found.get(key, '(unset)')!r} there, "
+                    f"{settings.get(key, '(unset)')!r} now"
                     for key in sorted(set(found) | set(settings))
                     if found.get(key) != settings.get(key)
                 )
