@@ -1,6 +1,7 @@
 """Issue 4: bad input is refused with a clear message and loses nothing;
 rollback, serialization, reset, many instances, several builds in one process."""
 
+import ctypes
 import math
 import subprocess
 import sys
@@ -221,6 +222,22 @@ def test_state_rollback_is_bit_for_bit_after_ten_thousand_steps(model_descriptio
         joint.close()
 
 
+def test_a_state_serialized_into_a_larger_buffer_fills_only_its_own_bytes(
+    model_description, unzipped_fmu
+):
+    joint = JointInstance(model_description, unzipped_fmu)
+    try:
+        state = joint.get_state()
+        exact = joint.serialize_state(state)
+        fmu = joint.fmu
+        buffer = ctypes.create_string_buffer(b"\xaa" * (len(exact) + 64), len(exact) + 64)
+        status = fmu.fmi2SerializeFMUstate(fmu.component, state, buffer, len(buffer))
+        assert status == 0 and buffer.raw == exact + b"\xaa" * 64
+        joint.free_state(state)
+    finally:
+        joint.close()
+
+
 def test_state_includes_the_revolution_counter(model_description, unzipped_fmu):
     joint = JointInstance(model_description, unzipped_fmu, start_values={"input_speed": 5000.0})
     try:
@@ -241,7 +258,9 @@ def test_reset_returns_to_the_start_values(model_description, unzipped_fmu):
     try:
         for _ in range(20):
             joint.step(0.01)
+        path = list(sys.path)
         joint.fmu.reset()
+        assert sys.path == path  # a reset is no new instantiation of the Python slave
         assert all_reals(joint) == all_reals(fresh)
         joint.fmu.setupExperiment(startTime=0.0)
         joint.fmu.enterInitializationMode()

@@ -1,9 +1,9 @@
 """Compile the C test host (host.c and friends) with the machine's compiler ($CC, else cc)."""
 
-import os
-import shlex
 import subprocess
 from pathlib import Path
+
+from cardan_joint.native import compiler
 
 HERE = Path(__file__).resolve().parent
 NATIVE = HERE.parents[1] / "fmu_src" / "cardan_joint" / "native"
@@ -12,7 +12,7 @@ NATIVE = HERE.parents[1] / "fmu_src" / "cardan_joint" / "native"
 def compile_host(output: Path) -> Path:
     subprocess.run(
         [
-            *shlex.split(os.environ.get("CC") or "cc"),
+            *compiler(),
             "-std=gnu11",
             "-O2",
             "-pthread",

@@ -113,7 +113,7 @@ fmi2Status fmi2SetDebugLogging(fmi2Component c, fmi2Boolean on, size_t n, const 
         return fmi2Error;
     char **copies = n ? calloc(n, sizeof *copies) : NULL;
     for (size_t i = 0; copies && i < n; i++)
-        copies[i] = strdup(categories[i] ? categories[i] : "");
+        copies[i] = copy_of(categories[i]);
     for (size_t i = 0; i < in->n_categories; i++)
         free(in->categories[i]);
     free(in->categories);
@@ -162,22 +162,10 @@ fmi2Status fmi2Terminate(fmi2Component c)
                       STATE_TERMINATED);
 }
 
-/* pythonfmu's fmi2Reset leaves the Python slave as it is: a new slave is the reset. */
+/* pythonfmu's own reset makes a fresh Python slave (its constructor, run again). */
 fmi2Status fmi2Reset(fmi2Component c)
 {
-    struct instance *in = enter(c, ALIVE, "fmi2Reset");
-    if (!in)
-        return fmi2Error;
-    fmi2Component old = in->slave;
-    if (instantiate_slave(in)) {
-        in->slave = old;
-        report(in, fmi2Error, NULL, "fmi2Reset failed: see the message before; the instance "
-                                    "keeps its state");
-        return fmi2Error;
-    }
-    slave.free_instance(old);
-    in->state = STATE_INSTANTIATED;
-    return leave(in, fmi2OK);
+    return transition(c, ALIVE, "fmi2Reset", slave.reset, STATE_INSTANTIATED);
 }
 
 /* --- values ------------------------------------------------------------------- */

@@ -51,11 +51,12 @@ static int prepare_new_state(struct instance *in, fmi2FMUstate *state, const cha
         reportf(in, fmi2Error, "%s got a NULL pointer for the FMU state", function);
         return 0;
     }
-    if (*state && !known_state(in, *state, function))
-        return 0;
-    if (*state)
+    if (*state) {
+        if (!known_state(in, *state, function))
+            return 0;
         drop_state(in, state);
-    *state = NULL;
+        *state = NULL;
+    }
     return 1;
 }
 
@@ -83,10 +84,12 @@ fmi2Status fmi2SetFMUstate(fmi2Component c, fmi2FMUstate state)
 fmi2Status fmi2FreeFMUstate(fmi2Component c, fmi2FMUstate *state)
 {
     struct instance *in = enter(c, ANY, "fmi2FreeFMUstate");
-    if (!in || (state && *state && !known_state(in, *state, "fmi2FreeFMUstate")))
+    if (!in)
         return fmi2Error;
     if (!state || !*state)
         return fmi2OK;  /* the standard makes freeing NULL a no-op */
+    if (!known_state(in, *state, "fmi2FreeFMUstate"))
+        return fmi2Error;
     fmi2Status status = leave(in, drop_state(in, state));
     *state = NULL;
     return status;
@@ -113,7 +116,8 @@ fmi2Status fmi2SerializeFMUstate(fmi2Component c, fmi2FMUstate state, fmi2Byte b
                 "ask fmi2SerializedFMUstateSize first", size, needed);
         return fmi2Error;
     }
-    return leave(in, slave.serialize(in->slave, state, bytes, size));
+    /* pythonfmu copies as many bytes as it is told, from a state only `needed` long. */
+    return leave(in, slave.serialize(in->slave, state, bytes, needed));
 }
 
 fmi2Status fmi2DeSerializeFMUstate(fmi2Component c, const fmi2Byte bytes[], size_t size,

@@ -50,6 +50,7 @@ struct instance {
     X(enter_initialization, fmi2EnterInitializationMode, fmi2Status, (fmi2Component))   \
     X(exit_initialization, fmi2ExitInitializationMode, fmi2Status, (fmi2Component))     \
     X(terminate, fmi2Terminate, fmi2Status, (fmi2Component))                            \
+    X(reset, fmi2Reset, fmi2Status, (fmi2Component))                                    \
     X(get_real, fmi2GetReal, fmi2Status, (fmi2Component, const fmi2ValueReference *,    \
       size_t, fmi2Real *))                                                              \
     X(get_integer, fmi2GetInteger, fmi2Status, (fmi2Component,                          \
@@ -98,7 +99,7 @@ fmi2Status leave(struct instance *in, fmi2Status status);
 int arrays_given(struct instance *in, const char *function, size_t n, const void *references,
                  const void *values);
 fmi2Status drop_state(struct instance *in, fmi2FMUstate *state);
-int instantiate_slave(struct instance *in);
+char *copy_of(const char *text);  /* strdup, "" for NULL */
 void free_instance(struct instance *in);
 void report(struct instance *in, fmi2Status status, const char *category, const char *text);
 void reportf(struct instance *in, fmi2Status status, const char *format, ...)

@@ -158,14 +158,7 @@ static void early_message(const fmi2CallbackFunctions *functions, const char *na
     report(&scratch, fmi2Error, NULL, text);
 }
 
-int instantiate_slave(struct instance *in)
-{
-    in->slave = slave.instantiate(in->name, fmi2CoSimulation, in->guid, in->resources_uri,
-                                  &in->to_slave, in->visible, fmi2True);
-    return in->slave ? 0 : -1;
-}
-
-static char *copy_of(const char *text)
+char *copy_of(const char *text)
 {
     return strdup(text ? text : "");
 }
@@ -219,7 +212,9 @@ fmi2Component fmi2Instantiate(fmi2String name, fmi2Type type, fmi2String guid,
     in->to_slave.logger = from_slave;
     in->to_slave.componentEnvironment = in;
     in->state = STATE_INSTANTIATED;
-    if (instantiate_slave(in)) {
+    in->slave = slave.instantiate(in->name, fmi2CoSimulation, in->guid, in->resources_uri,
+                                  &in->to_slave, in->visible, fmi2True);
+    if (!in->slave) {
         report(in, fmi2Error, NULL, "the slave could not be instantiated: see the message before");
         free_instance(in);
         return NULL;
