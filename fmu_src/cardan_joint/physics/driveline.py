@@ -21,7 +21,7 @@ import math
 from ..driveline_variables import LOAD, MOTOR
 from ..variable_schema import VariableTable
 from .refusal import Reason, Refusal
-from .values import ValueChecks, bounds, value_ranges
+from .values import ValueChecks, bounds, set_start_values, value_ranges
 
 
 class _TableModel(ValueChecks):
@@ -31,13 +31,7 @@ class _TableModel(ValueChecks):
 
     def __init__(self, **values: float) -> None:
         table = self.table
-        unknown = set(values) - set(table.INPUTS) - set(table.PARAMETERS)
-        if unknown:
-            raise TypeError(
-                f"unknown {type(self).__name__} variable(s): {', '.join(sorted(unknown))}"
-            )
-        for name, value in {**table.start_values(), **values}.items():
-            setattr(self, name, float(value))
+        set_start_values(self, table, values, type(self).__name__)
         self._input_ranges = value_ranges(table.BY_NAME, table.INPUTS)
         self._parameter_ranges = value_ranges(table.BY_NAME, table.PARAMETERS)
         self.start(0.0)

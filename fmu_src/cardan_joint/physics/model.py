@@ -18,7 +18,14 @@ from .refusal import Reason, Refusal
 from .response import JointResponse
 from .response import _response as joint_response_kernel
 from .revolutions import split_angle
-from .values import SavedState, ValueChecks, advance_input, bounds, value_ranges
+from .values import (
+    SavedState,
+    ValueChecks,
+    advance_input,
+    bounds,
+    set_start_values,
+    value_ranges,
+)
 
 
 def _ranges(names, *excluded):
@@ -28,8 +35,16 @@ def _ranges(names, *excluded):
 # The bend angle's own limit is the max_bend_angle parameter, checked apart.
 _INPUT_RANGES = _ranges(table.INPUTS, "bend_angle")
 _PARAMETER_RANGES = _ranges(table.PARAMETERS, "max_bend_angle")
-# The fast path of `input_problem` checks |x| <= max, so the ranges must be symmetric.
+# The fast path of `input_problem` checks |x| <= max of these inputs by name, so the
+# ranges must be symmetric and the list complete.
 assert all(low == -high for _, low, high, _ in _INPUT_RANGES), "input ranges must be symmetric"
+assert {name for name, *_ in _INPUT_RANGES} == {
+    "input_speed",
+    "input_acceleration",
+    "bend_angle_rate",
+    "bend_angle_acceleration",
+    "load_torque",
+}, "a ranged input the fast path of input_problem does not check"
 _SPEED_LIMIT = bounds(table.BY_NAME["input_speed"])[1]
 _ACCELERATION_LIMIT = bounds(table.BY_NAME["input_acceleration"])[1]
 _RATE_LIMIT = bounds(table.BY_NAME["bend_angle_rate"])[1]
@@ -57,11 +72,7 @@ class CardanJoint(ValueChecks, SavedState):
     max_bend_angle: float
 
     def __init__(self, **values: float) -> None:
-        unknown = set(values) - set(table.INPUTS) - set(table.PARAMETERS)
-        if unknown:
-            raise TypeError(f"unknown joint variable(s): {', '.join(sorted(unknown))}")
-        for name, value in {**table.start_values(), **values}.items():
-            setattr(self, name, float(value))
+        set_start_values(self, table, values, "joint")
         self.start(0.0)
 
     # --- set-up ------------------------------------------------------------

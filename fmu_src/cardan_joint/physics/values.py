@@ -28,6 +28,8 @@ class Table(Protocol):
     @property
     def PARAMETERS(self) -> tuple[str, ...]: ...
 
+    def start_values(self) -> dict[str, float]: ...
+
 
 Range = tuple[str, float, float, str]
 
@@ -49,6 +51,16 @@ def bounds(variable: Variable) -> tuple[float, float]:
             f"min and max, not min={variable.min}, max={variable.max}"
         )
     return variable.min, variable.max
+
+
+def set_start_values(model, table: Table, values: Mapping[str, float], what: str) -> None:
+    """Every input and parameter of `model` from the table's start values, then
+    `values`; an unknown name is a TypeError naming `what` (the model's kind)."""
+    unknown = set(values) - set(table.INPUTS) - set(table.PARAMETERS)
+    if unknown:
+        raise TypeError(f"unknown {what} variable(s): {', '.join(sorted(unknown))}")
+    for name, value in {**table.start_values(), **values}.items():
+        setattr(model, name, float(value))
 
 
 class ValueChecks:

@@ -12,7 +12,7 @@ import math
 from ...propshaft_variables import propshaft_table
 from ..refusal import Reason, Refusal
 from ..revolutions import split_angle
-from ..values import SavedState, ValueChecks, advance_input, value_ranges
+from ..values import SavedState, ValueChecks, advance_input, set_start_values, value_ranges
 from .chain import chain
 from .checks import angle_warnings
 from .fluctuation import equivalent_angle, speed_ratio_fluctuation
@@ -35,11 +35,8 @@ class Propshaft(ValueChecks, SavedState):
         self.table = table = propshaft_table(joints)
         self._fluctuation: tuple[Layout, float] | None = None
         self.joints = joints
-        unknown = set(values) - set(table.INPUTS) - set(table.PARAMETERS)
-        if unknown:
-            raise TypeError(f"unknown propshaft variable(s): {', '.join(sorted(unknown))}")
-        for name, value in {**table.start_values(), **values}.items():
-            setattr(self, name, float(value))
+        self._layout_outputs: tuple[Layout, tuple] | None = None
+        set_start_values(self, table, values, "propshaft")
         by_name = table.BY_NAME
         self._input_ranges = value_ranges(by_name, table.INPUTS)
         assert all(low == -high for _, low, high, _ in self._input_ranges), "symmetric ranges"
@@ -200,7 +197,6 @@ class Propshaft(ValueChecks, SavedState):
         values = [gamma0]
         for k in range(self.joints - 1):
             values += [angles[k], state.speeds[k], state.accelerations[k]]
-        fluctuation = self.fluctuation()
         return (
             *values,
             angles[-1],
@@ -208,10 +204,18 @@ class Propshaft(ValueChecks, SavedState):
             state.accelerations[-1],
             state.input_torque,
             state.kinetic_energy,
-            *self.layout.working_angles,
-            fluctuation,
-            equivalent_angle(fluctuation),
+            *self._geometry_outputs(),
         )
+
+    def _geometry_outputs(self) -> tuple:
+        """Working angles, fluctuation and equivalent angle: fixed with the layout,
+        so computed once per layout (`start` makes a new one), not at every step."""
+        cached = self._layout_outputs
+        if cached is None or cached[0] is not self.layout:
+            fluctuation = self.fluctuation()
+            values = (*self.layout.working_angles, fluctuation, equivalent_angle(fluctuation))
+            cached = self._layout_outputs = (self.layout, values)
+        return cached[1]
 
     def warnings(self):
         """The industry's angle checks at the current input speed (never refusals)."""
