@@ -49,22 +49,11 @@ FINITE_LOOP = (
 )
 INPUT_RANGES = '_INPUT_RANGES = _ranges(table.INPUTS, "bend_angle")'
 PARAMETER_RANGES = '_PARAMETER_RANGES = _ranges(table.PARAMETERS, "max_bend_angle")'
-RANGED_INPUTS = (
-    "input_speed",
-    "input_acceleration",
-    "bend_angle_rate",
-    "bend_angle_acceleration",
-    "load_torque",
-)
-RANGED_PARAMETERS = (
-    "yoke_phase",
-    "input_angle_start",
-    "crosspiece_inertia_1",
-    "crosspiece_inertia_2",
-    "crosspiece_inertia_3",
-)
+# Every input and parameter but the bend angle and its guard has a table range.
+RANGED_INPUTS = tuple(n for n in table.INPUTS if n != "bend_angle")
+RANGED_PARAMETERS = tuple(n for n in table.PARAMETERS if n != "max_bend_angle")
 ALL_INPUTS = table.INPUTS
-PARAMETERS = RANGED_PARAMETERS + ("max_bend_angle",)
+PARAMETERS = table.PARAMETERS
 FAST_PATH = {
     "input_speed": "abs(self.input_speed) <= _SPEED_LIMIT",
     "input_acceleration": "abs(self.input_acceleration) <= _ACCELERATION_LIMIT",

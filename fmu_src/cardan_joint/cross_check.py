@@ -70,7 +70,6 @@ def inputs() -> np.ndarray:
 
 def reference() -> np.ndarray:
     """The reference outputs at every communication point, by the physics package."""
-    from . import variables as table
     from .physics import CardanJoint
 
     signals = inputs()

@@ -5,7 +5,7 @@ table is a `variables.VariableTable`, as the Propshaft's, declaring only the
 units it uses. Pure data: the physics reads its defaults and ranges here.
 """
 
-from .variable_schema import Unit, Variable, VariableTable
+from .variable_schema import _IN, _OUT, _PAR, Unit, Variable, VariableTable
 from .variables import UNITS as _JOINT_UNITS
 
 _UNITS = {
@@ -19,8 +19,6 @@ def _table(variables) -> VariableTable:
     used = dict.fromkeys(v.unit for v in variables)
     return VariableTable(variables, {u: _UNITS[u] for u in used})
 
-
-_IN, _PAR, _OUT = "input", "parameter", "output"
 
 MOTOR = _table(
     (

@@ -43,7 +43,7 @@ def _slave(model_description, unzipped: str, name: str):
 
 # FMI 3 differs in its call sequence, its value getters (arrays) and its names for
 # the FMU-state calls; JointInstance hides that.
-_SLAVES = {"2.0": _slave, "3.0": _slave}
+_VERSIONS = ("2.0", "3.0")
 
 
 def logging_callbacks(sink: Any) -> Any:
@@ -93,10 +93,10 @@ class JointInstance:
         exit_initialization: bool = True,
     ) -> None:
         version = model_description.fmiVersion
-        if version not in _SLAVES:
+        if version not in _VERSIONS:
             raise ValueError(
                 f"FMI version {version} of {model_description.modelName!r} is not "
-                f"supported; supported: {', '.join(sorted(_SLAVES))}"
+                f"supported; supported: {', '.join(_VERSIONS)}"
             )
         self.model_description = model_description
         self.references = {v.name: v.valueReference for v in model_description.modelVariables}
@@ -107,7 +107,7 @@ class JointInstance:
             v.name: prod(int(d.start) for d in getattr(v, "dimensions", None) or [])
             for v in model_description.modelVariables
         }
-        self.fmu = _SLAVES[version](model_description, str(unzipped), name)
+        self.fmu = _slave(model_description, str(unzipped), name)
         self._cleanup: list[Callable[[], None]] = []
         if self.fmi3:
             # FMPy keeps the callback on the FMU object, so it outlives the instance.
@@ -196,9 +196,8 @@ class JointInstance:
 
     def get_flat_outputs(self) -> dict[str, float]:
         """Every output by its FMI 2 name (an FMI 3 array split into its rows)."""
-        from .variables import fmi3_variables
+        from .variables import ARRAY_ROWS as rows
 
-        rows = {g.name: g.rows for g in fmi3_variables() if len(g.rows) > 1}
         values: dict[str, float] = {}
         for name, value in self.get_outputs().items():
             values.update(

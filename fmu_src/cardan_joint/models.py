@@ -7,11 +7,10 @@ cannot run would only fail later, in someone's master. Pure data plus small
 checks; the build itself lives in `build.py`.
 """
 
+import importlib
 from collections.abc import Callable, Mapping
 from dataclasses import dataclass, field
 from pathlib import Path
-
-from . import variables as joint_table
 
 FMU_DIR = Path(__file__).resolve().parent / "fmu"
 
@@ -33,12 +32,6 @@ def _check_values(values: Mapping[str, float], table, make, owner: str = "") -> 
     problem = model.parameter_problem() or model.input_problem()
     if problem:
         raise StartValueError(f"invalid start values: {problem.text}")
-
-
-def _check_joint_start_values(values: Mapping[str, float], settings: Mapping) -> None:
-    from .physics.model import CardanJoint
-
-    _check_values(values, joint_table, CardanJoint)
 
 
 def _check_propshaft_start_values(values: Mapping[str, float], settings: Mapping) -> None:
@@ -63,13 +56,14 @@ def _propshaft_name(settings: Mapping) -> str:
     return "Propshaft" if joints == 2 else f"Propshaft{joints}"
 
 
-def _component_start_value_checker(class_name: str):
-    """Start-value check for the stepped model `physics.driveline.<class_name>`."""
+def _start_value_checker(module: str, class_name: str):
+    """Start-value check for the stepped model `physics.<module>.<class_name>`
+    (imported at the check: the physics stays out of this module's import)."""
 
     def check(values: Mapping[str, float], settings: Mapping) -> None:
-        from .physics import driveline
-
-        model_class = getattr(driveline, class_name)
+        model_class = getattr(
+            importlib.import_module(f"{__package__}.physics.{module}"), class_name
+        )
         _check_values(values, model_class.table, model_class)
 
     return check
@@ -100,7 +94,7 @@ MODELS: dict[str, Model] = {
     "UniversalJoint": Model(
         key="UniversalJoint",
         scripts={2: FMU_DIR / "UniversalJoint.py", 3: FMU_DIR / "UniversalJoint3.py"},
-        check_start_values=_check_joint_start_values,
+        check_start_values=_start_value_checker("model", "CardanJoint"),
     ),
     "Propshaft": Model(
         key="Propshaft",
@@ -112,12 +106,12 @@ MODELS: dict[str, Model] = {
     "Motor": Model(
         key="Motor",
         scripts={2: FMU_DIR / "Motor.py"},
-        check_start_values=_component_start_value_checker("Motor"),
+        check_start_values=_start_value_checker("driveline", "Motor"),
     ),
     "Load": Model(
         key="Load",
         scripts={2: FMU_DIR / "Load.py"},
-        check_start_values=_component_start_value_checker("Load"),
+        check_start_values=_start_value_checker("driveline", "Load"),
     ),
 }
 

@@ -10,10 +10,9 @@ from functools import cache
 
 from . import variables as joint
 from .units import DEG_TO_RAD
-from .variable_schema import Variable, VariableTable
+from .variable_schema import _OUT, _PAR, Variable, VariableTable
 from .variables import HALF_PI
 
-_IN, _PAR, _OUT = "input", "parameter", "output"
 _SPEED = ("input_speed",)
 _ACCELERATION = ("input_speed", "input_acceleration")
 _TORQUE = _ACCELERATION + ("load_torque",)

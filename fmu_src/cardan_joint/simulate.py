@@ -27,7 +27,6 @@ if TYPE_CHECKING:  # imported in first_refusal at run time, where it is needed
 DEFAULT_FMU = Path("dist") / "UniversalJoint.fmu"
 # FMI 2 variable name -> the FMI 3 variable holding it (itself, or its array).
 _FMI3_NAME = {row.name: group.name for group in table.fmi3_variables() for row in group.rows}
-_FMI3_GROUPS = {group.name: group for group in table.fmi3_variables()}
 # (status name, category, text) of one FMU log message.
 Message = tuple[str, str, str]
 _STATUS = {0: "ok", 1: "warning", 2: "discard", 3: "error", 4: "fatal", 5: "pending"}
@@ -83,12 +82,12 @@ def flat_columns(result: np.ndarray) -> np.ndarray:
         raise ValueError("flat_columns takes a structured result array (FMPy's)")
     fields: list[tuple[str, np.dtype | type[float]]] = []
     for name in names:
-        rows = _FMI3_GROUPS[name].rows if result.dtype[name].shape else ()
+        rows = table.ARRAY_ROWS[name] if result.dtype[name].shape else ()
         fields += [(row.name, float) for row in rows] or [(name, result.dtype[name])]
     flat = np.zeros(len(result), dtype=fields)
     for name in names:
         if result.dtype[name].shape:
-            for i, row in enumerate(_FMI3_GROUPS[name].rows):
+            for i, row in enumerate(table.ARRAY_ROWS[name]):
                 flat[row.name] = result[name][:, i]
         else:
             flat[name] = result[name]

@@ -13,9 +13,8 @@ import os
 import re
 from dataclasses import dataclass
 
-from . import variable_schema
 from .units import DEG_TO_RAD, RAD_PER_S_TO_RPM, RAD_TO_DEG
-from .variable_schema import _IN, _OUT, _PAR, Unit, Variable, _names
+from .variable_schema import _IN, _OUT, _PAR, Unit, Variable, VariableTable
 
 UNITS = {
     u.name: u
@@ -126,10 +125,15 @@ VARIABLES = (
 # fmt: on
 
 
-BY_NAME = {v.name: v for v in VARIABLES}
-INPUTS = _names(VARIABLES, _IN)
-PARAMETERS = _names(VARIABLES, _PAR)
-OUTPUTS = _names(VARIABLES, _OUT)
+# This module is the UniversalJoint's table: the same lookups as every VariableTable.
+_TABLE = VariableTable(VARIABLES, UNITS)
+BY_NAME, INPUTS, PARAMETERS, OUTPUTS = (
+    _TABLE.BY_NAME,
+    _TABLE.INPUTS,
+    _TABLE.PARAMETERS,
+    _TABLE.OUTPUTS,
+)
+start_values = _TABLE.start_values
 
 # Vector quantities: FMI 2 has one row per element (`<stem>_<i>`); FMI 3 declares
 # each as one Float64 array named by the stem, elements in the rows' order.
@@ -182,13 +186,13 @@ def fmi3_variables() -> tuple:
     )
 
 
-def start_values() -> dict:
-    return variable_schema.start_values(VARIABLES)
+# FMI 3 array name -> its FMI 2 rows in element order (to split an array's values).
+ARRAY_ROWS = {group.name: group.rows for group in fmi3_variables() if len(group.rows) > 1}
 
 
 def markdown_table() -> str:
     """The README's variable table (a test keeps the README in step)."""
-    return variable_schema.markdown_table(VARIABLES)
+    return _TABLE.markdown_table()
 
 
 def fmi3_array_table() -> str:

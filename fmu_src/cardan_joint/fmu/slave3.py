@@ -26,12 +26,12 @@ from pythonfmu3.variables import Dimension
 from .. import variables as table
 from .core import SlaveCore
 from .model_description3 import complete
-from .references import References, log_categories
+from .references import log_categories
 
 TIME_REFERENCE = 0
 GROUPS = table.fmi3_variables()
 # Value reference -> the flat indices (FMI 2 value references) it holds.
-_NAMES = References(table, SlaveCore.live_outputs).names
+_NAMES = SlaveCore._refs.names
 _FLAT = ((),) + tuple(tuple(_NAMES.index(row.name) for row in group.rows) for group in GROUPS)
 _SIZE = tuple(len(flat) or 1 for flat in _FLAT)  # elements per value reference
 _LONGEST = max(_SIZE)

@@ -16,12 +16,13 @@ message: a refused run is reported, never dropped.
     command.py    the command line
 """
 
+from ..results import write_table
 from .case import run_case, run_task
 from .command import add_arguments, main, spec_from_arguments
 from .execution import connect, local_cluster, run_dask, run_serial, warm_up
 from .heatmap import cell_edges, plot_heatmaps
 from .spec import ACCELERATION_LIMIT, FAILED, INERTIA_DISTRIBUTIONS, OK, PEAKS, Case, SweepSpec
-from .store import CaseStore, SettingsMismatch, to_table, write_table
+from .store import CaseStore, SettingsMismatch, to_table
 from .timing import compare
 
 __all__ = [

@@ -7,10 +7,11 @@ import sys
 from pathlib import Path
 
 from ..extras import MissingExtra, require
+from ..results import write_table
 from .execution import connect, run_dask, run_serial
 from .heatmap import plot_heatmaps
 from .spec import ACCELERATION_LIMIT, FAILED, INERTIA_DISTRIBUTIONS, OK, SweepSpec
-from .store import SETTINGS_FILE, CaseStore, write_table
+from .store import SETTINGS_FILE, CaseStore
 from .timing import compare, timed
 
 

@@ -15,7 +15,6 @@ import uuid
 from pathlib import Path
 from typing import TYPE_CHECKING
 
-from .. import results
 from .spec import ACCELERATION_LIMIT, PEAKS, Case, SweepSpec
 
 if TYPE_CHECKING:
@@ -115,8 +114,3 @@ def to_table(rows, spec: SweepSpec) -> "pandas.DataFrame":
         kind="stable",
     )
     return table.reset_index(drop=True)
-
-
-def write_table(table, stem) -> list:
-    """Write <stem>.csv, and <stem>.parquet when a Parquet engine is installed."""
-    return results.write_table(table, stem)
