@@ -10,7 +10,7 @@ import numpy as np
 from _support import example_parser, output_folder
 
 from cardan_joint import results
-from cardan_joint.plotting import pyplot  # noqa: F401 - the seed scripts import it from here
+from cardan_joint.plotting import pyplot, save_figure  # noqa: F401 - pyplot: for the seed scripts
 from cardan_joint.simulate import simulate
 
 # Dark enough on white for thin lines, distinct for up to six bend angles.
@@ -56,11 +56,7 @@ class Outputs:
         return path
 
     def figure(self, name, fig):
-        path = self.folder / f"{name}.png"
-        fig.savefig(path, dpi=100)
-        import matplotlib.pyplot as plt
-
-        plt.close(fig)
+        path = save_figure(fig, self.folder / f"{name}.png", dpi=100)
         self.paths.append(path)
         return path
 

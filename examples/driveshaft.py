@@ -66,7 +66,7 @@ from _support import example_parser, output_folder
 from cardan_joint import results
 from cardan_joint.instance import ExtractedFMU
 from cardan_joint.physics import quantities
-from cardan_joint.plotting import save_figure
+from cardan_joint.plotting import pyplot, save_figure
 
 COUPLINGS = ("lead", "hold", "angle")
 ARRANGEMENTS = {"Z": -1.0, "W": 1.0}  # sign of joint 2's bend angle
@@ -227,11 +227,7 @@ def phase_table(fmu, bend_angle, input_speed, step, revolutions, errors_deg):
 
 
 def plot(steps_rows, phase_rows, bend_angle, input_speed, phase_step, path):
-    import matplotlib
-
-    matplotlib.use("Agg")
-    import matplotlib.pyplot as plt
-
+    plt = pyplot()
     single = single_joint_fluctuation(bend_angle)
     fig, (left, right) = plt.subplots(1, 2, figsize=(12, 4.8))
     markers = {"lead": "v", "hold": "o", "angle": "s"}

@@ -21,8 +21,9 @@ import numpy as np
 from _support import example_parser, output_folder
 
 from cardan_joint import results
-from cardan_joint.plotting import save_figure
+from cardan_joint.plotting import pyplot, save_figure
 from cardan_joint.simulate import DEFAULT_FMU
+from cardan_joint.units import RAD_PER_S_TO_RPM
 
 # (A keyword dict like tests/test_robustness.py's inputs: alike in shape only.)
 DEFAULTS = dict(
@@ -140,11 +141,7 @@ def run(fmu_path=DEFAULT_FMU, stop_time=1.0, h=1e-3, **overrides):
 
 
 def plot(rows, p, path, revolutions=4):
-    import matplotlib
-
-    matplotlib.use("Agg")
-    import matplotlib.pyplot as plt
-
+    plt = pyplot()
     last = rows["input_angle"][-1] - revolutions * 2 * math.pi
     window = rows["input_angle"] >= last
     t = rows["time"][window]
@@ -156,16 +153,17 @@ def plot(rows, p, path, revolutions=4):
         f"Motor -> Cardan joint at {math.degrees(p['bend_angle']):.0f} deg -> "
         f"load inertia: the last {revolutions} input revolutions"
     )
-    axes[1].plot(t, rows["output_speed"][window] * 30 / math.pi, label="output shaft")
-    axes[1].plot(t, rows["input_speed"][window] * 30 / math.pi, "k--", label="input shaft (motor)")
+    axes[1].plot(t, rows["output_speed"][window] * RAD_PER_S_TO_RPM, label="output shaft")
+    axes[1].plot(
+        t, rows["input_speed"][window] * RAD_PER_S_TO_RPM, "k--", label="input shaft (motor)"
+    )
     axes[1].set_ylabel("speed [rpm]")
     axes[2].plot(t, rows["input_yoke_moment"][window], label="input yoke")
     axes[2].plot(t, rows["output_yoke_moment"][window], label="output yoke")
     axes[2].set_ylabel("secondary couple [N.m]")
     axes[2].set_xlabel("time [s]")
     for ax in axes:
-        ax.grid(alpha=0.3)
-        ax.legend(loc="upper right", fontsize=8)
+        ax.legend(loc="upper right")
     save_figure(fig, path)
 
 

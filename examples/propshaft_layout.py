@@ -25,8 +25,9 @@ import numpy as np
 from _support import example_parser, output_folder
 
 from cardan_joint.physics.propshaft import angle_report, best_phasing, layout
-from cardan_joint.plotting import save_figure
+from cardan_joint.plotting import pyplot, save_figure
 from cardan_joint.simulate import simulate
+from cardan_joint.units import RAD_PER_S_TO_RPM
 
 SIDE_DEG = (-3.0, -1.0, -3.0)
 TOP_DEG = (0.0, 2.5, 5.0)
@@ -34,11 +35,10 @@ SPEED_RPM = 4000.0
 LOAD = 300.0  # N.m at the axle pinion
 SHAFT_INERTIA = 0.05  # kg.m2, the propshaft tube
 CROSSPIECE = (0.0004, 0.0004, 0.0007)
-RPM = 30.0 / math.pi
 
 
 def run(fmu, phase, revolutions=2, points=720):
-    speed = SPEED_RPM / RPM
+    speed = SPEED_RPM / RAD_PER_S_TO_RPM
     stop = revolutions * 2.0 * math.pi / speed
     start = {f"shaft_{k}_side_angle": math.radians(a) for k, a in enumerate(SIDE_DEG)}
     start.update({f"shaft_{k}_top_angle": math.radians(a) for k, a in enumerate(TOP_DEG)})
@@ -62,23 +62,20 @@ def run(fmu, phase, revolutions=2, points=720):
 
 
 def plot(before, after, phase, path):
-    import matplotlib.pyplot as plt
-
+    plt = pyplot()
     fig, (top, bottom) = plt.subplots(2, 1, sharex=True, figsize=(8, 6))
     for result, label in (
         (before, "yokes in one plane (phasing 0)"),
         (after, f"phasing {math.degrees(phase):.2f} deg (helper)"),
     ):
         revolutions = result["input_angle"] / (2.0 * math.pi)
-        top.plot(revolutions, result["output_speed"] * RPM, label=label)
+        top.plot(revolutions, result["output_speed"] * RAD_PER_S_TO_RPM, label=label)
         bottom.plot(revolutions, result["input_torque"], label=label)
     top.set_ylabel("output speed [rpm]")
     bottom.set_ylabel("input torque [N.m]")
     bottom.set_xlabel("input revolutions")
     top.set_title(f"Propshaft at {SPEED_RPM:.0f} rpm, {LOAD:.0f} N.m at the pinion")
     top.legend()
-    top.grid(True)
-    bottom.grid(True)
     return save_figure(fig, path)
 
 
@@ -90,7 +87,7 @@ def main(argv=None):
     side = [math.radians(a) for a in SIDE_DEG]
     top = [math.radians(a) for a in TOP_DEG]
     geometry = layout(side, top, [0.0])
-    report = angle_report(geometry, SPEED_RPM / RPM)
+    report = angle_report(geometry, SPEED_RPM / RAD_PER_S_TO_RPM)
     print(
         "Working angles: "
         + ", ".join(
@@ -105,15 +102,16 @@ def main(argv=None):
     for warning in report.warnings or ("no warnings",):
         print(f"  check: {warning}")
     phases, left = best_phasing(geometry)
-    after = angle_report(geometry.with_phases(phases), SPEED_RPM / RPM)
+    after = angle_report(geometry.with_phases(phases), SPEED_RPM / RAD_PER_S_TO_RPM)
     print(f"Best phasing {math.degrees(phases[0]):.3f} deg: fluctuation {left:.3g}")
     for warning in after.warnings or ("no warnings",):
         print(f"  check: {warning}")
     run_before, run_after = run(args.fmu, 0.0), run(args.fmu, phases[0])
     for name, result in (("phasing 0", run_before), ("best phasing", run_after)):
-        ratio = result["output_speed"] / (SPEED_RPM / RPM)
+        ratio = result["output_speed"] / (SPEED_RPM / RAD_PER_S_TO_RPM)
+        spread = np.ptp(result["output_speed"]) * RAD_PER_S_TO_RPM
         print(
-            f"FMU, {name}: output speed {np.ptp(result['output_speed']) * RPM:.2f} rpm peak to "
+            f"FMU, {name}: output speed {spread:.2f} rpm peak to "
             f"peak (ratio {np.ptp(ratio):.3g}), input torque "
             f"{result['input_torque'].min():.2f} .. {result['input_torque'].max():.2f} N.m"
         )

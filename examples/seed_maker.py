@@ -112,7 +112,6 @@ def main(argv=None):
         fontsize=11,
     )
     ax.legend(loc="upper left")
-    fig.tight_layout()
     out.figure("seed_maker_output_angle", fig)
 
     # Maxima of each bend angle: the stationary line D and figs. 12/13.
@@ -200,7 +199,6 @@ def main(argv=None):
     ax.set_xlim(0, 180)
     ax.set_title("Maker fig. 11: cardan error (twist-angle difference)", fontsize=11)
     ax.legend(loc="upper right")
-    fig.tight_layout()
     out.figure("seed_maker_cardan_error", fig)
 
     # Figs. 12 and 13: amplitude of the cardan error and degree of unevenness vs bend angle.
@@ -262,7 +260,6 @@ def main(argv=None):
     right.set_ylabel("degree of unevenness u [-]")
     right.set_title("Maker fig. 13: degree of unevenness vs bend angle", fontsize=10)
     right.legend(loc="upper left")
-    fig.tight_layout()
     out.figure("seed_maker_amplitude_unevenness", fig)
 
     out.report()

@@ -262,7 +262,6 @@ def main(argv=None):
         "Mityushov & Misyura: $\\omega_1$ = 0.5 rad/s, $\\alpha = \\pi/6$, yoke phase 90°",
         fontsize=12,
     )
-    fig.tight_layout()
     out.figure("seed_mityushov_misyura_kinematics", fig)
 
     # Figure 5: quaternion.
@@ -292,7 +291,6 @@ def main(argv=None):
     for ax in axes:
         ax.set_ylim(-1.1, 1.6)
         ax.legend(loc="upper center", ncol=3)
-    fig.tight_layout()
     out.figure("seed_mityushov_misyura_quaternion", fig)
 
     # Figure 7: torques on the crosspiece, and the paper's M3 = 0 for a flat cross.
@@ -322,7 +320,6 @@ def main(argv=None):
         fontsize=10,
     )
     axes[1].set_xlabel("time t [s]")
-    fig.tight_layout()
     out.figure("seed_mityushov_misyura_torques", fig)
 
     # Figure 8: kinetic energy for the four distributions with the same I0.
@@ -376,7 +373,6 @@ def main(argv=None):
         f"Mityushov & Misyura: $I_0$ = {I0} kg.m$^2$, $\\omega_1$ = 0.5 rad/s, $\\alpha = \\pi/6$",
         fontsize=12,
     )
-    fig.tight_layout()
     out.figure("seed_mityushov_misyura_energy", fig)
 
     out.report()

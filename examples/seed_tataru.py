@@ -101,7 +101,6 @@ def plot(plt, r, alpha, label):
         f"$\\alpha$ = {label} ({math.degrees(alpha):.1f}°)",
         fontsize=12,
     )
-    fig.tight_layout()
     return fig
 
 

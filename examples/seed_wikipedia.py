@@ -126,7 +126,6 @@ def main(argv=None):
             ax.set_yticks(range(0, 361, 45))
         else:
             ax.set_ylim(top=ax.get_ylim()[1] + 0.35 * (ax.get_ylim()[1] - ax.get_ylim()[0]))
-        fig.tight_layout()
         out.figure(f"seed_wikipedia_{field}", fig)
 
     out.report()

@@ -1,10 +1,12 @@
 """Session fixtures: the FMU is built once, by the same command a user runs."""
 
+import importlib.util
 import os
 import shutil
 import subprocess
 import sys
 from pathlib import Path
+from types import ModuleType
 
 import pytest
 from hypothesis import settings
@@ -18,13 +20,41 @@ if os.environ.get("CI"):
 ROOT = Path(__file__).resolve().parents[1]
 
 
-def build_fmu(dest: Path, *args: str) -> Path:
-    """Run build_fmu.py in its own process, as a user would."""
+def run_build(dest: Path, *args: str, timeout: float | None = None):
+    """Run build_fmu.py in its own process, as a user would; the completed process."""
     command = [sys.executable, str(ROOT / "build_fmu.py"), "--dest", str(dest), *args]
-    result = subprocess.run(command, capture_output=True, text=True, cwd=ROOT)
+    return subprocess.run(command, capture_output=True, text=True, cwd=ROOT, timeout=timeout)
+
+
+def build_fmu(dest: Path, *args: str) -> Path:
+    """Build as run_build does; the FMU's path, as the build reports it."""
+    result = run_build(dest, *args)
     assert result.returncode == 0, result.stdout + result.stderr
-    name = next((a.split("=", 1)[1] for a in args if a.startswith("--name=")), "UniversalJoint")
-    return dest / ("fmi3" if "--fmi-version=3" in args else "") / f"{name}.fmu"
+    prefix = "built and validated "
+    built = [line[len(prefix) :] for line in result.stdout.splitlines() if line.startswith(prefix)]
+    assert len(built) == 1, result.stdout
+    return ROOT / built[0]  # a relative path is relative to the build's cwd, ROOT
+
+
+def load_example(name: str) -> ModuleType:
+    """examples/<name>.py as a module, imported as a script would import it (its
+    folder on sys.path, for examples/_support.py); sys.path is left as found, and
+    sys.modules without the modules that came from examples/."""
+    examples = ROOT / "examples"
+    path, modules = list(sys.path), set(sys.modules)
+    sys.path.insert(0, str(examples))
+    try:
+        spec = importlib.util.spec_from_file_location(f"{name}_example", examples / f"{name}.py")
+        module = importlib.util.module_from_spec(spec)
+        spec.loader.exec_module(module)
+    finally:
+        sys.path[:] = path
+        # Only what came from examples/ goes: unloading a library (numpy) breaks it.
+        for added in set(sys.modules) - modules:
+            origin = getattr(sys.modules[added], "__file__", None)
+            if origin and Path(origin).resolve().parent == examples:
+                del sys.modules[added]
+    return module
 
 
 @pytest.fixture(scope="session")
@@ -51,9 +81,7 @@ def model_description(fmu_path):
 @pytest.fixture(scope="session")
 def propshaft_fmu_path(tmp_path_factory) -> Path:
     """dist/Propshaft.fmu as `build_fmu.py --model Propshaft` writes it."""
-    dest = tmp_path_factory.mktemp("propshaft")
-    build_fmu(dest, "--model", "Propshaft")
-    return dest / "Propshaft.fmu"
+    return build_fmu(tmp_path_factory.mktemp("propshaft"), "--model", "Propshaft")
 
 
 @pytest.fixture(scope="session")

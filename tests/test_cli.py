@@ -33,10 +33,6 @@ def built_fmu(tmp_path_factory):
     return fmu
 
 
-def read_rows(path):
-    return results.read_csv(path)
-
-
 def test_console_script_is_installed():
     assert (Path(sys.executable).parent / "cardan-joint").is_file()
 
@@ -59,7 +55,7 @@ def test_simulate_from_constant_inputs(built_fmu, tmp_path):
         out,
     )
     assert run.returncode == 0, run.stderr
-    rows = read_rows(out)
+    rows = results.read_csv(out)
     assert len(rows) == 201
     assert float(rows[0]["input_speed"]) == 20.0
     assert float(rows[0]["bend_angle"]) == 0.2  # the build's start value
@@ -89,7 +85,7 @@ def test_simulate_from_an_input_csv(built_fmu, tmp_path):
         "input_torque",
     )
     assert run.returncode == 0, run.stderr
-    rows = read_rows(out)
+    rows = results.read_csv(out)
     assert float(rows[-1]["time"]) == pytest.approx(0.5)  # the CSV's last time
     assert float(rows[250]["input_speed"]) == pytest.approx(12.5)
     assert float(rows[-1]["load_torque"]) == 50.0
@@ -174,7 +170,7 @@ def test_a_refused_run_writes_what_it_computed_and_says_where_it_stopped(built_f
     assert run.returncode == 1
     assert "stopped at t = 0.3 s of 1 s" in run.stderr  # rounded, not 0.30000000000000004
     assert f"{out} (" in run.stderr and "Traceback" not in run.stderr
-    rows = read_rows(out)
+    rows = results.read_csv(out)
     assert rows["time"][-1] == pytest.approx(0.3) and len(rows) >= 4
     assert out.with_suffix(".png").stat().st_size > 0
 

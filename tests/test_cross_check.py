@@ -1,11 +1,8 @@
 """`build_fmu.py --cross-check`: the fmi-cross-check folder, and the FMU reproducing it."""
 
-import subprocess
-import sys
-
 import numpy as np
 import pytest
-from conftest import ROOT, build_fmu
+from conftest import ROOT, build_fmu, run_build
 from fmpy import simulate_fmu
 from fmpy.cross_check import validate_result
 from fmpy.cross_check.validate_vendor_repo import validate_test_fmu
@@ -81,20 +78,7 @@ def test_the_reference_files_in_docs_are_current(folder, tmp_path):
 
 
 def test_cross_check_refuses_a_variant_whose_reference_it_does_not_have(tmp_path):
-    run = subprocess.run(
-        [
-            sys.executable,
-            str(ROOT / "build_fmu.py"),
-            "--dest",
-            str(tmp_path),
-            "--cross-check",
-            "--set",
-            "bend_angle=0.1",
-        ],
-        capture_output=True,
-        text=True,
-        cwd=ROOT,
-    )
+    run = run_build(tmp_path, "--cross-check", "--set", "bend_angle=0.1")
     assert run.returncode == 2
     assert "--cross-check takes the default model" in run.stderr
     assert not any(tmp_path.iterdir())

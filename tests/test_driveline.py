@@ -1,6 +1,5 @@
 """Motor and Load FMUs and the driveline SSP system in FMPy and libcosim."""
 
-import csv
 import math
 import subprocess
 import sys
@@ -11,7 +10,8 @@ import pytest
 from conftest import ROOT, build_fmu
 
 from cardan_joint import driveline_system as system
-from cardan_joint.instance import JointInstance
+from cardan_joint import results
+from cardan_joint.instance import ExtractedFMU, JointInstance
 from cardan_joint.physics import Reason, Refusal
 from cardan_joint.physics.driveline import Load, Motor
 from cardan_joint.ssp import Component, write_ssp
@@ -20,7 +20,13 @@ from cardan_joint.ssp import Component, write_ssp
 @pytest.fixture(scope="module")
 def component_fmus(tmp_path_factory):
     dest = tmp_path_factory.mktemp("components")
-    return {name: build_fmu(dest, "--model", name, f"--name={name}") for name in ("Motor", "Load")}
+    return {name: build_fmu(dest, "--model", name) for name in ("Motor", "Load")}
+
+
+@pytest.fixture(scope="module")
+def motor_unzipped(component_fmus):
+    with ExtractedFMU(component_fmus["Motor"]) as motor:
+        yield motor.directory
 
 
 @pytest.fixture(scope="module")
@@ -155,9 +161,9 @@ def test_component_fmus_pass_validation_with_units_and_dependencies(component_fm
         assert dependencies["acceleration"] == {"load_torque"} and dependencies["speed"] == set()
 
 
-def test_motor_fmu_refuses_a_nan_load_torque_and_says_why(component_fmus):
+def test_motor_fmu_refuses_a_nan_load_torque_and_says_why(motor_unzipped):
     messages = []
-    with JointInstance.open(component_fmus["Motor"], name="m", messages=messages) as motor:
+    with JointInstance.open(motor_unzipped, name="m", messages=messages) as motor:
         motor.set(load_torque=10.0)
         motor.step(0.1)
         speed = motor.get("speed")
@@ -178,9 +184,9 @@ def test_motor_fmu_refuses_a_nan_load_torque_and_says_why(component_fmus):
         assert any("parameter stall_torque is fixed" in text for _, _, text in messages)
 
 
-def test_motor_fmu_holds_only_the_outputs_that_depend_on_an_invalid_input(component_fmus):
+def test_motor_fmu_holds_only_the_outputs_that_depend_on_an_invalid_input(motor_unzipped):
     messages = []
-    with JointInstance.open(component_fmus["Motor"], name="m", messages=messages) as motor:
+    with JointInstance.open(motor_unzipped, name="m", messages=messages) as motor:
         motor.set(load_torque=10.0)
         motor.step(0.1)
         valid = motor.get_outputs()
@@ -189,8 +195,8 @@ def test_motor_fmu_holds_only_the_outputs_that_depend_on_an_invalid_input(compon
         assert any("outputs that depend on it are held" in text for _, _, text in messages)
 
 
-def test_motor_fmu_state_round_trips_through_bytes(component_fmus):
-    with JointInstance.open(component_fmus["Motor"], name="m") as motor:
+def test_motor_fmu_state_round_trips_through_bytes(motor_unzipped):
+    with JointInstance.open(motor_unzipped, name="m") as motor:
         motor.set(load_torque=10.0)
         motor.step(0.05)
         state = motor.deserialize_state(motor.serialize_state(motor.get_state()))
@@ -260,9 +266,8 @@ def test_example_writes_the_ssp_both_csvs_and_the_plot(tmp_path):
         "driveline_ssp.png",
     ):
         assert (tmp_path / name).stat().st_size > 0
-    with open(tmp_path / "driveline_ssp_libcosim.csv") as stream:
-        rows = list(csv.reader(stream))
-    assert rows[0][:2] == ["time", "Motor.speed"] and len(rows) == 1002
+    rows = results.read_csv(tmp_path / "driveline_ssp_libcosim.csv")
+    assert list(rows.dtype.names[:2]) == ["time", "Motor.speed"] and len(rows) == 1001
     assert "ratio 2, step 0.0001 s: DIVERGES" in run.stdout
     assert "ratio 0.5, step 0.001 s: bounded" in run.stdout
 

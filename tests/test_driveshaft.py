@@ -1,37 +1,21 @@
 """The two-joint driveshaft example: cancellation through co-simulation."""
 
-import importlib.util
 import math
-import sys
-from pathlib import Path
 
 import pytest
+from conftest import load_example
 
 from cardan_joint.instance import ExtractedFMU
-
-ROOT = Path(__file__).resolve().parents[1]
 
 
 @pytest.fixture(scope="module")
 def driveshaft():
-    # The examples import their shared helpers (examples/_support.py) as a
-    # script would, from their own folder.
-    examples = str(ROOT / "examples")
-    sys.path.insert(0, examples)
-    try:
-        spec = importlib.util.spec_from_file_location(
-            "driveshaft_example", ROOT / "examples" / "driveshaft.py"
-        )
-        module = importlib.util.module_from_spec(spec)
-        spec.loader.exec_module(module)
-    finally:
-        sys.path.remove(examples)
-    return module
+    return load_example("driveshaft")
 
 
 @pytest.fixture(scope="module")
-def fmu(driveshaft, fmu_path):
-    with ExtractedFMU(fmu_path) as extracted:
+def fmu(driveshaft, unzipped_fmu):
+    with ExtractedFMU(unzipped_fmu) as extracted:
         yield extracted
 
 

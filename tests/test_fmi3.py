@@ -151,7 +151,7 @@ def _state_bytes(joint):
     try:
         return joint.serialize_state(state)
     finally:
-        joint.fmu.freeFMUState(state)
+        joint.free_state(state)
 
 
 def test_a_bad_input_is_refused_with_its_message_and_nothing_is_lost(joint3):
@@ -219,12 +219,12 @@ def test_state_round_trips_bit_for_bit(joint3, fmi3_description, fmi3_unzipped):
     joint3.set_state(state)
     joint3.time = 0.5
     assert run(joint3) == first
-    joint3.fmu.freeFMUState(state)
+    joint3.free_state(state)
     fresh = JointInstance(fmi3_description, fmi3_unzipped, name="fresh")
     try:
         restored = fresh.deserialize_state(data)
         fresh.set_state(restored)
-        fresh.fmu.freeFMUState(restored)
+        fresh.free_state(restored)
         fresh.time = 0.5
         assert run(fresh) == first
     finally:

@@ -7,7 +7,7 @@ import math
 import mpmath
 import numpy as np
 import pytest
-from conftest import build_fmu
+from conftest import build_fmu, load_example
 from reference.propshaft import PropshaftReference
 from tolerance import assert_close
 
@@ -185,8 +185,8 @@ def test_a_working_angle_at_the_limit_refuses_every_step_and_says_why(
         shaft.close()
 
 
-# Same open/step/close shape as tests/test_robustness.py's refusal tests (duplicates
-# tool): each drives its own FMU, and the shared part is JointInstance already.
+# Same open/step/close shape as tests/test_robustness.py's refusal tests: each
+# drives its own FMU, and the shared part is JointInstance already.
 def test_a_non_finite_input_is_refused_and_loses_nothing(description, propshaft_unzipped):
     messages = []
     shaft = JointInstance(description, propshaft_unzipped, messages=messages)
@@ -212,10 +212,14 @@ def test_state_serialization_round_trip(description, propshaft_unzipped):
     try:
         for _ in range(7):
             shaft.step(0.013)
-        saved = shaft.fmu.serializeFMUstate(shaft.fmu.getFMUstate())
+        state = shaft.get_state()
+        saved = shaft.serialize_state(state)
+        shaft.free_state(state)
         before = shaft.get_outputs()
         shaft.step(0.5)
-        shaft.fmu.setFMUstate(shaft.fmu.deSerializeFMUstate(saved))
+        restored = shaft.deserialize_state(saved)
+        shaft.set_state(restored)
+        shaft.free_state(restored)
         assert shaft.get_outputs() == before
     finally:
         shaft.close()
@@ -224,30 +228,15 @@ def test_state_serialization_round_trip(description, propshaft_unzipped):
 def test_joints_option_names_and_validates_the_build(tmp_path):
     from fmpy import read_model_description
 
-    build_fmu(tmp_path, "--model", "Propshaft", "--joints", "3")
-    names = [
-        v.name for v in read_model_description(str(tmp_path / "Propshaft3.fmu")).modelVariables
-    ]
+    built = build_fmu(tmp_path, "--model", "Propshaft", "--joints", "3")
+    names = [v.name for v in read_model_description(str(built)).modelVariables]
     assert "shaft_2_yoke_phase" in names and "joint_3_working_angle" in names
 
 
 def test_the_worked_layout_example_cancels_at_the_helpers_phasing(
     propshaft_fmu_path, tmp_path, capsys
 ):
-    import importlib.util
-    import sys
-    from pathlib import Path
-
-    examples = str(Path(__file__).resolve().parents[1] / "examples")
-    sys.path.insert(0, examples)
-    try:
-        spec = importlib.util.spec_from_file_location(
-            "propshaft_layout_example", Path(examples) / "propshaft_layout.py"
-        )
-        module = importlib.util.module_from_spec(spec)
-        spec.loader.exec_module(module)
-    finally:
-        sys.path.remove(examples)
+    module = load_example("propshaft_layout")
     module.main(["--fmu", str(propshaft_fmu_path), "--out", str(tmp_path)])
     text = capsys.readouterr().out
     assert (tmp_path / "propshaft_layout.png").stat().st_size > 10_000

@@ -20,6 +20,7 @@ from cardan_joint.physics.propshaft import (
     plane_angle,
     speed_ratio_fluctuation,
 )
+from cardan_joint.units import RPM_TO_RAD_PER_S
 
 D = math.radians
 LIMIT = D(15.0)
@@ -189,26 +190,29 @@ def test_one_straight_joint_leaves_the_single_joint_fluctuation():
 
 
 def test_angle_checks_on_hand_made_layouts():
-    rpm = math.pi / 30
-    clean = angle_report(layout([D(2), 0.0, D(2)], [0, 0, 0], [0.0]), 3000 * rpm)
+    clean = angle_report(layout([D(2), 0.0, D(2)], [0, 0, 0], [0.0]), 3000 * RPM_TO_RAD_PER_S)
     assert clean.warnings == () and clean.max_operating_angle is None
     small = angle_report(layout([D(0.3), 0.0, D(0.3)], [0, 0, 0], [0.0]), 0.0)
     assert [w for w in small.warnings if "below 0.5 deg" in w] and len(small.warnings) == 2
     unequal = angle_report(layout([D(2), 0.0, D(3.5)], [0, 0, 0], [0.0]), 0.0)
     assert any("differ by more than 1 deg" in w for w in unequal.warnings)
-    fast = angle_report(layout([D(4.5), 0.0, D(4.5)], [0, 0, 0], [0.0]), 4000 * rpm)
+    fast = angle_report(layout([D(4.5), 0.0, D(4.5)], [0, 0, 0], [0.0]), 4000 * RPM_TO_RAD_PER_S)
     assert any("exceeds the maximum operating angle" in w for w in fast.warnings)
-    assert not angle_report(layout([D(4.1), 0.0, D(4.1)], [0, 0, 0], [0.0]), 4000 * rpm).warnings
+    assert not angle_report(
+        layout([D(4.1), 0.0, D(4.1)], [0, 0, 0], [0.0]), 4000 * RPM_TO_RAD_PER_S
+    ).warnings
     residual = angle_report(layout([D(4), 0.0, D(4)], [0, 0, 0], [math.pi / 2]), 0.0)
     assert any("exceeds 0.0027" in w for w in residual.warnings)
     assert any(
         "above the table" in w
-        for w in angle_report(layout([D(1), 0.0, D(1)], [0, 0, 0], [0.0]), 6000 * rpm).warnings
+        for w in angle_report(
+            layout([D(1), 0.0, D(1)], [0, 0, 0], [0.0]), 6000 * RPM_TO_RAD_PER_S
+        ).warnings
     )
-    limit, _ = max_operating_angle(4250 * rpm)
+    limit, _ = max_operating_angle(4250 * RPM_TO_RAD_PER_S)
     assert limit == pytest.approx(D(3.95), rel=1e-12)
-    assert max_operating_angle(5000 * rpm)[0] == pytest.approx(D(3.2), rel=1e-12)
-    assert max_operating_angle(3499 * rpm)[0] is None
+    assert max_operating_angle(5000 * RPM_TO_RAD_PER_S)[0] == pytest.approx(D(3.2), rel=1e-12)
+    assert max_operating_angle(3499 * RPM_TO_RAD_PER_S)[0] is None
 
 
 def test_angles_stay_exact_over_a_million_revolutions():

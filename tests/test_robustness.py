@@ -8,7 +8,7 @@ import sys
 
 import numpy as np
 import pytest
-from conftest import build_fmu
+from conftest import build_fmu, run_build
 
 from cardan_joint import variables as table
 from cardan_joint.instance import JointInstance, status_of
@@ -305,8 +305,6 @@ def test_a_hundred_instances_in_one_process_are_independent(model_description, u
 def test_builds_with_other_names_and_defaults_coexist_in_one_process(
     tmp_path, model_description, unzipped_fmu
 ):
-    from fmpy import extract, read_model_description
-
     other = build_fmu(
         tmp_path, "--name=OtherJoint", "--set", "bend_angle=0.2", "--set", "max_bend_angle=0.3"
     )
@@ -314,8 +312,7 @@ def test_builds_with_other_names_and_defaults_coexist_in_one_process(
     loaded = []
     try:
         for path in (other, same_name):
-            md = read_model_description(str(path))
-            loaded.append(JointInstance(md, extract(str(path)), name=path.stem))
+            loaded.append(JointInstance.open(path, name=path.stem))
         default = JointInstance(model_description, unzipped_fmu, name="default")
         loaded.append(default)
         bends = [j.get("bend_angle")["bend_angle"] for j in loaded]
@@ -455,14 +452,7 @@ def test_a_refused_step_leaves_the_clock_alone():
     [("bend_angle=2.0", "bend_angle = 2.0"), ("bend_angle=abc", "abc"), ("nonsense=1", "nonsense")],
 )
 def test_build_refuses_bad_start_values_with_a_message(tmp_path, setting, words):
-    from conftest import ROOT
-
-    run = subprocess.run(
-        [sys.executable, str(ROOT / "build_fmu.py"), "--dest", str(tmp_path), "--set", setting],
-        capture_output=True,
-        text=True,
-        timeout=120,
-    )
+    run = run_build(tmp_path, "--set", setting, timeout=120)
     assert run.returncode != 0
     assert words in run.stderr and "Traceback" not in run.stderr
     assert not list(tmp_path.glob("*.fmu"))
