@@ -175,12 +175,10 @@ def build(
                 del sys.modules[name]
     fmu = Path(fmu)
     # --- native loader (issue 11): C hosts run the FMU without any set-up ---
-    # FMI 2 binaries only: the FMI 3 binary is pythonfmu3's own (see the README).
     from .native import NativeBuildError, install_loader
 
     try:
-        if fmi_version == 2:
-            install_loader(fmu, model_name)
+        install_loader(fmu, model_name, fmi_version)
     except NativeBuildError as error:
         fmu.unlink()
         raise BuildError(str(error)) from None

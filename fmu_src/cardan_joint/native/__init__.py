@@ -1,9 +1,10 @@
 """Put the native loader into a built FMU, so that C and C++ FMI hosts can run it.
 
-pythonfmu's binary needs a Python already in the process. `install_loader`
-compiles `loader.c` and friends with the machine's C compiler ($CC, else `cc`)
-against the build's Python headers, moves pythonfmu's binary to
-`binaries/linux64/<id>_pythonfmu.so`, puts the loader at `binaries/linux64/<id>.so`
+pythonfmu's (and pythonfmu3's) binary needs a Python already in the process.
+`install_loader` compiles `loader.c` (FMI 2.0) or `fmi3_loader.c` (FMI 3.0) and
+friends with the machine's C compiler ($CC, else `cc`) against the build's Python
+headers, moves pythonfmu's binary to `binaries/<platform>/<id>_pythonfmu.so`
+(`_pythonfmu3.so`), puts the loader at `binaries/<platform>/<id>.so`
 and records in `resources/python_runtime.txt` which Python to start where the
 host has none (its library, home and module search path). Users edit that file,
 or set the environment variables named in loader.h, to move the FMU.
@@ -19,10 +20,34 @@ import tempfile
 import zipfile
 from pathlib import Path
 
-SOURCES = ("loader.c", "fmi2_calls.c", "fmu_states.c", "python_runtime.c", "runtime_record.c")
+# Shared by both FMI versions: logger routing, state machine entry, finding Python.
+_COMMON = ("report.c", "calls.c", "slave_library.c", "python_runtime.c", "runtime_record.c")
+SOURCES = {
+    2: ("loader.c", "fmi2_calls.c", "fmu_states.c", *_COMMON),
+    3: (
+        "fmi3_loader.c",
+        "fmi3_calls.c",
+        "fmi3_unsupported.c",
+        "fmi3_variables.c",
+        "slave_module.c",
+        *_COMMON,
+    ),
+}
+# Where pythonfmu / pythonfmu3 put their Linux binary, and where the loader moves it.
+BINARY_FOLDER = {2: "binaries/linux64", 3: "binaries/x86_64-linux"}
+SLAVE_SUFFIX = {2: "_pythonfmu.so", 3: "_pythonfmu3.so"}
 RECORD = "resources/python_runtime.txt"
+# FMI 3.0: each variable's value reference, type and size, for the loader's value
+# count checks (hosts such as FMPy extract only resources/ and binaries/).
+VARIABLES = "resources/fmi3_variables.txt"
 _HERE = Path(__file__).resolve().parent
-_EXPORTS = "{ global: fmi2*; local: *; };\n"  # nothing else may interpose in the host
+
+
+def _fmi3_headers() -> Path:
+    """The FMI 3.0 standard headers, as pythonfmu3 (which builds the FMU) ships them."""
+    import pythonfmu3
+
+    return Path(pythonfmu3.__file__).resolve().parent / "pythonfmu-export" / "src" / "fmi"
 
 
 class NativeBuildError(RuntimeError):
@@ -83,7 +108,7 @@ def runtime_record() -> str:
     return "\n".join(lines) + "\n"
 
 
-def compile_loader(model_identifier: str, output: Path) -> Path:
+def compile_loader(model_identifier: str, output: Path, fmi_version: int = 2) -> Path:
     include = Path(sysconfig.get_path("include"))
     if not (include / "Python.h").exists():
         raise NativeBuildError(
@@ -91,7 +116,9 @@ def compile_loader(model_identifier: str, output: Path) -> Path:
             f"install its development package (e.g. python3-dev)"
         )
     exports = output.parent / "exports.map"
-    exports.write_text(_EXPORTS)
+    # Only the fmi functions: nothing else of the loader may interpose in the host.
+    exports.write_text(f"{{ global: fmi{fmi_version}*; local: *; }};\n")
+    headers = [f"-I{_fmi3_headers()}"] if fmi_version == 3 else []
     command = [
         *compiler(),
         "-std=gnu11",
@@ -102,7 +129,8 @@ def compile_loader(model_identifier: str, output: Path) -> Path:
         "-Wall",
         f"-DMODEL_IDENTIFIER=\"{model_identifier}\"",
         f"-I{include}",
-        *(str(_HERE / source) for source in SOURCES),
+        *headers,
+        *(str(_HERE / source) for source in SOURCES[fmi_version]),
         "-Wl,-z,nodelete",
         f"-Wl,--version-script={exports}",
         "-ldl",
@@ -117,12 +145,36 @@ def compile_loader(model_identifier: str, output: Path) -> Path:
     return output
 
 
-def install_loader(fmu_path, model_identifier: str) -> None:
+def variables_record(model_description: bytes) -> str:
+    """One line per FMI 3.0 variable: value reference, type, size, name."""
+    import xml.etree.ElementTree as ElementTree
+
+    lines = ["# valueReference type size name (written by the build)"]
+    variables = ElementTree.fromstring(model_description).find("ModelVariables")
+    for variable in variables if variables is not None else []:
+        size = 1
+        for dimension in variable.iter("Dimension"):
+            size *= int(dimension.get("start", 0))  # a structural size (0) is refused
+        lines.append(
+            " ".join(
+                [
+                    variable.get("valueReference", ""),
+                    "Int64" if variable.tag == "Enumeration" else variable.tag,
+                    str(size),
+                    variable.get("name", ""),
+                ]
+            )
+        )
+    return "\n".join(lines) + "\n"
+
+
+def install_loader(fmu_path, model_identifier: str, fmi_version: int = 2) -> None:
     """Rewrite the .fmu in place: loader in front of pythonfmu's binary, runtime record."""
     fmu_path = Path(fmu_path)
-    binary = f"binaries/linux64/{model_identifier}.so"
+    folder = BINARY_FOLDER[fmi_version]
+    binary = f"{folder}/{model_identifier}.so"
     with tempfile.TemporaryDirectory(prefix="cardan_joint_loader_") as workdir:
-        loader = compile_loader(model_identifier, Path(workdir) / "loader.so")
+        loader = compile_loader(model_identifier, Path(workdir) / "loader.so", fmi_version)
         rewritten = Path(workdir) / fmu_path.name
         with (
             zipfile.ZipFile(fmu_path) as source,
@@ -131,10 +183,10 @@ def install_loader(fmu_path, model_identifier: str) -> None:
             if binary not in source.namelist():
                 raise NativeBuildError(f"{fmu_path} has no {binary} to put the loader in front of")
             for item in source.infolist():
-                if item.filename == RECORD:
+                if item.filename in (RECORD, VARIABLES):
                     continue
                 name = (
-                    f"binaries/linux64/{model_identifier}_pythonfmu.so"
+                    f"{folder}/{model_identifier}{SLAVE_SUFFIX[fmi_version]}"
                     if item.filename == binary
                     else item.filename
                 )
@@ -143,4 +195,6 @@ def install_loader(fmu_path, model_identifier: str) -> None:
                 target.writestr(info, source.read(item))
             target.write(loader, binary)
             target.writestr(RECORD, runtime_record())
+            if fmi_version == 3:
+                target.writestr(VARIABLES, variables_record(source.read("modelDescription.xml")))
         shutil.move(str(rewritten), fmu_path)

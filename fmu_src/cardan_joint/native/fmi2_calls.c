@@ -28,7 +28,7 @@ int resolve_slave_api(void *handle, char *error, size_t size)
     return 0;
 }
 
-static const char *where(enum state state)
+const char *where(enum state state)
 {
     switch (state) {
     case STATE_INSTANTIATED:
@@ -43,38 +43,6 @@ static const char *where(enum state state)
     default:
         return "after a fatal error: only fmi2FreeInstance is allowed";
     }
-}
-
-struct instance *enter(fmi2Component c, unsigned allowed, const char *function)
-{
-    struct instance *in = c;
-    if (!in || in->magic != INSTANCE_MAGIC)
-        return NULL;
-    in->worst = fmi2OK;
-    if (!(in->state & allowed)) {
-        reportf(in, fmi2Error, "%s is not allowed %s; the call was ignored", function,
-                where(in->state));
-        return NULL;
-    }
-    enter_python_thread();
-    return in;
-}
-
-fmi2Status leave(struct instance *in, fmi2Status status)
-{
-    if (status == fmi2Fatal)
-        in->state = STATE_FATAL;
-    return status > in->worst ? status : in->worst;
-}
-
-int arrays_given(struct instance *in, const char *function, size_t n,
-                        const void *references, const void *values)
-{
-    if (n == 0 || (references && values))
-        return 1;
-    reportf(in, fmi2Error, "%s got a NULL array for %zu values; the call was ignored",
-            function, n);
-    return 0;
 }
 
 /* --- life cycle --------------------------------------------------------------- */
@@ -109,18 +77,7 @@ void fmi2FreeInstance(fmi2Component c)
 fmi2Status fmi2SetDebugLogging(fmi2Component c, fmi2Boolean on, size_t n, const fmi2String categories[])
 {
     struct instance *in = enter(c, ANY, "fmi2SetDebugLogging");
-    if (!in || !arrays_given(in, "fmi2SetDebugLogging", n, categories, categories))
-        return fmi2Error;
-    char **copies = n ? calloc(n, sizeof *copies) : NULL;
-    for (size_t i = 0; copies && i < n; i++)
-        copies[i] = copy_of(categories[i]);
-    for (size_t i = 0; i < in->n_categories; i++)
-        free(in->categories[i]);
-    free(in->categories);
-    in->categories = copies;
-    in->n_categories = copies ? n : 0;
-    in->logging_on = on;
-    return fmi2OK;
+    return in ? set_debug_logging(in, "fmi2SetDebugLogging", on, n, categories) : fmi2Error;
 }
 
 fmi2Status fmi2SetupExperiment(fmi2Component c, fmi2Boolean tolerance_defined, fmi2Real tolerance,

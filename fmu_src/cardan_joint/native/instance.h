@@ -25,7 +25,7 @@ enum state {
 
 struct instance {
     unsigned magic;
-    fmi2Component slave;
+    void *slave;
     const char *model;
     char *name, *guid, *resources_uri;
     fmi2Boolean visible;
@@ -83,8 +83,6 @@ struct instance {
       fmi2StatusKind, fmi2Boolean *))
 
 struct slave_api {
-    void *handle;
-    void (*finalize)(void);
 #define MEMBER(member, symbol, result, parameters) result(*member) parameters;
     SLAVE_FUNCTIONS(MEMBER)
 #undef MEMBER
@@ -92,12 +90,21 @@ struct slave_api {
 extern struct slave_api slave;
 
 int resolve_slave_api(void *handle, char *error, size_t size);
+int load_slave_library(const char *suffix, int (*resolve)(void *, char *, size_t), char *error,
+                       size_t size);
+/* Per FMI version: the host's logger (0: the host has none) and what a call
+ * in `state` should have been preceded by. */
+int to_host(const struct instance *in, fmi2Status status, const char *category, const char *text);
+const char *where(enum state state);
+int is_shared_proxy(void *logger);
 /* Every fmi2 call on an instance: enter() checks it and the state machine
  * (NULL: answer fmi2Error), leave() returns the worst status logged. */
 struct instance *enter(fmi2Component c, unsigned allowed, const char *function);
 fmi2Status leave(struct instance *in, fmi2Status status);
 int arrays_given(struct instance *in, const char *function, size_t n, const void *references,
                  const void *values);
+fmi2Status set_debug_logging(struct instance *in, const char *function, int on, size_t n,
+                             const char *const categories[]);
 fmi2Status drop_state(struct instance *in, fmi2FMUstate *state);
 char *copy_of(const char *text);  /* strdup, "" for NULL */
 void free_instance(struct instance *in);

@@ -13,43 +13,26 @@
 #include "instance.h"
 
 #include <dlfcn.h>
-#include <limits.h>
 #include <pthread.h>
-#include <stdarg.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
 
 struct slave_api slave;
 
-static const char *const STATUS_NAMES[] = {"OK", "Warning", "Discard", "Error", "Fatal", "Pending"};
-static const char *const STATUS_CATEGORIES[] = {
-    "logAll", "logStatusWarning", "logStatusDiscard", "logStatusError", "logStatusFatal", "logAll"};
-
-static int category_enabled(const struct instance *in, const char *category)
-{
-    if (!in->logging_on)
-        return 0;
-    if (in->n_categories == 0 || strcmp(category, "logAll") == 0)
-        return 1;
-    for (size_t i = 0; i < in->n_categories; i++)
-        if (strcmp(in->categories[i], category) == 0 || strcmp(in->categories[i], "logAll") == 0)
-            return 1;
-    return 0;
-}
-
 /* The host's logger takes a printf format: a literal '%' must reach it doubled. */
-static void to_host(const struct instance *in, fmi2Status status, const char *category,
-                    const char *text)
+int to_host(const struct instance *in, fmi2Status status, const char *category, const char *text)
 {
+    if (!in->host.logger)
+        return 0;
     if (!strchr(text, '%')) {
         in->host.logger(in->host.componentEnvironment, in->name, status, category, text);
-        return;
+        return 1;
     }
     size_t n = 0;
     char *escaped = malloc(2 * strlen(text) + 1);
     if (!escaped)
-        return;
+        return 0;
     for (const char *c = text; *c; c++) {
         escaped[n++] = *c;
         if (*c == '%')
@@ -58,33 +41,7 @@ static void to_host(const struct instance *in, fmi2Status status, const char *ca
     escaped[n] = '\0';
     in->host.logger(in->host.componentEnvironment, in->name, status, category, escaped);
     free(escaped);
-}
-
-void report(struct instance *in, fmi2Status status, const char *category, const char *text)
-{
-    unsigned index = status <= fmi2Pending ? (unsigned)status : (unsigned)fmi2Fatal;
-    if (status > in->worst)
-        in->worst = status;
-    if (!category || !*category)
-        category = STATUS_CATEGORIES[index];
-    int important = status != fmi2OK && status != fmi2Pending;
-    if (!important && !category_enabled(in, category))
-        return;
-    int to_logger = in->host.logger && (in->logging_on || !in->shared_proxy);
-    if (to_logger)
-        to_host(in, status, category, text);
-    if (in->echo_stderr || (!to_logger && important))
-        fprintf(stderr, "[%s %s] %s: %s\n", in->model, in->name, STATUS_NAMES[index], text);
-}
-
-void reportf(struct instance *in, fmi2Status status, const char *format, ...)
-{
-    char text[1024];
-    va_list args;
-    va_start(args, format);
-    vsnprintf(text, sizeof text, format, args);
-    va_end(args);
-    report(in, status, NULL, text);
+    return 1;
 }
 
 /* pythonfmu calls it with the message as its format and no arguments. */
@@ -95,58 +52,6 @@ static void from_slave(fmi2ComponentEnvironment environment, fmi2String name,
     report(environment, status, category, message ? message : "");
 }
 
-/* pythonfmu 0.7.0 resets its static shared_ptr<PyState> twice at exit: once in
- * the destructor registered with __cxa_atexit when its binary is loaded, then in
- * its __attribute__((destructor)), which frees it again ("free(): corrupted
- * unsorted chunks").  This handler, registered after that load, runs first:
- * pythonfmu's exported finalizePythonInterpreter empties the pointer before it
- * releases it, so both later resets find nothing to free. */
-static void empty_slave_state_at_exit(void)
-{
-    if (slave.finalize)
-        slave.finalize();
-}
-
-static int load_slave_library(const char *model, char *error, size_t size)
-{
-    static pthread_mutex_t lock = PTHREAD_MUTEX_INITIALIZER;
-    int result = 0;
-    pthread_mutex_lock(&lock);
-    if (!slave.handle) {
-        Dl_info self;
-        char path[PATH_MAX];
-        dladdr((void *)&load_slave_library, &self);
-        snprintf(path, sizeof path, "%s", self.dli_fname);
-        char *slash = strrchr(path, '/');
-        snprintf(slash ? slash + 1 : path, sizeof path - (size_t)(slash ? slash + 1 - path : 0),
-                 "%s_pythonfmu.so", model);
-        void *handle = dlopen(path, RTLD_NOW | RTLD_LOCAL);
-        if (!handle) {
-            snprintf(error, size, "cannot load pythonfmu's binary: %s", dlerror());
-            result = -1;
-        } else if (resolve_slave_api(handle, error, size)) {
-            result = -1;
-        } else {
-            slave.finalize = (void (*)(void))dlsym(handle, "finalizePythonInterpreter");
-            atexit(empty_slave_state_at_exit);
-            slave.handle = handle;
-        }
-    }
-    pthread_mutex_unlock(&lock);
-    return result;
-}
-
-/* FMPy's logger proxy (fmpy/logging) keeps ONE target for the whole process:
- * the logger of the last callbacks it wrapped, which simulate_fmu frees when
- * it returns. Calling it for an instance whose host did not turn logging on
- * may jump into freed memory, so such messages go to stderr instead. */
-static int is_shared_proxy(fmi2CallbackLogger logger)
-{
-    Dl_info where;
-    return logger && dladdr((void *)logger, &where) && where.dli_fname &&
-           strstr(where.dli_fname, "/fmpy/logging/");
-}
-
 /* Messages before an instance exists still go to the host's logger. */
 static void early_message(const fmi2CallbackFunctions *functions, const char *name,
                           const char *text)
@@ -154,13 +59,8 @@ static void early_message(const fmi2CallbackFunctions *functions, const char *na
     struct instance scratch = {.name = (char *)(name ? name : "?"), .model = MODEL_IDENTIFIER};
     if (functions)
         scratch.host = *functions;
-    scratch.shared_proxy = is_shared_proxy(scratch.host.logger);
+    scratch.shared_proxy = is_shared_proxy((void *)scratch.host.logger);
     report(&scratch, fmi2Error, NULL, text);
-}
-
-char *copy_of(const char *text)
-{
-    return strdup(text ? text : "");
 }
 
 fmi2Component fmi2Instantiate(fmi2String name, fmi2Type type, fmi2String guid,
@@ -181,7 +81,7 @@ fmi2Component fmi2Instantiate(fmi2String name, fmi2Type type, fmi2String guid,
     }
     if (read_runtime_record(resources, &record, error, sizeof error) ||
         start_python(&record, error, sizeof error) ||
-        load_slave_library(MODEL_IDENTIFIER, error, sizeof error)) {
+        load_slave_library("_pythonfmu.so", resolve_slave_api, error, sizeof error)) {
         early_message(functions, name, error);
         return NULL;
     }
@@ -207,7 +107,7 @@ fmi2Component fmi2Instantiate(fmi2String name, fmi2Type type, fmi2String guid,
     in->echo_stderr = echo && *echo && strcmp(echo, "0") != 0;
     if (functions)
         in->host = *functions;
-    in->shared_proxy = is_shared_proxy(in->host.logger);
+    in->shared_proxy = is_shared_proxy((void *)in->host.logger);
     in->to_slave = in->host;
     in->to_slave.logger = from_slave;
     in->to_slave.componentEnvironment = in;

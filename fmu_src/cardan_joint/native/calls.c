@@ -1,0 +1,59 @@
+/* What every call on an instance does first and last, for FMI 2.0 and 3.0:
+ * check the instance and the co-simulation state machine (where() says, per
+ * FMI version, what the host should have called), enter Python's thread state
+ * for this host thread, and return the worst status logged during the call. */
+#define _GNU_SOURCE
+#include "instance.h"
+
+#include <stdlib.h>
+
+struct instance *enter(fmi2Component c, unsigned allowed, const char *function)
+{
+    struct instance *in = c;
+    if (!in || in->magic != INSTANCE_MAGIC)
+        return NULL;
+    in->worst = fmi2OK;
+    if (!(in->state & allowed)) {
+        reportf(in, fmi2Error, "%s is not allowed %s; the call was ignored", function,
+                where(in->state));
+        return NULL;
+    }
+    enter_python_thread();
+    return in;
+}
+
+fmi2Status leave(struct instance *in, fmi2Status status)
+{
+    if (status == fmi2Fatal)
+        in->state = STATE_FATAL;
+    return status > in->worst ? status : in->worst;
+}
+
+int arrays_given(struct instance *in, const char *function, size_t n,
+                        const void *references, const void *values)
+{
+    if (n == 0 || (references && values))
+        return 1;
+    reportf(in, fmi2Error, "%s got a NULL array for %zu values; the call was ignored",
+            function, n);
+    return 0;
+}
+
+
+/* The loader keeps the host's logging choice; the slave always logs to it. */
+fmi2Status set_debug_logging(struct instance *in, const char *function, int on, size_t n,
+                             const char *const categories[])
+{
+    if (!arrays_given(in, function, n, categories, categories))
+        return fmi2Error;
+    char **copies = n ? calloc(n, sizeof *copies) : NULL;
+    for (size_t i = 0; copies && i < n; i++)
+        copies[i] = copy_of(categories[i]);
+    for (size_t i = 0; i < in->n_categories; i++)
+        free(in->categories[i]);
+    free(in->categories);
+    in->categories = copies;
+    in->n_categories = copies ? n : 0;
+    in->logging_on = on;
+    return fmi2OK;
+}

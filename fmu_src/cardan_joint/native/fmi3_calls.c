@@ -1,0 +1,229 @@
+/* The fmi3 functions pythonfmu3 answers, behind the checks the FMI 2.0 loader
+ * makes (fmi2_calls.c): the instance, the co-simulation state machine (no
+ * event mode: Instantiated -> Initialization -> Step -> Terminated), arrays
+ * given, and value references and value counts that match modelDescription.xml
+ * (what may be set when stays the slave's check, in Python).
+ * A call that fails a check is answered with fmi3Error and a message without
+ * reaching Python, and changes nothing. */
+#include "fmi3_instance.h"
+
+#include <stdio.h>
+
+/* Reading before initialization is harmless: start values. */
+#define READABLE ALIVE
+#define SETTABLE (STATE_INSTANTIATED | STATE_INITIALIZATION | STATE_STEP_COMPLETE)
+
+int values_fit(struct instance3 *in3, const char *function, enum value_type type,
+               const fmi3ValueReference vr[], size_t nvr, const void *values, size_t n_values)
+{
+    struct instance *in = &in3->base;
+    if (!arrays_given(in, function, nvr, vr, values))
+        return 0;
+    size_t expected = 0;
+    for (size_t i = 0; i < nvr; i++) {
+        const struct variable *v = find_variable(in3->variables, vr[i]);
+        const char *refusal = !v                  ? "is not a variable of this FMU"
+                              : v->type != type   ? "is of another type"
+                              : v->size == 0      ? "has a structural size, not supported"
+                                                  : NULL;
+        if (refusal) {
+            reportf(in, fmi2Error, "%s: value reference %u%s%s%s%s%s %s; the call was ignored",
+                    function, vr[i], v ? " (" : "", v ? v->name : "", v ? ", " : "",
+                    v ? TYPE_NAMES[v->type] : "", v ? ")" : "", refusal);
+            return 0;
+        }
+        expected += v->size;
+    }
+    if (expected != n_values) {
+        reportf(in, fmi2Error, "%s: nValues is %zu but the %zu value references hold %zu values; "
+                "the call was ignored", function, n_values, nvr, expected);
+        return 0;
+    }
+    return 1;
+}
+
+/* pythonfmu3 implements the accessors with a member in slave3; the others it
+ * would abort on, and no variable of this FMU has their type: values_fit
+ * refuses any reference, and an empty call succeeds. */
+#define VALUES3(get_or_set, Type, member, allowed, constness)                      \
+    fmi3Status fmi3##get_or_set##Type(fmi3Instance c, const fmi3ValueReference vr[],         \
+                                      size_t nvr, constness fmi3##Type values[],             \
+                                      size_t n_values)                                       \
+    {                                                                                        \
+        const char *function = "fmi3" #get_or_set #Type;                                     \
+        struct instance *in = enter(c, allowed, function);                                   \
+        if (!in || !values_fit((struct instance3 *)in, function, T_##Type##_ID, vr, nvr,     \
+                               values, n_values))                                   \
+            return fmi3Error;                                                                \
+        if (nvr == 0)                                                                        \
+            return fmi3OK;                                                                   \
+        return (fmi3Status)leave(in, (fmi2Status)member(in->slave, vr, nvr, values,          \
+                                                        n_values));                          \
+    }
+#define ACCESSORS(Type, get, set)                                                            \
+    VALUES3(Get, Type, get, READABLE, ) VALUES3(Set, Type, set, SETTABLE, const)
+#define T_Float32_ID T_FLOAT32
+#define T_Float64_ID T_FLOAT64
+#define T_Int8_ID T_INT8
+#define T_UInt8_ID T_UINT8
+#define T_Int16_ID T_INT16
+#define T_UInt16_ID T_UINT16
+#define T_Int32_ID T_INT32
+#define T_UInt32_ID T_UINT32
+#define T_Int64_ID T_INT64
+#define T_UInt64_ID T_UINT64
+#define T_Boolean_ID T_BOOLEAN
+#define T_String_ID T_STRING
+#define NOT_IN_PYTHONFMU3(...) fmi3Error
+ACCESSORS(Float64, slave3.get_float64, slave3.set_float64)
+ACCESSORS(Int32, slave3.get_int32, slave3.set_int32)
+ACCESSORS(Int64, slave3.get_int64, slave3.set_int64)
+ACCESSORS(UInt64, slave3.get_uint64, slave3.set_uint64)
+ACCESSORS(Boolean, slave3.get_boolean, slave3.set_boolean)
+ACCESSORS(String, slave3.get_string, slave3.set_string)
+ACCESSORS(Float32, NOT_IN_PYTHONFMU3, NOT_IN_PYTHONFMU3)
+ACCESSORS(Int8, NOT_IN_PYTHONFMU3, NOT_IN_PYTHONFMU3)
+ACCESSORS(UInt8, NOT_IN_PYTHONFMU3, NOT_IN_PYTHONFMU3)
+ACCESSORS(Int16, NOT_IN_PYTHONFMU3, NOT_IN_PYTHONFMU3)
+ACCESSORS(UInt16, NOT_IN_PYTHONFMU3, NOT_IN_PYTHONFMU3)
+ACCESSORS(UInt32, NOT_IN_PYTHONFMU3, NOT_IN_PYTHONFMU3)
+
+/* --- life cycle --------------------------------------------------------------- */
+
+fmi3Status fmi3SetDebugLogging(fmi3Instance c, fmi3Boolean on, size_t n,
+                               const fmi3String categories[])
+{
+    struct instance *in = enter(c, ANY, "fmi3SetDebugLogging");
+    return in ? (fmi3Status)set_debug_logging(in, "fmi3SetDebugLogging", on, n, categories)
+              : fmi3Error;
+}
+
+static fmi3Status transition(fmi3Instance c, unsigned allowed, const char *function,
+                             fmi3Status (*call)(fmi3Instance), enum state next)
+{
+    struct instance *in = enter(c, allowed, function);
+    if (!in)
+        return fmi3Error;
+    fmi2Status status = leave(in, (fmi2Status)call(in->slave));
+    if (status <= fmi2Error && in->state != STATE_FATAL)
+        in->state = next;
+    return (fmi3Status)status;
+}
+
+fmi3Status fmi3EnterInitializationMode(fmi3Instance c, fmi3Boolean tolerance_defined,
+                                       fmi3Float64 tolerance, fmi3Float64 start,
+                                       fmi3Boolean stop_defined, fmi3Float64 stop)
+{
+    struct instance *in = enter(c, STATE_INSTANTIATED, "fmi3EnterInitializationMode");
+    if (!in)
+        return fmi3Error;
+    fmi2Status status = leave(in, (fmi2Status)slave3.enter_initialization(
+                                      in->slave, tolerance_defined, tolerance, start,
+                                      stop_defined, stop));
+    if (status <= fmi2Error && in->state != STATE_FATAL)
+        in->state = STATE_INITIALIZATION;
+    return (fmi3Status)status;
+}
+
+fmi3Status fmi3ExitInitializationMode(fmi3Instance c)
+{
+    return transition(c, STATE_INITIALIZATION, "fmi3ExitInitializationMode",
+                      slave3.exit_initialization, STATE_STEP_COMPLETE);
+}
+
+fmi3Status fmi3Terminate(fmi3Instance c)
+{
+    return transition(c, STATE_STEP_COMPLETE, "fmi3Terminate", slave3.terminate,
+                      STATE_TERMINATED);
+}
+
+fmi3Status fmi3Reset(fmi3Instance c)
+{
+    return transition(c, ALIVE, "fmi3Reset", slave3.reset, STATE_INSTANTIATED);
+}
+
+/* --- stepping ------------------------------------------------------------------- */
+
+fmi3Status fmi3DoStep(fmi3Instance c, fmi3Float64 time, fmi3Float64 step,
+                      fmi3Boolean no_set_prior, fmi3Boolean *event_handling_needed,
+                      fmi3Boolean *terminate, fmi3Boolean *early_return,
+                      fmi3Float64 *last_successful_time)
+{
+    struct instance *in = enter(c, STATE_STEP_COMPLETE, "fmi3DoStep");
+    if (!in)
+        return fmi3Error;
+    if (!event_handling_needed || !terminate || !early_return || !last_successful_time) {
+        report(in, fmi2Error, NULL, "fmi3DoStep got a NULL pointer for one of its four "
+                                    "results; the call was ignored");
+        return fmi3Error;
+    }
+    *event_handling_needed = *terminate = *early_return = fmi3False;
+    return (fmi3Status)leave(in, (fmi2Status)slave3.do_step(in->slave, time, step, no_set_prior,
+                                                            event_handling_needed, terminate,
+                                                            early_return, last_successful_time));
+}
+
+/* --- FMU states ------------------------------------------------------------------ */
+
+#define HAVE(pointer, function)                                                            \
+    if (!(pointer)) {                                                                      \
+        report(in, fmi2Error, NULL, function " got a NULL pointer; the call was ignored"); \
+        return fmi3Error;                                                                  \
+    }
+
+fmi3Status fmi3GetFMUState(fmi3Instance c, fmi3FMUState *state)
+{
+    struct instance *in = enter(c, ALIVE, "fmi3GetFMUState");
+    if (!in)
+        return fmi3Error;
+    HAVE(state, "fmi3GetFMUState")
+    return (fmi3Status)leave(in, (fmi2Status)slave3.get_fmu_state(in->slave, state));
+}
+
+fmi3Status fmi3SetFMUState(fmi3Instance c, fmi3FMUState state)
+{
+    struct instance *in = enter(c, ALIVE, "fmi3SetFMUState");
+    if (!in)
+        return fmi3Error;
+    HAVE(state, "fmi3SetFMUState")
+    return (fmi3Status)leave(in, (fmi2Status)slave3.set_fmu_state(in->slave, state));
+}
+
+fmi3Status fmi3FreeFMUState(fmi3Instance c, fmi3FMUState *state)
+{
+    struct instance *in = enter(c, ANY, "fmi3FreeFMUState");
+    if (!in)
+        return fmi3Error;
+    if (!state || !*state)
+        return fmi3OK;  /* the standard: freeing nothing does nothing */
+    return (fmi3Status)leave(in, (fmi2Status)slave3.free_fmu_state(in->slave, state));
+}
+
+fmi3Status fmi3SerializedFMUStateSize(fmi3Instance c, fmi3FMUState state, size_t *size)
+{
+    struct instance *in = enter(c, ALIVE, "fmi3SerializedFMUStateSize");
+    if (!in)
+        return fmi3Error;
+    HAVE(state && size, "fmi3SerializedFMUStateSize")
+    return (fmi3Status)leave(in, (fmi2Status)slave3.serialized_size(in->slave, state, size));
+}
+
+fmi3Status fmi3SerializeFMUState(fmi3Instance c, fmi3FMUState state, fmi3Byte bytes[],
+                                 size_t size)
+{
+    struct instance *in = enter(c, ALIVE, "fmi3SerializeFMUState");
+    if (!in)
+        return fmi3Error;
+    HAVE(state && bytes, "fmi3SerializeFMUState")
+    return (fmi3Status)leave(in, (fmi2Status)slave3.serialize(in->slave, state, bytes, size));
+}
+
+fmi3Status fmi3DeserializeFMUState(fmi3Instance c, const fmi3Byte bytes[], size_t size,
+                                   fmi3FMUState *state)
+{
+    struct instance *in = enter(c, ALIVE, "fmi3DeserializeFMUState");
+    if (!in)
+        return fmi3Error;
+    HAVE(bytes && state, "fmi3DeserializeFMUState")
+    return (fmi3Status)leave(in, (fmi2Status)slave3.deserialize(in->slave, bytes, size, state));
+}

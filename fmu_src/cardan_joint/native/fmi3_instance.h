@@ -1,0 +1,71 @@
+/* One FMI 3.0 instance as the loader sees it, and pythonfmu3's fmi3 entry points.
+ * The FMI 3.0 types and prototypes come from the standard's headers, which
+ * pythonfmu3 ships (the build adds their folder to the include path). */
+#ifndef CARDAN_JOINT_FMI3_INSTANCE_H
+#define CARDAN_JOINT_FMI3_INSTANCE_H
+
+#include "fmi3Functions.h"
+#include "instance.h"
+
+/* The accessor a variable's values go through (Enumeration: Int64). */
+enum value_type {
+    T_FLOAT32, T_FLOAT64, T_INT8, T_UINT8, T_INT16, T_UINT16, T_INT32, T_UINT32, T_INT64,
+    T_UINT64, T_BOOLEAN, T_STRING, T_BINARY, T_CLOCK, N_TYPES
+};
+extern const char *const TYPE_NAMES[N_TYPES];
+
+#define VARIABLES_RECORD "fmi3_variables.txt"
+#define MAX_VARIABLES 256
+struct variables {
+    struct variable {
+        fmi3ValueReference vr;
+        enum value_type type;
+        size_t size;          /* product of its <Dimension start=...>: values it takes */
+        char name[64];
+    } list[MAX_VARIABLES];
+    int count;
+};
+/* From resources/VARIABLES_RECORD; -1 and a message if unreadable. */
+int read_variables(const char *resources, struct variables *variables, char *error, size_t size);
+const struct variable *find_variable(const struct variables *variables, fmi3ValueReference vr);
+
+struct instance3 {
+    struct instance base;          /* first: enter() and report() work on it */
+    fmi3InstanceEnvironment environment;
+    fmi3LogMessageCallback log_message;
+    const struct variables *variables;
+};
+
+#define SLAVE3_FUNCTIONS(X)                                                                \
+    X(instantiate, fmi3InstantiateCoSimulation) X(free_instance, fmi3FreeInstance)         \
+    X(enter_initialization, fmi3EnterInitializationMode)                                   \
+    X(exit_initialization, fmi3ExitInitializationMode) X(terminate, fmi3Terminate)         \
+    X(reset, fmi3Reset) X(get_float64, fmi3GetFloat64) X(get_int32, fmi3GetInt32)          \
+    X(get_int64, fmi3GetInt64) X(get_uint64, fmi3GetUInt64) X(get_boolean, fmi3GetBoolean) \
+    X(get_string, fmi3GetString) X(set_float64, fmi3SetFloat64) X(set_int32, fmi3SetInt32) \
+    X(set_int64, fmi3SetInt64) X(set_uint64, fmi3SetUInt64) X(set_boolean, fmi3SetBoolean) \
+    X(set_string, fmi3SetString) X(do_step, fmi3DoStep)                                    \
+    X(get_fmu_state, fmi3GetFMUState) X(set_fmu_state, fmi3SetFMUState)                    \
+    X(free_fmu_state, fmi3FreeFMUState)                                                    \
+    X(serialized_size, fmi3SerializedFMUStateSize)                                         \
+    X(serialize, fmi3SerializeFMUState) X(deserialize, fmi3DeserializeFMUState)
+
+struct slave3_api {
+#define MEMBER3(member, symbol) symbol##TYPE *member;
+    SLAVE3_FUNCTIONS(MEMBER3)
+#undef MEMBER3
+};
+extern struct slave3_api slave3;
+
+/* The script module pythonfmu imports (resources/slavemodule.txt) imports in
+ * this process's Python; else -1 and the Python error. */
+int slave_module_imports(const char *resources, char *error, size_t size);
+
+/* Values of `type` for `vr`: known references of that type, as many values as
+ * they hold, arrays given; else fmi3Error logged and 0. */
+int values_fit(struct instance3 *in, const char *function, enum value_type type,
+               const fmi3ValueReference vr[], size_t nvr, const void *values, size_t n_values);
+void free_instance3(struct instance *in);
+fmi3Status unsupported3(fmi3Instance instance, const char *function, const char *why);
+
+#endif

@@ -1,0 +1,82 @@
+/* Import the slave's script module before pythonfmu does: pythonfmu3 0.3.4
+ * dereferences NULL in its instance constructor when the import fails, which
+ * kills the host.  The import runs in the process's Python (started or found
+ * by python_runtime.c) with the resources folder first on sys.path, as
+ * pythonfmu puts it; sys.path is left as it was, and the imported module stays
+ * in sys.modules, where pythonfmu's own import finds it. */
+#define _GNU_SOURCE
+#include "fmi3_instance.h"
+
+#include <dlfcn.h>
+#include <stdio.h>
+#include <string.h>
+
+#define IMPORT_FUNCTIONS(X)                                                              \
+    X(PyGILState_Ensure) X(PyGILState_Release) X(PyDict_New) X(PyEval_GetBuiltins)      \
+    X(PyDict_SetItemString) X(PyDict_GetItemString) X(PyUnicode_DecodeFSDefault)        \
+    X(PyUnicode_FromString) X(PyRun_String) X(PyUnicode_AsUTF8) X(Py_DecRef) X(PyErr_Clear)
+
+static const char CHECK[] =
+    "import sys, importlib\n"
+    "sys.path.insert(0, resources)\n"
+    "try:\n"
+    "    importlib.import_module(module)\n"
+    "    problem = ''\n"
+    "except BaseException as error:\n"
+    "    problem = f'{type(error).__name__}: {error}'\n"
+    "finally:\n"
+    "    del sys.path[sys.path.index(resources)]\n";
+
+static int read_module_name(const char *resources, char *module, size_t length, char *error,
+                            size_t size)
+{
+    char name[4200];
+    snprintf(name, sizeof name, "%s/slavemodule.txt", resources);
+    FILE *file = fopen(name, "r");
+    int found = file && fgets(module, (int)length, file);
+    if (file)
+        fclose(file);
+    module[strcspn(module, "\r\n")] = '\0';
+    if (!found || !*module) {
+        snprintf(error, size, "cannot read the slave's module name from %s: the resources "
+                              "folder is incomplete, rebuild the FMU", name);
+        return -1;
+    }
+    return 0;
+}
+
+int slave_module_imports(const char *resources, char *error, size_t size)
+{
+    char module[256];
+    if (read_module_name(resources, module, sizeof module, error, size))
+        return -1;
+#define DECLARE(name) __typeof__(&name) p_##name = (__typeof__(&name))dlsym(RTLD_DEFAULT, #name);
+    IMPORT_FUNCTIONS(DECLARE)
+#undef DECLARE
+#define MISSING(name) !p_##name ||
+    if (IMPORT_FUNCTIONS(MISSING) 0) {
+        snprintf(error, size, "the process's Python lacks a function the loader needs");
+        return -1;
+    }
+#undef MISSING
+    PyGILState_STATE gil = p_PyGILState_Ensure();
+    PyObject *globals = p_PyDict_New(), *path = p_PyUnicode_DecodeFSDefault(resources);
+    PyObject *name = p_PyUnicode_FromString(module), *result = NULL;
+    if (globals && path && name && !p_PyDict_SetItemString(globals, "resources", path) &&
+        !p_PyDict_SetItemString(globals, "module", name) &&
+        !p_PyDict_SetItemString(globals, "__builtins__", p_PyEval_GetBuiltins()))
+        result = p_PyRun_String(CHECK, Py_file_input, globals, globals);
+    PyObject *problem = result && globals ? p_PyDict_GetItemString(globals, "problem") : NULL;
+    const char *text = problem ? p_PyUnicode_AsUTF8(problem) : "the check itself failed";
+    int failed = !text || *text;
+    if (failed)
+        snprintf(error, size, "the slave's module %s does not import from %s (%s)", module,
+                 resources, text ? text : "unknown error");
+    p_PyErr_Clear();
+    PyObject *owned[] = {result, name, path, globals};
+    for (size_t i = 0; i < sizeof owned / sizeof *owned; i++)
+        if (owned[i])
+            p_Py_DecRef(owned[i]);
+    p_PyGILState_Release(gil);
+    return failed ? -1 : 0;
+}
