@@ -1,23 +1,25 @@
-"""Compile the C test host (host.c and friends) with the machine's compiler ($CC, else cc)."""
+"""Compile the C test hosts with the machine's compiler ($CC, else cc): the FMI 2.0
+host (host.c and friends) and the FMI 3.0 host (host3.c, on the standard's headers)."""
 
 import subprocess
 from pathlib import Path
 
-from cardan_joint.native import compiler
+from cardan_joint.native import compiler, fmi3_headers
 
 HERE = Path(__file__).resolve().parent
 NATIVE = HERE.parents[1] / "fmu_src" / "cardan_joint" / "native"
+FMI3_HOST = HERE / "host3.c"
 
 
-def compile_host(output: Path) -> Path:
+def _compile(output: Path, include: Path, sources: list) -> Path:
     subprocess.run(
         [
             *compiler(),
             "-std=gnu11",
             "-O2",
             "-pthread",
-            f"-I{NATIVE}",
-            *map(str, sorted(HERE.glob("*.c"))),
+            f"-I{include}",
+            *map(str, sources),
             "-ldl",
             "-lm",
             "-o",
@@ -28,9 +30,22 @@ def compile_host(output: Path) -> Path:
     return output
 
 
+def compile_host(output: Path) -> Path:
+    return _compile(output, NATIVE, [c for c in sorted(HERE.glob("*.c")) if c != FMI3_HOST])
+
+
+def compile_host3(output: Path) -> Path:
+    return _compile(output, fmi3_headers(), [FMI3_HOST])
+
+
 if __name__ == "__main__":
     import sys
 
-    if len(sys.argv) != 2:
-        sys.exit("usage: python tests/c_host/compile.py OUTPUT  (then: OUTPUT run DIR 1000 0.001)")
-    print(compile_host(Path(sys.argv[1])))
+    arguments = sys.argv[1:]
+    fmi3 = arguments[:1] == ["--fmi3"]
+    if len(arguments) != 1 + fmi3:
+        sys.exit(
+            "usage: python tests/c_host/compile.py [--fmi3] OUTPUT"
+            "  (then: OUTPUT run DIR 1000 0.001)"
+        )
+    print((compile_host3 if fmi3 else compile_host)(Path(arguments[-1])))

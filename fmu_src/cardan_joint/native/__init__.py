@@ -43,7 +43,7 @@ VARIABLES = "resources/fmi3_variables.txt"
 _HERE = Path(__file__).resolve().parent
 
 
-def _fmi3_headers() -> Path:
+def fmi3_headers() -> Path:
     """The FMI 3.0 standard headers, as pythonfmu3 (which builds the FMU) ships them."""
     import pythonfmu3
 
@@ -118,7 +118,7 @@ def compile_loader(model_identifier: str, output: Path, fmi_version: int = 2) ->
     exports = output.parent / "exports.map"
     # Only the fmi functions: nothing else of the loader may interpose in the host.
     exports.write_text(f"{{ global: fmi{fmi_version}*; local: *; }};\n")
-    headers = [f"-I{_fmi3_headers()}"] if fmi_version == 3 else []
+    headers = [f"-I{fmi3_headers()}"] if fmi_version == 3 else []
     command = [
         *compiler(),
         "-std=gnu11",
