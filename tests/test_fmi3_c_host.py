@@ -66,7 +66,8 @@ def test_a_bad_input_with_logging_off_reaches_the_logger_once(c_host3, fmi3_unzi
 
 
 # name -> (status, logger calls, what the message says); pythonfmu3 alone would
-# abort the host on fmi3GetFloat32 and fmi3GetClock and return OK on the counts.
+# abort the host on fmi3GetFloat32 and fmi3GetClock, return OK on the counts and
+# take any pointer for a Python object.
 MISUSE = {
     "model_exchange": (3, 1, "co-simulation only"),
     "step_before_init": (3, 1, "fmi3DoStep is not allowed before initialization"),
@@ -85,6 +86,13 @@ MISUSE = {
     "right_count": (0, 0, ""),
     "step_null_results": (3, 1, "fmi3DoStep got a NULL pointer"),
     "step": (0, 0, ""),
+    "get_state": (0, 0, ""),
+    "set_foreign_state": (3, 1, "which this instance did not create or has already freed"),
+    "serialize_short": (3, 1, "ask fmi3SerializedFMUStateSize first"),
+    "serialize_long": (0, 0, ""),  # pythonfmu3 alone reads past the state's bytes
+    "free_state": (0, 0, ""),
+    "set_freed_state": (3, 1, "which this instance did not create or has already freed"),
+    "free_again": (3, 1, "which this instance did not create or has already freed"),
     "step_after_terminate": (3, 1, "not allowed after fmi3Terminate"),
     "reset": (0, 0, ""),
     "step_after_reset": (0, 0, ""),

@@ -23,7 +23,8 @@
     X(InstantiateCoSimulation) X(InstantiateModelExchange) X(FreeInstance)                   \
     X(EnterInitializationMode) X(ExitInitializationMode) X(Terminate) X(Reset)               \
     X(GetFloat64) X(SetFloat64) X(GetFloat32) X(GetClock) X(EnterEventMode)                  \
-    X(UpdateDiscreteStates) X(GetDirectionalDerivative) X(DoStep)
+    X(UpdateDiscreteStates) X(GetDirectionalDerivative) X(DoStep) X(GetFMUState)              \
+    X(SetFMUState) X(FreeFMUState) X(SerializedFMUStateSize) X(SerializeFMUState)
 
 static struct {
     char token[128], identifier[64], resources[4200];
@@ -238,6 +239,18 @@ static int misuse(void)
     answer("right_count", fmu.GetFloat64(c, pair, 2, values, 5), &n);
     answer("step_null_results", fmu.DoStep(c, 0.0, 1e-3, fmi3True, NULL, NULL, NULL, NULL), &n);
     answer("step", step(c, 0.0, 1e-3), &n);
+    fmi3FMUState state = NULL, foreign = &n, freed;
+    static char bytes[1 << 16];
+    size_t size = 0;
+    answer("get_state", fmu.GetFMUState(c, &state), &n);
+    answer("set_foreign_state", fmu.SetFMUState(c, foreign), &n);
+    check(fmu.SerializedFMUStateSize(c, state, &size), "SerializedFMUStateSize");
+    answer("serialize_short", fmu.SerializeFMUState(c, state, bytes, size - 1), &n);
+    answer("serialize_long", fmu.SerializeFMUState(c, state, bytes, sizeof bytes), &n);
+    freed = state;
+    answer("free_state", fmu.FreeFMUState(c, &state), &n);
+    answer("set_freed_state", fmu.SetFMUState(c, freed), &n);
+    answer("free_again", fmu.FreeFMUState(c, &freed), &n);
     check(fmu.Terminate(c), "Terminate");
     answer("step_after_terminate", step(c, 1e-3, 1e-3), &n);
     answer("reset", fmu.Reset(c), &n);

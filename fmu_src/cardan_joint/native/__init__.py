@@ -21,12 +21,20 @@ import zipfile
 from pathlib import Path
 
 # Shared by both FMI versions: logger routing, state machine entry, finding Python.
-_COMMON = ("report.c", "calls.c", "slave_library.c", "python_runtime.c", "runtime_record.c")
+_COMMON = (
+    "report.c",
+    "calls.c",
+    "state_book.c",
+    "slave_library.c",
+    "python_runtime.c",
+    "runtime_record.c",
+)
 SOURCES = {
     2: ("loader.c", "fmi2_calls.c", "fmu_states.c", *_COMMON),
     3: (
         "fmi3_loader.c",
         "fmi3_calls.c",
+        "fmi3_states.c",
         "fmi3_unsupported.c",
         "fmi3_variables.c",
         "slave_module.c",

@@ -3,61 +3,10 @@
  * answered with fmi2Error and a message, without reaching Python. */
 #include "instance.h"
 
-#include <stdlib.h>
-
-/* --- FMU states: only those this instance handed out and did not free ---------- */
-
-static size_t find_state(const struct instance *in, fmi2FMUstate state)
+/* pythonfmu's free, for drop_state (state_book.c). */
+fmi2Status free_slave_state(struct instance *in, fmi2FMUstate *state)
 {
-    for (size_t i = 0; state && i < in->n_fmu_states; i++)
-        if (in->fmu_states[i] == state)
-            return i;
-    return (size_t)-1;
-}
-
-static int known_state(struct instance *in, fmi2FMUstate state, const char *function)
-{
-    if (find_state(in, state) != (size_t)-1)
-        return 1;
-    reportf(in, fmi2Error, "%s got FMU state %p, which this instance did not create or has "
-            "already freed; the call was ignored", function, state);
-    return 0;
-}
-
-static void keep_state(struct instance *in, fmi2FMUstate state)
-{
-    if (in->n_fmu_states == in->fmu_states_capacity) {
-        size_t capacity = in->fmu_states_capacity ? 2 * in->fmu_states_capacity : 8;
-        fmi2FMUstate *grown = realloc(in->fmu_states, capacity * sizeof *grown);
-        if (!grown)
-            return;
-        in->fmu_states = grown;
-        in->fmu_states_capacity = capacity;
-    }
-    in->fmu_states[in->n_fmu_states++] = state;
-}
-
-fmi2Status drop_state(struct instance *in, fmi2FMUstate *state)
-{
-    size_t i = find_state(in, *state);
-    in->fmu_states[i] = in->fmu_states[--in->n_fmu_states];
     return slave.free_fmu_state(in->slave, state);
-}
-
-/* A new state goes into *state; one of ours already there is replaced. */
-static int prepare_new_state(struct instance *in, fmi2FMUstate *state, const char *function)
-{
-    if (!state) {
-        reportf(in, fmi2Error, "%s got a NULL pointer for the FMU state", function);
-        return 0;
-    }
-    if (*state) {
-        if (!known_state(in, *state, function))
-            return 0;
-        drop_state(in, state);
-        *state = NULL;
-    }
-    return 1;
 }
 
 /* --- FMU state ---------------------------------------------------------------- */

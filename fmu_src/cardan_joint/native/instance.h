@@ -105,7 +105,13 @@ int arrays_given(struct instance *in, const char *function, size_t n, const void
                  const void *values);
 fmi2Status set_debug_logging(struct instance *in, const char *function, int on, size_t n,
                              const char *const categories[]);
+/* FMU states this instance handed out (state_book.c); free_slave_state is the
+ * slave's own free, per FMI version. */
+int known_state(struct instance *in, fmi2FMUstate state, const char *function);
+void keep_state(struct instance *in, fmi2FMUstate state);
+int prepare_new_state(struct instance *in, fmi2FMUstate *state, const char *function);
 fmi2Status drop_state(struct instance *in, fmi2FMUstate *state);
+fmi2Status free_slave_state(struct instance *in, fmi2FMUstate *state);
 char *copy_of(const char *text);  /* strdup, "" for NULL */
 void free_instance(struct instance *in);
 void report(struct instance *in, fmi2Status status, const char *category, const char *text);
