@@ -186,8 +186,36 @@ def test_parameters_are_fixed_after_initialization(joint3):
         joint3.set(max_bend_angle=0.1)
     assert refused.value.status == 3
     assert joint3.messages[-1][:2] == (3, "logStatusError")
-    assert "max_bend_angle = 0.1 ignored" in joint3.messages[-1][2]
+    assert "(max_bend_angle, Float64) is fixed" in joint3.messages[-1][2]
     assert joint3.get("max_bend_angle")["max_bend_angle"] == table.BY_NAME["max_bend_angle"].start
+
+
+def test_a_restored_state_from_before_initialization_does_not_unfix_parameters(
+    fmi3_description, fmi3_unzipped
+):
+    from fmpy.fmi1 import FMICallException
+    from fmpy.fmi3 import FMU3Slave
+
+    fmu = FMU3Slave(
+        guid=fmi3_description.guid,
+        unzipDirectory=fmi3_unzipped,
+        modelIdentifier=fmi3_description.coSimulation.modelIdentifier,
+        instanceName="restored",
+    )
+    fmu.instantiate()
+    before = fmu.getFMUState()
+    fmu.enterInitializationMode()
+    fmu.exitInitializationMode()
+    fmu.setFMUState(before)  # the slave now believes it is not initialized
+    reference = table.BY_NAME["max_bend_angle"]
+    vr = next(
+        v.valueReference for v in fmi3_description.modelVariables if v.name == "max_bend_angle"
+    )
+    with pytest.raises(FMICallException):
+        fmu.setFloat64([vr], [0.1])
+    assert fmu.getFloat64([vr]) == [reference.start]
+    fmu.freeFMUState(before)
+    fmu.freeInstance()
 
 
 # The slave refuses what it may not do; the loader (native/fmi3_calls.c) refuses

@@ -52,10 +52,12 @@ _HERE = Path(__file__).resolve().parent
 
 
 def fmi3_headers() -> Path:
-    """The FMI 3.0 standard headers, as pythonfmu3 (which builds the FMU) ships them."""
-    import pythonfmu3
+    """The FMI 3.0 standard headers, as the installed pythonfmu3 (which builds the FMU)
+    ships them. Found through its distribution: an FMU's resources folder, which
+    pythonfmu3 puts on sys.path when it runs, holds a copy of its Python package."""
+    from importlib.metadata import distribution
 
-    return Path(pythonfmu3.__file__).resolve().parent / "pythonfmu-export" / "src" / "fmi"
+    return Path(str(distribution("pythonfmu3").locate_file("pythonfmu3/pythonfmu-export/src/fmi")))
 
 
 class NativeBuildError(RuntimeError):
@@ -154,10 +156,10 @@ def compile_loader(model_identifier: str, output: Path, fmi_version: int = 2) ->
 
 
 def variables_record(model_description: bytes) -> str:
-    """One line per FMI 3.0 variable: value reference, type, size, name."""
+    """One line per FMI 3.0 variable: value reference, type, size, fixed (0/1), name."""
     import xml.etree.ElementTree as ElementTree
 
-    lines = ["# valueReference type size name (written by the build)"]
+    lines = ["# valueReference type size fixed name (written by the build)"]
     variables = ElementTree.fromstring(model_description).find("ModelVariables")
     for variable in variables if variables is not None else []:
         size = 1
@@ -169,6 +171,7 @@ def variables_record(model_description: bytes) -> str:
                     variable.get("valueReference", ""),
                     "Int64" if variable.tag == "Enumeration" else variable.tag,
                     str(size),
+                    str(int(variable.get("variability") in ("fixed", "constant"))),
                     variable.get("name", ""),
                 ]
             )

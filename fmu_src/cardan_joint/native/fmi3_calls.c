@@ -2,7 +2,8 @@
  * makes (fmi2_calls.c): the instance, the co-simulation state machine (no
  * event mode: Instantiated -> Initialization -> Step -> Terminated), arrays
  * given, and value references and value counts that match modelDescription.xml
- * (what may be set when stays the slave's check, in Python).
+ * and fixed parameters after initialization (the rest of what may be set when
+ * stays the slave's check, in Python).
  * A call that fails a check is answered with fmi3Error and a message without
  * reaching Python, and changes nothing. */
 #include "fmi3_instance.h"
@@ -14,7 +15,8 @@
 #define SETTABLE (STATE_INSTANTIATED | STATE_INITIALIZATION | STATE_STEP_COMPLETE)
 
 int values_fit(struct instance3 *in3, const char *function, enum value_type type,
-               const fmi3ValueReference vr[], size_t nvr, const void *values, size_t n_values)
+               const fmi3ValueReference vr[], size_t nvr, const void *values, size_t n_values,
+               int setting)
 {
     struct instance *in = &in3->base;
     if (!arrays_given(in, function, nvr, vr, values))
@@ -25,7 +27,11 @@ int values_fit(struct instance3 *in3, const char *function, enum value_type type
         const char *refusal = !v                  ? "is not a variable of this FMU"
                               : v->type != type   ? "is of another type"
                               : v->size == 0      ? "has a structural size, not supported"
-                                                  : NULL;
+                              /* even if a restored FMU state makes the slave think otherwise */
+                              : setting && v->fixed && in->state == STATE_STEP_COMPLETE
+                                  ? "is fixed: it can be set only before "
+                                    "fmi3ExitInitializationMode"
+                                  : NULL;
         if (refusal) {
             reportf(in, fmi2Error, "%s: value reference %u%s%s%s%s%s %s; the call was ignored",
                     function, vr[i], v ? " (" : "", v ? v->name : "", v ? ", " : "",
@@ -45,7 +51,7 @@ int values_fit(struct instance3 *in3, const char *function, enum value_type type
 /* pythonfmu3 implements the accessors with a member in slave3; the others it
  * would abort on, and no variable of this FMU has their type: values_fit
  * refuses any reference, and an empty call succeeds. */
-#define VALUES3(get_or_set, Type, member, allowed, constness)                      \
+#define VALUES3(get_or_set, Type, member, allowed, constness, setting)                      \
     fmi3Status fmi3##get_or_set##Type(fmi3Instance c, const fmi3ValueReference vr[],         \
                                       size_t nvr, constness fmi3##Type values[],             \
                                       size_t n_values)                                       \
@@ -53,7 +59,7 @@ int values_fit(struct instance3 *in3, const char *function, enum value_type type
         const char *function = "fmi3" #get_or_set #Type;                                     \
         struct instance *in = enter(c, allowed, function);                                   \
         if (!in || !values_fit((struct instance3 *)in, function, T_##Type##_ID, vr, nvr,     \
-                               values, n_values))                                   \
+                               values, n_values, setting))                                   \
             return fmi3Error;                                                                \
         if (nvr == 0)                                                                        \
             return fmi3OK;                                                                   \
@@ -61,7 +67,7 @@ int values_fit(struct instance3 *in3, const char *function, enum value_type type
                                                         n_values));                          \
     }
 #define ACCESSORS(Type, get, set)                                                            \
-    VALUES3(Get, Type, get, READABLE, ) VALUES3(Set, Type, set, SETTABLE, const)
+    VALUES3(Get, Type, get, READABLE, , 0) VALUES3(Set, Type, set, SETTABLE, const, 1)
 #define T_Float32_ID T_FLOAT32
 #define T_Float64_ID T_FLOAT64
 #define T_Int8_ID T_INT8

@@ -21,6 +21,7 @@ struct variables {
         fmi3ValueReference vr;
         enum value_type type;
         size_t size;          /* product of its <Dimension start=...>: values it takes */
+        int fixed;            /* variability fixed or constant */
         char name[64];
     } list[MAX_VARIABLES];
     int count;
@@ -64,7 +65,8 @@ int slave_module_imports(const char *resources, char *error, size_t size);
 /* Values of `type` for `vr`: known references of that type, as many values as
  * they hold, arrays given; else fmi3Error logged and 0. */
 int values_fit(struct instance3 *in, const char *function, enum value_type type,
-               const fmi3ValueReference vr[], size_t nvr, const void *values, size_t n_values);
+               const fmi3ValueReference vr[], size_t nvr, const void *values, size_t n_values,
+               int setting);
 void free_instance3(struct instance *in);
 fmi3Status unsupported3(fmi3Instance instance, const char *function, const char *why);
 

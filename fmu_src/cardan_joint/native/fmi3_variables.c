@@ -38,7 +38,7 @@ int read_variables(const char *resources, struct variables *variables, char *err
             continue;
         struct variable *v = &variables->list[variables->count];
         ok = variables->count < MAX_VARIABLES &&
-             sscanf(line, "%u %15s %zu %63s", &v->vr, type, &v->size, v->name) == 4 &&
+             sscanf(line, "%u %15s %zu %d %63s", &v->vr, type, &v->size, &v->fixed, v->name) == 5 &&
              type_of(type) >= 0;
         if (ok) {
             v->type = (enum value_type)type_of(type);
@@ -47,7 +47,7 @@ int read_variables(const char *resources, struct variables *variables, char *err
     }
     fclose(file);
     if (!ok)
-        snprintf(error, size, "%s, line %d: not 'valueReference type size name' "
+        snprintf(error, size, "%s, line %d: not 'valueReference type size fixed name' "
                               "(at most %d variables): rebuild the FMU", name, line_number,
                  MAX_VARIABLES);
     return ok ? 0 : -1;
