@@ -148,6 +148,12 @@ def test_two_hundred_instantiate_free_cycles_and_a_clean_exit(c_host3, fmi3_unzi
     assert "cycles 200 ok" in run_host(c_host3, "cycles", fmi3_unzipped, 200).stdout
 
 
+def test_call_order_fuzz_every_illegal_call_answered(c_host3, fmi3_unzipped):
+    run = run_host(c_host3, "fuzz", fmi3_unzipped, 20261123, 10_000)
+    assert "fuzz 10000 calls" in run.stdout
+    assert "all answered; after reset equal to a fresh instance" in run.stdout
+
+
 def test_every_fmi3_function_of_the_standard_is_the_loaders(fmi3_unzipped):
     declared = re.findall(
         r"FMI3_Export\s+fmi3\w+TYPE\s+(fmi3\w+);", (fmi3_headers() / "fmi3Functions.h").read_text()

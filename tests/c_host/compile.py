@@ -8,7 +8,7 @@ from cardan_joint.native import compiler, fmi3_headers
 
 HERE = Path(__file__).resolve().parent
 NATIVE = HERE.parents[1] / "fmu_src" / "cardan_joint" / "native"
-FMI3_HOST = HERE / "host3.c"
+FMI3_HOST = sorted(HERE.glob("*3.c"))  # host3.c, fuzz3.c, threads3.c
 
 
 def _compile(output: Path, include: Path, sources: list) -> Path:
@@ -31,11 +31,11 @@ def _compile(output: Path, include: Path, sources: list) -> Path:
 
 
 def compile_host(output: Path) -> Path:
-    return _compile(output, NATIVE, [c for c in sorted(HERE.glob("*.c")) if c != FMI3_HOST])
+    return _compile(output, NATIVE, [c for c in sorted(HERE.glob("*.c")) if c not in FMI3_HOST])
 
 
 def compile_host3(output: Path) -> Path:
-    return _compile(output, fmi3_headers(), [FMI3_HOST])
+    return _compile(output, fmi3_headers(), FMI3_HOST)
 
 
 if __name__ == "__main__":

@@ -7,49 +7,24 @@
  *   host3 instantiate DIR                    instantiate only: "instance ok|NULL"
  *   host3 misuse DIR                         unsupported calls, wrong counts, wrong order
  *   host3 threads DIR STEPS                  two instances on two threads = one alone
+ *                                            (threads3.c)
  *   host3 cycles DIR N                       N instantiate/step/free cycles
+ *   host3 fuzz DIR SEED COUNT                random legal and illegal calls (fuzz3.c)
  *
  * Logger calls go to stderr as "LOG <status> <category>: <message>".
  */
+#include "host3.h"
+
 #include <dlfcn.h>
-#include <pthread.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
 
-#include "fmi3FunctionTypes.h"
+struct fmu3 fmu;
+int log_calls;
+char last_message[2048];
 
-#define FUNCTIONS(X)                                                                         \
-    X(InstantiateCoSimulation) X(InstantiateModelExchange) X(FreeInstance)                   \
-    X(EnterInitializationMode) X(ExitInitializationMode) X(Terminate) X(Reset)               \
-    X(GetFloat64) X(SetFloat64) X(GetFloat32) X(GetClock) X(EnterEventMode)                  \
-    X(UpdateDiscreteStates) X(GetDirectionalDerivative) X(DoStep) X(GetFMUState)              \
-    X(SetFMUState) X(FreeFMUState) X(SerializedFMUStateSize) X(SerializeFMUState)
-
-static struct {
-    char token[128], identifier[64], resources[4200];
-    struct variable {
-        char name[64], causality[16];
-        fmi3ValueReference vr;
-        int size;
-    } variables[64];
-    int n_variables;
-#define MEMBER(name) fmi3##name##TYPE *name;
-    FUNCTIONS(MEMBER)
-#undef MEMBER
-} fmu;
-static int log_calls;
-static char last_message[2048];
-
-#define fail(...) (fprintf(stderr, "host3: " __VA_ARGS__), fputc('\n', stderr), exit(1))
-#define check(status, what)                                                                \
-    do {                                                                                   \
-        fmi3Status check_ = (status);                                                      \
-        if (check_ > fmi3Warning)                                                          \
-            fail("%s returned %d: %s", what, check_, last_message);                       \
-    } while (0)
-
-static void logger(fmi3InstanceEnvironment env, fmi3Status status, fmi3String category,
+void logger(fmi3InstanceEnvironment env, fmi3Status status, fmi3String category,
                    fmi3String message)
 {
     (void)env;
@@ -66,7 +41,7 @@ static void attribute(const char *from, const char *end, const char *key, const 
         sscanf(found + strlen(key), format, value);
 }
 
-static void load(const char *dir)
+void load(const char *dir)
 {
     char path[4096];
     snprintf(path, sizeof path, "%s/modelDescription.xml", dir);
@@ -99,7 +74,7 @@ static void load(const char *dir)
     snprintf(fmu.resources, sizeof fmu.resources, "%s/resources/", dir);
 }
 
-static const struct variable *variable(const char *name)
+const struct variable *variable(const char *name)
 {
     for (int i = 0; i < fmu.n_variables; i++)
         if (strcmp(fmu.variables[i].name, name) == 0)
@@ -108,13 +83,13 @@ static const struct variable *variable(const char *name)
     return NULL;
 }
 
-static fmi3Instance instantiate(const char *name, fmi3Boolean logging_on)
+fmi3Instance instantiate(const char *name, fmi3Boolean logging_on)
 {
     return fmu.InstantiateCoSimulation(name, fmu.token, fmu.resources, fmi3False, logging_on,
                                        fmi3False, fmi3False, NULL, 0, NULL, logger, NULL);
 }
 
-static fmi3Instance start(const char *name)
+fmi3Instance start(const char *name)
 {
     fmi3Instance c = instantiate(name, fmi3False);
     if (!c)
@@ -122,13 +97,13 @@ static fmi3Instance start(const char *name)
     return c;
 }
 
-static void initialize(fmi3Instance c)
+void initialize(fmi3Instance c)
 {
     check(fmu.EnterInitializationMode(c, fmi3False, 0.0, 0.0, fmi3False, 0.0), "EnterInit");
     check(fmu.ExitInitializationMode(c), "ExitInitializationMode");
 }
 
-static fmi3Status step(fmi3Instance c, double time, double h)
+fmi3Status step(fmi3Instance c, double time, double h)
 {
     fmi3Boolean event, terminate, early;
     fmi3Float64 last;
@@ -136,7 +111,7 @@ static fmi3Status step(fmi3Instance c, double time, double h)
 }
 
 /* All outputs, FMPy's communication points start + k * dt; `out` gets the CSV. */
-static void simulate(FILE *out, int steps, double dt, int n_settings, char **settings)
+void simulate(FILE *out, int steps, double dt, int n_settings, char **settings)
 {
     fmi3Instance c = start("run");
     for (int i = 0; i < n_settings; i++) {
@@ -260,38 +235,6 @@ static int misuse(void)
     return 0;
 }
 
-struct job {
-    int steps;
-    char *csv;
-    size_t size;
-};
-
-static void *simulate_job(void *argument)
-{
-    struct job *job = argument;
-    char settings[] = "bend_angle=0.4", *list[] = {settings};
-    FILE *out = open_memstream(&job->csv, &job->size);
-    simulate(out, job->steps, 1e-3, 1, list);
-    fclose(out);
-    return NULL;
-}
-
-static int threads(int steps)
-{
-    struct job alone = {steps, NULL, 0}, jobs[2] = {{steps, NULL, 0}, {steps, NULL, 0}};
-    simulate_job(&alone);
-    pthread_t id[2];
-    for (int i = 0; i < 2; i++)
-        pthread_create(&id[i], NULL, simulate_job, &jobs[i]);
-    for (int i = 0; i < 2; i++)
-        pthread_join(id[i], NULL);
-    for (int i = 0; i < 2; i++)
-        if (strcmp(jobs[i].csv, alone.csv) != 0)
-            fail("thread %d differs from the run alone", i);
-    printf("threads ok (%zu bytes each)\n", alone.size);
-    return 0;
-}
-
 static int cycles(int n)
 {
     for (int i = 0; i < n; i++) {
@@ -323,9 +266,11 @@ int main(int argc, char **argv)
     if (argc == 3 && strcmp(argv[1], "misuse") == 0)
         return misuse();
     if (argc == 4 && strcmp(argv[1], "threads") == 0)
-        return threads(atoi(argv[3]));
+        return threads3(atoi(argv[3]));
     if (argc == 4 && strcmp(argv[1], "cycles") == 0)
         return cycles(atoi(argv[3]));
+    if (argc == 5 && strcmp(argv[1], "fuzz") == 0)
+        return fuzz3(strtoul(argv[3], NULL, 10), atoi(argv[4]));
     fprintf(stderr, "usage: see the comment at the top of host3.c\n");
     return 2;
 }
