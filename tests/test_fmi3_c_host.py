@@ -140,7 +140,9 @@ def test_a_broken_fmu_gives_null_and_a_message_and_the_host_lives(
     assert says in run.stderr and "LOG 3" in run.stderr
 
 
-def test_two_instances_on_two_threads_equal_one_alone(c_host3, fmi3_unzipped):
+def test_two_instances_on_two_threads_and_one_on_two_in_turn_equal_one_alone(
+    c_host3, fmi3_unzipped
+):
     assert "threads ok" in run_host(c_host3, "threads", fmi3_unzipped, 2000).stdout
 
 
