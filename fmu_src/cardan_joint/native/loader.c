@@ -3,11 +3,13 @@
  *
  * At fmi2Instantiate it finds or starts the Python the build recorded
  * (python_runtime.c), then loads pythonfmu's binary and forwards the fmi2 calls
- * (fmi2_calls.c) through a per-instance FMI state machine.  pythonfmu always
- * gets this file's logger with logging on, so every message of the slave
- * arrives here: warnings and refusals go to the host's logger whether or not
- * it asked for debug logging, and the status a call returns is the worst one
- * the slave logged during it (pythonfmu itself can only return OK or Discard).
+ * (fmi2_calls.c) through a per-instance FMI state machine (calls.c).  pythonfmu
+ * always gets this file's logger with logging on, so every message of the
+ * slave arrives here and report.c routes it: warnings and refusals go to the
+ * host's logger whether or not it asked for debug logging, and the status a
+ * call returns is the worst one the slave logged during it (pythonfmu itself
+ * can only return OK or Discard).  The FMI 3.0 loader (fmi3_loader.c) shares
+ * all of that; only the fmi entry points and the host's logger call differ.
  */
 #define _GNU_SOURCE
 #include "instance.h"
