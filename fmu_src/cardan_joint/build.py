@@ -175,7 +175,7 @@ def build(
                 del sys.modules[name]
     fmu = Path(fmu)
     # --- native loader (issue 11): C hosts run the FMU without any set-up ---
-    # FMI 2 binaries only: the FMI 3 binary is pythonfmu3's own (see the README).
+    # FMI 2 binaries only: the FMI 3 binary is pythonfmu3's own (see docs/fmi3.md).
     from .native import NativeBuildError, install_loader
 
     try:
