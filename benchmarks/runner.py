@@ -23,6 +23,7 @@ from dataclasses import dataclass
 from pathlib import Path
 
 from cardan_joint import variables as table
+from cardan_joint.extras import MissingExtra, require
 
 from .accuracy import accuracy, accuracy_rows, accuracy_table, worker_accuracy
 from .c_host import c_host_cost, c_host_rows
@@ -187,6 +188,11 @@ def main(argv=None):
     if args.worker:
         run_worker(args.worker)
         return 0
+    try:
+        require("mpmath", "bench", "python -m benchmarks (the accuracy benchmark's exact values)")
+    except MissingExtra as error:
+        print(f"benchmarks: {error}", file=sys.stderr)
+        return 1
     sizes = QUICK if args.quick else FULL
     started = time.perf_counter()
     with tempfile.TemporaryDirectory(prefix="cardan_benchmarks_") as workdir:

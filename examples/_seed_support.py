@@ -7,7 +7,7 @@ formulas appear only as reference marks drawn over the FMU's curves.
 from pathlib import Path
 
 import numpy as np
-from _support import example_parser, output_folder
+from _support import example_fmu, example_parser, output_folder
 
 from cardan_joint import results
 from cardan_joint.plotting import pyplot, save_figure  # noqa: F401 - pyplot: for the seed scripts
@@ -23,6 +23,7 @@ def parse_args(doc, argv):
         "--quick", action="store_true", help="coarse sampling and fewer runs (for the tests)"
     )
     args = parser.parse_args(argv)
+    args.fmu = example_fmu(args)
     args.out = output_folder(args)
     return args
 

@@ -10,7 +10,7 @@ back, against a 200 N.m load. Writes results/demo.csv and results/demo.png.
 import math
 
 import numpy as np
-from _support import example_parser, output_folder
+from _support import example_fmu, example_parser, output_folder
 
 from cardan_joint import results
 from cardan_joint import variables as table
@@ -67,6 +67,7 @@ def main(argv=None):
     parser = example_parser(__doc__)
     parser.add_argument("--stop-time", type=float, default=2.0)
     args = parser.parse_args(argv)
+    args.fmu = example_fmu(args)
     out = output_folder(args)
     inputs = demo_inputs(args.stop_time)
     result = simulate(

@@ -31,7 +31,7 @@ STOP_TIME, STEP = 1.0, 1e-3
 
 def host_convergence(ssp, steps=(1e-3, 5e-4, 2.5e-4), stop_time=0.5):
     """{step: largest |FMPy - libcosim| of the motor speed}: the hosts differ only in
-    the first step's inputs (see the README), so this falls in proportion to the step."""
+    the first step's inputs (see docs/cosimulation.md), so this falls in proportion to the step."""
     return {
         h: system.host_difference(
             system.run_fmpy(ssp, stop_time, h), system.run_libcosim(ssp, stop_time, h)

@@ -61,7 +61,7 @@ Writes results/driveshaft_steps.csv (step dependence), results/driveshaft_phase.
 import math
 
 import numpy as np
-from _support import example_parser, output_folder
+from _support import example_fmu, example_parser, output_folder
 
 from cardan_joint import results
 from cardan_joint.instance import ExtractedFMU
@@ -315,6 +315,7 @@ def main(argv=None):
         help="yoke phase errors of joint 2 [deg]",
     )
     args = parser.parse_args(argv)
+    args.fmu = example_fmu(args)
     out = output_folder(args)
     bend = math.radians(args.bend_angle)
     speed = args.input_speed

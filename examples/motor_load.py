@@ -18,7 +18,7 @@ The master (FMPy's low-level API) closes the driveline around the FMU:
 import math
 
 import numpy as np
-from _support import example_parser, output_folder
+from _support import example_fmu, example_parser, legend_outside, output_folder
 
 from cardan_joint import results
 from cardan_joint.plotting import pyplot, save_figure
@@ -145,7 +145,7 @@ def plot(rows, p, path, revolutions=4):
     last = rows["input_angle"][-1] - revolutions * 2 * math.pi
     window = rows["input_angle"] >= last
     t = rows["time"][window]
-    fig, axes = plt.subplots(3, 1, figsize=(9, 8.5), sharex=True)
+    fig, axes = plt.subplots(3, 1, figsize=(11, 8.5), sharex=True)
     axes[0].plot(t, rows["input_torque"][window], label="input torque T1 (motor side)")
     axes[0].plot(t, rows["load_torque"][window], "--", label="load torque T_L (load side)")
     axes[0].set_ylabel("torque [N.m]")
@@ -163,7 +163,7 @@ def plot(rows, p, path, revolutions=4):
     axes[2].set_ylabel("secondary couple [N.m]")
     axes[2].set_xlabel("time [s]")
     for ax in axes:
-        ax.legend(loc="upper right")
+        legend_outside(ax)
     save_figure(fig, path)
 
 
@@ -172,6 +172,7 @@ def main(argv=None):
     parser.add_argument("--stop-time", type=float, default=1.0)
     parser.add_argument("--step", type=float, default=1e-3)
     args = parser.parse_args(argv)
+    args.fmu = example_fmu(args)
     out = output_folder(args)
     rows = run(args.fmu, args.stop_time, args.step)
     results.write_csv(rows, out / "motor_load.csv")

@@ -14,15 +14,14 @@ leave a fluctuation, and the phasing the helper returns (the angle between the
 joint planes) cancels it.
 
     python build_fmu.py --model Propshaft && python examples/propshaft_layout.py
-        -> results/propshaft_layout.png (the README's figure: --out docs/img)
+        -> results/propshaft_layout.png (docs/img: python tools/gallery.py)
 """
 
 import math
 import warnings
-from pathlib import Path
 
 import numpy as np
-from _support import example_parser, output_folder
+from _support import example_fmu, example_parser, legend_outside, output_folder
 
 from cardan_joint.physics.propshaft import angle_report, best_phasing, layout
 from cardan_joint.plotting import pyplot, save_figure
@@ -63,7 +62,7 @@ def run(fmu, phase, revolutions=2, points=720):
 
 def plot(before, after, phase, path):
     plt = pyplot()
-    fig, (top, bottom) = plt.subplots(2, 1, sharex=True, figsize=(8, 6))
+    fig, (top, bottom) = plt.subplots(2, 1, sharex=True, figsize=(10, 6))
     for result, label in (
         (before, "yokes in one plane (phasing 0)"),
         (after, f"phasing {math.degrees(phase):.2f} deg (helper)"),
@@ -75,14 +74,14 @@ def plot(before, after, phase, path):
     bottom.set_ylabel("input torque [N.m]")
     bottom.set_xlabel("input revolutions")
     top.set_title(f"Propshaft at {SPEED_RPM:.0f} rpm, {LOAD:.0f} N.m at the pinion")
-    top.legend()
+    legend_outside(top)
     return save_figure(fig, path)
 
 
 def main(argv=None):
-    parser = example_parser(__doc__)
-    parser.set_defaults(fmu=str(Path("dist") / "Propshaft.fmu"))
+    parser = example_parser(__doc__, model="Propshaft")
     args = parser.parse_args(argv)
+    args.fmu = example_fmu(args)
     out = output_folder(args)
     side = [math.radians(a) for a in SIDE_DEG]
     top = [math.radians(a) for a in TOP_DEG]

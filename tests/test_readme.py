@@ -1,24 +1,36 @@
-"""The README's commands and tables stay true."""
+"""The README and the docs stay true: commands, size, model pages, tables, links."""
 
+import re
 from pathlib import Path
 
+import pytest
+
+from cardan_joint.models import MODELS
 from cardan_joint.variables import fmi3_array_table, markdown_table
 
 ROOT = Path(__file__).resolve().parents[1]
 README = (ROOT / "README.md").read_text()
+DOCS = ROOT / "docs"
 TEST_COMMAND = (
     'python3 -m venv .venv && .venv/bin/pip install -e ".[test]" && .venv/bin/python -m pytest'
 )
+# Links to pages that land with another branch (the compliant driveline models):
+# allowed while missing, checked like every other link once the page exists.
+PENDING = {DOCS / "CompliantJoint" / "README.md"}
 
 
-def test_variable_table_is_generated_from_the_metadata_table():
-    begin, end = "<!-- variables:begin -->\n", "<!-- variables:end -->"
-    assert README.split(begin)[1].split(end)[0] == markdown_table()
+def between(text: str, key: str) -> str:
+    begin, end = f"<!-- {key}:begin -->\n", f"<!-- {key}:end -->"
+    assert text.count(begin) == 1 and text.count(end) == 1, key
+    return text.split(begin)[1].split(end)[0]
 
 
-def test_fmi3_array_table_is_generated_from_the_metadata_table():
-    begin, end = "<!-- fmi3-arrays:begin -->\n", "<!-- fmi3-arrays:end -->"
-    assert README.split(begin)[1].split(end)[0] == fmi3_array_table()
+def model_page(model: str) -> str:
+    return (DOCS / model / "README.md").read_text()
+
+
+def test_the_readme_is_read_in_five_minutes():
+    assert len(README.splitlines()) <= 250
 
 
 def test_ci_runs_the_readmes_test_command():
@@ -27,27 +39,56 @@ def test_ci_runs_the_readmes_test_command():
     assert f"\n{TEST_COMMAND}\n" in ci
 
 
-def test_propshaft_variable_table_is_generated_from_its_metadata():
+@pytest.mark.parametrize("model", sorted(MODELS))
+def test_every_model_the_build_offers_has_its_page(model):
+    assert (DOCS / model / "README.md").is_file(), f"write docs/{model}/README.md"
+
+
+def _tables():
+    from cardan_joint.driveline_variables import LOAD, MOTOR
     from cardan_joint.propshaft_variables import propshaft_table
 
-    text = (ROOT / "docs" / "Propshaft" / "README.md").read_text()
-    begin, end = "<!-- variables:begin -->\n", "<!-- variables:end -->"
-    assert text.split(begin)[1].split(end)[0] == propshaft_table(2).markdown_table()
+    return {
+        "UniversalJoint": markdown_table(),
+        "Propshaft": propshaft_table(2).markdown_table(),
+        "Motor": MOTOR.markdown_table(),
+        "Load": LOAD.markdown_table(),
+    }
 
 
-def test_motor_and_load_tables_are_generated_from_their_tables():
-    from cardan_joint.driveline_variables import LOAD, MOTOR
+@pytest.mark.parametrize("model", ["UniversalJoint", "Propshaft", "Motor", "Load"])
+def test_each_model_pages_variable_table_is_generated_from_its_table(model):
+    assert between(model_page(model), "variables") == _tables()[model]
 
-    for key, table in (("motor", MOTOR), ("load", LOAD)):
-        begin, end = f"<!-- {key}-variables:begin -->\n", f"<!-- {key}-variables:end -->"
-        assert README.split(begin)[1].split(end)[0] == table.markdown_table()
+
+def test_fmi3_array_table_is_generated_from_the_metadata_table():
+    assert between(model_page("UniversalJoint"), "fmi3-arrays") == fmi3_array_table()
+
+
+def _anchors(page: Path) -> set:
+    """GitHub's anchors of a markdown page's headings."""
+    lines = page.read_text().splitlines()
+    headings = (line.lstrip("#").strip() for line in lines if line.startswith("#"))
+    return {re.sub(r"[^\w\- ]", "", h.lower()).replace(" ", "-") for h in headings}
+
+
+def test_every_relative_link_and_image_resolves():
+    pages = [ROOT / "README.md", *sorted(DOCS.rglob("*.md"))]
+    broken = []
+    for page in pages:
+        for target in re.findall(r"\]\(([^)\s]+)\)", page.read_text()):
+            if re.match(r"[a-z]+://", target):
+                continue
+            name, _, anchor = target.partition("#")
+            path = (page.parent / name).resolve() if name else page
+            if path in PENDING and not path.exists():
+                continue
+            if not path.exists() or (anchor and anchor not in _anchors(path)):
+                broken.append(f"{page.relative_to(ROOT)}: {target}")
+    assert not broken
 
 
 def test_readme_states_how_many_tests_the_suite_runs(request):
-    import re
-
-    import pytest
-
     config = request.config
     if (
         config.args_source != pytest.Config.ArgsSource.TESTPATHS

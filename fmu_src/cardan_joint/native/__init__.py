@@ -108,7 +108,7 @@ def runtime_record() -> str:
     lines = [
         "# The Python this FMU was built with. Hosts without a Python start it from here.",
         "# Edit to move the FMU, or set CARDAN_JOINT_FMU_PYTHON_LIBRARY, ..._HOME and",
-        "# ..._PATH (':'-separated); see the README, 'Using the FMU in an FMI tool'.",
+        "# ..._PATH (':'-separated); see docs/fmi-tools.md in the project.",
         f"version = {sys.version_info.major}.{sys.version_info.minor}",
         f"library = {shared_libpython()}",
         f"home = {sys.base_prefix}",
