@@ -196,7 +196,7 @@ def _parser():
         "--stop-time",
         type=float,
         default=None,
-        help="[s] (default: the CSV's last time, else the FMU's default experiment)",
+        help="stop time [s] (default: the CSV's last time, else the FMU's default experiment)",
     )
     run.add_argument(
         "--step", type=float, default=1e-3, help="communication step [s] (default %(default)s)"
