@@ -1,19 +1,17 @@
 """One FMU instance (FMI 2.0 or 3.0) on FMPy's low-level API, its Float variables by name.
 
-The one wrapper around FMPy's slave classes that the tests, the examples and
-the benchmarks share: instantiation and initialisation with start values,
-name-based set/get, stepping (raising with the FMU's own reason, or returning
-the status), FMU state pass-through, an optional sink for the FMU's log
-messages, and terminate/free on leaving a `with` block. It knows no model:
-names come from the FMU's model description.
+The one wrapper around FMPy's slave classes that tests, examples and benchmarks
+share: initialisation with start values, set/get by name, stepping (raising
+the FMU's own reason, or returning the status), FMU states, an optional log
+sink, terminate/free on leaving `with`. It knows no model: names come from
+the FMU's model description.
 
     with FmuInstance.open("dist/UniversalJoint.fmu", start_values={...}) as joint:
         joint.step(1e-3)
         joint.get("output_speed")
 
     with ExtractedFMU("dist/UniversalJoint.fmu") as fmu:      # unzipped once
-        with fmu.instance("joint1") as one, fmu.instance("joint2") as two:
-            ...
+        with fmu.instance("joint1") as one, fmu.instance("joint2") as two: ...
 """
 
 from __future__ import annotations
@@ -44,8 +42,7 @@ def _slave(model_description, unzipped: str, name: str):
     )
 
 
-# FMI 3 differs in its call sequence, its value getters (arrays) and its names for
-# the FMU-state calls; FmuInstance hides that.
+# FmuInstance hides FMI 3's call sequence, array getters and FMU-state names.
 _VERSIONS = ("2.0", "3.0")
 
 
@@ -89,8 +86,7 @@ def status_of(call, *args, **kwargs) -> int:
 
 
 class StepRefusedError(RuntimeError):
-    """The FMU refused a step; the message is the FMU's own reason (naming
-    variable, value, limit and time), `status` the FMI status."""
+    """A refused step: the FMU's own reason (variable, value, limit, time), its FMI `status`."""
 
     def __init__(self, text: str, status: int) -> None:
         super().__init__(text)
@@ -224,8 +220,7 @@ class FmuInstance:
         return values
 
     def step(self, step_size: float) -> None:
-        """Step from `self.time`; a refused step raises StepRefusedError with the
-        FMU's reason (its logged refusal), not FMPy's bare status."""
+        """Step from `self.time`; a refusal raises StepRefusedError: the FMU's reason."""
         from fmpy.fmi1 import FMICallException
 
         self.recent.clear()
