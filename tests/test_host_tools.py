@@ -80,13 +80,20 @@ def test_a_misspelt_build_start_value_is_refused_naming_the_right_one(tmp_path):
     assert not list(tmp_path.iterdir())
 
 
-def test_a_run_refused_at_the_start_says_so_and_writes_nothing(built, tmp_path):
+@pytest.mark.parametrize(
+    "setting, reason",
+    [
+        ("bend_angle=1.5", "bend_angle = 1.5 rad"),  # the first step refused
+        ("crosspiece_inertia_1=-1", "crosspiece_inertia_1 = -1.0 kg.m2"),  # initialization
+    ],
+)
+def test_a_run_refused_at_the_start_says_so_and_writes_nothing(built, tmp_path, setting, reason):
     out = tmp_path / "refused.csv"
     args = ("simulate", "--fmu", built("UniversalJoint"), "--output", out)
-    run = cardan_joint(*args, "--set", "bend_angle=1.5")
+    run = cardan_joint(*args, "--set", setting)
     assert run.returncode == 1 and "Traceback" not in run.stderr
     assert "refused the run at its start (t = 0 s)" in run.stderr
-    assert "bend_angle = 1.5 rad" in run.stderr  # the FMU's reason
+    assert reason in run.stderr  # the FMU's own, not FMPy's bare status
     assert not out.exists() and not out.with_suffix(".png").exists()
 
 

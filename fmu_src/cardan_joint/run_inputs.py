@@ -101,7 +101,7 @@ def complete_inputs(inputs, starts: dict, stop_time: float, step: float) -> np.n
     following what the FMU does with it left unset: held at its start value,
     or carried along its rate."""
     # Only the carried inputs this FMU has (the propshaft has no bend angle).
-    rates = {name: r for name, r in RATES.items() if name in starts}
+    rates = {n: r for n, r in RATES.items() if n in starts and set(r) <= set(starts)}
     _refuse_contradictions(inputs, rates, starts)
     names = tuple(name for name in starts if name not in rates) + tuple(rates)
     if not isinstance(inputs, dict):

@@ -157,7 +157,8 @@ def simulate(
     fmi3 = info.fmi3
     if output is not None:
         output = info.fmu_names(output)
-    # FMPy raises on an FMI 3 refusal, losing its recorder: keep it for the partial result.
+    # FMPy raises on an FMI 3 refusal and on a refused initialization (either version),
+    # losing its recorder: keep it for the partial result.
     recorders: list[Any] = []  # FMPy's Recorder (its class is private)
     step_finished = fmpy_options.pop("step_finished", None)
 
@@ -176,11 +177,11 @@ def simulate(
             model_description=description,
             debug_logging=True,
             logger=collect,
-            step_finished=keep_recorder if fmi3 else step_finished,
+            step_finished=keep_recorder,
             **fmpy_options,
         )
     except FMICallException:
-        if not fmi3 or not messages:
+        if not messages:  # no reason to report: FMPy's own error is all there is
             raise
         result = recorders[0].result() if recorders else np.zeros(0, dtype=[("time", float)])
     problems = [m for m in messages if m[0] in ("discard", "error", "fatal")]
