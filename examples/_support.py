@@ -3,24 +3,13 @@
 import argparse
 from pathlib import Path
 
-from cardan_joint.fmu_info import MissingFMUError, require_fmu
 from cardan_joint.simulate import DEFAULT_FMU
-
-
-def existing_fmu(text: str) -> str:
-    """--fmu's type: a missing FMU is a usage error naming the command that builds it."""
-    try:
-        return str(require_fmu(text))
-    except MissingFMUError as error:
-        raise argparse.ArgumentTypeError(str(error)) from None
 
 
 def example_parser(doc: str, default_out: str = "results") -> argparse.ArgumentParser:
     """A parser with the options every example takes: --fmu and --out."""
     parser = argparse.ArgumentParser(description=doc.splitlines()[0])
-    parser.add_argument(
-        "--fmu", type=existing_fmu, default=str(DEFAULT_FMU), help="the FMU to co-simulate"
-    )
+    parser.add_argument("--fmu", default=str(DEFAULT_FMU), help="the FMU to co-simulate")
     parser.add_argument("--out", default=default_out, help="folder for the results")
     return parser
 

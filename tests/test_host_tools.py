@@ -194,15 +194,3 @@ def test_simulate_names_the_build_command_of_a_missing_fmu(tmp_path):
 
     with pytest.raises(MissingFMUError, match="`python build_fmu.py --model Motor --dest "):
         simulate(tmp_path / "Motor.fmu")
-
-
-def test_an_example_without_its_fmu_names_the_build_command(tmp_path):
-    missing = tmp_path / "Propshaft.fmu"
-    run = subprocess.run(
-        [sys.executable, "examples/propshaft_layout.py", "--fmu", str(missing)],
-        capture_output=True,
-        text=True,
-        cwd=ROOT,
-    )
-    assert run.returncode == 2 and "Traceback" not in run.stderr
-    assert f"`python build_fmu.py --model Propshaft --dest {tmp_path}`" in run.stderr
