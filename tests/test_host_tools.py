@@ -194,3 +194,11 @@ def test_simulate_names_the_build_command_of_a_missing_fmu(tmp_path):
 
     with pytest.raises(MissingFMUError, match="`python build_fmu.py --model Motor --dest "):
         simulate(tmp_path / "Motor.fmu")
+
+
+def test_setting_an_output_says_it_is_an_output(built, tmp_path):
+    run = cardan_joint(
+        "simulate", "--fmu", built("Motor"), "--set", "speed=3", "--output", tmp_path / "x.csv"
+    )
+    assert run.returncode == 2
+    assert "'speed' is an output of Motor, not an input or parameter" in run.stderr

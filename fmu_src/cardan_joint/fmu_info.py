@@ -12,7 +12,7 @@ from math import prod
 from pathlib import Path
 from typing import Any
 
-from .names import check_known
+from .names import UsageError, check_known
 
 
 class MissingFMUError(FileNotFoundError):
@@ -140,6 +140,12 @@ class FmuInfo:
         """UnknownNameError unless every name is a variable (or an FMI 3 array's
         FMI 2 column) of these causalities."""
         valid = dict.fromkeys(self.columns(*causalities) + self.names(*causalities))
+        for name in names:
+            holder = self.holder.get(name) or self.variables.get(name)
+            if name not in valid and holder is not None:
+                raise UsageError(
+                    f"{name!r} is an {holder.causality} of {self.model_name}, not an {kind}"
+                )
         check_known(names, valid, f"{kind} of {self.model_name}")
 
     def fmu_names(self, columns) -> list[str]:
