@@ -9,7 +9,7 @@ all of them within milliseconds, so their ratio holds where absolute times do no
 import time
 
 from cardan_joint import variables as table
-from cardan_joint.instance import JointInstance
+from cardan_joint.instance import FmuInstance
 
 from .timing import StepClock, against, chunks, in_fresh_process, met, peak_rss_kib, us
 
@@ -34,7 +34,7 @@ RATIO_GOAL = 1.3
 def instantiate(unzipped):
     from fmpy import read_model_description
 
-    return JointInstance(read_model_description(unzipped), unzipped, name="benchmark")
+    return FmuInstance(read_model_description(unzipped), unzipped, name="benchmark")
 
 
 def step_loop(joint, steps, first_step=0):

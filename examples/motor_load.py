@@ -53,11 +53,11 @@ class Driveline:
     """The FMU instance plus the master's closure of the motor and load sides."""
 
     def __init__(self, fmu_path, p):
-        from cardan_joint.instance import JointInstance
+        from cardan_joint.instance import FmuInstance
 
         self.p = p
         i1, i2, i3 = p["inertia"]
-        self.joint = JointInstance.open(
+        self.joint = FmuInstance.open(
             fmu_path,
             start_values=dict(
                 bend_angle=p["bend_angle"],

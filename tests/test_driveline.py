@@ -11,7 +11,7 @@ from conftest import ROOT, build_fmu
 
 from cardan_joint import driveline_system as system
 from cardan_joint import results
-from cardan_joint.instance import ExtractedFMU, JointInstance
+from cardan_joint.instance import ExtractedFMU, FmuInstance
 from cardan_joint.physics import Reason, Refusal
 from cardan_joint.physics.driveline import Load, Motor
 from cardan_joint.ssp import Component, write_ssp
@@ -163,7 +163,7 @@ def test_component_fmus_pass_validation_with_units_and_dependencies(component_fm
 
 def test_motor_fmu_refuses_a_nan_load_torque_and_says_why(motor_unzipped):
     messages = []
-    with JointInstance.open(motor_unzipped, name="m", messages=messages) as motor:
+    with FmuInstance.open(motor_unzipped, name="m", messages=messages) as motor:
         motor.set(load_torque=10.0)
         motor.step(0.1)
         speed = motor.get("speed")
@@ -186,7 +186,7 @@ def test_motor_fmu_refuses_a_nan_load_torque_and_says_why(motor_unzipped):
 
 def test_motor_fmu_holds_only_the_outputs_that_depend_on_an_invalid_input(motor_unzipped):
     messages = []
-    with JointInstance.open(motor_unzipped, name="m", messages=messages) as motor:
+    with FmuInstance.open(motor_unzipped, name="m", messages=messages) as motor:
         motor.set(load_torque=10.0)
         motor.step(0.1)
         valid = motor.get_outputs()
@@ -196,7 +196,7 @@ def test_motor_fmu_holds_only_the_outputs_that_depend_on_an_invalid_input(motor_
 
 
 def test_motor_fmu_state_round_trips_through_bytes(motor_unzipped):
-    with JointInstance.open(motor_unzipped, name="m") as motor:
+    with FmuInstance.open(motor_unzipped, name="m") as motor:
         motor.set(load_torque=10.0)
         motor.step(0.05)
         state = motor.deserialize_state(motor.serialize_state(motor.get_state()))
@@ -292,7 +292,7 @@ def _jacobi_master(ssp_path, stop_time, h, first_values):
                 for key, value in parameters.items()
                 if key.startswith(name + ".")
             }
-            instances[name] = JointInstance.open(
+            instances[name] = FmuInstance.open(
                 f"{unzipped}/{component.source}", name=name, start_values=starts
             )
         values = dict(first_values)

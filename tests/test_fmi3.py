@@ -6,7 +6,7 @@ import numpy as np
 import pytest
 
 from cardan_joint import variables as table
-from cardan_joint.instance import JointInstance
+from cardan_joint.instance import FmuInstance
 
 GROUPS = table.fmi3_variables()
 ARRAYS = {"crosspiece_quaternion": 4, "crosspiece_angular_velocity": 3, "crosspiece_torque": 3}
@@ -16,7 +16,7 @@ INPUT_LAWS = ("input_speed", "bend_angle", "load_torque")
 @pytest.fixture
 def joint3(fmi3_description, fmi3_unzipped):
     messages = []
-    instance = JointInstance(fmi3_description, fmi3_unzipped, name="joint3", messages=messages)
+    instance = FmuInstance(fmi3_description, fmi3_unzipped, name="joint3", messages=messages)
     instance.messages = messages
     yield instance
     instance.close()
@@ -127,7 +127,7 @@ def test_every_output_equals_the_fmi2_fmus_at_every_point(
         crosspiece_inertia_2=rng.uniform(0.01, 0.1),
     )
     joints = [
-        JointInstance(md, unzipped, name=f"same{seed}", start_values=parameters)
+        FmuInstance(md, unzipped, name=f"same{seed}", start_values=parameters)
         for md, unzipped in ((model_description, unzipped_fmu), (fmi3_description, fmi3_unzipped))
     ]
     try:
@@ -272,7 +272,7 @@ def test_state_round_trips_bit_for_bit(joint3, fmi3_description, fmi3_unzipped):
     joint3.time = 0.5
     assert run(joint3) == first
     joint3.free_state(state)
-    fresh = JointInstance(fmi3_description, fmi3_unzipped, name="fresh")
+    fresh = FmuInstance(fmi3_description, fmi3_unzipped, name="fresh")
     try:
         restored = fresh.deserialize_state(data)
         fresh.set_state(restored)
@@ -295,7 +295,7 @@ def test_reset_returns_to_the_start_values(joint3):
 
 def test_many_instances_in_one_process_are_independent(fmi3_description, fmi3_unzipped):
     joints = [
-        JointInstance(
+        FmuInstance(
             fmi3_description, fmi3_unzipped, name=f"j{i}", start_values={"input_speed": 1.0 + i}
         )
         for i in range(40)
@@ -340,8 +340,8 @@ def test_an_invalid_input_holds_the_same_outputs_as_fmi2(
 ):
     messages = []
     joints = [
-        JointInstance(model_description, unzipped_fmu, name="held2"),
-        JointInstance(fmi3_description, fmi3_unzipped, name="held3", messages=messages),
+        FmuInstance(model_description, unzipped_fmu, name="held2"),
+        FmuInstance(fmi3_description, fmi3_unzipped, name="held3", messages=messages),
     ]
     try:
         for joint in joints:

@@ -11,7 +11,7 @@ import pytest
 from reference.geometry import geometric_reference
 from tolerance import assert_close
 
-from cardan_joint.instance import JointInstance
+from cardan_joint.instance import FmuInstance
 
 GUARD = math.radians(80.0)  # the FMU's default max_bend_angle
 STEPS = 40
@@ -130,7 +130,7 @@ def test_every_communication_point_matches_the_geometric_reference(
         crosspiece_inertia_3=case["inertia"][2],
         **inputs_at(case, 0.0),
     )
-    joint = JointInstance(model_description, unzipped_fmu, start_values=start)
+    joint = FmuInstance(model_description, unzipped_fmu, start_values=start)
     try:
         for k in range(STEPS + 1):
             t = k * h
@@ -164,7 +164,7 @@ def test_large_and_negative_phases_and_start_angles_lose_no_precision(
         crosspiece_inertia_3=case["inertia"][2],
         **inputs_at(case, 0.0),
     )
-    joint = JointInstance(model_description, unzipped_fmu, start_values=start)
+    joint = FmuInstance(model_description, unzipped_fmu, start_values=start)
     try:
         for k in range(11):
             values = joint.get_outputs()

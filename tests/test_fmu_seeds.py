@@ -7,7 +7,7 @@ import pytest
 from fmpy import simulate_fmu
 from test_seeds import DISTRIBUTIONS, MAKER_TABLE, truncated
 
-from cardan_joint.instance import JointInstance
+from cardan_joint.instance import FmuInstance
 
 
 def _parabola_peak(x, y):
@@ -37,7 +37,7 @@ def test_maker_table_by_the_fmu(fmu_path, bend_deg, error_deg, at_deg):
 def test_tataru_extremes_and_mean_by_the_fmu(fmu_path, model_description, unzipped_fmu, alpha):
     # omega1 = 10 rad/s for 1 s; steps land on phi1 = k pi/2, where the extremes are.
     w1 = 10.0
-    joint = JointInstance(
+    joint = FmuInstance(
         model_description, unzipped_fmu, start_values={"input_speed": w1, "bend_angle": alpha}
     )
     quarter = math.pi / 2 / w1

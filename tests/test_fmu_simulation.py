@@ -8,7 +8,7 @@ import numpy as np
 from fmpy import simulate_fmu
 
 from cardan_joint import variables as table
-from cardan_joint.instance import JointInstance
+from cardan_joint.instance import FmuInstance
 from cardan_joint.physics import CardanJoint, cardan_error
 
 
@@ -53,7 +53,7 @@ def test_simulate_fmu_with_structured_input_arrays_matches_the_physics_package(f
 
 def test_low_level_loop_is_bit_for_bit_the_physics_package(model_description, unzipped_fmu):
     rng = np.random.default_rng(7)
-    joint = JointInstance(model_description, unzipped_fmu, start_values={"yoke_phase": 1.1})
+    joint = FmuInstance(model_description, unzipped_fmu, start_values={"yoke_phase": 1.1})
     model = CardanJoint(yoke_phase=1.1)
     try:
         for _ in range(300):
@@ -77,7 +77,7 @@ def test_low_level_loop_is_bit_for_bit_the_physics_package(model_description, un
 
 
 def test_outputs_read_after_new_inputs_reflect_them(model_description, unzipped_fmu):
-    joint = JointInstance(model_description, unzipped_fmu)
+    joint = FmuInstance(model_description, unzipped_fmu)
     try:
         joint.step(0.01)
         before = joint.get("output_speed", "input_torque")
@@ -106,7 +106,7 @@ def test_a_million_revolutions_through_the_fmu_stay_within_1e_8_rad(
 ):
     # 1e4 steps of 0.5 s at 100.3 rev/s, then 1e5 steps of 0.01 s continuing the same run.
     speed, phase, bend = 2 * math.pi * 200.6, 0.3, 0.5
-    joint = JointInstance(
+    joint = FmuInstance(
         model_description,
         unzipped_fmu,
         start_values=dict(input_speed=speed, bend_angle=bend, yoke_phase=phase),

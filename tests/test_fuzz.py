@@ -8,7 +8,7 @@ from hypothesis import HealthCheck, given, settings
 from hypothesis import strategies as st
 
 from cardan_joint import variables as table
-from cardan_joint.instance import JointInstance
+from cardan_joint.instance import FmuInstance
 from cardan_joint.physics import CardanJoint
 
 DISCARD = 2
@@ -45,7 +45,7 @@ actions = st.lists(
 )
 @given(actions)
 def test_random_sequences_never_corrupt_the_joint(model_description, unzipped_fmu, sequence):
-    joint = JointInstance(model_description, unzipped_fmu, name="fuzz")
+    joint = FmuInstance(model_description, unzipped_fmu, name="fuzz")
     mirror = CardanJoint()
     saved = joint.get_state()
     saved_mirror = mirror.state()

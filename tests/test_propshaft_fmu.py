@@ -11,7 +11,7 @@ from conftest import build_fmu, load_example
 from reference.propshaft import PropshaftReference
 from tolerance import assert_close
 
-from cardan_joint.instance import JointInstance
+from cardan_joint.instance import FmuInstance
 
 DISCARD = 2
 D = math.radians
@@ -92,7 +92,7 @@ def test_every_communication_point_matches_the_3d_construction(
     )
     offsets = reference.start_offsets(case["angle0"])
     fluctuation = reference.speed_ratio_fluctuation(samples=48)
-    shaft = JointInstance(
+    shaft = FmuInstance(
         description, propshaft_unzipped, start_values={**start_values(case), **inputs_at(case, 0.0)}
     )
     first = None
@@ -151,7 +151,7 @@ def test_every_communication_point_matches_the_3d_construction(
 
 def test_warnings_are_logged_at_initialization_and_never_refuse(description, propshaft_unzipped):
     messages = []
-    shaft = JointInstance(
+    shaft = FmuInstance(
         description,
         propshaft_unzipped,
         messages=messages,
@@ -170,7 +170,7 @@ def test_a_working_angle_at_the_limit_refuses_every_step_and_says_why(
     description, propshaft_unzipped
 ):
     messages = []
-    shaft = JointInstance(
+    shaft = FmuInstance(
         description,
         propshaft_unzipped,
         messages=messages,
@@ -186,10 +186,10 @@ def test_a_working_angle_at_the_limit_refuses_every_step_and_says_why(
 
 
 # Same open/step/close shape as tests/test_robustness.py's refusal tests: each
-# drives its own FMU, and the shared part is JointInstance already.
+# drives its own FMU, and the shared part is FmuInstance already.
 def test_a_non_finite_input_is_refused_and_loses_nothing(description, propshaft_unzipped):
     messages = []
-    shaft = JointInstance(description, propshaft_unzipped, messages=messages)
+    shaft = FmuInstance(description, propshaft_unzipped, messages=messages)
     try:
         shaft.step(0.1)
         before = shaft.get("input_angle", "output_angle")
@@ -204,7 +204,7 @@ def test_a_non_finite_input_is_refused_and_loses_nothing(description, propshaft_
 
 
 def test_state_serialization_round_trip(description, propshaft_unzipped):
-    shaft = JointInstance(
+    shaft = FmuInstance(
         description,
         propshaft_unzipped,
         start_values=dict(shaft_2_top_angle=D(4.0), input_speed=50.0),
@@ -263,7 +263,7 @@ def test_the_fmu_reports_cancellation_only_at_the_right_phasing(description, pro
     values.update({f"shaft_{k}_top_angle": top[k] for k in range(3)})
     results = {}
     for phase in (0.0, phases[0]):
-        shaft = JointInstance(
+        shaft = FmuInstance(
             description, propshaft_unzipped, start_values=dict(values, shaft_1_yoke_phase=phase)
         )
         try:
@@ -272,7 +272,7 @@ def test_the_fmu_reports_cancellation_only_at_the_right_phasing(description, pro
             shaft.close()
     assert results[phases[0]]["speed_ratio_fluctuation"] < 1e-12
     assert results[0.0]["speed_ratio_fluctuation"] > 1e-3
-    default = JointInstance(description, propshaft_unzipped)  # a coplanar Z layout
+    default = FmuInstance(description, propshaft_unzipped)  # a coplanar Z layout
     try:
         assert default.get("speed_ratio_fluctuation")["speed_ratio_fluctuation"] < 1e-12
     finally:

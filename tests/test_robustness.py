@@ -11,7 +11,7 @@ import pytest
 from conftest import build_fmu, run_build
 
 from cardan_joint import variables as table
-from cardan_joint.instance import JointInstance, status_of
+from cardan_joint.instance import FmuInstance, status_of
 from cardan_joint.physics import CardanJoint
 from cardan_joint.simulate import SimulationError, simulate
 
@@ -70,8 +70,8 @@ def all_reals(joint):
 def test_bad_input_is_refused_named_and_loses_nothing(model_description, unzipped_fmu, case):
     bad, step, expected_words = BAD_INPUTS[case]
     messages = []
-    joint = JointInstance(model_description, unzipped_fmu, name="victim", messages=messages)
-    twin = JointInstance(model_description, unzipped_fmu, name="twin")
+    joint = FmuInstance(model_description, unzipped_fmu, name="victim", messages=messages)
+    twin = FmuInstance(model_description, unzipped_fmu, name="twin")
     try:
         for j in (joint, twin):
             j.set(**GOOD)
@@ -117,7 +117,7 @@ def test_bad_parameters_refuse_every_step_and_say_why(
     model_description, unzipped_fmu, parameter, value, words
 ):
     messages = []
-    joint = JointInstance(
+    joint = FmuInstance(
         model_description, unzipped_fmu, start_values={parameter: value}, messages=messages
     )
     try:
@@ -132,7 +132,7 @@ def test_bad_parameters_refuse_every_step_and_say_why(
 
 def test_parameters_cannot_change_after_initialization(model_description, unzipped_fmu):
     messages = []
-    joint = JointInstance(model_description, unzipped_fmu, messages=messages)
+    joint = FmuInstance(model_description, unzipped_fmu, messages=messages)
     try:
         assert joint.try_set(crosspiece_inertia_1=5.0) == 3  # fmi2Error
         assert joint.get("crosspiece_inertia_1")["crosspiece_inertia_1"] == 0.026
@@ -184,7 +184,7 @@ def test_state_rollback_is_bit_for_bit_after_ten_thousand_steps(model_descriptio
         )
         for _ in range(10_000)
     ]
-    joint = JointInstance(model_description, unzipped_fmu)
+    joint = FmuInstance(model_description, unzipped_fmu)
 
     def run():
         trace = []
@@ -206,7 +206,7 @@ def test_state_rollback_is_bit_for_bit_after_ten_thousand_steps(model_descriptio
         joint.set_state(other)
         assert tuple(joint.get_outputs().values()) == first[-1]
         # A serialized state restores in a fresh instance.
-        fresh = JointInstance(model_description, unzipped_fmu, name="fresh")
+        fresh = FmuInstance(model_description, unzipped_fmu, name="fresh")
         try:
             state = fresh.deserialize_state(serialized)
             fresh.set_state(state)
@@ -225,7 +225,7 @@ def test_state_rollback_is_bit_for_bit_after_ten_thousand_steps(model_descriptio
 def test_a_state_serialized_into_a_larger_buffer_fills_only_its_own_bytes(
     model_description, unzipped_fmu
 ):
-    joint = JointInstance(model_description, unzipped_fmu)
+    joint = FmuInstance(model_description, unzipped_fmu)
     try:
         state = joint.get_state()
         exact = joint.serialize_state(state)
@@ -239,7 +239,7 @@ def test_a_state_serialized_into_a_larger_buffer_fills_only_its_own_bytes(
 
 
 def test_state_includes_the_revolution_counter(model_description, unzipped_fmu):
-    joint = JointInstance(model_description, unzipped_fmu, start_values={"input_speed": 5000.0})
+    joint = FmuInstance(model_description, unzipped_fmu, start_values={"input_speed": 5000.0})
     try:
         saved = joint.get_state()
         angle = joint.get("input_angle", "crosspiece_quaternion_0")
@@ -253,8 +253,8 @@ def test_state_includes_the_revolution_counter(model_description, unzipped_fmu):
 
 
 def test_reset_returns_to_the_start_values(model_description, unzipped_fmu):
-    fresh = JointInstance(model_description, unzipped_fmu, name="fresh")
-    joint = JointInstance(model_description, unzipped_fmu, start_values={"bend_angle": 1.0})
+    fresh = FmuInstance(model_description, unzipped_fmu, name="fresh")
+    joint = FmuInstance(model_description, unzipped_fmu, start_values={"bend_angle": 1.0})
     try:
         for _ in range(20):
             joint.step(0.01)
@@ -286,7 +286,7 @@ def test_a_hundred_instances_in_one_process_are_independent(model_description, u
                 crosspiece_inertia_3=0.001 * k,
             )
             joints.append(
-                JointInstance(model_description, unzipped_fmu, name=f"joint{k}", start_values=start)
+                FmuInstance(model_description, unzipped_fmu, name=f"joint{k}", start_values=start)
             )
             models.append(CardanJoint(**start))
         for step in range(30):
@@ -312,8 +312,8 @@ def test_builds_with_other_names_and_defaults_coexist_in_one_process(
     loaded = []
     try:
         for path in (other, same_name):
-            loaded.append(JointInstance.open(path, name=path.stem))
-        default = JointInstance(model_description, unzipped_fmu, name="default")
+            loaded.append(FmuInstance.open(path, name=path.stem))
+        default = FmuInstance(model_description, unzipped_fmu, name="default")
         loaded.append(default)
         bends = [j.get("bend_angle")["bend_angle"] for j in loaded]
         assert bends == [0.2, 0.7, table.BY_NAME["bend_angle"].start]
@@ -357,7 +357,7 @@ def test_calls_for_other_types_and_bad_references_are_errors_not_fatal(
     model_description, unzipped_fmu
 ):
     messages = []
-    joint = JointInstance(model_description, unzipped_fmu, messages=messages)
+    joint = FmuInstance(model_description, unzipped_fmu, messages=messages)
     try:
         fmu = joint.fmu
         for call, arguments in (
@@ -377,7 +377,7 @@ def test_calls_for_other_types_and_bad_references_are_errors_not_fatal(
 
 def test_a_garbage_serialized_state_is_refused_and_changes_nothing(model_description, unzipped_fmu):
     messages = []
-    joint = JointInstance(model_description, unzipped_fmu, messages=messages)
+    joint = FmuInstance(model_description, unzipped_fmu, messages=messages)
     try:
         joint.step(0.05)
         before = all_reals(joint)
@@ -393,7 +393,7 @@ def test_a_garbage_serialized_state_is_refused_and_changes_nothing(model_descrip
 
 def test_outputs_in_initialization_mode_see_the_parameters_at_once(model_description, unzipped_fmu):
     outputs = ("input_angle", "output_angle", "crosspiece_quaternion_0")
-    with JointInstance(
+    with FmuInstance(
         model_description, unzipped_fmu, name="init", start_time=3.0, exit_initialization=False
     ) as joint:
         joint.set(input_angle_start=1.0, yoke_phase=0.5)
@@ -405,7 +405,7 @@ def test_outputs_in_initialization_mode_see_the_parameters_at_once(model_descrip
 
 
 def test_invalid_load_holds_only_the_outputs_that_depend_on_it(model_description, unzipped_fmu):
-    joint = JointInstance(model_description, unzipped_fmu)
+    joint = FmuInstance(model_description, unzipped_fmu)
     try:
         joint.set(**GOOD)
         held = joint.get_outputs()

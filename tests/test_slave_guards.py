@@ -11,7 +11,7 @@ from pythonfmu.enums import Fmi2Status
 
 from cardan_joint import variables as table
 from cardan_joint.fmu.slave import CardanJointSlave
-from cardan_joint.instance import JointInstance
+from cardan_joint.instance import FmuInstance
 from cardan_joint.physics import CardanJoint, Reason, Refusal
 
 REFERENCE = {name: k for k, name in enumerate(v.name for v in table.VARIABLES)}
@@ -146,7 +146,7 @@ def test_a_state_missing_a_joint_value_is_refused():
 @pytest.mark.parametrize("sign", [1.0, -1.0])
 def test_the_fmu_refuses_a_bend_peak_inside_the_step(model_description, unzipped_fmu, sign):
     messages = []
-    joint = JointInstance(model_description, unzipped_fmu, name="peak", messages=messages)
+    joint = FmuInstance(model_description, unzipped_fmu, name="peak", messages=messages)
     twin = CardanJoint()
     try:
         joint.step(0.1)

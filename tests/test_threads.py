@@ -6,7 +6,7 @@ import math
 import threading
 import time
 
-from cardan_joint.instance import JointInstance
+from cardan_joint.instance import FmuInstance
 from cardan_joint.physics import Reason, Refusal
 
 THREADS = 8
@@ -22,7 +22,7 @@ def bad_bend(k):
 def scenario(model_description, unzipped, k, start=None, window=None):
     """Run instance `k`'s inputs; return its trace (status, outputs) and its log."""
     messages = []
-    joint = JointInstance(
+    joint = FmuInstance(
         model_description,
         unzipped,
         name=f"joint{k}",

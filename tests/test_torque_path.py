@@ -12,7 +12,7 @@ from hypothesis import strategies as st
 from reference.multibody import simulate_multibody, state_quantities
 from symbolic import derived
 
-from cardan_joint.instance import JointInstance
+from cardan_joint.instance import FmuInstance
 from cardan_joint.physics import joint_response
 
 GUARD = math.radians(85.0)
@@ -117,7 +117,7 @@ def test_fmu_matches_the_multibody_reactions_along_a_driven_trajectory(
     trajectory = simulate_multibody(
         times, beta, inertia, J1, J2, motor, external, gamma1_0=0.3, omega1_0=12.0, yoke_phase=phase
     )
-    joint = JointInstance(
+    joint = FmuInstance(
         model_description,
         unzipped_fmu,
         start_values=dict(

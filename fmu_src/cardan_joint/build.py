@@ -20,6 +20,7 @@ from pathlib import Path
 
 from .models import MODELS, Model, StartValueError
 from .models import model as find_model
+from .names import UsageError, parse_assignments
 
 PACKAGE_DIR = Path(__file__).resolve().parent
 # What an FMU needs at run time: the rest of the package runs in the host only.
@@ -193,19 +194,6 @@ def build(
     return fmu
 
 
-def _parse_start_values(pairs):
-    values = {}
-    for pair in pairs:
-        name, sep, value = pair.partition("=")
-        try:
-            values[name.strip()] = float(value)
-        except ValueError:
-            sep = ""
-        if not sep:
-            raise BuildError(f"--set takes NAME=VALUE with a number, got {pair!r}")
-    return values
-
-
 def main(argv=None, prog=None) -> int:
     parser = argparse.ArgumentParser(
         prog=prog,
@@ -233,7 +221,8 @@ def main(argv=None, prog=None) -> int:
         action="append",
         default=[],
         metavar="NAME=VALUE",
-        help="start value of an input or parameter, e.g. --set bend_angle=0.2",
+        help="start value of an input or parameter in SI units (rad, rad/s, N.m, kg.m2), "
+        "e.g. --set bend_angle=0.2",
     )
     parser.add_argument(
         "--joints",
@@ -267,10 +256,14 @@ def main(argv=None, prog=None) -> int:
             "--fmi-version, --name or --set)"
         )
     try:
+        start_values = parse_assignments(args.set)
+    except UsageError as error:
+        parser.error(str(error))
+    try:
         fmu = build(
             args.dest,
             args.name,
-            _parse_start_values(args.set),
+            start_values,
             model=args.model,
             settings=settings,
             fmi_version=args.fmi_version,

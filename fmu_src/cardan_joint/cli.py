@@ -1,15 +1,18 @@
-"""The `cardan-joint` command: build, simulate and sweep the UniversalJoint FMU.
+"""The `cardan-joint` command: build, sweep, and simulate any FMU of this project.
 
     cardan-joint build [--dest DIR] [--name MODEL] [--set NAME=VALUE ...]
     cardan-joint simulate [--set NAME=VALUE ...] [--input inputs.csv] [--stop-time S]
                           [--step S] [--output run.csv] [--plot run.png] [--plot-variables ...]
     cardan-joint sweep [--serial | --scheduler tcp://host:8786 | --compare] [...]
 
-Every failure a user can cause (an unknown variable, a malformed CSV, a step
-the FMU refuses, a missing FMU) ends in a one-paragraph message on stderr and
-a non-zero exit status, never a traceback; a refused run still writes what it
-computed up to the refusal. The command changes no process-wide state (no
-stderr redirection, sys.argv as it found it): main() can run inside a host.
+`simulate` reads names, causalities and units from the FMU's modelDescription,
+so it runs every model the build offers; it plots the FMU's outputs unless
+told otherwise. Every failure a user can cause (an unknown variable, a
+malformed CSV, a step the FMU refuses, a missing FMU) ends in a one-paragraph
+message on stderr and a non-zero exit status, never a traceback; a refused run
+still writes what it computed up to the refusal (nothing if refused at the
+start). The command changes no process-wide state (no stderr redirection,
+sys.argv as it found it): main() can run inside a host.
 """
 
 import argparse
@@ -18,11 +21,11 @@ import sys
 from pathlib import Path
 
 from . import results
-from . import variables as table
-from .run_inputs import UsageError, input_signal, parse_assignments, read_input_csv, start_values
+from .fmu_info import FmuInfo, MissingFMUError
+from .names import UsageError
+from .run_inputs import read_input_csv, split_assignments, with_constants
 
 PROG = "cardan-joint"
-DEFAULT_PLOT_VARIABLES = ("output_speed", "output_acceleration", "cardan_error", "input_torque")
 # Runs with fewer steps finish before a progress bar would help.
 PROGRESS_MIN_STEPS = 20_000
 # Each command writes under its own name: a command never overwrites the files
@@ -39,14 +42,14 @@ def _written(path: Path, existed: bool, detail: str = "") -> str:
     return f"{path} ({notes})" if notes else str(path)
 
 
-def write_outputs(result, output: Path, plot: Path, names, title) -> str:
+def write_outputs(result, output: Path, plot: Path, names, title, display) -> str:
     """Write the result CSV and its plot; say which files existed before."""
     existed = {p: p.exists() for p in (output, plot)}
     results.write_csv(result, output)
     if len(result):
         from .plotting import plot_time_series
 
-        plot_time_series(result, names, plot, title)
+        plot_time_series(result, names, plot, title, display)
         return (
             f"{_written(output, existed[output], f'{len(result)} rows')} and "
             f"{_written(plot, existed[plot])}"
@@ -68,27 +71,27 @@ def _progress_callback(stop_time, step, show):
     return step_finished, bar
 
 
-def _refusal(error, stop_time) -> str:
+def _refusal(error, start: bool, stop_time) -> str:
     """Where a refused run stopped, rounded, and the FMU's reasons."""
     reached = float(error.result["time"][-1]) if len(error.result) else 0.0
     reasons = [
         text for status, _, text in error.messages if status in ("discard", "error", "fatal")
     ] or ["(the FMU gave no reason)"]
-    return (
-        f"the FMU refused a step: stopped at t = {reached:.6g} s of {stop_time:.6g} s\n  "
-        + "\n  ".join(reasons)
+    where = (
+        "the FMU refused the run at its start (t = 0 s): nothing computed, no CSV or plot written"
+        if start
+        else f"the FMU refused a step: stopped at t = {reached:.6g} s of {stop_time:.6g} s"
     )
+    return where + "\n  " + "\n  ".join(reasons)
 
 
 def simulate_command(args):
     from .simulate import SimulationError, flat_columns, simulate
 
-    fmu = Path(args.fmu)
-    if not fmu.is_file():
-        raise UsageError(f"{fmu} does not exist: build it with `{PROG} build`")
-    constants, parameters = parse_assignments(args.set)
-    csv_signal = read_input_csv(args.input) if args.input else None
-    starts, experiment = start_values(fmu)
+    info = FmuInfo.read(args.fmu)  # read once: names, units, start values
+    constants, parameters = split_assignments(args.set, info)
+    csv_signal = read_input_csv(args.input, info) if args.input else None
+    experiment = info.model_description.defaultExperiment
     stop_time = (
         args.stop_time
         if args.stop_time is not None
@@ -101,41 +104,43 @@ def simulate_command(args):
         raise UsageError(f"--stop-time {stop_time!r} must be a number > 0")
     if not (math.isfinite(step) and 0 < step <= stop_time):
         raise UsageError(f"--step {step!r} must be > 0 and at most the stop time {stop_time!r}")
-    unknown = [n for n in args.plot_variables if n not in table.BY_NAME]
-    if unknown:
-        raise UsageError(f"--plot-variables: unknown variable(s) {', '.join(unknown)}")
-    signal = input_signal(constants, csv_signal, starts, stop_time)
+    recorded = info.names("input", "output")
+    plot_variables = args.plot_variables or info.columns("output")
+    info.check(plot_variables, ("input", "output"), "--plot-variables variable")
+    inputs = with_constants(csv_signal, constants) if csv_signal is not None else constants
     steps = round(stop_time / step)
     show = not args.no_progress and (args.progress or steps >= PROGRESS_MIN_STEPS)
     step_finished, bar = _progress_callback(stop_time, step, show)
     output = Path(args.output)
     plot = Path(args.plot) if args.plot else output.with_suffix(".png")
-    title = f"{fmu.name}: {steps} steps of {step:.6g} s"
+    title = f"{info.path.name}: {steps} steps of {step:.6g} s"
     try:
         result = simulate(
-            fmu,
+            info,
             stop_time=stop_time,
             output_interval=step,
-            inputs=signal,
+            inputs=inputs,
             start_values=parameters,
-            output=list(table.INPUTS + table.OUTPUTS),
+            output=recorded,
             step_finished=step_finished,
         )
     except SimulationError as error:
-        written = write_outputs(
-            flat_columns(error.result), output, plot, args.plot_variables, f"{title} (refused)"
-        )
-        print(
-            f"{PROG} simulate: {_refusal(error, stop_time)}\n"
-            f"wrote the run up to the refusal: {written}",
-            file=sys.stderr,
-        )
+        partial = flat_columns(error.result)
+        at_start = len(partial) <= 1  # at most the initial row: no step was taken
+        message = f"{PROG} simulate: {_refusal(error, at_start, stop_time)}"
+        if not at_start:
+            written = write_outputs(
+                partial, output, plot, plot_variables, f"{title} (refused)", info.display
+            )
+            message += f"\nwrote the run up to the refusal: {written}"
+        print(message, file=sys.stderr)
         return 1
     finally:
         if bar:
             bar.close()
     result = flat_columns(result)  # an FMI 3 FMU's arrays, as FMI 2 columns
-    print(f"wrote {write_outputs(result, output, plot, args.plot_variables, title)}")
+    written = write_outputs(result, output, plot, plot_variables, title, info.display)
+    print(f"wrote {written}")
     return 0
 
 
@@ -145,7 +150,9 @@ def simulate_command(args):
 def _parser():
     parser = argparse.ArgumentParser(
         prog=PROG,
-        description="Build, simulate and sweep the exact Cardan joint FMU (UniversalJoint).",
+        description="Build the FMUs of this project, simulate any of them, and sweep the "
+        "UniversalJoint's design. Values: --set and input CSVs in the FMU's SI units "
+        "(rad, rad/s, N.m); sweep options and plots in the units their help names (deg, rpm).",
     )
     commands = parser.add_subparsers(dest="command", required=True, metavar="COMMAND")
     commands.add_parser(
@@ -160,32 +167,36 @@ def _parser():
     )
     run = commands.add_parser(
         "simulate",
-        help="co-simulate the FMU with FMPy",
-        description="Co-simulate the FMU from constant inputs (--set) "
-        "and/or an input CSV; write an output CSV and a PNG plot. Inputs "
-        "hold over each step with their rates: give input_acceleration "
-        "and bend_angle_rate columns with speed and bend angle columns "
-        "for an exact run.",
+        help="co-simulate any FMU of this project with FMPy",
+        description="Co-simulate an FMU from constant inputs (--set) "
+        "and/or an input CSV; write an output CSV (SI units) and a PNG plot "
+        "(display units). Names, units and start values come from the FMU. "
+        "An input left unset does what the FMU does with it: holds its start "
+        "value, or follows its rate (a speed its acceleration, a bend angle its rate).",
     )
     from .simulate import DEFAULT_FMU
 
-    run.add_argument("--fmu", default=str(DEFAULT_FMU), help="FMU file (default %(default)s)")
+    run.add_argument(
+        "--fmu", default=str(DEFAULT_FMU), help="FMU file, any model (default %(default)s)"
+    )
     run.add_argument(
         "--set",
         action="append",
         default=[],
         metavar="NAME=VALUE",
-        help="constant input or parameter value, e.g. --set bend_angle=0.3 "
-        "(SI units: rad, rad/s, N.m, kg.m2)",
+        help="constant input or parameter value in the FMU's SI unit (rad, rad/s, N.m, "
+        "kg.m2; not deg or rpm), e.g. --set bend_angle=0.3 (17.2 deg)",
     )
     run.add_argument(
-        "--input", metavar="CSV", help="input CSV: a 'time' column and input-name columns"
+        "--input",
+        metavar="CSV",
+        help="input CSV: a 'time' column [s] and input-name columns in SI units (rad, rad/s, N.m)",
     )
     run.add_argument(
         "--stop-time",
         type=float,
         default=None,
-        help="[s] (default: the CSV's last time, else the FMU's default experiment)",
+        help="stop time [s] (default: the CSV's last time, else the FMU's default experiment)",
     )
     run.add_argument(
         "--step", type=float, default=1e-3, help="communication step [s] (default %(default)s)"
@@ -200,9 +211,9 @@ def _parser():
     run.add_argument(
         "--plot-variables",
         nargs="+",
-        default=list(DEFAULT_PLOT_VARIABLES),
+        default=None,
         metavar="NAME",
-        help="variables to plot (default: %(default)s)",
+        help="inputs or outputs to plot, each in its display unit (default: the FMU's outputs)",
     )
     progress = run.add_mutually_exclusive_group()
     progress.add_argument(
@@ -230,7 +241,7 @@ def main(argv=None) -> int:
         if rest:
             parser.error(f"unrecognized arguments: {' '.join(rest)}")
         return simulate_command(args)
-    except UsageError as error:
+    except (UsageError, MissingFMUError) as error:
         print(f"{PROG} {args.command}: {error}", file=sys.stderr)
         return 2
     except KeyboardInterrupt:

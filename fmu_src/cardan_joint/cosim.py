@@ -48,11 +48,11 @@ import numpy as np
 
 from .extras import require
 
-_NS = 1_000_000_000
+_NANOSECONDS_PER_SECOND = 1_000_000_000
 
 
 def _ns(seconds: float) -> int:
-    return int(round(seconds * _NS))
+    return int(round(seconds * _NANOSECONDS_PER_SECOND))
 
 
 def _check(ok, what):
@@ -137,10 +137,10 @@ def _observe_and_run(
             got == n and np.array_equal(steps, np.arange(n)),
             f"reading {key} ({got} of {n} samples)",
         )
-        result.setdefault("time", times / _NS)
+        result.setdefault("time", times / _NANOSECONDS_PER_SECOND)
         result[key] = values
     if "time" not in result:
-        result["time"] = np.arange(n) * step_ns / _NS
+        result["time"] = np.arange(n) * step_ns / _NANOSECONDS_PER_SECOND
     del observer
     return result
 

@@ -1,27 +1,28 @@
 """One FMU instance (FMI 2.0 or 3.0) on FMPy's low-level API, its Float variables by name.
 
-The one wrapper around FMPy's slave classes that the tests, the examples and
-the benchmarks share: instantiation and initialisation with start values,
-name-based set/get, stepping (raising or returning the status), FMU state
-pass-through, an optional sink for the FMU's log messages, and terminate/free
-on leaving a `with` block.
+The one wrapper around FMPy's slave classes that tests, examples and benchmarks
+share: initialisation with start values, set/get by name, stepping (raising
+the FMU's own reason, or returning the status), FMU states, an optional log
+sink, terminate/free on leaving `with`. It knows no model: names come from
+the FMU's model description.
 
-    with JointInstance.open("dist/UniversalJoint.fmu", start_values={...}) as joint:
+    with FmuInstance.open("dist/UniversalJoint.fmu", start_values={...}) as joint:
         joint.step(1e-3)
         joint.get("output_speed")
 
     with ExtractedFMU("dist/UniversalJoint.fmu") as fmu:      # unzipped once
-        with fmu.instance("joint1") as one, fmu.instance("joint2") as two:
-            ...
+        with fmu.instance("joint1") as one, fmu.instance("joint2") as two: ...
 """
 
 from __future__ import annotations
 
 import shutil
 from collections.abc import Callable, Iterable
-from math import prod
 from pathlib import Path
 from typing import Any
+
+from .fmu_info import FmuInfo, require_fmu
+from .names import check_known
 
 Message = tuple[int, str, str]  # (FMI status, category, text)
 # FMPy's opaque handle of a saved FMU state (fmi2FMUstate / fmi3FMUState pointer).
@@ -41,9 +42,21 @@ def _slave(model_description, unzipped: str, name: str):
     )
 
 
-# FMI 3 differs in its call sequence, its value getters (arrays) and its names for
-# the FMU-state calls; JointInstance hides that.
+# FmuInstance hides FMI 3's call sequence, array getters and FMU-state names.
 _VERSIONS = ("2.0", "3.0")
+
+
+class _Recent(list):
+    """The current call's log messages, each also passed on to the user's sink."""
+
+    def __init__(self, also: Any) -> None:
+        super().__init__()
+        self.also = also
+
+    def append(self, message: Message) -> None:
+        super().append(message)
+        if self.also is not None:
+            self.also.append(message)
 
 
 def logging_callbacks(sink: Any) -> Any:
@@ -68,16 +81,25 @@ def status_of(call, *args, **kwargs) -> int:
     try:
         call(*args, **kwargs)
         return 0
-    except FMICallException as refusal:
+    except (FMICallException, StepRefusedError) as refusal:
         return refusal.status
 
 
-class JointInstance:
+class StepRefusedError(RuntimeError):
+    """A refused step: the FMU's own reason (variable, value, limit, time), its FMI `status`."""
+
+    def __init__(self, text: str, status: int) -> None:
+        super().__init__(text)
+        self.status = status
+
+
+class FmuInstance:
     """One instance of an unzipped FMU, initialised and ready to step from `start_time`.
 
-    `messages`: a list (anything with `append`) that receives the FMU's log
-    messages as (status, category, text); giving it turns debug logging on,
-    without which pythonfmu forwards nothing. `exit_initialization=False`
+    `messages`: a list (anything with `append`) that also receives the FMU's
+    log messages as (status, category, text). Logging is always on (pythonfmu
+    forwards nothing otherwise): a refused step raises with the FMU's reason.
+    `exit_initialization=False`
     leaves it in Initialization Mode (start values set) until
     `exit_initialization_mode()`.
     """
@@ -86,7 +108,7 @@ class JointInstance:
         self,
         model_description: Any,
         unzipped: str | Path,
-        name: str = "joint",
+        name: str = "instance",
         start_values: dict[str, float] | None = None,
         start_time: float = 0.0,
         messages: Any = None,
@@ -99,32 +121,28 @@ class JointInstance:
                 f"supported; supported: {', '.join(_VERSIONS)}"
             )
         self.model_description = model_description
+        self.info = FmuInfo(model_description)
         self.references = {v.name: v.valueReference for v in model_description.modelVariables}
-        self.outputs = [v.name for v in model_description.modelVariables if v.causality == "output"]
-        self.fmi3 = version.startswith("3")
+        self.outputs = self.info.outputs
+        self.fmi3 = self.info.fmi3
         # Elements per variable (FMI 3 arrays; 1 for a scalar).
-        self.sizes = {
-            v.name: prod(int(d.start) for d in getattr(v, "dimensions", None) or [])
-            for v in model_description.modelVariables
-        }
+        self.sizes = {name: v.size for name, v in self.info.variables.items()}
         self.fmu = _slave(model_description, str(unzipped), name)
         self._cleanup: list[Callable[[], None]] = []
+        # The messages of the current call only: a refused step raises with them.
+        self.recent = sink = _Recent(messages)
         if self.fmi3:
             # FMPy keeps the callback on the FMU object, so it outlives the instance.
             self.callbacks = None
             self.fmu.instantiate(
-                logMessage=None
-                if messages is None
-                else (
-                    lambda env, status, category, message: messages.append(
-                        (status, category.decode(), message.decode())
-                    )
+                logMessage=lambda env, status, category, message: sink.append(
+                    (status, category.decode(), message.decode())
                 )
             )
         else:
             # Kept on the instance: ctypes callbacks must outlive the FMU.
-            self.callbacks = None if messages is None else logging_callbacks(messages)
-            self.fmu.instantiate(callbacks=self.callbacks, loggingOn=messages is not None)
+            self.callbacks = logging_callbacks(sink)
+            self.fmu.instantiate(callbacks=self.callbacks, loggingOn=True)
         self._cleanup.append(self.fmu.freeInstance)
         try:
             if self.fmi3:
@@ -150,29 +168,28 @@ class JointInstance:
         return self.init_status
 
     @classmethod
-    def open(cls, fmu: str | Path, **arguments) -> JointInstance:
+    def open(cls, fmu: str | Path, **arguments) -> FmuInstance:
         """An instance of an .fmu file (unzipped here, removed on close) or of an
-        unzipped FMU directory (left alone)."""
+        unzipped FMU directory (left alone); MissingFMUError names the build command."""
         extracted = ExtractedFMU(fmu)
         try:
-            joint = cls(extracted.model_description, extracted.directory, **arguments)
+            instance = cls(extracted.model_description, extracted.directory, **arguments)
         except BaseException:
             extracted.close()
             raise
-        joint._cleanup.insert(0, extracted.close)
-        return joint
+        instance._cleanup.insert(0, extracted.close)
+        return instance
 
-    def __enter__(self) -> JointInstance:
+    def __enter__(self) -> FmuInstance:
         return self
 
     def __exit__(self, *exc) -> None:
         self.close()
 
     def _refs(self, names: Iterable[str]) -> list[int]:
-        try:
-            return [self.references[n] for n in names]
-        except KeyError as unknown:
-            raise KeyError(f"the FMU has no variable {unknown.args[0]!r}") from None
+        names = list(names)
+        check_known(names, self.references, f"variable of {self.info.model_name}")
+        return [self.references[n] for n in names]
 
     def set(self, **values: float) -> None:
         setter = self.fmu.setFloat64 if self.fmi3 else self.fmu.setReal
@@ -196,20 +213,28 @@ class JointInstance:
 
     def get_flat_outputs(self) -> dict[str, float]:
         """Every output by its FMI 2 name (an FMI 3 array split into its rows)."""
-        from .variables import ARRAY_ROWS as rows
-
         values: dict[str, float] = {}
         for name, value in self.get_outputs().items():
-            values.update(
-                zip((row.name for row in rows[name]), value)
-                if isinstance(value, list)
-                else [(name, value)]
-            )
+            columns = self.info.variables[name].columns
+            values.update(zip(columns, value) if isinstance(value, list) else [(name, value)])
         return values
 
     def step(self, step_size: float) -> None:
-        """Step from `self.time`; FMPy raises FMICallException on a refused step."""
-        self.fmu.doStep(currentCommunicationPoint=self.time, communicationStepSize=step_size)
+        """Step from `self.time`; a refusal raises StepRefusedError: the FMU's reason."""
+        from fmpy.fmi1 import FMICallException
+
+        self.recent.clear()
+        try:
+            self.fmu.doStep(currentCommunicationPoint=self.time, communicationStepSize=step_size)
+        except FMICallException as refused:
+            reasons = [text for status, _, text in self.recent if status >= 2] or [
+                f"(the FMU gave no reason; {refused})"
+            ]
+            raise StepRefusedError(
+                f"{self.info.model_name} refused the step at t = {self.time:.9g} s: "
+                + "; ".join(reasons),
+                refused.status,
+            ) from None
         self.time += step_size
 
     def try_step(self, step_size: float) -> int:
@@ -255,12 +280,12 @@ class ExtractedFMU:
     def __init__(self, fmu: str | Path) -> None:
         from fmpy import extract, read_model_description
 
-        self.model_description = read_model_description(str(fmu))
+        self.model_description = read_model_description(str(require_fmu(fmu)))
         self._owned = not Path(fmu).is_dir()
         self.directory = extract(str(fmu)) if self._owned else str(fmu)
 
-    def instance(self, name: str = "joint", **arguments: Any) -> JointInstance:
-        return JointInstance(self.model_description, self.directory, name=name, **arguments)
+    def instance(self, name: str = "instance", **arguments: Any) -> FmuInstance:
+        return FmuInstance(self.model_description, self.directory, name=name, **arguments)
 
     def close(self) -> None:
         if self._owned:

@@ -12,6 +12,8 @@ from collections.abc import Callable, Mapping
 from dataclasses import dataclass, field
 from pathlib import Path
 
+from .names import unknown
+
 FMU_DIR = Path(__file__).resolve().parent / "fmu"
 
 
@@ -22,12 +24,11 @@ class StartValueError(ValueError):
 def _check_values(values: Mapping[str, float], table, make, owner: str = "") -> None:
     """Raise StartValueError unless `values` name inputs and parameters of `table`
     only and the model `make(**values)` can run with them."""
-    unknown = sorted(set(values) - set(table.INPUTS) - set(table.PARAMETERS))
-    if unknown:
-        raise StartValueError(
-            f"cannot set start value of {', '.join(unknown)}: only inputs "
-            f"and parameters{owner} have start values"
-        )
+    settable = set(table.INPUTS) | set(table.PARAMETERS)
+    strangers = sorted(set(values) - settable)
+    if strangers:
+        kind = f"input or parameter{owner} (only they have start values)"
+        raise StartValueError(f"cannot set a start value: {unknown(strangers[0], settable, kind)}")
     model = make(**values)
     problem = model.parameter_problem() or model.input_problem()
     if problem:

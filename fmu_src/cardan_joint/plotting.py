@@ -1,13 +1,11 @@
 """One plotting style for the examples and the command line.
 
-Variables are plotted in their display units (the variable table's: deg, rpm,
+Variables are plotted in their display units (the FMU's displayUnit: deg, rpm,
 rpm/s, ...), so a figure from `cardan-joint simulate` reads like the examples'.
 """
 
-from collections.abc import Sequence
+from collections.abc import Callable, Sequence
 from pathlib import Path
-
-from . import variables as table
 
 
 def pyplot():
@@ -35,20 +33,14 @@ def save_figure(fig, path, dpi=110) -> Path:
     return path
 
 
-def display(name: str):
-    """(factor, unit): a variable's SI value times factor is its value in its display unit."""
-    variable = table.BY_NAME[name]
-    if variable.display_unit:
-        factors = dict(table.UNITS[variable.unit].display)
-        return factors[variable.display_unit], variable.display_unit
-    return 1.0, variable.unit
-
-
-def plot_time_series(result, names: Sequence[str], path, title: str) -> Path:
-    """One panel per variable over time, in display units."""
+def plot_time_series(
+    result, names: Sequence[str], path, title: str, display: Callable[[str], tuple[float, str]]
+) -> Path:
+    """One panel per variable over time, in display units; `display(name)` gives
+    (factor, unit), e.g. `FmuInfo.display`: SI value * factor is the plotted value."""
     plt = pyplot()
     fig, axes = plt.subplots(
-        len(names), 1, figsize=(9, 2.2 + 2.0 * len(names)), sharex=True, squeeze=False
+        len(names), 1, figsize=(9, 1.2 + 1.4 * len(names)), sharex=True, squeeze=False
     )
     for ax, name in zip(axes[:, 0], names):
         factor, unit = display(name)

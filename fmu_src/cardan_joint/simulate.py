@@ -1,4 +1,4 @@
-"""Run the UniversalJoint FMU with FMPy, and fail loudly.
+"""Run any FMU of this project with FMPy, and fail loudly.
 
 Plain `fmpy.simulate_fmu` stops silently when the FMU refuses a step (it
 returns the result up to there), and pythonfmu drops the FMU's messages unless
@@ -8,7 +8,8 @@ the run did not reach its stop time. It takes the FMI 2.0 and the FMI 3.0 FMU
 alike: with FMI 3, FMPy raises at a refused step (the messages and the result
 up to there still go into the SimulationError), output names may be given in
 either form, and the result holds the arrays (`flat_columns` splits them into
-the FMI 2 columns).
+the FMI 2 columns). Names are checked against the FMU's own modelDescription:
+a misspelt input, start value or output is refused naming the nearest valid ones.
 """
 
 import warnings
@@ -19,14 +20,12 @@ from typing import TYPE_CHECKING, Any
 
 import numpy as np
 
-from . import variables as table
+from .fmu_info import FmuInfo, array_columns
 
 if TYPE_CHECKING:  # imported in first_refusal at run time, where it is needed
     from .physics.refusal import Refusal
 
 DEFAULT_FMU = Path("dist") / "UniversalJoint.fmu"
-# FMI 2 variable name -> the FMI 3 variable holding it (itself, or its array).
-_FMI3_NAME = {row.name: group.name for group in table.fmi3_variables() for row in group.rows}
 # (status name, category, text) of one FMU log message.
 Message = tuple[str, str, str]
 _STATUS = {0: "ok", 1: "warning", 2: "discard", 3: "error", 4: "fatal", 5: "pending"}
@@ -69,11 +68,6 @@ def first_refusal(texts: Iterable[str]) -> "Refusal | None":
     return None
 
 
-def fmi3_names(names: Iterable[str]) -> list[str]:
-    """The FMI 3 variables holding the named FMI 2 (or FMI 3) variables, in order."""
-    return list(dict.fromkeys(_FMI3_NAME.get(name, name) for name in names))
-
-
 def flat_columns(result: np.ndarray) -> np.ndarray:
     """The result with each FMI 3 array column split into its FMI 2 variables
     (an FMI 2 result comes back unchanged): the same columns for either FMU."""
@@ -82,13 +76,15 @@ def flat_columns(result: np.ndarray) -> np.ndarray:
         raise ValueError("flat_columns takes a structured result array (FMPy's)")
     fields: list[tuple[str, np.dtype | type[float]]] = []
     for name in names:
-        rows = table.ARRAY_ROWS[name] if result.dtype[name].shape else ()
-        fields += [(row.name, float) for row in rows] or [(name, result.dtype[name])]
+        shape = result.dtype[name].shape
+        rows = array_columns(name, shape[0]) if shape else ()
+        fields += [(row, float) for row in rows] or [(name, result.dtype[name])]
     flat = np.zeros(len(result), dtype=fields)
     for name in names:
-        if result.dtype[name].shape:
-            for i, row in enumerate(table.ARRAY_ROWS[name]):
-                flat[row.name] = result[name][:, i]
+        shape = result.dtype[name].shape
+        if shape:
+            for i, row in enumerate(array_columns(name, shape[0])):
+                flat[row] = result[name][:, i]
         else:
             flat[name] = result[name]
     return flat
@@ -104,7 +100,7 @@ def _without_repeated_end(result: np.ndarray) -> np.ndarray:
 
 
 def simulate(
-    fmu: str | Path = DEFAULT_FMU,
+    fmu: str | Path | FmuInfo = DEFAULT_FMU,
     stop_time: float | None = None,
     output_interval: float | None = None,
     inputs: np.ndarray | Mapping[str, float] | None = None,
@@ -117,26 +113,32 @@ def simulate(
     `inputs`: an FMPy structured array (field "time" plus input names), or a
     dict of constant input values. `output_interval` is the communication step.
     Raises SimulationError if the FMU refused a step or logged an error: a
-    RefusalError, with the refusal's fields, when the FMU said why.
+    RefusalError, with the refusal's fields, when the FMU said why. A name
+    the FMU does not have raises UnknownNameError (a KeyError) naming the
+    nearest valid ones; a missing FMU, MissingFMUError naming its build command.
+    `fmu` may be an `FmuInfo` already read (its description is not read again).
     """
-    from fmpy import read_model_description, simulate_fmu
+    from fmpy import simulate_fmu
     from fmpy.fmi1 import FMICallException
 
-    from .inputs import complete_inputs
+    from .run_inputs import complete_inputs
 
-    fmu = str(fmu)
-    if not Path(fmu).exists():
-        raise FileNotFoundError(f"{fmu} does not exist: build it with `python build_fmu.py`")
-    description = read_model_description(fmu)
+    info = fmu if isinstance(fmu, FmuInfo) else FmuInfo.read(fmu)
+    description = info.model_description
+    fmu = str(info.path)
+    start_values = dict(start_values or {})
+    info.check(start_values, ("input", "parameter"), "start value (an input or parameter)")
+    if output is not None:
+        info.check(output, ("input", "output", "parameter", "local"), "output")
     experiment = description.defaultExperiment
     stop_time = float(experiment.stopTime) if stop_time is None else stop_time
     output_interval = float(experiment.stepSize) if output_interval is None else output_interval
     if inputs is not None:
-        starts = {
-            v.name: float((start_values or {}).get(v.name, v.start))
-            for v in description.modelVariables
-            if v.causality == "input"
-        }
+        inputs = dict(inputs) if isinstance(inputs, Mapping) else inputs
+        given = list(inputs) if isinstance(inputs, dict) else list(inputs.dtype.names or ())
+        info.check([n for n in given if n != "time"], ("input",), "input")
+        starts = info.starts("input")
+        starts.update((k, v) for k, v in start_values.items() if k in starts)
         # Every input gets a signal: FMPy warns otherwise.
         inputs = complete_inputs(inputs, starts, stop_time, output_interval)
 
@@ -152,10 +154,11 @@ def simulate(
             )
         )
 
-    fmi3 = description.fmiVersion.startswith("3")
-    if fmi3 and output is not None:
-        output = fmi3_names(output)
-    # FMPy raises on an FMI 3 refusal, losing its recorder: keep it for the partial result.
+    fmi3 = info.fmi3
+    if output is not None:
+        output = info.fmu_names(output)
+    # FMPy raises on an FMI 3 refusal and on a refused initialization (either version),
+    # losing its recorder: keep it for the partial result.
     recorders: list[Any] = []  # FMPy's Recorder (its class is private)
     step_finished = fmpy_options.pop("step_finished", None)
 
@@ -169,15 +172,16 @@ def simulate(
             stop_time=stop_time,
             output_interval=output_interval,
             input=inputs,
-            start_values=start_values or {},
+            start_values=start_values,
             output=output,
+            model_description=description,
             debug_logging=True,
             logger=collect,
-            step_finished=keep_recorder if fmi3 else step_finished,
+            step_finished=keep_recorder,
             **fmpy_options,
         )
     except FMICallException:
-        if not fmi3 or not messages:
+        if not messages:  # no reason to report: FMPy's own error is all there is
             raise
         result = recorders[0].result() if recorders else np.zeros(0, dtype=[("time", float)])
     problems = [m for m in messages if m[0] in ("discard", "error", "fatal")]
@@ -198,5 +202,5 @@ def simulate(
     repeats = Counter(text for status, _, text in messages if status == "warning")
     for text, count in repeats.items():
         suffix = f" ({count} times)" if count > 1 else ""
-        warnings.warn(f"UniversalJoint: {text}{suffix}", RuntimeWarning, stacklevel=2)
+        warnings.warn(f"{info.model_name}: {text}{suffix}", RuntimeWarning, stacklevel=2)
     return result

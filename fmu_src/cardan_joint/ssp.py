@@ -14,7 +14,7 @@ from dataclasses import dataclass, field
 from pathlib import Path
 from xml.etree.ElementTree import Element, SubElement, indent, tostring
 
-_NS = {
+_XML_NAMESPACES = {
     "ssd": "http://ssp-standard.org/SSP1/SystemStructureDescription",
     "ssc": "http://ssp-standard.org/SSP1/SystemStructureCommon",
     "ssv": "http://ssp-standard.org/SSP1/SystemStructureParameterValues",
@@ -53,7 +53,7 @@ def _qualified(prefix: str, tag: str) -> str:
 
 
 def _root(tag: str, prefixes, **attributes) -> Element:
-    return Element(tag, {**{f"xmlns:{p}": _NS[p] for p in prefixes}, **attributes})
+    return Element(tag, {**{f"xmlns:{p}": _XML_NAMESPACES[p] for p in prefixes}, **attributes})
 
 
 def _xml(root: Element) -> bytes:

@@ -78,7 +78,7 @@ def add_arguments(parser, default_name="design_sweep"):
         type=float,
         default=None,
         metavar="DEG",
-        help="the FMU's bend guard for every run (default: the FMU's own)",
+        help="the FMU's bend guard [deg] for every run (default: the FMU's own)",
     )
     mode = parser.add_mutually_exclusive_group()
     mode.add_argument(
