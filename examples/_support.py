@@ -7,6 +7,7 @@ import argparse
 import sys
 from pathlib import Path
 
+from cardan_joint.fmu_info import build_command as fmu_build_command
 from cardan_joint.simulate import DEFAULT_FMU
 
 DEFAULT_MODEL = "UniversalJoint"
@@ -14,8 +15,7 @@ DEFAULT_MODEL = "UniversalJoint"
 
 def build_command(model: str = DEFAULT_MODEL) -> str:
     """The command that writes dist/<model>.fmu."""
-    flag = "" if model == DEFAULT_MODEL else f" --model {model}"
-    return f"python build_fmu.py{flag}"
+    return fmu_build_command(DEFAULT_FMU.with_name(f"{model}.fmu"))
 
 
 def example_parser(
