@@ -18,6 +18,7 @@ import sys
 import tempfile
 from pathlib import Path
 
+from .archive import ArchiveError, normalise
 from .models import MODELS, Model, StartValueError
 from .models import model as find_model
 from .names import UsageError, parse_assignments
@@ -88,11 +89,11 @@ def _stage(
     package = f"cardan_joint_{fingerprint}"
     target = workdir / package
     target.mkdir()
-    not_shipped = shutil.ignore_patterns("__pycache__")
     for entry in RUNTIME:
         source = PACKAGE_DIR / entry
         if source.is_dir():
-            shutil.copytree(source, target / entry, ignore=not_shipped)
+            # Any __pycache__ copied along is left out of the FMU by archive.normalise.
+            shutil.copytree(source, target / entry)
         else:
             shutil.copy2(source, target / entry)
     script = script_template.read_text().replace("from cardan_joint.", f"from {package}.")
@@ -184,6 +185,12 @@ def build(
         fmu.unlink()
         raise BuildError(str(error)) from None
     # --- end native loader ---
+    # Last: everything that writes into the FMU has written (see archive.py).
+    try:
+        normalise(fmu, fmi_version)
+    except ArchiveError as error:
+        fmu.unlink()
+        raise BuildError(str(error)) from None
     if validate:
         from fmpy.validation import validate_fmu
 

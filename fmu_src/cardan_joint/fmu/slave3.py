@@ -77,19 +77,21 @@ class CardanJointSlave3(SlaveCore, Fmi3Slave):
 
     def _register(self, group):
         initial = Fmi3Initial[group.initial] if group.initial else None
-        dimensions = [Dimension(start=str(len(group.rows)))] if len(group.rows) > 1 else []
-        self.register_variable(
-            Float64(
-                group.name,
-                causality=Fmi3Causality[group.causality],
-                description=group.description,
-                variability=Fmi3Variability[group.variability],
-                initial=initial,
-                dimensions=dimensions,
-                getter=lambda: None,
-                setter=lambda value: None,
-            )
+        variable = Float64(
+            group.name,
+            causality=Fmi3Causality[group.causality],
+            description=group.description,
+            variability=Fmi3Variability[group.variability],
+            initial=initial,
+            getter=lambda: None,
+            setter=lambda value: None,
         )
+        if len(group.rows) > 1:
+            # Attached after construction: pythonfmu3 0.3.4 imports numpy for any
+            # array variable only because its own array accessors need it; this
+            # slave answers arrays itself (get_float64), on the standard library.
+            variable._dimensions = [Dimension(start=str(len(group.rows)))]
+        self.register_variable(variable)
 
     def to_xml(self, model_options=None):
         starts = {name: getattr(self._model, name) for name in self._refs.known}

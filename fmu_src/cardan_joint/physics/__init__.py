@@ -1,4 +1,4 @@
-"""Exact physics of the Cardan joint: pure Python + numpy, no FMI import.
+"""Exact physics of the Cardan joint: pure Python, no FMI import.
 
 Angles in rad, speeds in rad/s, torques in N.m. `psi` is the input-pin angle
 (input angle + yoke phase), `beta` the bend angle. `joint_response` holds every

@@ -24,9 +24,8 @@ takes -tau2 . z2 = T_L, and p3 . z2 = sqrt(D), p1 . z2 = sin b cos psi. Each
 secondary couple lies along one known direction (z x p1, resp. z2 x p2).
 """
 
+import math
 from typing import Any, NamedTuple
-
-import numpy as np
 
 from ._backend import Real, namespace
 
@@ -93,7 +92,8 @@ def joint_response(
         load_torque,
         quaternion_sign,
     )
-    if namespace(*args) is np and np.broadcast(*args).size > 2 * _BLOCK:
+    xp = namespace(*args)
+    if xp is not math and xp.broadcast(*args).size > 2 * _BLOCK:
         return _in_blocks(args)
     return _response(*args)
 
@@ -101,6 +101,8 @@ def joint_response(
 def _in_blocks(args) -> JointResponse:
     """Evaluate a large broadcast in cache-sized blocks (1.5x faster than one
     pass over arrays of a million, and far less memory for the temporaries)."""
+    import numpy as np
+
     arrays = [a.ravel() for a in np.broadcast_arrays(*(np.asarray(a, float) for a in args))]
     shape = np.broadcast_shapes(*(np.shape(a) for a in args))
     n = arrays[0].size

@@ -5,7 +5,7 @@ working angle and frame; `chain` evaluates the single joint's closed forms joint
 after joint (speeds, accelerations, input torque, energy); `fluctuation` finds
 the exact speed-ratio fluctuation and the best yoke phasing; `checks` applies
 the joint makers' published angle rules; `model.Propshaft` steps it as the FMU
-does. Pure Python + numpy.
+does. Pure Python; numpy only for arrays.
 """
 
 from .chain import ChainState, chain

@@ -6,13 +6,11 @@ as the output speed and dr/dgamma_0 as the output acceleration, both in closed
 form. Every joint's ratio has period pi in its pin angle, and gamma_k(gamma_0 +
 pi) = gamma_k(gamma_0) + pi, so r has period pi: one half revolution holds
 every extremum. The extrema are the sign changes of dr/dgamma_0, bracketed on a
-fine grid and bisected (all brackets at once) to 1e-11 rad; r is stationary
-there, so its error is quadratic in the root's (~1e-22): exact to rounding.
+fine grid and bisected to 1e-11 rad; r is stationary there, so its error is
+quadratic in the root's (~1e-22): exact to rounding.
 """
 
 import math
-
-import numpy as np
 
 from .chain import chain
 from .geometry import Layout, plane_angle, wrapped
@@ -30,23 +28,30 @@ def ratio_and_slope(geometry: Layout, angle):
 
 
 def speed_ratio_extrema(geometry: Layout):
-    """(min, max) of omega_N/omega_0 over one input revolution at constant input speed."""
-    grid = np.linspace(0.0, math.pi, _GRID + 1)
-    ratio, slope = ratio_and_slope(geometry, grid)
-    candidates = [ratio]
-    change = np.nonzero(np.sign(slope[:-1]) * np.sign(slope[1:]) < 0)[0]
-    if change.size:
-        low, high = grid[change], grid[change + 1]
-        low_slope = slope[change]
-        for _ in range(_BISECTIONS):
-            middle = 0.5 * (low + high)
-            middle_slope = ratio_and_slope(geometry, middle)[1]
-            same = np.sign(middle_slope) == np.sign(low_slope)
-            low = np.where(same, middle, low)
-            high = np.where(same, high, middle)
-        candidates.append(ratio_and_slope(geometry, 0.5 * (low + high))[0])
-    values = np.concatenate(candidates)
-    return float(values.min()), float(values.max())
+    """(min, max) of omega_N/omega_0 over one input revolution at constant input speed.
+
+    Plain floats: the FMU evaluates this (once per layout) on the standard library
+    alone, and a loop over the 513 samples costs no more than numpy's arrays here."""
+    step = math.pi / _GRID
+    grid = [k * step for k in range(_GRID)] + [math.pi]
+    samples = [ratio_and_slope(geometry, angle) for angle in grid]
+    values = [ratio for ratio, _ in samples]
+    for k in range(_GRID):
+        low_slope, high_slope = samples[k][1], samples[k + 1][1]
+        if _sign(low_slope) * _sign(high_slope) < 0:
+            low, high = grid[k], grid[k + 1]
+            for _ in range(_BISECTIONS):
+                middle = 0.5 * (low + high)
+                if _sign(ratio_and_slope(geometry, middle)[1]) == _sign(low_slope):
+                    low = middle
+                else:
+                    high = middle
+            values.append(ratio_and_slope(geometry, 0.5 * (low + high))[0])
+    return min(values), max(values)
+
+
+def _sign(value: float) -> int:
+    return (value > 0.0) - (value < 0.0)
 
 
 def speed_ratio_fluctuation(geometry: Layout) -> float:
@@ -92,7 +97,10 @@ def best_phasing(geometry: Layout, rounds: int = 2):
 
 def _coarse_search(geometry, count):
     """The best grid point of the phasings, scored by max - min of the ratio on a
-    coarse sample (one vectorized chain over every combination)."""
+    coarse sample (one vectorized chain over every combination: numpy, imported
+    here because this design search never runs inside an FMU)."""
+    import numpy as np
+
     values = np.arange(_SEARCH_GRID) * (math.pi / _SEARCH_GRID)
     combos = np.stack(np.meshgrid(*([values] * count), indexing="ij"), -1).reshape(-1, count)
     angles = np.linspace(0.0, math.pi, _SEARCH_SAMPLES, endpoint=False)[None, :]
