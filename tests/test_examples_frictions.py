@@ -10,14 +10,14 @@ import pytest
 from conftest import ROOT, load_example
 
 BUILDS = {
-    "demo": "python build_fmu.py`",
-    "driveshaft": "python build_fmu.py`",
-    "motor_load": "python build_fmu.py`",
+    "demo": "python build_fmu.py --model UniversalJoint`",
+    "driveshaft": "python build_fmu.py --model UniversalJoint`",
+    "motor_load": "python build_fmu.py --model UniversalJoint`",
     "propshaft_layout": "python build_fmu.py --model Propshaft`",
-    "seed_wikipedia": "python build_fmu.py`",
-    "seed_maker": "python build_fmu.py`",
-    "seed_tataru": "python build_fmu.py`",
-    "seed_mityushov_misyura": "python build_fmu.py`",
+    "seed_wikipedia": "python build_fmu.py --model UniversalJoint`",
+    "seed_maker": "python build_fmu.py --model UniversalJoint`",
+    "seed_tataru": "python build_fmu.py --model UniversalJoint`",
+    "seed_mityushov_misyura": "python build_fmu.py --model UniversalJoint`",
 }
 
 

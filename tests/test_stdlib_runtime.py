@@ -13,7 +13,7 @@ from pathlib import Path
 import pytest
 from runtime_driver import INPUTS, STEP_SIZE, STEPS
 
-from cardan_joint.instance import JointInstance
+from cardan_joint.instance import FmuInstance
 
 DRIVER = Path(__file__).with_name("runtime_driver.py")
 
@@ -49,7 +49,7 @@ def test_the_built_fmu_in_fmpy_gives_the_values_of_the_standard_library_run(
     request, without_numpy, fixture, model
 ):
     expected = without_numpy[model]
-    with JointInstance.open(request.getfixturevalue(fixture)) as joint:
+    with FmuInstance.open(request.getfixturevalue(fixture)) as joint:
         refs = [joint.references[name] for name in expected["names"]]
         size = sum(joint.sizes[name] for name in expected["names"])
 
