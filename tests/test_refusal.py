@@ -9,6 +9,7 @@ import pytest
 from cardan_joint import variables as table
 from cardan_joint.physics import CardanJoint, Reason, Refusal
 from cardan_joint.physics.driveline import Motor
+from cardan_joint.physics.inertia_load import InertiaLoad
 from cardan_joint.physics.propshaft import Propshaft
 from cardan_joint.simulate import RefusalError, SimulationError, simulate
 
@@ -42,6 +43,8 @@ CAUSES = {
     Reason.ROTOR_SPEED: [
         (dict(load_torque=9e8, stall_torque=60.0, no_load_speed=100.0, rotor_inertia=0.3), 0.1)
     ],
+    # The inertia load's.
+    Reason.LOAD_SPEED: [(dict(drive_torque=9e8, inertia=0.3, drag=0.0), 0.1)],
 }
 PROPSHAFT_REASONS = {Reason.SHAFT_ANGLE, Reason.WORKING_ANGLE_GUARD, Reason.WORKING_ANGLE}
 MOTOR_REASONS = {Reason.ROTOR_SPEED}
@@ -50,6 +53,8 @@ MOTOR_REASONS = {Reason.ROTOR_SPEED}
 def _model(reason, start):
     if reason in MOTOR_REASONS:
         return Motor(**start)
+    if reason is Reason.LOAD_SPEED:
+        return InertiaLoad(**start)
     return Propshaft(**start) if reason in PROPSHAFT_REASONS else CardanJoint(**start)
 
 

@@ -30,6 +30,7 @@ RUNTIME = (
     "variables.py",
     "propshaft_variables.py",
     "driveline_variables.py",
+    "inertia_load_variables.py",
     "physics",
     "fmu",
 )

@@ -14,13 +14,13 @@ _UNITS = {
 }
 
 
-def _table(variables) -> VariableTable:
+def table_of(variables) -> VariableTable:
     """A VariableTable declaring the units its variables use."""
     used = dict.fromkeys(v.unit for v in variables)
     return VariableTable(variables, {u: _UNITS[u] for u in used})
 
 
-MOTOR = _table(
+MOTOR = table_of(
     (
         Variable(
             "load_torque",
@@ -89,7 +89,7 @@ MOTOR = _table(
     )
 )
 
-LOAD = _table(
+LOAD = table_of(
     (
         Variable(
             "speed",

@@ -113,6 +113,11 @@ MODELS: dict[str, Model] = {
         scripts={2: FMU_DIR / "Load.py"},
         check_start_values=_start_value_checker("driveline", "Load"),
     ),
+    "InertiaLoad": Model(
+        key="InertiaLoad",
+        scripts={2: FMU_DIR / "InertiaLoad.py"},
+        check_start_values=_start_value_checker("inertia_load", "InertiaLoad"),
+    ),
 }
 
 

@@ -30,6 +30,7 @@ class Reason(str, Enum):
     WORKING_ANGLE_GUARD = "max_working_angle_invalid"  # max_working_angle not in (0, pi/2)
     WORKING_ANGLE = "working_angle"  # a joint's working angle >= the limit
     ROTOR_SPEED = "rotor_speed"  # the motor's speed out of range at step end
+    LOAD_SPEED = "load_speed"  # the inertia load's speed out of range at step end
 
 
 _LIMIT = "max_bend_angle = {limit} rad ({limit:deg} deg)"
@@ -70,6 +71,8 @@ _TEMPLATES = {
     "max_working_angle = {limit} rad ({limit:deg} deg)",
     Reason.ROTOR_SPEED: "input load_torque = {load_torque} N.m over a step of {step_size} s "
     "drives the rotor speed to {value} rad/s, beyond the limit {limit} rad/s",
+    Reason.LOAD_SPEED: "input drive_torque = {drive_torque} N.m over a step of {step_size} s "
+    "drives the load speed to {value} rad/s, beyond the limit {limit} rad/s",
 }
 # Fixed by the reason, so not written in the message.
 _IMPLIED = {
@@ -84,6 +87,7 @@ _IMPLIED = {
     Reason.WORKING_ANGLE_GUARD: ("max_working_angle", "rad"),
     Reason.WORKING_ANGLE: (None, "rad"),
     Reason.ROTOR_SPEED: ("speed", "rad/s"),
+    Reason.LOAD_SPEED: ("speed", "rad/s"),
 }
 _PREFIX = "t = {time} s: "
 _FLOAT = r"-?(?:inf|nan|[0-9][0-9.e+-]*)"
