@@ -31,6 +31,7 @@ RUNTIME = (
     "propshaft_variables.py",
     "driveline_variables.py",
     "inertia_load_variables.py",
+    "compliant_variables.py",
     "physics",
     "fmu",
 )

@@ -118,6 +118,11 @@ MODELS: dict[str, Model] = {
         scripts={2: FMU_DIR / "InertiaLoad.py"},
         check_start_values=_start_value_checker("inertia_load", "InertiaLoad"),
     ),
+    "CompliantJoint": Model(
+        key="CompliantJoint",
+        scripts={2: FMU_DIR / "CompliantJoint.py"},
+        check_start_values=_start_value_checker("compliant", "CompliantJoint"),
+    ),
 }
 
 
