@@ -125,3 +125,9 @@ def inertia_load_fmu_path(tmp_path_factory) -> Path:
 def compliant_joint_fmu_path(tmp_path_factory) -> Path:
     """dist/CompliantJoint.fmu as `build_fmu.py --model CompliantJoint` writes it."""
     return build_fmu(tmp_path_factory.mktemp("compliant_joint"), "--model", "CompliantJoint")
+
+
+@pytest.fixture(scope="session")
+def motor_fmu_path(tmp_path_factory) -> Path:
+    """dist/Motor.fmu as `build_fmu.py --model Motor` writes it."""
+    return build_fmu(tmp_path_factory.mktemp("motor"), "--model", "Motor")
