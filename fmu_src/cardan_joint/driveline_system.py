@@ -121,7 +121,8 @@ def torsional_step(stiffness: float, inertia_in: float, inertia_out: float, damp
     ratio of about omega_n h / 4 (J_eff / J_out) + 2 (omega_n h)^2, measured on
     this driveline. The rule keeps it below about half the physical damping ratio.
     """
-    effective = inertia_in * inertia_out / (inertia_in + inertia_out)
+    # 1/(1/J_in + 1/J_out): a prescribed input motion is J_in = inf.
+    effective = 1.0 / (1.0 / inertia_in + 1.0 / inertia_out)
     omega_n = math.sqrt(stiffness / effective)
     damping = 2.0 * damping_ratio * math.sqrt(stiffness * effective)
     return omega_n, damping, min(STEP_PER_RADIAN, damping_ratio) / omega_n
