@@ -10,8 +10,11 @@ Outputs that depended on the load torque now depend on what sets the spring's
 torque. Pure data: the physics reads its defaults and ranges here.
 """
 
+from functools import cache
+
 from . import variables as joint_table
 from .driveline_variables import DRIVELINE_UNITS
+from .propshaft_variables import propshaft_table
 from .variable_schema import _IN, _OUT, _PAR, Variable, VariableTable
 
 # fmt: off
@@ -89,3 +92,9 @@ def compliant_table(rigid=joint_table) -> VariableTable:
 
 
 COMPLIANT_JOINT = compliant_table()
+
+
+@cache
+def compliant_propshaft_table(joints: int = 2) -> VariableTable:
+    """The CompliantPropshaft's table for `joints` joints."""
+    return compliant_table(propshaft_table(joints))

@@ -60,7 +60,7 @@ class CompliantDrive(ValueChecks):
         raise AttributeError(name)
 
     def __setattr__(self, name, value):
-        if name in self._shared:
+        if name in self.__dict__.get("_shared", ()):
             setattr(self.rigid, name, value)
         else:
             object.__setattr__(self, name, value)
