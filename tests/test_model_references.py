@@ -1,5 +1,5 @@
-"""The CompliantJoint's and InertiaLoad's reference files in docs/<model>/ are
-current, and the FMU reproduces them in FMPy's simulate_fmu with those inputs."""
+"""The compliant models' docs: reference files current and reproduced by the FMUs
+(simulate_fmu), variable tables generated from the tables."""
 
 import numpy as np
 import pytest
@@ -36,3 +36,18 @@ def test_reference_files_are_current_and_the_fmu_reproduces_them(model, request,
         scale = np.max(np.abs(reference[name]))
         error = np.max(np.abs(result[name] - reference[name]))
         assert error <= 1e-12 * scale, (name, error, scale)
+
+
+@pytest.mark.parametrize("model", ["CompliantJoint", "InertiaLoad", "CompliantPropshaft"])
+def test_docs_variable_table_is_generated_from_the_models_table(model):
+    from cardan_joint.compliant_variables import COMPLIANT_JOINT, compliant_propshaft_table
+    from cardan_joint.inertia_load_variables import INERTIA_LOAD
+
+    table = {
+        "CompliantJoint": COMPLIANT_JOINT,
+        "InertiaLoad": INERTIA_LOAD,
+        "CompliantPropshaft": compliant_propshaft_table(2),
+    }[model]
+    text = (ROOT / "docs" / model / "README.md").read_text()
+    begin, end = "<!-- variables:begin -->\n", "<!-- variables:end -->"
+    assert text.split(begin)[1].split(end)[0] == table.markdown_table()
