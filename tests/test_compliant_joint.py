@@ -1,6 +1,7 @@
 """CompliantJoint: the rigid joint's kinematics (the independent geometric
 reference) with a hand-written spring-damper law; refusals; the stiff limit; the FMU."""
 
+import copy
 import math
 
 import numpy as np
@@ -109,6 +110,31 @@ def test_bad_parameters_and_inputs_are_refused_by_name(change, variable, reason)
     problem = CompliantJoint(**{**START, **change}).step(0.01)
     assert (problem.code, problem.variable) == (reason, variable)
     assert Refusal.from_message(problem.message) == problem
+
+
+def test_a_start_with_an_unusable_bend_keeps_the_twist_usable_once_the_bend_is():
+    # The start offset needs the kinematics, which a NaN bend angle does not have:
+    # the output shaft then starts at the input angle (less the start twist).
+    joint = CompliantJoint(bend_angle=math.nan, input_speed=1.0, output_speed=1.0)
+    assert joint.step(0.1).code is Reason.NOT_FINITE
+    joint.bend_angle = 0.3
+    assert joint.step(0.1) is None
+    assert all(math.isfinite(value) for value in joint.outputs())
+
+
+def test_a_torque_beyond_the_rigid_load_range_is_no_refused_input():
+    # The spring's torque reaches the rigid joint only inside outputs(): its
+    # load_torque range does not apply to it.
+    joint = CompliantJoint(torsional_stiffness=1e12, twist_angle_start=1e3)
+    torque = dict(zip(COMPLIANT_JOINT.OUTPUTS, joint.outputs()))["output_torque"]
+    assert torque > 1e9 and joint.step(0.01) is None
+
+
+def test_a_copy_steps_as_the_original():
+    joint = CompliantJoint(**START)
+    twin = copy.deepcopy(joint)
+    assert joint.step(0.1) is None and twin.step(0.1) is None
+    assert twin.outputs() == joint.outputs()
 
 
 def test_a_twist_beyond_the_angle_limit_is_refused():

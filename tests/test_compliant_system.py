@@ -117,6 +117,7 @@ def test_a_missing_or_broken_ssp_is_named_without_a_traceback_of_temporary_files
     cases = {
         "empty.ssp": ({}, "has no SystemStructure.ssd"),
         "bad_xml.ssp": ({"SystemStructure.ssd": "<ssd:System"}, "not well-formed XML"),
+        "no_component.ssp": ({"SystemStructure.ssd": "<s/>"}, "names no component"),
         "no_fmu.ssp": (
             {
                 "SystemStructure.ssd": '<s xmlns:ssd="http://ssp-standard.org/SSP1/'
@@ -133,3 +134,29 @@ def test_a_missing_or_broken_ssp_is_named_without_a_traceback_of_temporary_files
                 archive.writestr("other.txt", "")
         with pytest.raises(SSPError, match=words):
             check_ssp(tmp_path / name)
+
+
+def test_the_compliant_propshaft_runs_the_same_system_at_ratio_1000(
+    motor_fmu_path, inertia_load_fmu_path, tmp_path_factory
+):
+    from conftest import build_fmu
+
+    folder = tmp_path_factory.mktemp("compliant_propshaft_system")
+    fmus = {
+        "Motor": motor_fmu_path,
+        system.DRIVE_INSTANCE: build_fmu(folder, "--model", "CompliantPropshaft"),
+        "Load": inertia_load_fmu_path,
+    }
+    motor, drive, load, h = system.compliant_parameters(1000.0)
+    # The propshaft's layout (its default Z-arrangement) instead of the joint's bend.
+    drive.pop("bend_angle")
+    path = system.write_driveline_ssp(
+        folder / "p.ssp", fmus, "CompliantPropshaft", STOP_TIME, motor, load, drive, **WIRING
+    )
+    n = round(STOP_TIME / h)
+    rows = jacobi_master(path, n * h, h, None, **WIRING)  # raises on a refused step
+    assert len(rows["Motor.speed"]) == n and np.all(np.isfinite(rows["Drive.twist_angle"]))
+    # The heavy load barely moves yet: the spring holds the motor near stall, its
+    # torque passed on to the load (about the stall torque, less the inertia terms).
+    assert 0.0 < rows["Load.speed"][-1] < 0.1 and abs(rows["Motor.speed"][-1]) < 1.0
+    assert 0.5 * motor["stall_torque"] < rows["Drive.output_torque"][-1] < motor["stall_torque"]

@@ -55,12 +55,14 @@ class CompliantDrive(ValueChecks):
         self.start(0.0)
 
     def __getattr__(self, name):
+        # Only for names not found on the object; before __init__ (a copy being
+        # made) there is nothing to forward to.
         if name in self.__dict__.get("_shared", ()):
             return getattr(self.rigid, name)
         raise AttributeError(name)
 
     def __setattr__(self, name, value):
-        if name in self.__dict__.get("_shared", ()):
+        if name in self._shared:
             setattr(self.rigid, name, value)
         else:
             object.__setattr__(self, name, value)
