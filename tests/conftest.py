@@ -113,3 +113,21 @@ def fmi3_description(fmi3_unzipped):
     from fmpy import read_model_description
 
     return read_model_description(fmi3_unzipped)
+
+
+@pytest.fixture(scope="session")
+def inertia_load_fmu_path(tmp_path_factory) -> Path:
+    """dist/InertiaLoad.fmu as `build_fmu.py --model InertiaLoad` writes it."""
+    return build_fmu(tmp_path_factory.mktemp("inertia_load"), "--model", "InertiaLoad")
+
+
+@pytest.fixture(scope="session")
+def compliant_joint_fmu_path(tmp_path_factory) -> Path:
+    """dist/CompliantJoint.fmu as `build_fmu.py --model CompliantJoint` writes it."""
+    return build_fmu(tmp_path_factory.mktemp("compliant_joint"), "--model", "CompliantJoint")
+
+
+@pytest.fixture(scope="session")
+def motor_fmu_path(tmp_path_factory) -> Path:
+    """dist/Motor.fmu as `build_fmu.py --model Motor` writes it."""
+    return build_fmu(tmp_path_factory.mktemp("motor"), "--model", "Motor")

@@ -9,7 +9,9 @@ import pytest
 from cardan_joint import variables as table
 from cardan_joint.driveline_variables import LOAD, MOTOR
 from cardan_joint.fmu import model_description, model_description3
+from cardan_joint.inertia_load_variables import INERTIA_LOAD
 from cardan_joint.physics import CardanJoint, Load, Motor
+from cardan_joint.physics.inertia_load import InertiaLoad
 from cardan_joint.physics.propshaft import Propshaft
 from cardan_joint.physics.values import value_ranges
 from cardan_joint.propshaft_variables import propshaft_table
@@ -17,8 +19,13 @@ from cardan_joint.propshaft_variables import propshaft_table
 
 @pytest.mark.parametrize(
     "model, variables, state",
-    [(CardanJoint, table, ()), (Motor, MOTOR, ("speed", "angle")), (Load, LOAD, ())],
-    ids=["joint", "motor", "load"],
+    [
+        (CardanJoint, table, ()),
+        (Motor, MOTOR, ("speed", "angle")),
+        (Load, LOAD, ()),
+        (InertiaLoad, INERTIA_LOAD, ("speed", "angle")),
+    ],
+    ids=["joint", "motor", "load", "inertia_load"],
 )
 def test_models_declare_exactly_their_tables_inputs_and_parameters(model, variables, state):
     declared = set(model.__annotations__) - {"table"}

@@ -8,6 +8,7 @@ import zipfile
 import numpy as np
 import pytest
 from conftest import ROOT, build_fmu
+from jacobi import jacobi_master
 
 from cardan_joint import driveline_system as system
 from cardan_joint import results
@@ -272,47 +273,6 @@ def test_example_writes_the_ssp_both_csvs_and_the_plot(tmp_path):
     assert "ratio 0.5, step 0.001 s: bounded" in run.stdout
 
 
-def _jacobi_master(ssp_path, stop_time, h, first_values):
-    """An independent fixed-step Jacobi master on the SSP's FMUs: each step every FMU
-    gets the connected outputs of the last communication point, steps, and reports;
-    `first_values` {"Component.output": value} are the values fed in the first step."""
-    from fmpy import extract
-    from fmpy.ssp.ssd import find_components, read_ssd
-
-    from cardan_joint.ssp import fmpy_parameter_set
-
-    unzipped = extract(str(ssp_path))
-    parameters = {p.name: float(p.value) for p in fmpy_parameter_set(ssp_path).parameters}
-    instances = {}
-    try:
-        for component in find_components(read_ssd(str(ssp_path)).system):
-            name = component.name
-            starts = {
-                key.split(".", 1)[1]: value
-                for key, value in parameters.items()
-                if key.startswith(name + ".")
-            }
-            instances[name] = FmuInstance.open(
-                f"{unzipped}/{component.source}", name=name, start_values=starts
-            )
-        values = dict(first_values)
-        rows = {key: [] for key in system.RECORDED}
-        for k in range(round(stop_time / h)):
-            for start, start_connector, end, end_connector in system.CONNECTIONS:
-                instances[end].set(**{end_connector: values[f"{start}.{start_connector}"]})
-            for instance in instances.values():
-                instance.time = k * h
-                instance.step(h)
-            for key in system.RECORDED:
-                name, variable = key.split(".")
-                values[key] = instances[name].get(variable)[variable]
-                rows[key].append(values[key])
-    finally:
-        for instance in instances.values():
-            instance.close()
-    return {key: np.array(v) for key, v in rows.items()}
-
-
 def test_each_host_is_exactly_a_jacobi_master_with_its_own_first_inputs(driveline_ssp):
     pytest.importorskip("libcosimpy")
     h, stop_time = 1e-3, 0.1
@@ -321,7 +281,7 @@ def test_each_host_is_exactly_a_jacobi_master_with_its_own_first_inputs(drivelin
     zeros = {key: 0.0 for key in system.RECORDED}
     initial = {key: libcosim_rows[key][0] for key in system.RECORDED}
     for rows, first, offset in ((fmpy_rows, zeros, 0), (libcosim_rows, initial, 1)):
-        reference = _jacobi_master(driveline_ssp, stop_time, h, first)
+        reference = jacobi_master(driveline_ssp, stop_time, h, first)
         for key in system.RECORDED:
             scale = max(1.0, np.max(np.abs(reference[key])))
             assert np.max(np.abs(rows[key][offset:] - reference[key])) <= 1e-9 * scale, key

@@ -8,7 +8,9 @@ import pytest
 
 from cardan_joint import variables as table
 from cardan_joint.physics import CardanJoint, Reason, Refusal
+from cardan_joint.physics.compliant import CompliantJoint
 from cardan_joint.physics.driveline import Motor
+from cardan_joint.physics.inertia_load import InertiaLoad
 from cardan_joint.physics.propshaft import Propshaft
 from cardan_joint.simulate import RefusalError, SimulationError, simulate
 
@@ -42,6 +44,10 @@ CAUSES = {
     Reason.ROTOR_SPEED: [
         (dict(load_torque=9e8, stall_torque=60.0, no_load_speed=100.0, rotor_inertia=0.3), 0.1)
     ],
+    # The inertia load's.
+    Reason.LOAD_SPEED: [(dict(drive_torque=9e8, inertia=0.3, drag=0.0), 0.1)],
+    # The compliant drive's.
+    Reason.TWIST_OVERFLOW: [(dict(input_speed=0.0, output_speed=-1e5), 1e11)],
 }
 PROPSHAFT_REASONS = {Reason.SHAFT_ANGLE, Reason.WORKING_ANGLE_GUARD, Reason.WORKING_ANGLE}
 MOTOR_REASONS = {Reason.ROTOR_SPEED}
@@ -50,6 +56,10 @@ MOTOR_REASONS = {Reason.ROTOR_SPEED}
 def _model(reason, start):
     if reason in MOTOR_REASONS:
         return Motor(**start)
+    if reason is Reason.LOAD_SPEED:
+        return InertiaLoad(**start)
+    if reason is Reason.TWIST_OVERFLOW:
+        return CompliantJoint(**start)
     return Propshaft(**start) if reason in PROPSHAFT_REASONS else CardanJoint(**start)
 
 

@@ -24,6 +24,9 @@ CORE = "fmu_src/cardan_joint/fmu/core.py"
 GUARDS = "tests/test_guards.py"
 SLAVE_GUARDS = "tests/test_slave_guards.py"
 ROBUSTNESS = "tests/test_robustness.py"
+COMPLIANT = "fmu_src/cardan_joint/physics/compliant.py"
+COMPLIANT_TESTS = "tests/test_compliant_joint.py"
+INERTIA_LOAD = "fmu_src/cardan_joint/physics/inertia_load.py"
 
 
 @dataclass(frozen=True)
@@ -396,5 +399,56 @@ MUTATIONS = (
         "    from libcosimpy.CosimExecution import CosimExecution\n"
         "    from libcosimpy.CosimLogging import CosimLogLevel, log_output_level\n\n",
         ("tests/test_extras.py", "-k", "libcosim_runs"),
+    ),
+    # The compliant driveline (issue 20).
+    Mutation(
+        "compliant: no kinematics at a start with unusable inputs",
+        COMPLIANT,
+        "        valid = not self.parameter_fault and not self.rigid.input_problem()\n",
+        "        valid = not self.parameter_fault\n",
+        (COMPLIANT_TESTS, "-k", "unusable_bend"),
+    ),
+    Mutation(
+        "compliant: the spring's torque leaves the rigid load check",
+        COMPLIANT,
+        "        try:\n            values = rigid.outputs()\n        finally:\n"
+        "            rigid.load_torque = 0.0\n",
+        "        values = rigid.outputs()\n",
+        (COMPLIANT_TESTS, "-k", "rigid_load_range"),
+    ),
+    Mutation(
+        "compliant: nothing forwarded before __init__ (copies)",
+        COMPLIANT,
+        'if name in self.__dict__.get("_shared", ()):',
+        "if name in self._shared:",
+        (COMPLIANT_TESTS, "-k", "copy"),
+    ),
+    Mutation(
+        "compliant: twist overflow refused",
+        COMPLIANT,
+        "        if not abs(change) <= MAX_INCREMENT:\n",
+        "        if False:\n",
+        (COMPLIANT_TESTS, "-k", "twist_beyond"),
+    ),
+    Mutation(
+        "inertia load: speed limit at the step's end",
+        INERTIA_LOAD,
+        "        if not abs(speed) <= self._SPEED_LIMIT:\n",
+        "        if False:\n",
+        ("tests/test_inertia_load.py", "-k", "refuses"),
+    ),
+    Mutation(
+        "exact rotor step: series near zero drag",
+        "fmu_src/cardan_joint/physics/driveline.py",
+        "    if abs(z) > 0.05:\n",
+        "    if True:\n",
+        ("tests/test_inertia_load.py",),
+    ),
+    Mutation(
+        "ssp: a missing file is named",
+        "fmu_src/cardan_joint/ssp.py",
+        "    if not path.is_file():\n",
+        "    if False:\n",
+        ("tests/test_compliant_system.py", "-k", "broken"),
     ),
 )

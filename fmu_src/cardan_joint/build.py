@@ -32,6 +32,8 @@ RUNTIME = (
     "variables.py",
     "propshaft_variables.py",
     "driveline_variables.py",
+    "inertia_load_variables.py",
+    "compliant_variables.py",
     "physics",
     "fmu",
 )

@@ -12,7 +12,9 @@ co-simulation master steps the FMU), not by the FMU: a tool that reproduces it
 through the FMU checks the FMI plumbing against the equations. The same three
 files are kept in docs/UniversalJoint/ (tests/test_cross_check.py checks that
 they are current; `python -m cardan_joint.cross_check docs/UniversalJoint`
-rewrites them).
+rewrites them). The CompliantJoint and the InertiaLoad have reference files of
+their own in docs/<model>/ (`CASES`; `python -m cardan_joint.cross_check
+--model CompliantJoint docs/CompliantJoint`).
 """
 
 from __future__ import annotations
@@ -20,12 +22,13 @@ from __future__ import annotations
 import argparse
 import shutil
 import sys
+from collections.abc import Callable
+from dataclasses import dataclass
 from importlib.metadata import PackageNotFoundError, version
 from pathlib import Path
+from typing import Any
 
 import numpy as np
-
-from . import variables as table
 
 MODEL = "UniversalJoint"
 TOOL_ID = "cardan_joint"
@@ -41,7 +44,6 @@ INPUT_ROWS = (
     (0.0, 20.0, 20.0, 0.2, 0.4, 0.0, 100.0),
     (1.0, 40.0, 20.0, 0.6, 0.4, 0.0, 100.0),
 )
-INPUT_NAMES = table.INPUTS
 # At most 10 columns with the time (the cross-check rules' recommendation).
 REFERENCE_OUTPUTS = (
     "output_angle",
@@ -56,6 +58,74 @@ REFERENCE_OUTPUTS = (
 )
 
 
+@dataclass(frozen=True)
+class Case:
+    """One model's reference run: its physics model (made at its table's start
+    values), inputs as rows (time first, then the table's inputs) and outputs."""
+
+    model: str
+    make: Callable[[], Any]
+    input_rows: tuple
+    outputs: tuple
+
+
+def _joint():
+    from .physics import CardanJoint
+
+    return CardanJoint()
+
+
+def _compliant_joint():
+    from .physics.compliant import CompliantJoint
+
+    return CompliantJoint()
+
+
+def _inertia_load():
+    from .physics.inertia_load import InertiaLoad
+
+    return InertiaLoad()
+
+
+CASES = {
+    case.model: case
+    for case in (
+        Case(MODEL, _joint, INPUT_ROWS, REFERENCE_OUTPUTS),
+        # The input shaft as the UniversalJoint's; the output shaft a little slower
+        # and faster in turn, so the spring winds up and back.
+        Case(
+            "CompliantJoint",
+            _compliant_joint,
+            (
+                # time, input_speed, input_acceleration, output_speed,
+                # output_acceleration, bend_angle, bend_angle_rate, bend_angle_acceleration
+                (0.0, 20.0, 20.0, 19.0, 22.0, 0.2, 0.4, 0.0),
+                (1.0, 40.0, 20.0, 41.0, 22.0, 0.6, 0.4, 0.0),
+            ),
+            (
+                "output_angle",
+                "twist_angle",
+                "output_torque",
+                "kinematic_output_speed",
+                "input_torque",
+                "input_yoke_moment",
+                "output_yoke_moment",
+                "spring_energy",
+                "crosspiece_kinetic_energy",
+            ),
+        ),
+        # The drive torque ramps through the constant torque (20 N.m): the load
+        # first turns backwards, then runs up.
+        Case(
+            "InertiaLoad",
+            _inertia_load,
+            ((0.0, 0.0), (1.0, 60.0)),
+            ("speed", "acceleration", "angle"),
+        ),
+    )
+}
+
+
 def tool_version() -> str:
     try:
         return version("cardan-joint-fmu")
@@ -63,52 +133,54 @@ def tool_version() -> str:
         return "0+unknown"
 
 
-def inputs() -> np.ndarray:
+def inputs(model: str = MODEL) -> np.ndarray:
     """The input signals as a structured array (FMPy's `input` format)."""
-    return np.array(list(INPUT_ROWS), dtype=[("time", float)] + [(n, float) for n in INPUT_NAMES])
+    names = CASES[model].make().table.INPUTS
+    rows = list(CASES[model].input_rows)
+    return np.array(rows, dtype=[("time", float)] + [(n, float) for n in names])
 
 
-def reference() -> np.ndarray:
+def reference(model: str = MODEL) -> np.ndarray:
     """The reference outputs at every communication point, by the physics package."""
-    from .physics import CardanJoint
-
-    signals = inputs()
+    case = CASES[model]
+    signals = inputs(model)
     start, stop, step = (OPTIONS[k] for k in ("StartTime", "StopTime", "StepSize"))
     steps = round((stop - start) / step)
     times = start + step * np.arange(steps + 1)
-    joint = CardanJoint()
-    joint.start(start)
+    joint = case.make()
+    names, outputs = joint.table.INPUTS, joint.table.OUTPUTS
 
     def apply_inputs(time):
-        for name in INPUT_NAMES:
+        for name in names:
             setattr(joint, name, float(np.interp(time, signals["time"], signals[name])))
 
     # As a master records: a sample at each communication point before the
     # inputs of the next step are set (in between, the FMU carries its inputs along).
     apply_inputs(start)
+    joint.start(start)  # after the inputs: a compliant joint starts from the bend angle
     rows = []
     for k, time in enumerate(times):
-        outputs = dict(zip(table.OUTPUTS, joint.outputs()))
-        rows.append((time, *(outputs[n] for n in REFERENCE_OUTPUTS)))
+        values = dict(zip(outputs, joint.outputs()))
+        rows.append((time, *(values[n] for n in case.outputs)))
         if k == steps:
             break
         apply_inputs(time)
         problem = joint.step(step)
         if problem:
             raise RuntimeError(f"the reference run was refused at t = {time}: {problem}")
-    return np.array(rows, dtype=[("time", float)] + [(n, float) for n in REFERENCE_OUTPUTS])
+    return np.array(rows, dtype=[("time", float)] + [(n, float) for n in case.outputs])
 
 
-def write_reference_files(folder: str | Path) -> list[Path]:
-    """Write <MODEL>_in.csv, <MODEL>_ref.opt and <MODEL>_ref.csv into `folder`."""
+def write_reference_files(folder: str | Path, model: str = MODEL) -> list[Path]:
+    """Write <model>_in.csv, <model>_ref.opt and <model>_ref.csv into `folder`."""
     from .results import write_csv
 
     folder = Path(folder)
     folder.mkdir(parents=True, exist_ok=True)
-    paths = [folder / f"{MODEL}_in.csv", folder / f"{MODEL}_ref.opt", folder / f"{MODEL}_ref.csv"]
-    write_csv(inputs(), paths[0])
+    paths = [folder / f"{model}_in.csv", folder / f"{model}_ref.opt", folder / f"{model}_ref.csv"]
+    write_csv(inputs(model), paths[0])
     paths[1].write_text("".join(f"{key}, {value!r}\n" for key, value in OPTIONS.items()))
-    write_csv(reference(), paths[2])
+    write_csv(reference(model), paths[2])
     return paths
 
 
@@ -130,13 +202,13 @@ def write_cross_check(dest: str | Path, fmu_path: str | Path) -> Path:
 
 def main(argv=None) -> int:
     parser = argparse.ArgumentParser(
-        description=f"Rewrite {MODEL}'s reference files (_in.csv, _ref.opt, _ref.csv)."
+        description="Rewrite a model's reference files (_in.csv, _ref.opt, _ref.csv)."
     )
-    parser.add_argument(
-        "folder", nargs="?", default=str(DOCS), help=f"where to write them (default: {DOCS})"
-    )
+    parser.add_argument("--model", default=MODEL, choices=sorted(CASES), help="the model")
+    parser.add_argument("folder", nargs="?", help="where to write them (default: docs/<model>/)")
     args = parser.parse_args(argv)
-    for path in write_reference_files(args.folder):
+    folder = args.folder or DOCS.parent / args.model
+    for path in write_reference_files(folder, args.model):
         print(f"wrote {path}")
     return 0
 

@@ -12,6 +12,12 @@ output_acceleration, input_torque): `UniversalJoint` or `Propshaft`, named by
 Both hosts couple explicitly (Jacobi): every FMU steps with the inputs of the
 last communication point, then outputs are passed on. See the README for what
 that does to the torque loop.
+
+The compliant system (`COMPLIANT_CONNECTIONS`) couples Motor -> CompliantJoint
+(or CompliantPropshaft) -> InertiaLoad: each inertia is a state of its own FMU,
+the drive takes both shaft motions and returns both torques, so the load's
+inertia may exceed the motor's by any factor. Its step follows
+`torsional_step` (docs/CompliantJoint/README.md derives the rule).
 """
 
 import math
@@ -19,7 +25,7 @@ from pathlib import Path
 
 import numpy as np
 
-from .ssp import Component, fmpy_parameter_set, write_ssp
+from .ssp import Component, check_ssp, fmpy_parameter_set, write_ssp
 
 DRIVE = "Propshaft"
 DRIVE_INSTANCE = "Drive"
@@ -75,29 +81,93 @@ RECORDED = [
 ]
 
 
-def _connectors(instance):
+COMPLIANT_CONNECTIONS = [
+    ("Motor", "speed", DRIVE_INSTANCE, "input_speed"),
+    ("Motor", "acceleration", DRIVE_INSTANCE, "input_acceleration"),
+    ("Load", "speed", DRIVE_INSTANCE, "output_speed"),
+    ("Load", "acceleration", DRIVE_INSTANCE, "output_acceleration"),
+    (DRIVE_INSTANCE, "output_torque", "Load", "drive_torque"),
+    (DRIVE_INSTANCE, "input_torque", "Motor", "load_torque"),
+]
+COMPLIANT_RECORDED = [
+    "Motor.speed",
+    "Motor.acceleration",
+    "Motor.angle",
+    f"{DRIVE_INSTANCE}.twist_angle",
+    f"{DRIVE_INSTANCE}.output_torque",
+    f"{DRIVE_INSTANCE}.input_torque",
+    "Load.speed",
+    "Load.acceleration",
+    "Load.angle",
+]
+COMPLIANT_DRIVE_PARAMETERS = {
+    "bend_angle": math.radians(20.0),
+    "torsional_stiffness": 1e4,
+}
+COMPLIANT_LOAD_PARAMETERS = {"drag": 0.05, "constant_torque": 20.0}
+# Largest omega_n h of the compliant system's step (radians of its torsional mode).
+STEP_PER_RADIAN = 0.1
+
+
+def torsional_step(stiffness: float, inertia_in: float, inertia_out: float, damping_ratio: float):
+    """(natural frequency omega_n [rad/s], damping [N.m.s/rad], step [s]) of a spring
+    `stiffness` between two inertias, for the damping ratio `damping_ratio`:
+
+        omega_n = sqrt(k (1/J_in + 1/J_out)),  c = 2 zeta sqrt(k J_eff),
+        J_eff = J_in J_out / (J_in + J_out),  h = min(0.1, zeta) / omega_n.
+
+    Explicit (Jacobi) coupling holds each torque and speed over a step; that delay
+    feeds energy into the torsional mode at a rate equal to a negative damping
+    ratio of about omega_n h / 4 (J_eff / J_out) + 2 (omega_n h)^2, measured on
+    this driveline. The rule keeps it below about half the physical damping ratio.
+    """
+    # 1/(1/J_in + 1/J_out): a prescribed input motion is J_in = inf.
+    effective = 1.0 / (1.0 / inertia_in + 1.0 / inertia_out)
+    omega_n = math.sqrt(stiffness / effective)
+    damping = 2.0 * damping_ratio * math.sqrt(stiffness * effective)
+    return omega_n, damping, min(STEP_PER_RADIAN, damping_ratio) / omega_n
+
+
+def compliant_parameters(inertia_ratio: float, damping_ratio: float = 0.1):
+    """(motor, drive, load parameters, step size) of the compliant system with a load
+    `inertia_ratio` times the motor's rotor inertia, its step by `torsional_step`."""
+    motor_inertia = MOTOR_PARAMETERS["rotor_inertia"]
+    load_inertia = inertia_ratio * motor_inertia
+    drive = dict(COMPLIANT_DRIVE_PARAMETERS)
+    _, damping, step = torsional_step(
+        drive["torsional_stiffness"], motor_inertia, load_inertia, damping_ratio
+    )
+    drive["torsional_damping"] = damping
+    load = {**COMPLIANT_LOAD_PARAMETERS, "inertia": load_inertia}
+    # Down to whole microseconds: libcosim counts time in nanoseconds, and a stop
+    # time of n such steps is then exact in both hosts.
+    return dict(MOTOR_PARAMETERS), drive, load, math.floor(step * 1e6) / 1e6
+
+
+def _connectors(instance, connections=CONNECTIONS, recorded=RECORDED):
     kinds = {}
-    for start, start_connector, end, end_connector in CONNECTIONS:
+    for start, start_connector, end, end_connector in connections:
         if start == instance:
             kinds[start_connector] = "output"
         if end == instance:
             kinds[end_connector] = "input"
     # Outputs recorded but not connected are declared too, so both hosts can report them.
-    for key in RECORDED:
+    for key in recorded:
         component, _, variable = key.partition(".")
         if component == instance:
             kinds.setdefault(variable, "output")
     return kinds
 
 
-def build_fmus(dest, drive: str = DRIVE) -> dict:
-    """Build the Motor, Load and drive FMUs into `dest`; return {instance: path}."""
+def build_fmus(dest, drive: str = DRIVE, load: str = "Load") -> dict:
+    """Build the Motor, load (`Load` or `InertiaLoad`) and drive FMUs into `dest`;
+    return {instance: path}."""
     from .build import build
 
     return {
         "Motor": build(dest, model="Motor"),
         DRIVE_INSTANCE: build(dest, model=drive),
-        "Load": build(dest, model="Load"),
+        "Load": build(dest, model=load),
     }
 
 
@@ -109,22 +179,26 @@ def write_driveline_ssp(
     motor=None,
     load=None,
     drive_parameters=None,
+    connections=CONNECTIONS,
+    recorded=RECORDED,
 ) -> Path:
     """Write the system as an SSP archive. `fmus`: {instance: FMU path} as from
-    `build_fmus`; parameter dicts override the defaults above."""
+    `build_fmus`; parameter dicts override the defaults above (the compliant
+    system: `COMPLIANT_CONNECTIONS`, `COMPLIANT_RECORDED` and its parameters from
+    `compliant_parameters`)."""
     parameters = {
         "Motor": {**MOTOR_PARAMETERS, **(motor or {})},
         DRIVE_INSTANCE: {**DRIVE_PARAMETERS.get(drive, {}), **(drive_parameters or {})},
         "Load": {**LOAD_PARAMETERS, **(load or {})},
     }
     components = [
-        Component(name, fmus[name], _connectors(name), parameters[name])
+        Component(name, fmus[name], _connectors(name, connections, recorded), parameters[name])
         for name in ("Motor", DRIVE_INSTANCE, "Load")
     ]
-    return write_ssp(path, "Driveline", components, CONNECTIONS, stop_time)
+    return write_ssp(path, "Driveline", components, connections, stop_time)
 
 
-def run_fmpy(ssp_path, stop_time: float, step_size: float) -> dict:
+def run_fmpy(ssp_path, stop_time: float, step_size: float, recorded=RECORDED) -> dict:
     """FMPy's `simulate_ssp` with the SSP's own parameter bindings.
 
     `simulate_ssp` stamps each row with the time at the step's start although it
@@ -135,6 +209,7 @@ def run_fmpy(ssp_path, stop_time: float, step_size: float) -> dict:
     """
     from fmpy.ssp.simulation import simulate_ssp
 
+    check_ssp(ssp_path)
     n = round(stop_time / step_size)
     result = simulate_ssp(
         str(ssp_path),
@@ -145,15 +220,18 @@ def run_fmpy(ssp_path, stop_time: float, step_size: float) -> dict:
     if len(result) != n:
         raise RuntimeError(f"simulate_ssp made {len(result)} steps, not {n}")
     rows = {"time": np.arange(1, n + 1) * step_size}
-    rows.update({key: np.asarray(result[key]) for key in RECORDED})
+    rows.update({key: np.asarray(result[key]) for key in recorded})
     return rows
 
 
-def run_libcosim(ssp_path, stop_time: float, step_size: float, log_level="warning") -> dict:
+def run_libcosim(
+    ssp_path, stop_time: float, step_size: float, log_level="warning", recorded=RECORDED
+) -> dict:
     """OSP libcosim on the same SSP; samples from t = 0 (initial outputs) on."""
     from .cosim import run_libcosim_ssp
 
-    return run_libcosim_ssp(ssp_path, stop_time, step_size, RECORDED, log_level)
+    check_ssp(ssp_path)
+    return run_libcosim_ssp(ssp_path, stop_time, step_size, recorded, log_level)
 
 
 def host_difference(fmpy_rows: dict, libcosim_rows: dict, keys=RECORDED) -> dict:

@@ -8,19 +8,21 @@ units it uses. Pure data: the physics reads its defaults and ranges here.
 from .variable_schema import _IN, _OUT, _PAR, Unit, Variable, VariableTable
 from .variables import UNITS as _JOINT_UNITS
 
-_UNITS = {
+# Every unit of the driveline's models (the joint's and the spring-damper's).
+DRIVELINE_UNITS = {
     **_JOINT_UNITS,
     "N.m.s/rad": Unit("N.m.s/rad", (("kg", 1), ("m", 2), ("s", -1), ("rad", -1))),
+    "N.m/rad": Unit("N.m/rad", (("kg", 1), ("m", 2), ("s", -2), ("rad", -1))),
 }
 
 
-def _table(variables) -> VariableTable:
+def table_of(variables) -> VariableTable:
     """A VariableTable declaring the units its variables use."""
     used = dict.fromkeys(v.unit for v in variables)
-    return VariableTable(variables, {u: _UNITS[u] for u in used})
+    return VariableTable(variables, {u: DRIVELINE_UNITS[u] for u in used})
 
 
-MOTOR = _table(
+MOTOR = table_of(
     (
         Variable(
             "load_torque",
@@ -89,7 +91,7 @@ MOTOR = _table(
     )
 )
 
-LOAD = _table(
+LOAD = table_of(
     (
         Variable(
             "speed",

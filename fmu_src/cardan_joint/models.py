@@ -35,26 +35,34 @@ def _check_values(values: Mapping[str, float], table, make, owner: str = "") -> 
         raise StartValueError(f"invalid start values: {problem.text}")
 
 
-def _check_propshaft_start_values(values: Mapping[str, float], settings: Mapping) -> None:
-    from .physics.propshaft import Propshaft
-    from .propshaft_variables import JOINTS, propshaft_table
+def _propshaft_checker(key: str, module: str, table: str):
+    """Start-value check for the N-joint model `key`, class `physics.<module>.<key>`
+    (the Propshaft, the CompliantPropshaft), its table `<table module>.<function>`
+    of the number of joints."""
 
-    joints = settings.get("joints")
-    if joints not in JOINTS:
-        raise StartValueError(
-            f"--joints {joints!r}: the Propshaft is built for {', '.join(map(str, JOINTS))} joints"
-        )
-    _check_values(
-        values,
-        propshaft_table(joints),
-        lambda **v: Propshaft(joints, **v),
-        f" of the {joints}-joint Propshaft",
-    )
+    def check(values: Mapping[str, float], settings: Mapping) -> None:
+        from .propshaft_variables import JOINTS
+
+        joints = settings.get("joints")
+        if joints not in JOINTS:
+            raise StartValueError(
+                f"--joints {joints!r}: the {key} is built for {', '.join(map(str, JOINTS))} joints"
+            )
+        model_class = getattr(importlib.import_module(f"{__package__}.physics.{module}"), key)
+        table_module, table_function = table.rsplit(".", 1)
+        table_of = getattr(importlib.import_module(f"{__package__}.{table_module}"), table_function)
+        make = lambda **v: model_class(joints, **v)  # noqa: E731
+        _check_values(values, table_of(joints), make, f" of the {joints}-joint {key}")
+
+    return check
 
 
-def _propshaft_name(settings: Mapping) -> str:
-    joints = settings.get("joints", 2)
-    return "Propshaft" if joints == 2 else f"Propshaft{joints}"
+def _propshaft_namer(key: str):
+    def name_for(settings: Mapping) -> str:
+        joints = settings.get("joints", 2)
+        return key if joints == 2 else f"{key}{joints}"
+
+    return name_for
 
 
 def _start_value_checker(module: str, class_name: str):
@@ -100,9 +108,11 @@ MODELS: dict[str, Model] = {
     "Propshaft": Model(
         key="Propshaft",
         scripts={2: FMU_DIR / "Propshaft.py"},
-        check_start_values=_check_propshaft_start_values,
+        check_start_values=_propshaft_checker(
+            "Propshaft", "propshaft", "propshaft_variables.propshaft_table"
+        ),
         default_settings={"joints": 2},
-        name_for=_propshaft_name,
+        name_for=_propshaft_namer("Propshaft"),
     ),
     "Motor": Model(
         key="Motor",
@@ -113,6 +123,27 @@ MODELS: dict[str, Model] = {
         key="Load",
         scripts={2: FMU_DIR / "Load.py"},
         check_start_values=_start_value_checker("driveline", "Load"),
+    ),
+    "InertiaLoad": Model(
+        key="InertiaLoad",
+        scripts={2: FMU_DIR / "InertiaLoad.py"},
+        check_start_values=_start_value_checker("inertia_load", "InertiaLoad"),
+    ),
+    "CompliantJoint": Model(
+        key="CompliantJoint",
+        scripts={2: FMU_DIR / "CompliantJoint.py"},
+        check_start_values=_start_value_checker("compliant", "CompliantJoint"),
+    ),
+    "CompliantPropshaft": Model(
+        key="CompliantPropshaft",
+        scripts={2: FMU_DIR / "CompliantPropshaft.py"},
+        check_start_values=_propshaft_checker(
+            "CompliantPropshaft",
+            "compliant_propshaft",
+            "compliant_variables.compliant_propshaft_table",
+        ),
+        default_settings={"joints": 2},
+        name_for=_propshaft_namer("CompliantPropshaft"),
     ),
 }
 

@@ -6,13 +6,17 @@ level. Component-level bindings with bare variable names are what both hosts
 of this project apply: OSP libcosim ignores system-level bindings, and FMPy's
 `simulate_ssp` applies no binding at all but takes a parameter set with
 hierarchical names, which `fmpy_parameter_set` builds from the bindings.
+The same values are also bound once at system level, as one parameter set
+named after the system with hierarchical names ("Motor.stall_torque"): a host
+that applies one named parameter set at a time still gets every component's.
+`check_ssp` turns a missing or broken archive into an `SSPError` naming it.
 """
 
 import zipfile
 from collections.abc import Mapping
 from dataclasses import dataclass, field
 from pathlib import Path
-from xml.etree.ElementTree import Element, SubElement, indent, tostring
+from xml.etree.ElementTree import Element, ParseError, SubElement, fromstring, indent, tostring
 
 _XML_NAMESPACES = {
     "ssd": "http://ssp-standard.org/SSP1/SystemStructureDescription",
@@ -77,6 +81,9 @@ def system_structure_xml(
     ssd = lambda tag: _qualified("ssd", tag)  # noqa: E731
     root = _root(ssd("SystemStructureDescription"), ("ssd", "ssc"), version="1.0", name=name)
     system = SubElement(root, ssd("System"), name=name)
+    if any(component.parameters for component in components):
+        bindings = SubElement(system, ssd("ParameterBindings"))
+        SubElement(bindings, ssd("ParameterBinding"), type=SSV_TYPE, source=_system_source(name))
     elements = SubElement(system, ssd("Elements"))
     for component in components:
         node = SubElement(
@@ -129,6 +136,7 @@ def write_ssp(
         archive.writestr(
             "SystemStructure.ssd", system_structure_xml(name, components, connections, stop_time)
         )
+        everything = {}
         for component in components:
             archive.write(component.fmu, component.source)
             if component.parameters:
@@ -136,7 +144,44 @@ def write_ssp(
                     component.parameter_source,
                     parameter_set_xml(component.name, component.parameters),
                 )
+            everything.update({f"{component.name}.{n}": v for n, v in component.parameters.items()})
+        if everything:
+            archive.writestr(_system_source(name), parameter_set_xml(name, everything))
     return path
+
+
+def _system_source(name: str) -> str:
+    return f"resources/{name}.ssv"
+
+
+class SSPError(ValueError):
+    """A missing or broken SSP archive; the message names the file and the fault."""
+
+
+def check_ssp(path) -> None:
+    """Raise SSPError unless `path` is an SSP archive whose SystemStructure.ssd
+    parses and whose components' FMUs are in it."""
+    path = Path(path)
+    if not path.is_file():
+        raise SSPError(f"{path}: no such SSP file")
+    try:
+        with zipfile.ZipFile(path) as archive:
+            names = set(archive.namelist())
+            ssd = archive.read("SystemStructure.ssd")
+    except zipfile.BadZipFile:
+        raise SSPError(f"{path}: not an SSP archive (not a zip file)") from None
+    except KeyError:
+        raise SSPError(f"{path}: the archive has no SystemStructure.ssd") from None
+    try:
+        root = fromstring(ssd)
+    except ParseError as error:
+        raise SSPError(f"{path}: SystemStructure.ssd is not well-formed XML ({error})") from None
+    sources = [e.get("source") for e in root.iter(f"{{{_XML_NAMESPACES['ssd']}}}Component")]
+    if not sources:
+        raise SSPError(f"{path}: SystemStructure.ssd names no component")
+    missing = [str(source) for source in sources if source not in names]
+    if missing:
+        raise SSPError(f"{path}: the archive lacks {', '.join(missing)}, named in its ssd")
 
 
 def fmpy_parameter_set(ssp_path):
@@ -144,6 +189,7 @@ def fmpy_parameter_set(ssp_path):
     hierarchical names ("Motor.stall_torque"), the form `simulate_ssp` applies."""
     from fmpy.ssp.ssd import Parameter, ParameterSet, find_components, read_ssd
 
+    check_ssp(ssp_path)
     ssd = read_ssd(str(ssp_path))
     merged = ParameterSet(name=ssd.name)
     for component in find_components(ssd.system):

@@ -20,8 +20,13 @@ class PropshaftSlave(CardanJointSlave):
 
     def __init_subclass__(cls, **kwargs):
         cls.joints = int(cls.build_settings.get("joints", 2))
-        cls.table = propshaft_table(cls.joints)
+        cls.table = cls._table_for(cls.joints)
         super().__init_subclass__(**kwargs)
+
+    @staticmethod
+    def _table_for(joints: int):
+        """The table of the model built for `joints` joints."""
+        return propshaft_table(joints)
 
     def _new_model(self):
         return Propshaft(self.joints, **self.start_overrides)

@@ -24,6 +24,33 @@ from .refusal import Reason, Refusal
 from .values import ValueChecks, bounds, set_start_values, value_ranges
 
 
+def _phi2(z: float) -> float:
+    """(exp(z) - 1 - z) / z^2, without the cancellation of that formula near z = 0."""
+    if abs(z) > 0.05:
+        return (math.expm1(z) - z) / (z * z)
+    # Taylor series 1/2 + z/6 + ... to z^8: truncation below 1e-19 for |z| <= 0.05.
+    total, term = 0.0, 1.0
+    for k in range(2, 11):
+        term /= k
+        total += term
+        term *= z
+    return total
+
+
+def exact_rotor_step(speed: float, inertia: float, damping: float, torque: float, h: float):
+    """(speed, angle increment) after `h` s of J w' = torque - damping w, the torque
+    held: exact for any damping >= 0, zero included (then uniform acceleration).
+
+    With a = (torque - damping w) / J and z = -damping h / J:
+    w(h) = w + a h (e^z - 1)/z and the angle grows by w h + a h^2 (e^z - 1 - z)/z^2.
+    """
+    acceleration = (torque - damping * speed) / inertia
+    z = -damping * h / inertia
+    # expm1 keeps full precision when h is much shorter than the time constant.
+    phi1 = math.expm1(z) / z if z else 1.0
+    return speed + acceleration * h * phi1, h * (speed + acceleration * h * _phi2(z))
+
+
 class _TableModel(ValueChecks):
     """Inputs and parameters as attributes with the table's start values; the checks."""
 
@@ -116,10 +143,13 @@ class Motor(_TableModel):
         return self.rotor_inertia / self.drag_constant
 
     def _advance(self, h: float) -> Refusal | None:
-        tau, omega, omega_eq = self.time_constant(), self.speed, self.equilibrium_speed()
-        # -expm1(-h/tau) = 1 - exp(-h/tau) keeps full precision when h << tau.
-        approach = -math.expm1(-h / tau)
-        speed = omega + (omega_eq - omega) * approach
+        speed, increment = exact_rotor_step(
+            self.speed,
+            self.rotor_inertia,
+            self.drag_constant,
+            self.stall_torque - self.load_torque,
+            h,
+        )
         if not abs(speed) <= self._SPEED_LIMIT:
             return Refusal(
                 Reason.ROTOR_SPEED,
@@ -130,7 +160,7 @@ class Motor(_TableModel):
                 "rad/s",
                 {"load_torque": self.load_torque, "step_size": h},
             )
-        self.angle += omega_eq * h + (omega - omega_eq) * tau * approach
+        self.angle += increment
         self.speed = speed
         return None
 

@@ -169,6 +169,13 @@ class Propshaft(ValueChecks, SavedState):
     def input_angle(self) -> float:
         return float(self._angle)
 
+    def kinematics(self) -> tuple[float, float]:
+        """(output angle - input angle, output speed) now: what a compliant layer
+        winds its spring by, without the rounding of two large angles."""
+        angle = self._angle
+        state = self._chain(angle.fraction, angle.fraction_error)
+        return state.offsets[-1] - self._shifts[-1], state.speeds[-1]
+
     def _chain(self, fraction, error):
         return chain(
             self.layout,
