@@ -1,12 +1,13 @@
 """Put the native loader into a built FMU, so that C and C++ FMI hosts can run it.
 
 pythonfmu's binary needs a Python already in the process. `install_loader`
-compiles `loader.c` and friends with the machine's C compiler ($CC, else `cc`)
-against the build's Python headers, moves pythonfmu's binary to
+compiles `loader.c` and friends with the machine's C compiler ($CC, else `cc`;
+no Python headers needed), moves pythonfmu's binary to
 `binaries/linux64/<id>_pythonfmu.so`, puts the loader at `binaries/linux64/<id>.so`
-and records in `resources/python_runtime.txt` which Python to start where the
-host has none (its library, home and module search path). Users edit that file,
-or set the environment variables named in loader.h, to move the FMU.
+and records in `resources/python_runtime.txt` what the FMU needs of a Python (a
+minimum version, the build's as the preferred one) and, as an optional hint, the
+build's Python. Where the host has no Python the loader finds one on the machine
+(python_discovery.c); users point it elsewhere with the variables named in loader.h.
 """
 
 import os
@@ -19,9 +20,17 @@ import tempfile
 import zipfile
 from pathlib import Path
 
-SOURCES = ("loader.c", "fmi2_calls.c", "fmu_states.c", "python_runtime.c", "runtime_record.c")
+SOURCES = (
+    "loader.c",
+    "fmi2_calls.c",
+    "fmu_states.c",
+    "python_runtime.c",
+    "python_discovery.c",
+    "runtime_record.c",
+)
 RECORD = "resources/python_runtime.txt"
 _HERE = Path(__file__).resolve().parent
+MINIMUM_PYTHON = (3, 10)  # the oldest CPython the FMU's code and the loader support
 _EXPORTS = "{ global: fmi2*; local: *; };\n"  # nothing else may interpose in the host
 
 
@@ -50,9 +59,7 @@ def shared_libpython() -> str:
 
 
 def search_path() -> list:
-    """What the slave imports from: the standard library and the packages numpy lives in."""
-    import numpy
-
+    """The build's module search path: its standard library and site-packages."""
     stdlib = Path(sysconfig.get_path("stdlib"))
     candidates = [
         stdlib.parent / f"python{sys.version_info.major}{sys.version_info.minor}.zip",
@@ -60,7 +67,6 @@ def search_path() -> list:
         stdlib / "lib-dynload",
         Path(sysconfig.get_path("purelib")),
         Path(sysconfig.get_path("platlib")),
-        Path(numpy.__file__).parent.parent,
     ]
     paths = []
     for path in candidates:
@@ -69,27 +75,29 @@ def search_path() -> list:
     return paths
 
 
+def build_hint() -> list:
+    """The build's Python, which the loader tries first where it still exists. Only
+    a hint (the FMU runs without it): these are the record's only machine paths."""
+    library = shared_libpython()
+    if not library:
+        return []
+    lines = ["# The build's Python, tried first where it still exists:"]
+    lines += [f"library = {library}", f"home = {sys.base_prefix}"]
+    return lines + [f"path = {path}" for path in search_path()]
+
+
 def runtime_record() -> str:
     lines = [
-        "# The Python this FMU was built with. Hosts without a Python start it from here.",
-        "# Edit to move the FMU, or set CARDAN_JOINT_FMU_PYTHON_LIBRARY, ..._HOME and",
-        "# ..._PATH (':'-separated); see the README, 'Using the FMU in an FMI tool'.",
+        "# What this FMU needs of a Python where its host has none; the loader finds",
+        "# one on the machine, or set CARDAN_JOINT_FMU_PYTHON_LIBRARY (and ..._HOME,",
+        "# ..._PATH); see the README, 'Using the FMU in an FMI tool'.",
+        "minimum = {}.{}".format(*MINIMUM_PYTHON),
         f"version = {sys.version_info.major}.{sys.version_info.minor}",
-        f"library = {shared_libpython()}",
-        f"home = {sys.base_prefix}",
-        f"executable = {sys.executable}",
     ]
-    lines += [f"path = {path}" for path in search_path()]
-    return "\n".join(lines) + "\n"
+    return "\n".join(lines + build_hint()) + "\n"
 
 
 def compile_loader(model_identifier: str, output: Path) -> Path:
-    include = Path(sysconfig.get_path("include"))
-    if not (include / "Python.h").exists():
-        raise NativeBuildError(
-            f"the build's Python has no headers ({include}/Python.h): "
-            f"install its development package (e.g. python3-dev)"
-        )
     exports = output.parent / "exports.map"
     exports.write_text(_EXPORTS)
     command = [
@@ -101,7 +109,6 @@ def compile_loader(model_identifier: str, output: Path) -> Path:
         "-pthread",
         "-Wall",
         f"-DMODEL_IDENTIFIER=\"{model_identifier}\"",
-        f"-I{include}",
         *(str(_HERE / source) for source in SOURCES),
         "-Wl,-z,nodelete",
         f"-Wl,--version-script={exports}",
