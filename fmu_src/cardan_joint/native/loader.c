@@ -215,7 +215,8 @@ fmi2Component fmi2Instantiate(fmi2String name, fmi2Type type, fmi2String guid,
     in->slave = slave.instantiate(in->name, fmi2CoSimulation, in->guid, in->resources_uri,
                                   &in->to_slave, in->visible, fmi2True);
     if (!in->slave) {
-        report(in, fmi2Error, NULL, "the slave could not be instantiated: see the message before");
+        reportf(in, fmi2Error, "the slave could not be instantiated in %s: see the message "
+                "before", python_in_use());
         free_instance(in);
         return NULL;
     }

@@ -56,5 +56,6 @@ int find_python(const struct runtime_record *record, struct python_location *fou
 /* FMI-version-neutral: find or start the Python, enter it on this thread. */
 int start_python(const struct runtime_record *record, char *error, size_t size);
 void enter_python_thread(void);
+const char *python_in_use(void);  /* "Python 3.12.1 from <library>", for messages */
 
 #endif

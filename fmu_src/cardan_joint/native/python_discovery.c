@@ -125,7 +125,7 @@ static int on_machine(int minor, struct python_location *found)
     return in_linker_cache(name, found);
 }
 
-int find_python(const struct runtime_record *record, struct python_location *found,
+static int find(const struct runtime_record *record, struct python_location *found,
                 char *error, size_t size)
 {
     if (record->user.library[0]) {
@@ -157,4 +157,18 @@ int find_python(const struct runtime_record *record, struct python_location *fou
              directories, record->build.library[0] ? " nor the build's " : "",
              record->build.library, record->build.library[0] ? " (gone)" : "");
     return -1;
+}
+
+/* The user's home and path apply to whichever Python is found: a path that
+ * adds a folder of modules is enough where the machine's Python lacks them. */
+int find_python(const struct runtime_record *record, struct python_location *found,
+                char *error, size_t size)
+{
+    if (find(record, found, error, size))
+        return -1;
+    if (record->user.home[0])
+        snprintf(found->home, sizeof found->home, "%s", record->user.home);
+    if (record->user.path[0])
+        snprintf(found->path, sizeof found->path, "%s", record->user.path);
+    return 0;
 }

@@ -48,6 +48,18 @@ PY_INIT_FUNCTIONS(DECLARE)
 static pthread_mutex_t start_lock = PTHREAD_MUTEX_INITIALIZER;
 static int python_ready;               /* set once, under start_lock */
 static pthread_key_t thread_state_key;
+static char in_use[4200] = "no Python";   /* for messages: which Python runs the slave */
+
+const char *python_in_use(void)
+{
+    return in_use;
+}
+
+static void describe(const char *where)
+{
+    const char *version = p_Py_GetVersion();
+    snprintf(in_use, sizeof in_use, "Python %.*s %s", (int)strcspn(version, " "), version, where);
+}
 
 #define RESOLVE(result, name, parameters)                                                \
     if (!(*(void **)&p_##name = dlsym(library, #name))) {                                \
@@ -154,6 +166,9 @@ static int load_and_start(const struct runtime_record *record, char *error, size
         dlclose(library);
         return -1;
     }
+    char where[sizeof python.library + 8];
+    snprintf(where, sizeof where, "from %s", python.library);
+    describe(where);
     return 0;
 }
 
@@ -193,10 +208,12 @@ int start_python(const struct runtime_record *record, char *error, size_t size)
     } else {
         void *library = RTLD_DEFAULT;
         int (*running)(void) = (int (*)(void))dlsym(library, "Py_IsInitialized");
-        if (running && running())
+        if (running && running()) {
             result = resolve(library, "this process's Python", error, size) ||
                      check_version(record, "of this process", error, size);
-        else
+            if (result == 0)
+                describe("(the host's)");
+        } else
             result = load_and_start(record, error, size);
         if (result == 0) {
             pthread_key_create(&thread_state_key, release_thread_state);
