@@ -68,10 +68,26 @@ def namespaces(tmp_path_factory):
         pytest.skip(f"this machine cannot make mount namespaces with overlays: {run.stderr}")
 
 
-def machine(tmp_path: Path, *, debian_python: bool, distribution_minor: int | None) -> Path:
+def lay_out(minor: int, library_directory: Path, stdlib_directory: Path) -> list:
+    """Shell lines putting pyenv's CPython 3.<minor> library and standard library
+    there, as a distribution would (bind mounts onto empty mount points)."""
+    name, stdlib = f"libpython3.{minor}.so.1.0", f"python3.{minor}"
+    source = pyenv_cpython(minor) / "lib"
+    return [
+        f"mkdir -p {library_directory} {stdlib_directory / stdlib}",
+        f"touch {library_directory / name}",
+        f"mount --bind {source / name} {library_directory / name}",
+        f"mount --bind {source / stdlib} {stdlib_directory / stdlib}",
+    ]
+
+
+def machine(
+    tmp_path: Path, *, debian_python: bool, distribution: tuple = (), cached: int | None = None
+) -> Path:
     """A script that runs its arguments, with an empty environment, on a machine
     without the build's Python: Debian's own Python kept or removed, pyenv's
-    CPython 3.<distribution_minor> laid out as a distribution's."""
+    CPythons 3.<distribution> laid out as a distribution's, and 3.<cached> in a
+    folder that only the linker's cache (/etc/ld.so.cache, remade) knows."""
     upper, work = tmp_path / "upper", tmp_path / "work"
     upper.mkdir(), work.mkdir()
     lines = [
@@ -84,14 +100,15 @@ def machine(tmp_path: Path, *, debian_python: bool, distribution_minor: int | No
             f"rm -f {MULTIARCH}/libpython3*",
             "for d in /usr/lib/python3*; do mount -t tmpfs tmpfs $d; done",
         ]
-    if distribution_minor is not None:
-        name, stdlib = f"libpython3.{distribution_minor}.so.1.0", f"python3.{distribution_minor}"
-        source = pyenv_cpython(distribution_minor) / "lib"
+    for minor in distribution:
+        lines += lay_out(minor, MULTIARCH, Path("/usr/lib"))
+    if cached is not None:
+        prefix = tmp_path / "opt" / "lib"
+        (tmp_path / "ld.so.conf").write_text(f"{prefix}\n")
+        lines += lay_out(cached, prefix, prefix)
         lines += [
-            f"touch {MULTIARCH}/{name}",
-            f"mount --bind {source / name} {MULTIARCH}/{name}",
-            f"mkdir -p /usr/lib/{stdlib}",
-            f"mount --bind {source / stdlib} /usr/lib/{stdlib}",
+            f"ldconfig -X -C {tmp_path}/ld.so.cache -f {tmp_path}/ld.so.conf",
+            f"mount --bind {tmp_path}/ld.so.cache /etc/ld.so.cache",
         ]
     hidden = {PYENV, Path(sys.prefix), Path(sys.base_prefix), Path(__file__).parents[1] / ".venv"}
     outermost = [p for p in hidden if p.is_dir() and not any(o in p.parents for o in hidden)]
@@ -114,9 +131,9 @@ def run_on(script: Path, *command) -> subprocess.CompletedProcess:
 
 
 MACHINES = {
-    "Debian 12 with only its own Python 3.11": dict(debian_python=True, distribution_minor=None),
-    "only a distribution's CPython 3.12": dict(debian_python=False, distribution_minor=12),
-    "only a distribution's CPython 3.13": dict(debian_python=False, distribution_minor=13),
+    "Debian 12 with only its own Python 3.11": dict(debian_python=True),
+    "only a distribution's CPython 3.12": dict(debian_python=False, distribution=(12,)),
+    "only a distribution's CPython 3.13": dict(debian_python=False, distribution=(13,)),
 }
 STARTED = {  # what the loader must have started on each machine
     "Debian 12 with only its own Python 3.11": "Python 3.11.2 from ",
@@ -148,17 +165,53 @@ def test_one_loader_starts_each_cpython_laid_out_by_a_distribution(
     (site,) = fmpy_in(minor).parents[1].glob("lib/python3.*/site-packages")
     stdlib = f"/usr/lib/python3.{minor}"
     path = {"CARDAN_JOINT_FMU_PYTHON_PATH": f"{stdlib}:{stdlib}/lib-dynload:{site}"}
-    script = machine(tmp_path, debian_python=False, distribution_minor=minor)
+    script = machine(tmp_path, debian_python=False, distribution=(minor,))
     variables = [f"{name}={value}" for name, value in path.items()]
     run = run_on(script, "env", *variables, c_host, HOST_RUN[0], unzipped_fmu, *HOST_RUN[1:])
     assert run.returncode == 0, run.stderr[-2000:]
     assert_csv_equals(run.stdout, reference)
 
 
+CHOICES = {
+    # machine: the library the loader must choose
+    "Debian's 3.11 (the build's minor) before 3.12 and 3.13": (
+        dict(debian_python=True, distribution=(12, 13)),
+        "/x86_64-linux-gnu/libpython3.11.so.1.0",
+    ),
+    "the newest, 3.13 before 3.12": (
+        dict(debian_python=False, distribution=(12, 13)),
+        f"{MULTIARCH}/libpython3.13.so.1.0",
+    ),
+    "3.12 before 3.10": (
+        dict(debian_python=False, distribution=(10, 12)),
+        f"{MULTIARCH}/libpython3.12.so.1.0",
+    ),
+    "3.12 known only to the linker's cache": (
+        dict(debian_python=False, cached=12),
+        "/opt/lib/libpython3.12.so.1.0",
+    ),
+}
+
+
+@pytest.mark.parametrize("case", CHOICES)
+def test_the_machines_python_is_chosen_in_order(namespaces, c_host, unzipped_fmu, tmp_path, case):
+    """Which library was chosen shows in the message of a search path without the
+    standard library (the loader refuses it before starting that Python)."""
+    layout, library = CHOICES[case]
+    script = machine(tmp_path, **layout)
+    run = run_on(
+        script, "env", "CARDAN_JOINT_FMU_PYTHON_PATH=/nowhere", c_host, "instantiate", unzipped_fmu
+    )
+    assert run.returncode == 0 and "instance NULL" in run.stdout, run.stderr
+    assert "the search path '/nowhere' for Python " in run.stderr, run.stderr
+    chosen = run.stderr.split("for Python ", 1)[1].split(" has no standard library")[0]
+    assert chosen.endswith(library), (chosen, library)
+
+
 def test_with_no_python_on_the_machine_instantiate_says_so(
     namespaces, c_host, unzipped_fmu, tmp_path
 ):
-    script = machine(tmp_path, debian_python=False, distribution_minor=None)
+    script = machine(tmp_path, debian_python=False)
     run = run_on(script, c_host, "instantiate", unzipped_fmu)
     assert run.returncode == 0 and "instance NULL logger_calls 1" in run.stdout, run.stderr
     for words in ("no Python for this FMU", "/etc/ld.so.cache", "CARDAN_JOINT_FMU_PYTHON_LIBRARY"):
