@@ -219,3 +219,27 @@ def test_the_fmu_ships_the_loader_and_pythonfmus_binary(fmu_path):
         "binaries/linux64/UniversalJoint_pythonfmu.so",
         "resources/python_runtime.txt",
     } <= set(names)
+
+
+def test_finding_and_starting_a_python_spawns_no_process(c_host, unzipped_fmu, tmp_path):
+    """No ldconfig -p, no python3 -c: a host's fmi2Instantiate must not fork."""
+    if not shutil.which("strace"):
+        pytest.skip("needs strace to watch the host's system calls")
+
+    def needs_only(text: str) -> str:  # the machine's Python, not the build's
+        return "\n".join(line for line in text.splitlines() if line[:7] in ("minimum", "version"))
+
+    without_hint = fmu_copy_with_record(unzipped_fmu, tmp_path, needs_only)
+    trace = tmp_path / "trace"
+    calls = "trace=execve,execveat,fork,vfork"
+    run = subprocess.run(
+        ["strace", "-f", "-qq", "-e", calls, "-o", trace, c_host, "instantiate", without_hint],
+        capture_output=True,
+        text=True,
+        env=EMPTY_ENVIRONMENT,
+        timeout=120,
+    )
+    assert "instance" in run.stdout, run.stderr  # it ran the machine's Python
+    assert "Python 3.11" in run.stderr or "instance ok" in run.stdout, run.stderr
+    (host,) = trace.read_text().splitlines()  # only strace's own execve of the host
+    assert f'execve("{c_host}"' in host

@@ -1,8 +1,8 @@
 /* The FMU's binaries/linux64/<modelIdentifier>.so: makes pythonfmu's binary,
  * shipped beside it as <modelIdentifier>_pythonfmu.so, run in any FMI host.
  *
- * At fmi2Instantiate it finds or starts the Python the build recorded
- * (python_runtime.c), then loads pythonfmu's binary and forwards the fmi2 calls
+ * At fmi2Instantiate it uses the host's Python or starts one it finds on the
+ * machine (python_runtime.c, python_discovery.c), then loads pythonfmu's binary and forwards the fmi2 calls
  * (fmi2_calls.c) through a per-instance FMI state machine.  pythonfmu always
  * gets this file's logger with logging on, so every message of the slave
  * arrives here: warnings and refusals go to the host's logger whether or not

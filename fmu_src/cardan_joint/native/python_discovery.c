@@ -98,19 +98,25 @@ static int in_linker_cache(const char *name, struct python_location *found)
     FILE *file = fopen(LINKER_CACHE, "rb");
     if (!file)
         return -1;
-    static char cache[1 << 22];
-    size_t n = fread(cache, 1, sizeof cache - 1, file);
+    char *cache = NULL;
+    long n = fseek(file, 0, SEEK_END) == 0 ? ftell(file) : -1;
+    if (n > 0 && fseek(file, 0, SEEK_SET) == 0 && (cache = malloc((size_t)n + 1)))
+        n = (long)fread(cache, 1, (size_t)n, file);
     fclose(file);
+    if (!cache)
+        return -1;
     cache[n] = '\0';
+    int result = -1;
     size_t length = strlen(name);
-    for (size_t i = 0; i < n; i += strlen(cache + i) + 1) {
+    for (long i = 0; i < n && result; i += (long)strlen(cache + i) + 1) {
         const char *entry = cache + i;
         size_t size = strlen(entry);
         if (entry[0] == '/' && size > length && entry[size - length - 1] == '/' &&
             strcmp(entry + size - length, name) == 0 && usable(found, entry))
-            return 0;
+            result = 0;
     }
-    return -1;
+    free(cache);
+    return result;
 }
 
 static int on_machine(int minor, struct python_location *found)
