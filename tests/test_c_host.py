@@ -10,6 +10,8 @@ from pathlib import Path
 import numpy as np
 import pytest
 
+from cardan_joint.native import search_path, shared_libpython
+
 EMPTY_ENVIRONMENT = {"PATH": "/usr/bin:/bin"}
 STEPS, DT = 10_000, 1e-3
 SETTINGS = {
@@ -80,13 +82,6 @@ def test_a_bad_input_with_logging_off_reaches_the_logger_once(c_host, unzipped_f
     assert "[UniversalJoint" not in run.stderr  # nothing on stderr
 
 
-def record_value(unzipped_fmu, key: str) -> str:
-    """The ':'-joined values of `key` in the FMU's resources/python_runtime.txt."""
-    record = (Path(unzipped_fmu) / "resources" / "python_runtime.txt").read_text()
-    lines = [line.split("=", 1) for line in record.splitlines() if "=" in line]
-    return ":".join(value.strip() for name, value in lines if name.strip() == key)
-
-
 def without_slave_package(copy: Path) -> None:
     for package in (copy / "resources").glob("cardan_joint_*"):
         shutil.rmtree(package)
@@ -140,7 +135,7 @@ def test_an_unusable_python_gives_null_and_says_what_to_fix(c_host, unzipped_fmu
     elif edit:
         text = edit(record.read_text())
         record.write_text(text) if text is not None else record.unlink()
-    known = {"<build>": record_value(unzipped_fmu, "library"), "<path>": "/usr/lib/python3.11"}
+    known = {"<build>": shared_libpython(), "<path>": ":".join(search_path())}
     variables = {
         f"CARDAN_JOINT_FMU_PYTHON_{name}": known.get(value, value)
         for name, value in environment.items()
@@ -151,15 +146,16 @@ def test_an_unusable_python_gives_null_and_says_what_to_fix(c_host, unzipped_fmu
     assert advice in run.stderr and "LOG 3" in run.stderr, run.stderr
 
 
-def test_the_users_python_comes_before_the_builds(c_host, unzipped_fmu, tmp_path):
-    """A record whose build Python is gone, and the user's variables naming one."""
+def test_the_users_python_is_used_where_the_builds_is_gone(c_host, unzipped_fmu, tmp_path):
+    """The build's Python gone, the user's variables name this
+    process's Python (the build's, whose site-packages has what the FMU imports)."""
     moved = fmu_copy_with_record(
         unzipped_fmu, tmp_path, lambda text: text.replace("library = ", "library = /nowhere")
     )
     variables = {
-        "CARDAN_JOINT_FMU_PYTHON_LIBRARY": record_value(unzipped_fmu, "library"),
-        "CARDAN_JOINT_FMU_PYTHON_HOME": record_value(unzipped_fmu, "home"),
-        "CARDAN_JOINT_FMU_PYTHON_PATH": record_value(unzipped_fmu, "path"),
+        "CARDAN_JOINT_FMU_PYTHON_LIBRARY": shared_libpython(),
+        "CARDAN_JOINT_FMU_PYTHON_HOME": sys.base_prefix,
+        "CARDAN_JOINT_FMU_PYTHON_PATH": ":".join(search_path()),
     }
     run = run_host(c_host, "instantiate", moved, environment=variables)
     assert "instance ok" in run.stdout, run.stderr
