@@ -9,6 +9,7 @@ from pathlib import Path
 from types import ModuleType
 
 import pytest
+from c_host.compile import compile_host
 from hypothesis import settings
 
 # Local runs explore new examples each time; CI replays a fixed set so that a
@@ -55,6 +56,12 @@ def load_example(name: str) -> ModuleType:
             if origin and Path(origin).resolve().parent == examples:
                 del sys.modules[added]
     return module
+
+
+@pytest.fixture(scope="session")
+def c_host(tmp_path_factory) -> Path:
+    """tests/c_host compiled: a plain C FMI host (dlopen RTLD_LOCAL, no Python)."""
+    return compile_host(tmp_path_factory.mktemp("c_host") / "host")
 
 
 @pytest.fixture(scope="session")

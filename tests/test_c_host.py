@@ -9,27 +9,55 @@ from pathlib import Path
 
 import numpy as np
 import pytest
-from c_host.compile import compile_host
+
+from cardan_joint.native import search_path, shared_libpython
 
 EMPTY_ENVIRONMENT = {"PATH": "/usr/bin:/bin"}
+STEPS, DT = 10_000, 1e-3
+SETTINGS = {
+    "input_speed": 40.0,
+    "input_acceleration": 3.0,
+    "bend_angle": 0.4,
+    "bend_angle_rate": 0.01,
+    "load_torque": 50.0,
+    "yoke_phase": 0.3,
+}
+HOST_RUN = ("run", STEPS, DT, *(f"{name}={value!r}" for name, value in SETTINGS.items()))
 
 
-@pytest.fixture(scope="session")
-def c_host(tmp_path_factory):
-    return compile_host(tmp_path_factory.mktemp("c_host") / "host")
+def fmpy_reference(fmu_path):
+    """FMPy's run of HOST_RUN in this process (the build's Python)."""
+    from fmpy import simulate_fmu
+
+    return simulate_fmu(
+        str(fmu_path), stop_time=STEPS * DT, output_interval=DT, start_values=SETTINGS
+    )
 
 
-def run_host(c_host, *args, timeout=120):
-    """The host's run, which must end cleanly (no crash, no abort at exit)."""
+def assert_csv_equals(stdout: str, reference) -> None:
+    """The host's CSV of a HOST_RUN equals FMPy's to 1e-12 relative, every column."""
+    names = stdout.splitlines()[0].replace('"', "").split(",")
+    ours = np.loadtxt(stdout.splitlines()[1:], delimiter=",")
+    assert ours.shape == (len(reference), len(names)) and len(reference) == STEPS + 1
+    for column, name in enumerate(names):
+        np.testing.assert_allclose(
+            ours[:, column], reference[name], rtol=1e-12, atol=0, err_msg=name
+        )
+
+
+def run_host(c_host, *args, timeout=120, environment=None, fatal_logged=False):
+    """The host's run, which must end cleanly (no crash, no abort at exit); a fatal
+    status in the logger only where the case expects the slave to report one."""
     run = subprocess.run(
         [str(c_host), *map(str, args)],
-        env=EMPTY_ENVIRONMENT,
+        env={**EMPTY_ENVIRONMENT, **(environment or {})},
         capture_output=True,
         text=True,
         timeout=timeout,
     )
     assert run.returncode == 0, run.stdout[-2000:] + run.stderr[-2000:]
-    assert "Fatal" not in run.stderr and "free()" not in run.stderr, run.stderr[-2000:]
+    crashed = "Fatal Python error" in run.stderr or "free()" in run.stderr
+    assert not crashed and (fatal_logged or "Fatal" not in run.stderr), run.stderr[-2000:]
     return run
 
 
@@ -43,33 +71,8 @@ def fmu_copy_with_record(unzipped_fmu, tmp_path, edit):
 
 
 def test_c_host_equals_fmpy_over_ten_thousand_steps(c_host, fmu_path, unzipped_fmu):
-    from fmpy import simulate_fmu
-
-    steps, dt = 10_000, 1e-3
-    settings = {
-        "input_speed": 40.0,
-        "input_acceleration": 3.0,
-        "bend_angle": 0.4,
-        "bend_angle_rate": 0.01,
-        "load_torque": 50.0,
-        "yoke_phase": 0.3,
-    }
-    run = run_host(
-        c_host,
-        "run",
-        unzipped_fmu,
-        steps,
-        dt,
-        *(f"{name}={value!r}" for name, value in settings.items()),
-    )
-    names = run.stdout.splitlines()[0].replace('"', "").split(",")
-    ours = np.loadtxt(run.stdout.splitlines()[1:], delimiter=",")
-    theirs = simulate_fmu(
-        str(fmu_path), stop_time=steps * dt, output_interval=dt, start_values=settings
-    )
-    assert ours.shape == (len(theirs), len(names)) and len(theirs) == steps + 1
-    for column, name in enumerate(names):
-        np.testing.assert_allclose(ours[:, column], theirs[name], rtol=1e-12, atol=0, err_msg=name)
+    run = run_host(c_host, HOST_RUN[0], unzipped_fmu, *HOST_RUN[1:])
+    assert_csv_equals(run.stdout, fmpy_reference(fmu_path))
 
 
 def test_a_bad_input_with_logging_off_reaches_the_logger_once(c_host, unzipped_fmu):
@@ -79,50 +82,83 @@ def test_a_bad_input_with_logging_off_reaches_the_logger_once(c_host, unzipped_f
     assert "[UniversalJoint" not in run.stderr  # nothing on stderr
 
 
-@pytest.mark.parametrize(
-    "edit, advice",
-    [
-        (
-            lambda text: text.replace("library = ", "library = /nowhere"),
-            "cannot load the Python library",
-        ),
-        (lambda text: text.replace("version = ", "version = 9"), "built for Python 9"),
-        (
-            lambda text: "\n".join(
-                line for line in text.splitlines() if "site-packages" not in line
-            ),
-            "numpy cannot be imported",
-        ),
-    ],
-    ids=["library moved", "other minor version", "numpy missing"],
-)
-def test_an_unusable_python_gives_null_and_says_what_to_fix(
-    c_host, unzipped_fmu, tmp_path, edit, advice
-):
-    broken = fmu_copy_with_record(unzipped_fmu, tmp_path, edit)
-    run = run_host(c_host, "instantiate", broken)
-    assert "instance NULL logger_calls 1" in run.stdout
-    assert advice in run.stderr and "LOG 3" in run.stderr
+def without_slave_package(copy: Path) -> None:
+    for package in (copy / "resources").glob("cardan_joint_*"):
+        shutil.rmtree(package)
 
 
-def test_the_record_can_be_overridden_from_the_environment(c_host, unzipped_fmu, tmp_path):
-    broken = fmu_copy_with_record(
+UNUSABLE = {
+    # name: (edit of the record, environment (None: unset), what the message says)
+    "user's library missing, home and path given": (
+        None,
+        {"LIBRARY": "/nowhere/libpython3.11.so.1.0", "HOME": "/nowhere", "PATH": "/nowhere"},
+        "cannot load the Python library '/nowhere/libpython3.11.so.1.0'",
+    ),
+    "user's library without a standard library beside it": (
+        None,
+        {"LIBRARY": "/nowhere/libpython3.11.so.1.0"},
+        "$CARDAN_JOINT_FMU_PYTHON_LIBRARY names /nowhere/libpython3.11.so.1.0, but its",
+    ),
+    "user's path without the standard library": (
+        None,
+        {"LIBRARY": "<build>", "HOME": "/", "PATH": "/nowhere:/tmp"},
+        "has no standard library (encodings/__init__.py)",
+    ),
+    "user's library not a Python": (
+        None,
+        {"LIBRARY": "/lib/x86_64-linux-gnu/libc.so.6", "HOME": "/", "PATH": "<path>"},
+        "has no Py_IsInitialized: not a CPython",
+    ),
+    "record needing a newer Python": (
+        lambda text: text.replace("minimum = 3.10", "minimum = 3.99"),
+        {},
+        "this FMU needs CPython 3.99 or newer, but the Python",
+    ),
+    "record without its minimum": (
+        lambda text: text.replace("minimum = 3.10", ""),
+        {},
+        "no valid 'minimum'",
+    ),
+    "record missing": (lambda text: None, {}, "python_runtime.txt (No such file"),
+    "slave code that cannot import": (without_slave_package, {}, "No module named"),
+}
+
+
+@pytest.mark.parametrize("case", UNUSABLE)
+def test_an_unusable_python_gives_null_and_says_what_to_fix(c_host, unzipped_fmu, tmp_path, case):
+    edit, environment, advice = UNUSABLE[case]
+    broken = tmp_path / "fmu"
+    shutil.copytree(unzipped_fmu, broken)
+    record = broken / "resources" / "python_runtime.txt"
+    if edit is without_slave_package:
+        edit(broken)
+    elif edit:
+        text = edit(record.read_text())
+        record.write_text(text) if text is not None else record.unlink()
+    known = {"<build>": shared_libpython(), "<path>": ":".join(search_path())}
+    variables = {
+        f"CARDAN_JOINT_FMU_PYTHON_{name}": known.get(value, value)
+        for name, value in environment.items()
+    }
+    fatal = edit is without_slave_package  # pythonfmu logs its import error as fatal
+    run = run_host(c_host, "instantiate", broken, environment=variables, fatal_logged=fatal)
+    assert "instance NULL" in run.stdout
+    assert advice in run.stderr and "LOG 3" in run.stderr, run.stderr
+
+
+def test_the_users_python_is_used_where_the_builds_is_gone(c_host, unzipped_fmu, tmp_path):
+    """The build's Python gone, the user's variables name this
+    process's Python (the build's, whose site-packages has what the FMU imports)."""
+    moved = fmu_copy_with_record(
         unzipped_fmu, tmp_path, lambda text: text.replace("library = ", "library = /nowhere")
     )
-    library = next(
-        line.split("=", 1)[1].strip()
-        for line in (Path(unzipped_fmu) / "resources" / "python_runtime.txt")
-        .read_text()
-        .splitlines()
-        if line.startswith("library")
-    )
-    run = subprocess.run(
-        [str(c_host), "instantiate", str(broken)],
-        capture_output=True,
-        text=True,
-        env={**EMPTY_ENVIRONMENT, "CARDAN_JOINT_FMU_PYTHON_LIBRARY": library},
-    )
-    assert run.returncode == 0 and "instance ok" in run.stdout, run.stderr
+    variables = {
+        "CARDAN_JOINT_FMU_PYTHON_LIBRARY": shared_libpython(),
+        "CARDAN_JOINT_FMU_PYTHON_HOME": sys.base_prefix,
+        "CARDAN_JOINT_FMU_PYTHON_PATH": ":".join(search_path()),
+    }
+    run = run_host(c_host, "instantiate", moved, environment=variables)
+    assert "instance ok" in run.stdout, run.stderr
 
 
 def test_threads_each_with_an_instance_and_one_instance_on_two_threads(c_host, unzipped_fmu):
@@ -179,3 +215,27 @@ def test_the_fmu_ships_the_loader_and_pythonfmus_binary(fmu_path):
         "binaries/linux64/UniversalJoint_pythonfmu.so",
         "resources/python_runtime.txt",
     } <= set(names)
+
+
+def test_finding_and_starting_a_python_spawns_no_process(c_host, unzipped_fmu, tmp_path):
+    """No ldconfig -p, no python3 -c: a host's fmi2Instantiate must not fork."""
+    if not shutil.which("strace"):
+        pytest.skip("needs strace to watch the host's system calls")
+
+    def needs_only(text: str) -> str:  # the machine's Python, not the build's
+        return "\n".join(line for line in text.splitlines() if line[:7] in ("minimum", "version"))
+
+    without_hint = fmu_copy_with_record(unzipped_fmu, tmp_path, needs_only)
+    trace = tmp_path / "trace"
+    calls = "trace=execve,execveat,fork,vfork"
+    run = subprocess.run(
+        ["strace", "-f", "-qq", "-e", calls, "-o", trace, c_host, "instantiate", without_hint],
+        capture_output=True,
+        text=True,
+        env=EMPTY_ENVIRONMENT,
+        timeout=120,
+    )
+    assert "instance" in run.stdout, run.stderr  # it ran the machine's Python
+    assert "Python 3.11" in run.stderr or "instance ok" in run.stdout, run.stderr
+    (host,) = trace.read_text().splitlines()  # only strace's own execve of the host
+    assert f'execve("{c_host}"' in host

@@ -2,12 +2,13 @@
 
 pythonfmu's (and pythonfmu3's) binary needs a Python already in the process.
 `install_loader` compiles `loader.c` (FMI 2.0) or `fmi3_loader.c` (FMI 3.0) and
-friends with the machine's C compiler ($CC, else `cc`) against the build's Python
-headers, moves pythonfmu's binary to `binaries/<platform>/<id>_pythonfmu.so`
-(`_pythonfmu3.so`), puts the loader at `binaries/<platform>/<id>.so`
-and records in `resources/python_runtime.txt` which Python to start where the
-host has none (its library, home and module search path). Users edit that file,
-or set the environment variables named in loader.h, to move the FMU.
+friends with the machine's C compiler ($CC, else `cc`; no Python headers
+needed), moves pythonfmu's binary to `binaries/<platform>/<id>_pythonfmu.so`
+(`_pythonfmu3.so`), puts the loader at `binaries/<platform>/<id>.so` and records
+in `resources/python_runtime.txt` what the FMU needs of a Python (a minimum
+version, the build's minor as the preferred one), no machine paths. Where the
+host has no Python the loader finds one on the machine (python_discovery.c);
+users point it elsewhere with the variables named in loader.h.
 """
 
 import os
@@ -27,6 +28,7 @@ _COMMON = (
     "state_book.c",
     "slave_library.c",
     "python_runtime.c",
+    "python_discovery.c",
     "runtime_record.c",
 )
 SOURCES = {
@@ -58,6 +60,7 @@ def fmi3_headers() -> Path:
     from importlib.metadata import distribution
 
     return Path(str(distribution("pythonfmu3").locate_file("pythonfmu3/pythonfmu-export/src/fmi")))
+MINIMUM_PYTHON = (3, 10)  # the oldest CPython the FMU's code and the loader support
 
 
 class NativeBuildError(RuntimeError):
@@ -85,9 +88,7 @@ def shared_libpython() -> str:
 
 
 def search_path() -> list:
-    """What the slave imports from: the standard library and the packages numpy lives in."""
-    import numpy
-
+    """The build's module search path: its standard library and site-packages."""
     stdlib = Path(sysconfig.get_path("stdlib"))
     candidates = [
         stdlib.parent / f"python{sys.version_info.major}{sys.version_info.minor}.zip",
@@ -95,7 +96,6 @@ def search_path() -> list:
         stdlib / "lib-dynload",
         Path(sysconfig.get_path("purelib")),
         Path(sysconfig.get_path("platlib")),
-        Path(numpy.__file__).parent.parent,
     ]
     paths = []
     for path in candidates:
@@ -106,25 +106,16 @@ def search_path() -> list:
 
 def runtime_record() -> str:
     lines = [
-        "# The Python this FMU was built with. Hosts without a Python start it from here.",
-        "# Edit to move the FMU, or set CARDAN_JOINT_FMU_PYTHON_LIBRARY, ..._HOME and",
-        "# ..._PATH (':'-separated); see docs/fmi-tools.md in the project.",
+        "# What this FMU needs of a Python where its host has none: the loader finds",
+        "# one on the machine, or set CARDAN_JOINT_FMU_PYTHON_LIBRARY (and ..._HOME,",
+        "# ..._PATH); see docs/fmi-tools.md in the project.",
+        "minimum = {}.{}".format(*MINIMUM_PYTHON),
         f"version = {sys.version_info.major}.{sys.version_info.minor}",
-        f"library = {shared_libpython()}",
-        f"home = {sys.base_prefix}",
-        f"executable = {sys.executable}",
     ]
-    lines += [f"path = {path}" for path in search_path()]
     return "\n".join(lines) + "\n"
 
 
 def compile_loader(model_identifier: str, output: Path, fmi_version: int = 2) -> Path:
-    include = Path(sysconfig.get_path("include"))
-    if not (include / "Python.h").exists():
-        raise NativeBuildError(
-            f"the build's Python has no headers ({include}/Python.h): "
-            f"install its development package (e.g. python3-dev)"
-        )
     exports = output.parent / "exports.map"
     # Only the fmi functions: nothing else of the loader may interpose in the host.
     exports.write_text(f"{{ global: fmi{fmi_version}*; local: *; }};\n")
@@ -138,7 +129,6 @@ def compile_loader(model_identifier: str, output: Path, fmi_version: int = 2) ->
         "-pthread",
         "-Wall",
         f"-DMODEL_IDENTIFIER=\"{model_identifier}\"",
-        f"-I{include}",
         *headers,
         *(str(_HERE / source) for source in SOURCES[fmi_version]),
         "-Wl,-z,nodelete",

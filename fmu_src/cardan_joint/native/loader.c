@@ -1,9 +1,9 @@
 /* The FMU's binaries/linux64/<modelIdentifier>.so: makes pythonfmu's binary,
  * shipped beside it as <modelIdentifier>_pythonfmu.so, run in any FMI host.
  *
- * At fmi2Instantiate it finds or starts the Python the build recorded
- * (python_runtime.c), then loads pythonfmu's binary and forwards the fmi2 calls
- * (fmi2_calls.c) through a per-instance FMI state machine (calls.c).  pythonfmu
+ * At fmi2Instantiate it uses the host's Python or starts one it finds on the
+ * machine (python_runtime.c, python_discovery.c), then loads pythonfmu's binary
+ * and forwards the fmi2 calls (fmi2_calls.c) through a per-instance FMI state machine (calls.c).  pythonfmu
  * always gets this file's logger with logging on, so every message of the
  * slave arrives here and report.c routes it: warnings and refusals go to the
  * host's logger whether or not it asked for debug logging, and the status a
@@ -117,7 +117,8 @@ fmi2Component fmi2Instantiate(fmi2String name, fmi2Type type, fmi2String guid,
     in->slave = slave.instantiate(in->name, fmi2CoSimulation, in->guid, in->resources_uri,
                                   &in->to_slave, in->visible, fmi2True);
     if (!in->slave) {
-        report(in, fmi2Error, NULL, "the slave could not be instantiated: see the message before");
+        reportf(in, fmi2Error, "the slave could not be instantiated in %s: see the message "
+                "before", python_in_use());
         free_instance(in);
         return NULL;
     }

@@ -2,8 +2,6 @@
 #ifndef CARDAN_JOINT_LOADER_H
 #define CARDAN_JOINT_LOADER_H
 
-#define PY_SSIZE_T_CLEAN
-#include <Python.h>
 #include <stddef.h>
 
 #define RUNTIME_RECORD "python_runtime.txt"
@@ -11,22 +9,29 @@
 #define ENV_HOME "CARDAN_JOINT_FMU_PYTHON_HOME"
 #define ENV_PATH "CARDAN_JOINT_FMU_PYTHON_PATH"
 #define ENV_STDERR "CARDAN_JOINT_FMU_STDERR"
+/* The CPython minors the loader looks for on a machine, newest first after the
+ * build's own; a Python host of any 3.x from the record's minimum is used. */
+#define NEWEST_MINOR 13
 #define FIX_HINT                                                                    \
-    "fix the 'library', 'home' and 'path' lines of resources/" RUNTIME_RECORD       \
-    " or set $" ENV_LIBRARY ", $" ENV_HOME " and $" ENV_PATH                        \
-    " to a Python " PY_MAJOR_MINOR " with numpy"
-#define PY_STR_(x) #x
-#define PY_STR(x) PY_STR_(x)
-#define PY_MAJOR_MINOR PY_STR(PY_MAJOR_VERSION) "." PY_STR(PY_MINOR_VERSION)
+    "install a CPython 3.10 to 3.13 with its shared library (e.g. Debian's "       \
+    "libpython3.11), or point the FMU at one: $" ENV_LIBRARY "=<its libpython3.X.so.1.0>, " \
+    "and if its standard library is not at <prefix>/lib/python3.X, $" ENV_HOME     \
+    "=<prefix> and $" ENV_PATH "=<':'-separated module search path>"
 
-/* What the build recorded in resources/python_runtime.txt, after the user's
+/* One Python as the loader would start it. */
+struct python_location {
+    char library[4096]; /* libpython3.X.so.1.0 */
+    char home[4096];    /* sys.base_prefix; derived from the library if empty */
+    char path[16384];   /* module search path, ':'-separated; derived if empty */
+};
+
+/* What resources/python_runtime.txt says the FMU needs, and the user's
  * environment overrides. */
 struct runtime_record {
-    char version[16];      /* major.minor of the build's Python */
-    char library[4096];    /* the build's libpython, for hosts without Python */
-    char home[4096];       /* sys.base_prefix */
-    char executable[4096]; /* the build's interpreter, for sys.executable */
-    char path[16384];      /* module search path, ':'-separated */
+    int minimum_minor;            /* 3.<minimum_minor> or newer */
+    int build_minor;              /* the build's 3.x: preferred among the machine's */
+    struct python_location build; /* optional hint: the build's Python, if still there */
+    struct python_location user;  /* $CARDAN_JOINT_FMU_PYTHON_* */
 };
 
 #define MAX_FIXED 64
@@ -44,7 +49,13 @@ int resources_folder(const char *location, char *folder, size_t size);
 int read_runtime_record(const char *resources, struct runtime_record *record,
                         char *error, size_t size);
 
+/* The Python to start in a process without one: the user's, the build's if still
+ * there, else the machine's (python_discovery.c). 0, or -1 with what was looked at. */
+int find_python(const struct runtime_record *record, struct python_location *found,
+                char *error, size_t size);
+/* FMI-version-neutral: find or start the Python, enter it on this thread. */
 int start_python(const struct runtime_record *record, char *error, size_t size);
 void enter_python_thread(void);
+const char *python_in_use(void);  /* "Python 3.12.1 from <library>", for messages */
 
 #endif

@@ -1,143 +1,174 @@
-/* Finding, starting and entering the Python that runs the FMU's slave.
+/* Starting and entering the Python that runs the FMU's slave.
  *
- * A C host has no Python: load the build's libpython RTLD_GLOBAL (extension
- * modules such as numpy resolve their symbols in the global scope) and start
- * it isolated from the environment with the home and search path the build
- * recorded.  A Python host (FMPy, libcosimpy, a statically linked python3)
- * already has one: use it, never a second interpreter.
+ * A Python host (FMPy, libcosimpy, a statically linked python3) already has
+ * one: use it, whatever its 3.x from the record's minimum, never a second
+ * interpreter.  A C host has none: load the one find_python names RTLD_GLOBAL
+ * (extension modules resolve their symbols in the global scope) and start it
+ * isolated from the environment with that home and search path.
  *
- * Every Python function is looked up with dlsym: the loader links no
- * libpython, so that it loads in any host.  Python.h is used for types only.
+ * No Python headers: every function is looked up with dlsym and declared here,
+ * so that one loader binary starts CPython 3.10 to 3.13 and any machine with
+ * a C compiler builds it.  PyConfig's layout differs between those versions;
+ * the legacy Py_SetPythonHome/Py_SetPath/Py_InitializeEx and the Py_*Flag
+ * globals, deprecated but exported by all of them, have one ABI.
  */
 #define _GNU_SOURCE
 #include "loader.h"
 
 #include <dlfcn.h>
+#include <limits.h>
 #include <pthread.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+#include <unistd.h>
+#include <wchar.h>
 
-#define PY_FUNCTIONS(X)                                                          \
-    X(Py_IsInitialized) X(Py_GetVersion) X(PyGILState_Ensure)                    \
-    X(PyGILState_Release) X(PyGILState_GetThisThreadState) X(PyEval_SaveThread)  \
-    X(PyEval_RestoreThread) X(PyImport_ImportModule) X(PyErr_Fetch)              \
-    X(PyErr_NormalizeException) X(PyObject_Str) X(PyUnicode_AsUTF8)             \
-    X(Py_DecRef) X(PyThreadState_Clear) X(PyThreadState_DeleteCurrent)
-#define PY_INIT_FUNCTIONS(X)                                                     \
-    X(PyConfig_InitIsolatedConfig) X(PyConfig_SetBytesString) X(PyConfig_Clear)  \
-    X(PyWideStringList_Append) X(Py_DecodeLocale) X(PyMem_RawFree)              \
-    X(Py_InitializeFromConfig) X(PyStatus_Exception)
+typedef struct _ts PyThreadState;
+typedef int PyGILState_STATE;  /* an enum in Python.h */
 
-#define DECLARE(name) static __typeof__(&name) p_##name;
+#define PY_FUNCTIONS(X)                                                                  \
+    X(int, Py_IsInitialized, (void)) X(const char *, Py_GetVersion, (void))              \
+    X(PyGILState_STATE, PyGILState_Ensure, (void))                                       \
+    X(void, PyGILState_Release, (PyGILState_STATE))                                      \
+    X(PyThreadState *, PyGILState_GetThisThreadState, (void))                            \
+    X(PyThreadState *, PyEval_SaveThread, (void))                                        \
+    X(void, PyEval_RestoreThread, (PyThreadState *))                                     \
+    X(void, PyThreadState_Clear, (PyThreadState *)) X(void, PyThreadState_DeleteCurrent, (void))
+#define PY_INIT_FUNCTIONS(X)                                                             \
+    X(void, Py_SetPythonHome, (const wchar_t *)) X(void, Py_SetPath, (const wchar_t *))  \
+    X(wchar_t *, Py_DecodeLocale, (const char *, size_t *)) X(void, Py_InitializeEx, (int))
+static const char *const INIT_FLAGS[] = {
+    "Py_IsolatedFlag", "Py_IgnoreEnvironmentFlag", "Py_NoUserSiteDirectory", "Py_NoSiteFlag"};
+
+#define DECLARE(result, name, parameters) static result(*p_##name) parameters;
 PY_FUNCTIONS(DECLARE)
 PY_INIT_FUNCTIONS(DECLARE)
 
 static pthread_mutex_t start_lock = PTHREAD_MUTEX_INITIALIZER;
 static int python_ready;               /* set once, under start_lock */
-static char numpy_checked_for[sizeof ((struct runtime_record *)0)->path];   /* the search path numpy was found with */
 static pthread_key_t thread_state_key;
+static char in_use[4200] = "no Python";   /* for messages: which Python runs the slave */
 
-static int resolve(void *library, char *error, size_t size)
+const char *python_in_use(void)
 {
-#define RESOLVE(name)                                                                \
-    if (!(p_##name = (__typeof__(&name))dlsym(library, #name))) {                    \
-        snprintf(error, size, "the Python library has no %s: not a CPython %s", #name, \
-                 PY_VERSION);                                                        \
-        return -1;                                                                   \
+    return in_use;
+}
+
+static void describe(const char *where)
+{
+    const char *version = p_Py_GetVersion();
+    snprintf(in_use, sizeof in_use, "Python %.*s %s", (int)strcspn(version, " "), version, where);
+}
+
+#define RESOLVE(result, name, parameters)                                                \
+    if (!(*(void **)&p_##name = dlsym(library, #name))) {                                \
+        snprintf(error, size, "%s has no %s: not a CPython 3.10 to 3.13", where, #name); \
+        return -1;                                                                       \
     }
+
+static int resolve(void *library, const char *where, char *error, size_t size)
+{
     PY_FUNCTIONS(RESOLVE)
     return 0;
 }
 
-static int resolve_init(void *library, char *error, size_t size)
+static int resolve_init(void *library, const char *where, char *error, size_t size)
 {
     PY_INIT_FUNCTIONS(RESOLVE)
     return 0;
-#undef RESOLVE
 }
 
-/* "3.11.7 (main, ...)" is usable by an FMU built for "3.11". */
-static int version_matches(const char *running, const char *built)
+/* "3.12.1 (main, ...)": usable from the record's minimum on. */
+static int check_version(const struct runtime_record *record, const char *whose,
+                         char *error, size_t size)
 {
-    size_t n = strlen(built);
-    return strncmp(running, built, n) == 0 && running[n] == '.';
+    const char *version = p_Py_GetVersion();
+    int major = 0, minor = -1;
+    if (sscanf(version, "%d.%d", &major, &minor) == 2 && major == 3 &&
+        minor >= record->minimum_minor)
+        return 0;
+    snprintf(error, size, "this FMU needs CPython 3.%d or newer, but the Python %s is %.*s; "
+             "run it in a Python 3.%d to 3.%d process", record->minimum_minor, whose,
+             (int)strcspn(version, " "), version, record->minimum_minor, NEWEST_MINOR);
+    return -1;
 }
 
-static void set_string(PyConfig *config, wchar_t **field, const char *value)
+/* Py_InitializeEx aborts the process when it cannot import encodings: refuse
+ * a search path without it. */
+static int has_standard_library(const char *path)
 {
-    if (value && *value)
-        p_PyConfig_SetBytesString(config, field, value);
-}
-
-static int start_interpreter(const struct runtime_record *record, char *error, size_t size)
-{
-    PyConfig config;
-    p_PyConfig_InitIsolatedConfig(&config);
-    config.install_signal_handlers = 0;    /* the host owns its signals */
-    config.site_import = 0;                /* the recorded path is the whole path */
-    config.parse_argv = 0;
-    set_string(&config, &config.home, record->home);
-    set_string(&config, &config.program_name, record->executable);
-    config.module_search_paths_set = 1;
-    char paths[sizeof record->path];
-    strcpy(paths, record->path);
-    for (char *save, *entry = strtok_r(paths, ":", &save); entry;
+    char entries[sizeof ((struct python_location *)0)->path], probe[PATH_MAX];
+    snprintf(entries, sizeof entries, "%s", path);
+    for (char *save, *entry = strtok_r(entries, ":", &save); entry;
          entry = strtok_r(NULL, ":", &save)) {
-        wchar_t *wide = p_Py_DecodeLocale(entry, NULL);
-        if (wide) {
-            p_PyWideStringList_Append(&config.module_search_paths, wide);
-            p_PyMem_RawFree(wide);
-        }
+        snprintf(probe, sizeof probe, "%s/encodings/__init__.py", entry);
+        size_t n = strlen(entry);
+        if (access(probe, R_OK) == 0 || (n > 4 && strcmp(entry + n - 4, ".zip") == 0 &&
+                                         access(entry, R_OK) == 0))
+            return 1;
     }
-    PyStatus status = p_Py_InitializeFromConfig(&config);
-    p_PyConfig_Clear(&config);
-    if (p_PyStatus_Exception(status)) {
-        snprintf(error, size,
-                 "Python at %s did not start (%s: %s) with home %s and path %s; " FIX_HINT,
-                 record->library, status.func ? status.func : "init",
-                 status.err_msg ? status.err_msg : "unknown error", record->home, record->path);
+    return 0;
+}
+
+static int start_interpreter(void *library, const struct python_location *python,
+                             char *error, size_t size)
+{
+    if (!has_standard_library(python->path)) {
+        snprintf(error, size, "the search path '%s' for Python %s has no standard library "
+                 "(encodings/__init__.py); " FIX_HINT, python->path, python->library);
+        return -1;
+    }
+    for (size_t i = 0; i < sizeof INIT_FLAGS / sizeof *INIT_FLAGS; i++) {
+        int *flag = dlsym(library, INIT_FLAGS[i]);
+        if (!flag) {
+            snprintf(error, size, "%s has no %s: not a CPython 3.10 to 3.13", python->library,
+                     INIT_FLAGS[i]);
+            return -1;
+        }
+        *flag = 1;  /* isolated: no environment, no user site, no site: the path is all */
+    }
+    /* The legacy API keeps these pointers: they live as long as the process. */
+    wchar_t *home = p_Py_DecodeLocale(python->home, NULL);
+    wchar_t *path = p_Py_DecodeLocale(python->path, NULL);
+    if (!home || !path) {
+        snprintf(error, size, "cannot decode Python's home '%s' or path '%s'", python->home,
+                 python->path);
+        return -1;
+    }
+    p_Py_SetPythonHome(home);
+    p_Py_SetPath(path);
+    p_Py_InitializeEx(0);  /* 0: the host owns its signals */
+    if (!p_Py_IsInitialized()) {
+        snprintf(error, size, "Python %s did not start with home '%s' and path '%s'; " FIX_HINT,
+                 python->library, python->home, python->path);
         return -1;
     }
     p_PyEval_SaveThread();  /* the GIL is free; this thread keeps its main thread state */
     return 0;
 }
 
-static void describe_python_error(char *text, size_t size)
+static int load_and_start(const struct runtime_record *record, char *error, size_t size)
 {
-    PyObject *type = NULL, *value = NULL, *traceback = NULL;
-    p_PyErr_Fetch(&type, &value, &traceback);
-    p_PyErr_NormalizeException(&type, &value, &traceback);
-    PyObject *string = value ? p_PyObject_Str(value) : NULL;
-    const char *utf8 = string ? p_PyUnicode_AsUTF8(string) : NULL;
-    snprintf(text, size, "%s", utf8 ? utf8 : "unknown error");
-    PyObject *owned[] = {string, type, value, traceback};
-    for (size_t i = 0; i < sizeof owned / sizeof *owned; i++)
-        if (owned[i])
-            p_Py_DecRef(owned[i]);
-}
-
-static int check_numpy(const struct runtime_record *record, char *error, size_t size)
-{
-    if (strcmp(numpy_checked_for, record->path) == 0)
-        return 0;
-    PyGILState_STATE gil = p_PyGILState_Ensure();
-    PyObject *numpy = p_PyImport_ImportModule("numpy");
-    char reason[512] = "";
-    if (numpy)
-        p_Py_DecRef(numpy);
-    else
-        describe_python_error(reason, sizeof reason);
-    p_PyGILState_Release(gil);
-    if (!numpy) {
-        snprintf(error, size,
-                 "numpy cannot be imported by Python %.20s (%s); install numpy into that Python "
-                 "(python -m pip install numpy) or add the site-packages folder that has it to "
-                 "the 'path' line of resources/" RUNTIME_RECORD " or to $" ENV_PATH,
-                 p_Py_GetVersion(), reason);
+    struct python_location python;
+    if (find_python(record, &python, error, size))
+        return -1;
+    void *library = dlopen(python.library, RTLD_NOW | RTLD_GLOBAL);
+    if (!library) {
+        snprintf(error, size, "cannot load the Python library '%s' (%s); " FIX_HINT,
+                 python.library, dlerror());
         return -1;
     }
-    snprintf(numpy_checked_for, sizeof numpy_checked_for, "%s", record->path);
+    if (resolve(library, python.library, error, size) ||
+        check_version(record, python.library, error, size) ||
+        resolve_init(library, python.library, error, size) ||
+        start_interpreter(library, &python, error, size)) {
+        dlclose(library);
+        return -1;
+    }
+    char where[sizeof python.library + 8];
+    snprintf(where, sizeof where, "from %s", python.library);
+    describe(where);
     return 0;
 }
 
@@ -168,18 +199,6 @@ void enter_python_thread(void)
     pthread_setspecific(thread_state_key, p_PyEval_SaveThread());
 }
 
-static int check_version(const struct runtime_record *record, const char *whose,
-                         char *error, size_t size)
-{
-    if (version_matches(p_Py_GetVersion(), record->version))
-        return 0;
-    snprintf(error, size,
-             "this FMU was built for Python %s but the Python %s is %.20s; run it in a "
-             "Python %s process, or rebuild the FMU with this Python",
-             record->version, whose, p_Py_GetVersion(), record->version);
-    return -1;
-}
-
 int start_python(const struct runtime_record *record, char *error, size_t size)
 {
     int result = 0;
@@ -187,35 +206,22 @@ int start_python(const struct runtime_record *record, char *error, size_t size)
     if (python_ready) {
         result = check_version(record, "already running in this process", error, size);
     } else {
-        __typeof__(&Py_IsInitialized) running =
-            (__typeof__(&Py_IsInitialized))dlsym(RTLD_DEFAULT, "Py_IsInitialized");
+        void *library = RTLD_DEFAULT;
+        int (*running)(void) = (int (*)(void))dlsym(library, "Py_IsInitialized");
         if (running && running()) {
-            result = resolve(RTLD_DEFAULT, error, size) ||
+            result = resolve(library, "this process's Python", error, size) ||
                      check_version(record, "of this process", error, size);
-        } else {
-            void *library = record->library[0]
-                ? dlopen(record->library, RTLD_NOW | RTLD_GLOBAL) : NULL;
-            if (!library) {
-                snprintf(error, size, "cannot load the Python library '%s' (%s); " FIX_HINT,
-                         record->library,
-                         record->library[0] ? dlerror() : "none was recorded");
-                result = -1;
-            } else {
-                result = resolve(library, error, size) ||
-                         check_version(record, "library", error, size) ||
-                         resolve_init(library, error, size) ||
-                         start_interpreter(record, error, size);
-            }
-        }
+            if (result == 0)
+                describe("(the host's)");
+        } else
+            result = load_and_start(record, error, size);
         if (result == 0) {
             pthread_key_create(&thread_state_key, release_thread_state);
             python_ready = 1;
         }
     }
-    if (result == 0) {
+    if (result == 0)
         enter_python_thread();
-        result = check_numpy(record, error, size);
-    }
     pthread_mutex_unlock(&start_lock);
     return result;
 }

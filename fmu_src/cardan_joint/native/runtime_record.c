@@ -1,14 +1,13 @@
-/* Reads resources/python_runtime.txt, the build's record of its Python.
+/* Reads resources/python_runtime.txt, what the FMU needs of a Python.
  *
  *     # comment
- *     version = 3.11
- *     library = /path/libpython3.11.so.1.0
- *     home = /path                   (sys.base_prefix)
- *     executable = /path/bin/python3.11
- *     path = /path/lib/python3.11    (one line per entry, in order)
+ *     minimum = 3.10                 (the oldest CPython the FMU's code runs on)
+ *     version = 3.11                 (the build's; preferred on a machine with several)
+ *     library = /path/libpython3.11.so.1.0   \  optional hint: the build's Python,
+ *     home = /path                            > tried first where it still exists;
+ *     path = /path/lib/python3.11            /  one 'path' line per entry, in order
  *
- * Environment variables named in loader.h override library, home and path, for
- * an FMU moved to a machine where the Python lives elsewhere.
+ * The environment variables named in loader.h name the user's Python instead.
  */
 #include "loader.h"
 
@@ -66,10 +65,26 @@ static void copy(char *field, size_t size, const char *value)
     snprintf(field, size, "%s", value);
 }
 
-static void append_path(struct runtime_record *record, const char *entry)
+static void append_path(struct python_location *python, const char *entry)
 {
-    size_t used = strlen(record->path);
-    snprintf(record->path + used, sizeof record->path - used, "%s%s", used ? ":" : "", entry);
+    size_t used = strlen(python->path);
+    snprintf(python->path + used, sizeof python->path - used, "%s%s", used ? ":" : "", entry);
+}
+
+/* "3.11" -> 11; -1 for anything that is not a Python 3 version. */
+static int minor_of(const char *version)
+{
+    int major, minor;
+    char end;
+    return sscanf(version, "%d.%d%c", &major, &minor, &end) == 2 && major == 3 && minor >= 0
+        ? minor : -1;
+}
+
+static void from_environment(const char *name, char *field, size_t size)
+{
+    const char *value = getenv(name);
+    if (value && *value)
+        copy(field, size, value);
 }
 
 int read_runtime_record(const char *resources, struct runtime_record *record,
@@ -84,34 +99,35 @@ int read_runtime_record(const char *resources, struct runtime_record *record,
                  name, strerror(errno));
         return -1;
     }
-    char line[8192];
+    char line[8192], minimum[16] = "", version[16] = "";
     while (fgets(line, sizeof line, file)) {
         char *text = trim(line), *equals = strchr(text, '=');
         if (!*text || *text == '#' || !equals)
             continue;
         *equals = '\0';
         char *key = trim(text), *value = trim(equals + 1);
-        if (strcmp(key, "version") == 0)
-            copy(record->version, sizeof record->version, value);
+        struct python_location *build = &record->build;
+        if (strcmp(key, "minimum") == 0)
+            copy(minimum, sizeof minimum, value);
+        else if (strcmp(key, "version") == 0)
+            copy(version, sizeof version, value);
         else if (strcmp(key, "library") == 0)
-            copy(record->library, sizeof record->library, value);
+            copy(build->library, sizeof build->library, value);
         else if (strcmp(key, "home") == 0)
-            copy(record->home, sizeof record->home, value);
-        else if (strcmp(key, "executable") == 0)
-            copy(record->executable, sizeof record->executable, value);
+            copy(build->home, sizeof build->home, value);
         else if (strcmp(key, "path") == 0)
-            append_path(record, value);
+            append_path(build, value);
     }
     fclose(file);
-    const char *library = getenv(ENV_LIBRARY), *home = getenv(ENV_HOME), *path = getenv(ENV_PATH);
-    if (library && *library)
-        copy(record->library, sizeof record->library, library);
-    if (home && *home)
-        copy(record->home, sizeof record->home, home);
-    if (path && *path)
-        copy(record->path, sizeof record->path, path);
-    if (!record->version[0]) {
-        snprintf(error, size, "%s has no 'version' line: the FMU is incomplete, rebuild it", name);
+    struct python_location *user = &record->user;
+    from_environment(ENV_LIBRARY, user->library, sizeof user->library);
+    from_environment(ENV_HOME, user->home, sizeof user->home);
+    from_environment(ENV_PATH, user->path, sizeof user->path);
+    record->minimum_minor = minor_of(minimum);
+    record->build_minor = version[0] ? minor_of(version) : record->minimum_minor;
+    if (record->minimum_minor < 0 || record->build_minor < 0) {
+        snprintf(error, size, "%s has no valid 'minimum' (%s) or 'version' (%s) line: the FMU "
+                 "is incomplete, rebuild it", name, minimum, version);
         return -1;
     }
     return 0;

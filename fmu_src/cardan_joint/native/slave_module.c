@@ -11,10 +11,23 @@
 #include <stdio.h>
 #include <string.h>
 
+/* No Python.h (see python_runtime.c): the few types and prototypes used here,
+ * one ABI for CPython 3.10-3.13. */
+typedef struct _object PyObject;
+typedef int PyGILState_STATE; /* an enum in Python.h */
+#define PY_FILE_INPUT 257    /* PY_FILE_INPUT, the same in every CPython 3 */
+
 #define IMPORT_FUNCTIONS(X)                                                              \
-    X(PyGILState_Ensure) X(PyGILState_Release) X(PyDict_New) X(PyEval_GetBuiltins)      \
-    X(PyDict_SetItemString) X(PyDict_GetItemString) X(PyUnicode_DecodeFSDefault)        \
-    X(PyUnicode_FromString) X(PyRun_String) X(PyUnicode_AsUTF8) X(Py_DecRef) X(PyErr_Clear)
+    X(PyGILState_STATE, PyGILState_Ensure, (void))                                       \
+    X(void, PyGILState_Release, (PyGILState_STATE)) X(PyObject *, PyDict_New, (void))    \
+    X(PyObject *, PyEval_GetBuiltins, (void))                                            \
+    X(int, PyDict_SetItemString, (PyObject *, const char *, PyObject *))                 \
+    X(PyObject *, PyDict_GetItemString, (PyObject *, const char *))                      \
+    X(PyObject *, PyUnicode_DecodeFSDefault, (const char *))                             \
+    X(PyObject *, PyUnicode_FromString, (const char *))                                  \
+    X(PyObject *, PyRun_String, (const char *, int, PyObject *, PyObject *))             \
+    X(const char *, PyUnicode_AsUTF8, (PyObject *)) X(void, Py_DecRef, (PyObject *))     \
+    X(void, PyErr_Clear, (void))
 
 static const char CHECK[] =
     "import sys, importlib\n"
@@ -50,10 +63,11 @@ int slave_module_imports(const char *resources, char *error, size_t size)
     char module[256];
     if (read_module_name(resources, module, sizeof module, error, size))
         return -1;
-#define DECLARE(name) __typeof__(&name) p_##name = (__typeof__(&name))dlsym(RTLD_DEFAULT, #name);
+#define DECLARE(result, name, parameters)                                                 \
+    result(*p_##name) parameters = (result(*) parameters)dlsym(RTLD_DEFAULT, #name);
     IMPORT_FUNCTIONS(DECLARE)
 #undef DECLARE
-#define MISSING(name) !p_##name ||
+#define MISSING(result, name, parameters) !p_##name ||
     if (IMPORT_FUNCTIONS(MISSING) 0) {
         snprintf(error, size, "the process's Python lacks a function the loader needs");
         return -1;
@@ -65,7 +79,7 @@ int slave_module_imports(const char *resources, char *error, size_t size)
     if (globals && path && name && !p_PyDict_SetItemString(globals, "resources", path) &&
         !p_PyDict_SetItemString(globals, "module", name) &&
         !p_PyDict_SetItemString(globals, "__builtins__", p_PyEval_GetBuiltins()))
-        result = p_PyRun_String(CHECK, Py_file_input, globals, globals);
+        result = p_PyRun_String(CHECK, PY_FILE_INPUT, globals, globals);
     PyObject *problem = result && globals ? p_PyDict_GetItemString(globals, "problem") : NULL;
     const char *text = problem ? p_PyUnicode_AsUTF8(problem) : "the check itself failed";
     int failed = !text || *text;
