@@ -9,7 +9,7 @@ from pathlib import Path
 from types import ModuleType
 
 import pytest
-from c_host.compile import compile_host
+from c_host.compile import compile_host, compile_host3
 from hypothesis import settings
 
 # Local runs explore new examples each time; CI replays a fixed set so that a
@@ -62,6 +62,12 @@ def load_example(name: str) -> ModuleType:
 def c_host(tmp_path_factory) -> Path:
     """tests/c_host compiled: a plain C FMI host (dlopen RTLD_LOCAL, no Python)."""
     return compile_host(tmp_path_factory.mktemp("c_host") / "host")
+
+
+@pytest.fixture(scope="session")
+def c_host3(tmp_path_factory) -> Path:
+    """tests/c_host/host3.c compiled: the same plain host for FMI 3.0."""
+    return compile_host3(tmp_path_factory.mktemp("c_host3") / "host3")
 
 
 @pytest.fixture(scope="session")

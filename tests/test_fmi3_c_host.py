@@ -11,15 +11,9 @@ from pathlib import Path
 
 import numpy as np
 import pytest
-from c_host.compile import compile_host3
 from test_c_host import EMPTY_ENVIRONMENT, run_host
 
 from cardan_joint.native import fmi3_headers
-
-
-@pytest.fixture(scope="session")
-def c_host3(tmp_path_factory):
-    return compile_host3(tmp_path_factory.mktemp("c_host3") / "host3")
 
 
 def broken_copy(fmi3_unzipped, tmp_path, break_it) -> Path:

@@ -23,21 +23,12 @@ from test_c_host import (
     STEPS,
     assert_csv_equals,
     fmpy_reference,
+    run_host,
 )
 
 PYENV = Path("/root/.pyenv")
 MULTIARCH = Path("/usr/lib/x86_64-linux-gnu")
 STDLIB_HOST = Path(__file__).resolve().parent / "c_host" / "stdlib_host.py"
-NUMPY_REASON = "needs the runtime branch: the FMU's code still imports numpy"
-
-
-class NumpyMissing(Exception):
-    """The run failed only because the machine's Python has no numpy."""
-
-
-def fails_only_for_numpy(run) -> None:
-    if "No module named 'numpy'" in run.stderr:
-        raise NumpyMissing(run.stderr[-500:])
 
 
 def pyenv_cpython(minor: int) -> Path:
@@ -132,17 +123,18 @@ def run_on(script: Path, *command) -> subprocess.CompletedProcess:
 
 MACHINES = {
     "Debian 12 with only its own Python 3.11": dict(debian_python=True),
+    "only a distribution's CPython 3.10": dict(debian_python=False, distribution=(10,)),
     "only a distribution's CPython 3.12": dict(debian_python=False, distribution=(12,)),
     "only a distribution's CPython 3.13": dict(debian_python=False, distribution=(13,)),
 }
 STARTED = {  # what the loader must have started on each machine
     "Debian 12 with only its own Python 3.11": "Python 3.11.2 from ",
+    "only a distribution's CPython 3.10": f"Python 3.10.13 from {MULTIARCH}/libpython3.10.so.1.0",
     "only a distribution's CPython 3.12": f"Python 3.12.1 from {MULTIARCH}/libpython3.12.so.1.0",
     "only a distribution's CPython 3.13": f"Python 3.13.0 from {MULTIARCH}/libpython3.13.so.1.0",
 }
 
 
-@pytest.mark.xfail(strict=True, raises=NumpyMissing, reason=NUMPY_REASON)
 @pytest.mark.parametrize("case", MACHINES)
 def test_a_c_host_on_another_machine_equals_fmpy(
     namespaces, c_host, unzipped_fmu, reference, tmp_path, case
@@ -151,25 +143,23 @@ def test_a_c_host_on_another_machine_equals_fmpy(
     run = run_on(script, c_host, HOST_RUN[0], unzipped_fmu, *HOST_RUN[1:])
     if "instance NULL" in run.stdout or run.returncode:
         assert STARTED[case] in run.stderr, run.stderr[-2000:]  # the machine's Python ran
-        fails_only_for_numpy(run)
     assert run.returncode == 0, run.stderr[-2000:]
     assert_csv_equals(run.stdout, reference)
 
 
-@pytest.mark.parametrize("minor", [10, 12, 13])
-def test_one_loader_starts_each_cpython_laid_out_by_a_distribution(
-    namespaces, fmpy_in, c_host, unzipped_fmu, reference, tmp_path, minor
+def test_the_fmi3_fmu_on_the_3_12_machine_equals_its_run_here(
+    namespaces, c_host3, fmi3_unzipped, tmp_path
 ):
-    """Until the FMU's code needs no numpy, the user's path adds a numpy built for
-    that Python (FMPy's venv): the loader built with 3.11 starts 3.10, 3.12, 3.13."""
-    (site,) = fmpy_in(minor).parents[1].glob("lib/python3.*/site-packages")
-    stdlib = f"/usr/lib/python3.{minor}"
-    path = {"CARDAN_JOINT_FMU_PYTHON_PATH": f"{stdlib}:{stdlib}/lib-dynload:{site}"}
-    script = machine(tmp_path, debian_python=False, distribution=(minor,))
-    variables = [f"{name}={value}" for name, value in path.items()]
-    run = run_on(script, "env", *variables, c_host, HOST_RUN[0], unzipped_fmu, *HOST_RUN[1:])
-    assert run.returncode == 0, run.stderr[-2000:]
-    assert_csv_equals(run.stdout, reference)
+    """The FMI 3.0 loader finds the machine's Python as the FMI 2.0 one does; its run
+    here equals FMPy's to 1e-12 (tests/test_fmi3_c_host.py)."""
+    script = machine(tmp_path, **MACHINES["only a distribution's CPython 3.12"])
+    there = run_on(script, c_host3, HOST_RUN[0], fmi3_unzipped, *HOST_RUN[1:])
+    assert there.returncode == 0 and "instance NULL" not in there.stdout, there.stderr[-2000:]
+    here = run_host(c_host3, HOST_RUN[0], fmi3_unzipped, *HOST_RUN[1:])
+    assert there.stdout.splitlines()[0] == here.stdout.splitlines()[0]
+    ours, theirs = (np.loadtxt(r.stdout.splitlines()[1:], delimiter=",") for r in (there, here))
+    assert ours.shape == theirs.shape and len(ours) == STEPS + 1
+    np.testing.assert_allclose(ours, theirs, rtol=1e-12, atol=0)
 
 
 CHOICES = {
@@ -208,17 +198,20 @@ def test_the_machines_python_is_chosen_in_order(namespaces, c_host, unzipped_fmu
     assert chosen.endswith(library), (chosen, library)
 
 
-def test_with_no_python_on_the_machine_instantiate_says_so(
-    namespaces, c_host, unzipped_fmu, tmp_path
-):
+@pytest.mark.parametrize("fmi", [2, 3])
+def test_with_no_python_on_the_machine_instantiate_says_so(namespaces, request, tmp_path, fmi):
+    host, fmu = (
+        (request.getfixturevalue("c_host"), request.getfixturevalue("unzipped_fmu"))
+        if fmi == 2
+        else (request.getfixturevalue("c_host3"), request.getfixturevalue("fmi3_unzipped"))
+    )
     script = machine(tmp_path, debian_python=False)
-    run = run_on(script, c_host, "instantiate", unzipped_fmu)
+    run = run_on(script, host, "instantiate", fmu)
     assert run.returncode == 0 and "instance NULL logger_calls 1" in run.stdout, run.stderr
     for words in ("no Python for this FMU", "/etc/ld.so.cache", "CARDAN_JOINT_FMU_PYTHON_LIBRARY"):
         assert words in run.stderr, (words, run.stderr)
 
 
-@pytest.mark.xfail(strict=True, raises=NumpyMissing, reason=NUMPY_REASON)
 def test_a_python_without_numpy_hosts_it(unzipped_fmu, reference):
     """Debian's /usr/bin/python3.11 has no numpy (and links libpython statically)."""
     python = Path("/usr/bin/python3.11")
@@ -234,7 +227,6 @@ def test_a_python_without_numpy_hosts_it(unzipped_fmu, reference):
         env=EMPTY_ENVIRONMENT,
         timeout=300,
     )
-    fails_only_for_numpy(run)
     assert run.returncode == 0 and "instance NULL" not in run.stdout, run.stderr[-2000:]
     values = dict(line.split("=") for line in run.stdout.splitlines())
     for name in ("output_angle", "output_speed", "input_torque"):
