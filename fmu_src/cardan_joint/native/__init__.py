@@ -60,6 +60,8 @@ def fmi3_headers() -> Path:
     from importlib.metadata import distribution
 
     return Path(str(distribution("pythonfmu3").locate_file("pythonfmu3/pythonfmu-export/src/fmi")))
+
+
 MINIMUM_PYTHON = (3, 10)  # the oldest CPython the FMU's code and the loader support
 
 
