@@ -34,6 +34,7 @@ class FastStep:
     _model: Any
     _outputs: tuple | None
     _inputs_checked: bool
+    _inputs_held: tuple
     _step: Callable[[float, float], Any]
     _current_outputs: Callable[[], tuple]
     _fault: Callable[[str, BaseException], None]
@@ -74,12 +75,17 @@ class FastStep:
         status = self._step(current_time, step_size)
         if status != self._STATUS.ok:
             return status
-        # A taken step moves the inputs that are polynomial over it (the speed, the
-        # bend angle and rate): getReal of an input then reads the moved value.
-        status = self.fast_store(known)
-        if status != self._STATUS.ok:
-            return status
-        return self._write_outputs(outputs, "fast_step")
+        status = self._write_outputs(outputs, "fast_step")
+        try:
+            # A taken step moves the inputs that are polynomial over it (the speed,
+            # the bend angle and rate): getReal of an input reads the moved value,
+            # and the next step starts from it. The outputs' evaluation has just
+            # read them (`_inputs_held`).
+            self._refs.pack_inputs(known, 0, *self._inputs_held)
+        except Exception as error:
+            self._fault("fast_step", error)
+            return self._STATUS.error
+        return status
 
     def fast_outputs(self, known, outputs) -> int:
         """Inputs from `known`, then every output into `outputs` without stepping

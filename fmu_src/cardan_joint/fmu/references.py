@@ -47,6 +47,7 @@ class References:
         self.all_outputs = list(range(self.first_output, len(self.names)))
         # The one-call step's buffers (`fast_step`), in native-order doubles.
         self.known_of = _values_of(self.known)
+        self.pack_inputs = struct.Struct(f"={len(table.INPUTS)}d").pack_into
         self.pack_known = struct.Struct(f"={len(self.known)}d").pack_into
         self.pack_outputs = struct.Struct(f"={len(table.OUTPUTS)}d").pack_into
 
