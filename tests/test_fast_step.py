@@ -30,19 +30,31 @@ def bits(values):
     return [struct.pack("=d", v) for v in values]
 
 
+def buffer(count, kind):
+    """`count` doubles as the loader shares them: a memoryview of doubles, or of
+    bytes (what C's PyMemoryView_FromMemory gives)."""
+    if kind == "doubles":
+        return memoryview(array("d", [math.nan] * count))
+    return memoryview(bytearray(struct.pack(f"={count}d", *[math.nan] * count)))
+
+
+def doubles(view):
+    return list(struct.unpack_from(f"={view.nbytes // 8}d", view))
+
+
 class Loader:
     """What the native loader does with a slave: its values in two C arrays."""
 
-    def __init__(self, slave):
+    def __init__(self, slave, kind="doubles"):
         self.slave = slave
         layout = slave.fast_layout()
-        self.known = memoryview(array("d", [math.nan] * layout["known_size"]))
-        self.outputs = memoryview(array("d", [math.nan] * layout["outputs"]))
+        self.known = buffer(layout["known_size"], kind)
+        self.outputs = buffer(layout["outputs"], kind)
         self.fresh = False  # the outputs buffer holds the current outputs
         assert slave.fast_store(self.known) == Fmi2Status.ok
 
     def set_inputs(self, values):
-        self.known[: len(values)] = array("d", values)
+        struct.pack_into(f"={len(values)}d", self.known, 0, *values)
         self.fresh = False
 
     def step(self, time, step_size):
@@ -53,7 +65,7 @@ class Loader:
     def read(self):
         if not self.fresh:
             self.fresh = self.slave.fast_outputs(self.known, self.outputs) == Fmi2Status.ok
-        return list(self.outputs)
+        return doubles(self.outputs)
 
 
 def messages(slave):
@@ -83,14 +95,15 @@ def initialized(cls):
     return slave
 
 
+@pytest.mark.parametrize("kind", ["doubles", "bytes"])
 @pytest.mark.parametrize("cls", SLAVES, ids=lambda cls: cls.__name__)
-def test_the_one_call_step_gives_the_normal_paths_outputs_statuses_and_messages(cls):
+def test_the_one_call_step_gives_the_normal_paths_outputs_statuses_and_messages(cls, kind):
     rng = random.Random(21)
     normal, fast = initialized(cls), initialized(cls)
-    loader = Loader(fast)
+    loader = Loader(fast, kind)
     refs, table = normal._refs, normal.table
     known = list(range(refs.first_output))
-    assert bits(loader.known) == bits(normal.get_real(known))
+    assert bits(doubles(loader.known)) == bits(normal.get_real(known))
     parameter = refs.first_output - 1  # set after initialization: ignored with an error
     saved = {}
     time = 0.0
@@ -119,7 +132,7 @@ def test_the_one_call_step_gives_the_normal_paths_outputs_statuses_and_messages(
             loader.fresh = False
             time = normal._model.time
         assert messages(fast) == messages(normal), step
-    assert bits(loader.known) == bits(normal.get_real(list(range(refs.first_output))))
+    assert bits(doubles(loader.known)) == bits(normal.get_real(list(range(refs.first_output))))
     # The run went through taken and refused steps, held outputs and the ignored parameter.
     logged = {status for status, _ in messages(normal)}
     assert outcomes[True] > 50 and outcomes[False] > 5, outcomes
@@ -130,11 +143,11 @@ def test_a_refused_step_writes_no_outputs_and_held_outputs_are_not_kept():
     slave = initialized(CardanJointSlave)
     loader = Loader(slave)
     assert loader.step(0.0, STEP) == Fmi2Status.ok
-    taken = list(loader.outputs)
+    taken = doubles(loader.outputs)
     bend = slave._refs.names.index("bend_angle")
     loader.known[bend] = 1.5  # beyond the 80 deg guard
     assert slave.fast_step(STEP, STEP, loader.known, loader.outputs) == Fmi2Status.discard
-    assert bits(loader.outputs) == bits(taken)
+    assert bits(doubles(loader.outputs)) == bits(taken)
     assert slave._model.time == STEP
     # Held at the last valid inputs, and said so at every read, as getReal does.
     for reads in (1, 2):

@@ -1,22 +1,48 @@
 """The one-call step: what the native loader calls once per doStep instead of
-setReal, doStep and getReal (issue 21).
+setReal, doStep and getReal (issue 21). This docstring is the protocol the
+loader's C side follows.
 
-The loader keeps each instance's values in two buffers of C doubles that it
-shares with the slave (any writable buffer of doubles: a memoryview, an
-array('d')), laid out by flat index as `References.layout` describes: the
-*known* buffer holds the inputs then the parameters (flat indices 0 to
-first_output - 1), the *output* buffer every output (flat index first_output + k
-in slot k). The loader writes inputs into the known buffer in C; these methods
-take them from there, step, and write every output at once, with the same
-statuses, refusals, held outputs and messages as setReal, doStep and getReal.
+Buffers. Per instance the loader owns two arrays of C doubles, sized and
+indexed by `fast_layout()` (a class method: `References.layout`), and hands
+them to these methods as writable buffers (PyMemoryView_FromMemory with
+PyBUF_WRITE, created once per instance; bytes or doubles format alike: the
+slave reads and writes native-order doubles through struct and keeps no
+reference after a call):
+- known[known_size]: flat index i in slot i: inputs (0 to inputs - 1), then
+  parameters (inputs to known_size - 1);
+- outputs[outputs]: flat index first_output + k in slot k.
+Flat indices are the FMI 2 value references; an FMI 3 loader maps its value
+references onto them as `slave3._FLAT` does (time and arrays aside).
 
-Statuses are the FMI version's own (ok 0, warning 1, discard 2, error 3):
-`fast_step` writes the outputs (and the inputs the step moved) only when it
-returns ok (after a refused step they are read as after a write, see
-`fast_outputs`); `fast_outputs` returns
-warning when the outputs it wrote are held at the last valid inputs, which,
-like getReal, it re-evaluates and reports at every read until the inputs are
-valid, so the loader must not keep them.
+Calls (statuses are the FMI version's own IntEnum: ok 0, warning 1, discard 2,
+error 3; each call logs through the slave as any other call does, so the
+loader forwards the log queue after it as after pythonfmu's calls):
+- fast_store(known): writes every input and parameter into known. Call it
+  after instantiation and after every call into the slave that can change
+  them: a setReal forwarded to Python, exitInitializationMode, set or
+  deserialized FMU state, reset.
+- fast_load(known): takes the inputs (not the parameters) from known, as a
+  setReal of every input would. Call it before every other call into the
+  slave when an input was written since the last fast_* call (FMU state get,
+  a forwarded setReal, terminate...), so the slave sees the host's inputs.
+- fast_step(t, h, known, outputs): takes the inputs, steps; on ok it writes
+  every output and the inputs the step moved (speed, bend angle and rate
+  advance over a step: a later getReal of them, or the next step, reads the
+  moved value). On discard (refused: the slave keeps its state and has logged
+  variable, value, limit and time) or error nothing is written.
+- fast_outputs(known, outputs): takes the inputs and writes every output
+  without stepping. ok: the outputs are current until the next input write
+  or call into the slave; warning: they are held at the last valid inputs and
+  the slave has warned; getReal warns again at every read, so the loader keeps
+  them stale (and answers fmi2OK, as getReal does); error: a fault, logged.
+
+In C. setReal of inputs only: write known, mark outputs stale. Any other
+setReal: fast_load if needed, forward to Python, fast_store. getReal: if the
+outputs are stale, fast_outputs first (even for a read of inputs only: getReal
+evaluates the outputs, and warns, whatever it is asked); then known and
+outputs serve every index below first_output + outputs, anything else is
+forwarded (the slave reports it). doStep: fast_step; outputs fresh on ok,
+stale otherwise.
 """
 
 from collections.abc import Callable
@@ -48,7 +74,7 @@ class FastStep:
         """Take every input from the known buffer, as setReal of all inputs does
         (parameters are not read: they are set through setReal, see layout)."""
         model = self._model
-        for name, value in zip(self.table.INPUTS, known):
+        for name, value in zip(self.table.INPUTS, self._refs.unpack_inputs(known)):
             setattr(model, name, value)
         self._outputs = None
         self._inputs_checked = False

@@ -45,9 +45,12 @@ class References:
         # What FMPy and most masters pass every step: all inputs, all outputs, in order.
         self.all_inputs = list(self.inputs)
         self.all_outputs = list(range(self.first_output, len(self.names)))
-        # The one-call step's buffers (`fast_step`), in native-order doubles.
+        # The one-call step's buffers (`fast_step`): native-order doubles read and
+        # written through struct, so any writable buffer serves, whatever its
+        # format (a C loader's PyMemoryView_FromMemory gives bytes).
         self.known_of = _values_of(self.known)
-        self.pack_inputs = struct.Struct(f"={len(table.INPUTS)}d").pack_into
+        inputs = struct.Struct(f"={len(table.INPUTS)}d")
+        self.unpack_inputs, self.pack_inputs = inputs.unpack_from, inputs.pack_into
         self.pack_known = struct.Struct(f"={len(self.known)}d").pack_into
         self.pack_outputs = struct.Struct(f"={len(table.OUTPUTS)}d").pack_into
 
