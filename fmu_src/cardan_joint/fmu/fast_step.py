@@ -99,37 +99,31 @@ class FastStep:
             self._fault("fast_step", error)
             return self._STATUS.error
         status = self._step(current_time, step_size)
-        if status != self._STATUS.ok:
+        if status:  # refused or faulted (ok is 0 in both FMI versions' statuses)
             return status
-        status = self._write_outputs(outputs, "fast_step")
         try:
+            # Inputs checked by the step: the outputs are evaluated and cached.
+            refs = self._refs
+            refs.pack_outputs(outputs, 0, *self._current_outputs())
             # A taken step moves the inputs that are polynomial over it (the speed,
             # the bend angle and rate): getReal of an input reads the moved value,
-            # and the next step starts from it. The outputs' evaluation has just
-            # read them (`_inputs_held`).
-            self._refs.pack_inputs(known, 0, *self._inputs_held)
+            # and the next step starts from it. The evaluation has just read them.
+            refs.pack_inputs(known, 0, *self._inputs_held)
+            return status
         except Exception as error:
             self._fault("fast_step", error)
             return self._STATUS.error
-        return status
 
     def fast_outputs(self, known, outputs) -> int:
         """Inputs from `known`, then every output into `outputs` without stepping
         (a read after a write of an input: direct feedthrough)."""
         try:
             self.fast_load(known)
-        except Exception as error:
-            self._fault("fast_outputs", error)
-            return self._STATUS.error
-        return self._write_outputs(outputs, "fast_outputs")
-
-    def _write_outputs(self, outputs, where: str) -> int:
-        try:
             values = self._outputs or self._current_outputs()
             self._refs.pack_outputs(outputs, 0, *values)
             # Held outputs are not cached (`_current_outputs`): the next read
             # re-evaluates and warns again, as getReal does.
             return self._STATUS.ok if self._outputs is not None else self._STATUS.warning
         except Exception as error:
-            self._fault(where, error)
+            self._fault("fast_outputs", error)
             return self._STATUS.error
