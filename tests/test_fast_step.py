@@ -176,3 +176,30 @@ def test_the_layout_is_the_flat_index_and_the_same_for_fmi3():
     assert layout["names"][layout["first_output"] :] == list(table.OUTPUTS)
     assert layout["inputs"] == len(table.INPUTS) == 6 and layout["outputs"] == len(table.OUTPUTS)
     assert CardanJointSlave3.fast_layout() == layout
+
+
+def test_the_fmi3_slave_steps_the_same_through_the_one_call_step():
+    from pythonfmu3.enums import Fmi3Status
+
+    def started():
+        slave = CardanJointSlave3(instance_name="fast3")
+        slave.enter_initialization_mode()
+        slave.exit_initialization_mode()
+        return slave
+
+    rng = random.Random(3)
+    normal, fast = started(), started()
+    loader = Loader(fast)
+    refs, table = normal._refs, normal.table
+    statuses = set()
+    for step in range(60):
+        inputs = random_inputs(rng, table)
+        normal._set_flat(refs.all_inputs, inputs, "fmi3SetFloat64")
+        loader.set_inputs(inputs)
+        status = loader.step(step * STEP, STEP)
+        assert status == normal.do_step(step * STEP, STEP).status
+        assert isinstance(status, Fmi3Status)
+        statuses.add(status)
+        assert bits(loader.read()) == bits(normal._get_flat(refs.all_outputs)), step
+        assert messages(fast) == messages(normal), step
+    assert statuses == {Fmi3Status.ok, Fmi3Status.discard}
