@@ -166,6 +166,9 @@ def test_an_internal_fault_is_an_error_status_with_a_message():
     assert "internal error in fast_step" in slave.log_queue[-1].msg
     assert slave.fast_step(0.0, STEP, None, loader.outputs) == Fmi2Status.error
     assert slave.fast_store(outputs) == Fmi2Status.error
+    assert slave.fast_load(None) == Fmi2Status.error
+    assert "internal error in fast_load" in slave.log_queue[-1].msg
+    assert slave.fast_load(loader.known) == Fmi2Status.ok
 
 
 def test_the_layout_is_the_flat_index_and_the_same_for_fmi3():

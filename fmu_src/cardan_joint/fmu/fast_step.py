@@ -70,9 +70,17 @@ class FastStep:
         """The buffers' layout, for the loader to size and index its arrays."""
         return cls._refs.layout()
 
-    def fast_load(self, known) -> None:
+    def fast_load(self, known) -> int:
         """Take every input from the known buffer, as setReal of all inputs does
         (parameters are not read: they are set through setReal, see layout)."""
+        try:
+            self._take_inputs(known)
+            return self._STATUS.ok
+        except Exception as error:
+            self._fault("fast_load", error)
+            return self._STATUS.error
+
+    def _take_inputs(self, known) -> None:
         model = self._model
         for name, value in zip(self.table.INPUTS, self._refs.unpack_inputs(known)):
             setattr(model, name, value)
@@ -94,7 +102,7 @@ class FastStep:
         """Inputs from `known`, one step, every output into `outputs` when the step
         is taken (status ok); otherwise the status of the refusal or fault."""
         try:
-            self.fast_load(known)
+            self._take_inputs(known)
         except Exception as error:
             self._fault("fast_step", error)
             return self._STATUS.error
@@ -118,9 +126,8 @@ class FastStep:
         """Inputs from `known`, then every output into `outputs` without stepping
         (a read after a write of an input: direct feedthrough)."""
         try:
-            self.fast_load(known)
-            values = self._outputs or self._current_outputs()
-            self._refs.pack_outputs(outputs, 0, *values)
+            self._take_inputs(known)
+            self._refs.pack_outputs(outputs, 0, *self._current_outputs())
             # Held outputs are not cached (`_current_outputs`): the next read
             # re-evaluates and warns again, as getReal does.
             return self._STATUS.ok if self._outputs is not None else self._STATUS.warning
