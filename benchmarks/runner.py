@@ -9,7 +9,9 @@ Measures, each in its module, and writes benchmarks/results.md:
 2. `accuracy`: against Tătaru's numerical method (the seed's ODE under RK4);
 3. `vectorized`: `joint_response` on numpy arrays against a scalar loop;
 4. `growth`: per-step cost and memory as the run grows;
-5. `c_host`: the same step in a C host against FMPy's loop.
+5. `c_host`: the same step in a C host against FMPy's loop;
+6. `one_call`: the joint against the plain floor in each host (issue 21's
+   goals) and the joint's Python alone (physics, slave, one-call step).
 
 Not part of the test run: tests/test_benchmarks_smoke.py only checks that
 `--quick` writes the tables.
@@ -29,6 +31,7 @@ from .accuracy import accuracy, accuracy_rows, accuracy_table, worker_accuracy
 from .c_host import c_host_cost, c_host_rows
 from .floor import FLOORS, build_floor_fmu, build_joint_fmu, unzip
 from .growth import growth, growth_rows, growth_table, worker_tracemalloc
+from .one_call import one_call_rows, python_step, worker_python_step
 from .step_cost import (
     LOOP_CHUNK,
     SIMULATE_CHUNK,
@@ -85,6 +88,7 @@ WORKERS = {
     "vector": worker_vector,
     "scalar": worker_scalar,
     "trigonometry": worker_trigonometry,
+    "python_step": worker_python_step,
 }
 
 
@@ -106,6 +110,7 @@ def summary_table(results, sizes):
             *vector_rows(results["vector"], sizes),
             *growth_rows(results["growth"]),
             *c_host_rows(results["c_host"], sizes),
+            *one_call_rows(results["python"], results["cost"], results["c_host"], sizes),
         ]
     )
 
@@ -161,6 +166,7 @@ def run_all(sizes, joint_fmu, workdir):
         "vector": vectorized(sizes),
         "growth": growth(fmus, sizes, cost),
         "c_host": c_host_cost(fmus, sizes, workdir),
+        "python": python_step(sizes),
     }
 
 

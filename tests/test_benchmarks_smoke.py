@@ -22,6 +22,10 @@ SUMMARY_ROWS = (
     "| 3. ceiling: the array path's 5 trigonometric calls alone",
     "| 4. FMU2Slave loop per step at",
     "| 4. memory:",
+    "| 5. C host (tests/c_host, empty environment) vs FMPy low-level loop,",
+    "| 6. C host: joint vs plain floor in the same host",
+    "| 6. FMPy loop: joint vs plain floor",
+    "| 6. the joint's Python per step, no host,",
 )
 
 

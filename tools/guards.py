@@ -21,12 +21,14 @@ MODEL = "fmu_src/cardan_joint/physics/model.py"
 VALUES = "fmu_src/cardan_joint/physics/values.py"
 SLAVE = "fmu_src/cardan_joint/fmu/slave.py"
 CORE = "fmu_src/cardan_joint/fmu/core.py"
+FAST_STEP = "fmu_src/cardan_joint/fmu/fast_step.py"
 GUARDS = "tests/test_guards.py"
 SLAVE_GUARDS = "tests/test_slave_guards.py"
 ROBUSTNESS = "tests/test_robustness.py"
 COMPLIANT = "fmu_src/cardan_joint/physics/compliant.py"
 COMPLIANT_TESTS = "tests/test_compliant_joint.py"
 INERTIA_LOAD = "fmu_src/cardan_joint/physics/inertia_load.py"
+FAST_STEP_TESTS = "tests/test_fast_step.py"
 
 
 @dataclass(frozen=True)
@@ -366,6 +368,35 @@ MUTATIONS = (
         'return {"invalid_state": reason}',
         "raise",
         (SLAVE_GUARDS, "-k", "state"),
+    ),
+    # The one-call step (issue 21): what the native loader may keep of its buffers.
+    Mutation(
+        "one-call step: a refused step writes no outputs",
+        FAST_STEP,
+        "        if status:  # refused or faulted",
+        "        if False:  # refused or faulted",
+        (FAST_STEP_TESTS, "-k", "refused_step or normal_paths"),
+    ),
+    Mutation(
+        "one-call step: the inputs a step moved are written back",
+        FAST_STEP,
+        "            refs.pack_inputs(known, 0, *self._inputs_held)\n",
+        "            pass\n",
+        (FAST_STEP_TESTS, "-k", "normal_paths"),
+    ),
+    Mutation(
+        "one-call step: held outputs are not kept",
+        FAST_STEP,
+        "return self._STATUS.ok if self._outputs is not None else self._STATUS.warning",
+        "return self._STATUS.ok",
+        (FAST_STEP_TESTS, "-k", "refused_step or normal_paths"),
+    ),
+    Mutation(
+        "one-call step: a read after an input write checks the inputs",
+        FAST_STEP,
+        "        self._outputs = None\n        self._inputs_checked = False\n",
+        "        self._outputs = None\n",
+        (FAST_STEP_TESTS, "-k", "normal_paths"),
     ),
     # The build, called as a library: the caller's sys.modules as it was.
     Mutation(

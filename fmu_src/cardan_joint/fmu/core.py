@@ -22,6 +22,7 @@ from typing import Any
 from .. import __version__
 from .. import variables as joint_table
 from ..physics.model import CardanJoint
+from .fast_step import FastStep
 from .references import References
 
 
@@ -31,7 +32,7 @@ def _readable(seconds: float) -> str:
     return repr(float(f"{seconds:.12g}"))
 
 
-class SlaveCore:
+class SlaveCore(FastStep):
     author = "Cardan joint FMU team"
     license = "MIT"
     version = __version__

@@ -3,6 +3,7 @@ parameters, then outputs: the FMI 2 value references) and the log categories
 every FMU of this project declares."""
 
 import math
+import struct
 from operator import attrgetter
 
 
@@ -14,6 +15,12 @@ def log_categories(api: str) -> dict:
         "logStatusFatal": f"Not used: the FMU never ends in {api}Fatal on its own.",
         "logAll": "All messages.",
     }
+
+
+def _values_of(names):
+    """A getter of the tuple of `names`' values (attrgetter gives one name's bare value)."""
+    getter = attrgetter(*names)
+    return getter if len(names) > 1 else lambda model: (getter(model),)
 
 
 class References:
@@ -34,8 +41,32 @@ class References:
         self.output_dependencies = tuple(
             frozenset(table.BY_NAME[n].depends_on) for n in table.OUTPUTS
         )
-        getter = attrgetter(*table.INPUTS)
-        self.inputs_of = getter if len(table.INPUTS) > 1 else lambda model: (getter(model),)
+        self.inputs_of = _values_of(table.INPUTS)
         # What FMPy and most masters pass every step: all inputs, all outputs, in order.
         self.all_inputs = list(self.inputs)
         self.all_outputs = list(range(self.first_output, len(self.names)))
+        # The one-call step's buffers (`fast_step`): native-order doubles read and
+        # written through struct, so any writable buffer serves, whatever its
+        # format (a C loader's PyMemoryView_FromMemory gives bytes).
+        self.known_of = _values_of(self.known)
+        inputs = struct.Struct(f"={len(table.INPUTS)}d")
+        self.unpack_inputs, self.pack_inputs = inputs.unpack_from, inputs.pack_into
+        self.pack_known = struct.Struct(f"={len(self.known)}d").pack_into
+        self.pack_outputs = struct.Struct(f"={len(table.OUTPUTS)}d").pack_into
+
+    def layout(self) -> dict:
+        """The one-call step's buffers (fmu/fast_step.py), by flat index.
+
+        known: `known_size` doubles, flat index i in slot i: the inputs (slots
+        0 to inputs - 1), then the parameters (slots inputs to known_size - 1).
+        outputs: `outputs` doubles, flat index first_output + k in slot k.
+        names: every variable, by flat index (the FMI 2 value reference).
+        """
+        return {
+            "inputs": len(self.inputs),
+            "parameters": self.first_output - len(self.inputs),
+            "known_size": self.first_output,
+            "first_output": self.first_output,
+            "outputs": len(self.names) - self.first_output,
+            "names": list(self.names),
+        }

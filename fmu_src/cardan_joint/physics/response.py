@@ -145,31 +145,33 @@ def _response(
     # near the lock-up, where D -> cos^2 b.
     D = cb * cb + sbs * sbs
     rD = xp.sqrt(D)
+    # Products several terms share, each computed once (the same roundings:
+    # IEEE multiplication is commutative, so w1 sbs is sbs w1 to the bit).
+    ccb = cb * c
+    w1cb = w1 * cb
+    w1sbs = w1 * sbs
+    a1cb = a1 * cb
+    w1rbsb = w1 * rb * sb
 
     # Kinematics. 1 - cos b is written sin^2 b / (1 + cos b) for full relative
     # precision at small bend; the atan's denominator stays positive below
     # 90 deg, so the cardan error never jumps branch.
-    cardan_error = xp.atan(sb * sb / (1.0 + cb) * sc / (cb * c * c + s * s))
+    cardan_error = xp.atan(sb * sb / (1.0 + cb) * sc / (ccb * c + s * s))
     speed_ratio = cb / D
-    w2 = (w1 * cb + rb * sb * sc) / D
-    D_rate = 2.0 * sbc * (sbs * w1 - cb * c * rb)
+    w2 = (w1cb + rb * sb * sc) / D
+    D_rate = 2.0 * sbc * (w1sbs - ccb * rb)
     a2 = (
-        a1 * cb
-        - w1 * rb * sb
-        + ab * sb * sc
-        + rb * rb * cb * sc
-        + rb * w1 * sb * (c - s) * (c + s)
-        - w2 * D_rate
+        a1cb - w1rbsb + ab * sb * sc + rb * rb * cb * sc + w1rbsb * (c - s) * (c + s) - w2 * D_rate
     ) / D
 
     # Crosspiece angular velocity and its rate, components in C.
     W1 = w2 * sbc + rb * s
-    W2 = w1 * sbs / rD
-    W3 = w1 * cb / rD
+    W2 = w1sbs / rD
+    W3 = w1cb / rD
     half_log_rate = 0.5 * D_rate / D
-    dW1 = a2 * sbc + w2 * (cb * rb * c - sbs * w1) + ab * s + rb * c * w1
-    dW2 = (a1 * sbs + w1 * cb * rb * s + w1 * w1 * sbc) / rD - W2 * half_log_rate
-    dW3 = (a1 * cb - w1 * sb * rb) / rD - W3 * half_log_rate
+    dW1 = a2 * sbc + w2 * (cb * rb * c - w1sbs) + ab * s + rb * c * w1
+    dW2 = (a1 * sbs + w1cb * rb * s + w1 * w1 * sbc) / rD - W2 * half_log_rate
+    dW3 = (a1cb - w1 * sb * rb) / rD - W3 * half_log_rate
 
     # Euler's equations and kinetic energy.
     M1 = I1 * dW1 + (I3 - I2) * W2 * W3

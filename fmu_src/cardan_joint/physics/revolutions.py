@@ -24,7 +24,11 @@ class RevolutionAngle(NamedTuple):
 
     def __float__(self) -> float:
         product, product_error, low = _whole_turns(self.turns)
-        total, sum_error = _two_sum(product, self.fraction)
+        # _two_sum(product, fraction), inlined: this runs once per step.
+        fraction = self.fraction
+        total = product + fraction
+        bb = total - product
+        sum_error = (product - (total - bb)) + (fraction - bb)
         return total + (sum_error + product_error + self.fraction_error + low)
 
 
@@ -65,7 +69,10 @@ def _shift(turns, fraction, error, whole):
 def _normalized(turns: int, fraction: float, error: float) -> RevolutionAngle:
     # Invariant: 0 <= fraction <= TWO_PI_HI, the error term carrying the rest
     # (a true value just below 2 pi may round its leading part up to TWO_PI_HI).
-    fraction, error = _two_sum(fraction, error)
+    # _two_sum(fraction, error), inlined: this runs once per step.
+    total = fraction + error
+    bb = total - fraction
+    fraction, error = total, (fraction - (total - bb)) + (error - bb)
     if not 0.0 <= fraction <= TWO_PI_HI:
         turns, fraction, error = _shift(turns, fraction, error, math.floor(fraction / TWO_PI_HI))
         fraction, error = _two_sum(fraction, error)
@@ -83,5 +90,9 @@ def split_angle(angle: float) -> RevolutionAngle:
 
 
 def advance(angle: RevolutionAngle, increment: float) -> RevolutionAngle:
-    fraction, error = _two_sum(angle.fraction, increment)
-    return _normalized(angle.turns, fraction, angle.fraction_error + error)
+    # _two_sum(angle.fraction, increment), inlined: this runs once per step.
+    turns, fraction, fraction_error = angle
+    total = fraction + increment
+    bb = total - fraction
+    error = (fraction - (total - bb)) + (increment - bb)
+    return _normalized(turns, total, fraction_error + error)

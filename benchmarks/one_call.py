@@ -1,0 +1,138 @@
+"""6. The one-call step (issue 21): the joint against the plain floor in each
+host, and the joint's Python alone.
+
+The goals compare the joint with a plain pythonfmu FMU of the same interface
+and an empty `do_step` (the plain floor, `floor`) in the same host: in the C
+host of section 5 (tests/c_host, native loader, host thread keeping its
+Python thread state: the floor at its best) and in FMPy's low-level loop of
+section 1. Those rows reuse those sections' side-by-side measurements; once
+the native loader serves values in C and enters Python once per doStep, the
+same rows measure it.
+
+The Python rows time, in one fresh process and in turns of `CHUNK` steps, what
+a step costs before any host: the physics (`CardanJoint.step` and every
+output), the slave's normal path (set_real of 6 inputs, do_step, get_real of
+every output) and the slave's one-call step (`fast_step` on buffers of doubles,
+as the loader will call it).
+"""
+
+import statistics
+import time
+from array import array
+
+from cardan_joint import variables as table
+
+from .step_cost import STEP_SIZE, TIMING_INPUTS
+from .timing import against, chunks, in_fresh_process, met, us
+
+C_HOST_GOAL = 0.5  # joint / plain floor, both in the C host
+FMPY_GOAL = 0.8  # joint / plain floor, both in FMPy's low-level loop
+CHUNK = 2_000
+PYTHON_PATHS = ("physics", "slave set/do_step/get", "slave fast_step")
+
+
+def _physics_stepper():
+    from cardan_joint.physics.model import CardanJoint
+
+    joint = CardanJoint(**TIMING_INPUTS)
+    step, outputs = joint.step, joint.outputs
+
+    def run(first, length):
+        for _ in range(length):
+            if step(STEP_SIZE):  # a refused step would cost less than one taken
+                raise RuntimeError("the physics refused a timing step")
+            outputs()
+
+    return run
+
+
+def _slave():
+    from cardan_joint.fmu.slave import CardanJointSlave
+
+    slave = CardanJointSlave(instance_name="benchmark")
+    slave.setup_experiment(0.0)
+    refs = slave._refs
+    slave.set_real(refs.all_inputs, list(TIMING_INPUTS.values()))
+    slave.exit_initialization_mode()
+    return slave
+
+
+def _normal_stepper():
+    slave = _slave()
+    refs = slave._refs
+    inputs, values, outputs = refs.all_inputs, list(TIMING_INPUTS.values()), refs.all_outputs
+    set_real, do_step, get_real = slave.set_real, slave.do_step, slave.get_real
+
+    def run(first, length):
+        for step in range(first, first + length):
+            set_real(inputs, values)
+            do_step(step * STEP_SIZE, STEP_SIZE)
+            get_real(outputs)
+
+    return run
+
+
+def _fast_stepper():
+    slave = _slave()
+    layout = slave.fast_layout()
+    known = memoryview(array("d", [0.0] * layout["known_size"]))
+    outputs = memoryview(array("d", [0.0] * layout["outputs"]))
+    slave.fast_store(known)
+    fast_step = slave.fast_step
+
+    # The inputs stay in the buffer, moved by each step as the physics row's
+    # (the loader's setReal writes them in C, at no Python cost).
+    def run(first, length):
+        for step in range(first, first + length):
+            if fast_step(step * STEP_SIZE, STEP_SIZE, known, outputs):
+                raise RuntimeError("the slave refused a timing step")
+
+    return run
+
+
+def worker_python_step(steps, chunk):
+    """Per-step wall and CPU time of each Python path, in turns of `chunk` steps."""
+    runners = dict(zip(PYTHON_PATHS, (_physics_stepper(), _normal_stepper(), _fast_stepper())))
+    wall = dict.fromkeys(runners, 0.0)
+    cpu = dict.fromkeys(runners, 0.0)
+    order = list(runners)
+    for first, length in chunks(steps, chunk):
+        for name in order:
+            start, start_cpu = time.perf_counter(), time.process_time()
+            runners[name](first, length)
+            wall[name] += time.perf_counter() - start
+            cpu[name] += time.process_time() - start_cpu
+        order.reverse()
+    return {name: {"wall": wall[name] / steps, "cpu": cpu[name] / steps} for name in runners}
+
+
+def python_step(sizes):
+    runs = [
+        in_fresh_process("python_step", steps=sizes.steps, chunk=min(CHUNK, sizes.steps))
+        for _ in range(sizes.runs)
+    ]
+    return {
+        clock: {name: statistics.median(run[name][clock] for run in runs) for name in PYTHON_PATHS}
+        for clock in ("wall", "cpu")
+    }
+
+
+def one_call_rows(python, cost, c_host, sizes):
+    c_ratio = c_host["joint", "C host"] / c_host["plain", "C host"]
+    loop = against(cost["loop"], "plain", "wall")
+    runs = f"median of {sizes.runs} runs × {sizes.steps:,} steps"
+    physics, normal, fast = (python["wall"][name] for name in PYTHON_PATHS)
+    cpu = python["cpu"]
+    return [
+        f"| 6. C host: joint vs plain floor in the same host (section 5's rounds) | joint "
+        f"{us(c_host['joint', 'C host'])}, floor {us(c_host['plain', 'C host'])}: "
+        f"**×{c_ratio:.2f}** | ≤ ×{C_HOST_GOAL} | {met(c_ratio <= C_HOST_GOAL)} |",
+        f"| 6. FMPy loop: joint vs plain floor (section 1's runs) | joint {us(loop['joint'])}, "
+        f"floor {us(loop['floor'])}: **×{loop['ratio']:.2f}** | ≤ ×{FMPY_GOAL} | "
+        f"{met(loop['ratio'] <= FMPY_GOAL)} |",
+        f"| 6. the joint's Python per step, no host, {runs}: physics (step and "
+        f"{len(table.OUTPUTS)} outputs), slave set/do_step/get, slave `fast_step` | "
+        f"{us(physics)}, {us(normal)}, {us(fast)}: ÷ set/do_step/get ×{physics / normal:.2f}, "
+        f"×{fast / normal:.2f} (CPU time {', '.join(us(cpu[name]) for name in PYTHON_PATHS)}) "
+        "| (context) | |",
+    ]

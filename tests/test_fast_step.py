@@ -1,0 +1,208 @@
+"""Issue 21: the one-call step (fmu/fast_step.py) against setReal, doStep and getReal.
+
+Two slaves of each model take the same random inputs, one through the normal
+accessors, one as the native loader will drive it: inputs written into a
+buffer of doubles, `fast_step` once per step, `fast_outputs` for a read that
+follows a write (or a refused step), `fast_store` after anything Python
+changes. Their outputs must agree bit for bit, and so must their statuses and
+every message they log: refused steps, held outputs, ignored parameters,
+FMU states set back.
+"""
+
+import math
+import random
+import struct
+from array import array
+
+import pytest
+from pythonfmu.enums import Fmi2Status
+
+from cardan_joint.fmu.driveline_slaves import LoadSlave, MotorSlave
+from cardan_joint.fmu.propshaft_slave import PropshaftSlave
+from cardan_joint.fmu.slave import CardanJointSlave
+from cardan_joint.fmu.slave3 import CardanJointSlave3
+
+SLAVES = (CardanJointSlave, PropshaftSlave, MotorSlave, LoadSlave)
+STEP = 1e-3
+
+
+def bits(values):
+    return [struct.pack("=d", v) for v in values]
+
+
+def buffer(count, kind):
+    """`count` doubles as the loader shares them: a memoryview of doubles, or of
+    bytes (what C's PyMemoryView_FromMemory gives)."""
+    if kind == "doubles":
+        return memoryview(array("d", [math.nan] * count))
+    return memoryview(bytearray(struct.pack(f"={count}d", *[math.nan] * count)))
+
+
+def doubles(view):
+    return list(struct.unpack_from(f"={view.nbytes // 8}d", view))
+
+
+class Loader:
+    """What the native loader does with a slave: its values in two C arrays."""
+
+    def __init__(self, slave, kind="doubles"):
+        self.slave = slave
+        layout = slave.fast_layout()
+        self.known = buffer(layout["known_size"], kind)
+        self.outputs = buffer(layout["outputs"], kind)
+        self.fresh = False  # the outputs buffer holds the current outputs
+        assert slave.fast_store(self.known) == Fmi2Status.ok
+
+    def set_inputs(self, values):
+        struct.pack_into(f"={len(values)}d", self.known, 0, *values)
+        self.fresh = False
+
+    def step(self, time, step_size):
+        status = self.slave.fast_step(time, step_size, self.known, self.outputs)
+        self.fresh = status == Fmi2Status.ok
+        return status
+
+    def read(self):
+        if not self.fresh:
+            self.fresh = self.slave.fast_outputs(self.known, self.outputs) == Fmi2Status.ok
+        return doubles(self.outputs)
+
+
+def messages(slave):
+    return [(m.status, m.msg) for m in slave.log_queue]
+
+
+def random_inputs(rng, table):
+    """Mostly valid inputs near the start values; now and then NaN or out of range."""
+    values = []
+    for name in table.INPUTS:
+        variable = table.BY_NAME[name]
+        high = variable.max if variable.max is not None else 10.0
+        draw = rng.random()
+        if draw < 0.05:
+            values.append(math.nan)
+        elif draw < 0.1:
+            values.append(2.0 * high + 1.0)
+        else:
+            values.append((variable.start or 0.0) + rng.uniform(-1.0, 1.0) * min(1.0, 0.01 * high))
+    return values
+
+
+def initialized(cls):
+    slave = cls(instance_name="fast")
+    slave.setup_experiment(0.0)
+    slave.exit_initialization_mode()
+    return slave
+
+
+@pytest.mark.parametrize("kind", ["doubles", "bytes"])
+@pytest.mark.parametrize("cls", SLAVES, ids=lambda cls: cls.__name__)
+def test_the_one_call_step_gives_the_normal_paths_outputs_statuses_and_messages(cls, kind):
+    rng = random.Random(21)
+    normal, fast = initialized(cls), initialized(cls)
+    loader = Loader(fast, kind)
+    refs, table = normal._refs, normal.table
+    known = list(range(refs.first_output))
+    assert bits(doubles(loader.known)) == bits(normal.get_real(known))
+    parameter = refs.first_output - 1  # set after initialization: ignored with an error
+    saved = {}
+    time = 0.0
+    outcomes = {True: 0, False: 0}
+    for step in range(120):
+        inputs = random_inputs(rng, table)
+        normal.set_real(refs.all_inputs, inputs)
+        loader.set_inputs(inputs)
+        if step % 7 == 3:  # a read between the write and the step: direct feedthrough
+            assert bits(loader.read()) == bits(normal.get_real(refs.all_outputs))
+        taken = normal.do_step(time, STEP)
+        assert loader.step(time, STEP) == (Fmi2Status.ok if taken else Fmi2Status.discard)
+        outcomes[taken] += 1
+        time += STEP if taken else 0.0
+        assert bits(loader.read()) == bits(normal.get_real(refs.all_outputs)), step
+        if step == 40:
+            saved = {"normal": normal._get_fmu_state(), "fast": fast._get_fmu_state()}
+        if step == 60:
+            for slave in (normal, fast):
+                slave.set_real([parameter], [1.0])
+            fast.fast_store(loader.known)
+        if step == 80:
+            normal._set_fmu_state(saved["normal"])
+            fast._set_fmu_state(saved["fast"])
+            fast.fast_store(loader.known)
+            loader.fresh = False
+            time = normal._model.time
+        assert messages(fast) == messages(normal), step
+    assert bits(doubles(loader.known)) == bits(normal.get_real(list(range(refs.first_output))))
+    # The run went through taken and refused steps, held outputs and the ignored parameter.
+    logged = {status for status, _ in messages(normal)}
+    assert outcomes[True] > 50 and outcomes[False] > 5, outcomes
+    assert {Fmi2Status.warning, Fmi2Status.discard, Fmi2Status.error} <= logged
+
+
+def test_a_refused_step_writes_no_outputs_and_held_outputs_are_not_kept():
+    slave = initialized(CardanJointSlave)
+    loader = Loader(slave)
+    assert loader.step(0.0, STEP) == Fmi2Status.ok
+    taken = doubles(loader.outputs)
+    bend = slave._refs.names.index("bend_angle")
+    loader.known[bend] = 1.5  # beyond the 80 deg guard
+    assert slave.fast_step(STEP, STEP, loader.known, loader.outputs) == Fmi2Status.discard
+    assert bits(doubles(loader.outputs)) == bits(taken)
+    assert slave._model.time == STEP
+    # Held at the last valid inputs, and said so at every read, as getReal does.
+    for reads in (1, 2):
+        assert slave.fast_outputs(loader.known, loader.outputs) == Fmi2Status.warning
+        warnings = [m for m in slave.log_queue if m.status == Fmi2Status.warning]
+        assert len(warnings) == reads and "bend_angle" in warnings[-1].msg
+    loader.known[bend] = 0.2
+    assert slave.fast_outputs(loader.known, loader.outputs) == Fmi2Status.ok
+
+
+def test_an_internal_fault_is_an_error_status_with_a_message():
+    slave = initialized(CardanJointSlave)
+    loader = Loader(slave)
+    outputs = memoryview(array("d", [0.0] * 3))  # too short for the outputs
+    assert slave.fast_step(0.0, STEP, loader.known, outputs) == Fmi2Status.error
+    assert "internal error in fast_step" in slave.log_queue[-1].msg
+    assert slave.fast_step(0.0, STEP, None, loader.outputs) == Fmi2Status.error
+    assert slave.fast_store(outputs) == Fmi2Status.error
+    assert slave.fast_load(None) == Fmi2Status.error
+    assert "internal error in fast_load" in slave.log_queue[-1].msg
+    assert slave.fast_load(loader.known) == Fmi2Status.ok
+
+
+def test_the_layout_is_the_flat_index_and_the_same_for_fmi3():
+    layout = CardanJointSlave.fast_layout()
+    table = CardanJointSlave.table
+    assert layout["names"] == [v.name for v in table.VARIABLES]
+    assert layout["known_size"] == layout["first_output"] == layout["inputs"] + layout["parameters"]
+    assert layout["names"][layout["first_output"] :] == list(table.OUTPUTS)
+    assert layout["inputs"] == len(table.INPUTS) == 6 and layout["outputs"] == len(table.OUTPUTS)
+    assert CardanJointSlave3.fast_layout() == layout
+
+
+def test_the_fmi3_slave_steps_the_same_through_the_one_call_step():
+    from pythonfmu3.enums import Fmi3Status
+
+    def started():
+        slave = CardanJointSlave3(instance_name="fast3")
+        slave.enter_initialization_mode()
+        slave.exit_initialization_mode()
+        return slave
+
+    rng = random.Random(3)
+    normal, fast = started(), started()
+    loader = Loader(fast)
+    refs, table = normal._refs, normal.table
+    statuses = set()
+    for step in range(60):
+        inputs = random_inputs(rng, table)
+        normal._set_flat(refs.all_inputs, inputs, "fmi3SetFloat64")
+        loader.set_inputs(inputs)
+        status = loader.step(step * STEP, STEP)
+        assert status == normal.do_step(step * STEP, STEP).status
+        assert isinstance(status, Fmi3Status)
+        statuses.add(status)
+        assert bits(loader.read()) == bits(normal._get_flat(refs.all_outputs)), step
+        assert messages(fast) == messages(normal), step
+    assert statuses == {Fmi3Status.ok, Fmi3Status.discard}
