@@ -9,7 +9,7 @@ import numpy as np
 import pytest
 
 from cardan_joint import cli, results
-from cardan_joint import variables as table
+from cardan_joint.models.universal_joint import variables as table
 
 ROOT = Path(__file__).resolve().parents[1]
 
@@ -229,7 +229,7 @@ def test_the_command_leaves_argv_and_stderr_alone(built_fmu, tmp_path, monkeypat
         seen.append((sys.argv[0], sys.stderr))
         return 0
 
-    monkeypatch.setattr(cardan_joint.simulate, "simulate", fake_simulate)
+    monkeypatch.setattr(cardan_joint.host.simulate, "simulate", fake_simulate)
     monkeypatch.setattr(cardan_joint.build, "main", fake_build)
     assert (
         cli.main(

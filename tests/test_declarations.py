@@ -6,15 +6,18 @@ from xml.etree.ElementTree import Element, SubElement
 
 import pytest
 
-from cardan_joint import variables as table
-from cardan_joint.driveline_variables import LOAD, MOTOR
-from cardan_joint.fmu import model_description, model_description3
-from cardan_joint.inertia_load_variables import INERTIA_LOAD
-from cardan_joint.physics import CardanJoint, Load, Motor
-from cardan_joint.physics.inertia_load import InertiaLoad
-from cardan_joint.physics.propshaft import Propshaft
+from cardan_joint.fmi import model_description, model_description3
+from cardan_joint.models.inertia_load.model import InertiaLoad
+from cardan_joint.models.inertia_load.variables import INERTIA_LOAD
+from cardan_joint.models.load.model import Load
+from cardan_joint.models.load.variables import LOAD
+from cardan_joint.models.motor.model import Motor
+from cardan_joint.models.motor.variables import MOTOR
+from cardan_joint.models.propshaft import Propshaft
+from cardan_joint.models.propshaft.variables import propshaft_table
+from cardan_joint.models.universal_joint import variables as table
+from cardan_joint.models.universal_joint.model import CardanJoint
 from cardan_joint.physics.values import value_ranges
-from cardan_joint.propshaft_variables import propshaft_table
 
 
 @pytest.mark.parametrize(

@@ -10,12 +10,13 @@ import pytest
 from conftest import ROOT, build_fmu
 from jacobi import jacobi_master
 
-from cardan_joint import driveline_system as system
 from cardan_joint import results
-from cardan_joint.instance import ExtractedFMU, FmuInstance
+from cardan_joint.host import driveline_system as system
+from cardan_joint.host.instance import ExtractedFMU, FmuInstance
+from cardan_joint.host.ssp import Component, write_ssp
+from cardan_joint.models.load.model import Load
+from cardan_joint.models.motor.model import Motor
 from cardan_joint.physics import Reason, Refusal
-from cardan_joint.physics.driveline import Load, Motor
-from cardan_joint.ssp import Component, write_ssp
 
 
 @pytest.fixture(scope="module")

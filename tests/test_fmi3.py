@@ -5,8 +5,8 @@ import math
 import numpy as np
 import pytest
 
-from cardan_joint import variables as table
-from cardan_joint.instance import FmuInstance
+from cardan_joint.host.instance import FmuInstance
+from cardan_joint.models.universal_joint import variables as table
 
 GROUPS = table.fmi3_variables()
 ARRAYS = {"crosspiece_quaternion": 4, "crosspiece_angular_velocity": 3, "crosspiece_torque": 3}
@@ -313,7 +313,7 @@ def test_many_instances_in_one_process_are_independent(fmi3_description, fmi3_un
 def test_an_internal_fault_in_a_step_is_an_error_status_not_an_exception(monkeypatch):
     from pythonfmu3.enums import Fmi3Status
 
-    from cardan_joint.fmu.slave3 import CardanJointSlave3
+    from cardan_joint.fmi.slave3 import CardanJointSlave3
 
     slave = CardanJointSlave3(instance_name="faulty")
     slave.enter_initialization_mode()
@@ -325,7 +325,7 @@ def test_an_internal_fault_in_a_step_is_an_error_status_not_an_exception(monkeyp
 
 
 def test_the_model_description_carries_the_builds_start_values():
-    from cardan_joint.fmu.slave3 import CardanJointSlave3
+    from cardan_joint.fmi.slave3 import CardanJointSlave3
 
     class Bent(CardanJointSlave3):
         start_overrides = {"bend_angle": 0.2, "max_bend_angle": math.nextafter(1.2, 2.0)}

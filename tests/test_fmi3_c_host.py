@@ -14,7 +14,7 @@ import pytest
 from c_host.compile import compile_host3
 from test_c_host import EMPTY_ENVIRONMENT, run_host
 
-from cardan_joint.native import fmi3_headers
+from cardan_joint.fmi.native import fmi3_headers
 
 
 @pytest.fixture(scope="session")

@@ -8,11 +8,11 @@ import pytest
 from conftest import ROOT, build_fmu, run_build
 
 from cardan_joint import results
-from cardan_joint.fmu_info import FmuInfo, build_command
+from cardan_joint.host.fmu_info import FmuInfo, build_command
 from cardan_joint.models import MODELS
 
 # Every model the build offers, for every FMI version it offers.
-BUILDS = [(key, version) for key, spec in MODELS.items() for version in sorted(spec.scripts)]
+BUILDS = [(key, version) for key, spec in MODELS.items() for version in spec.fmi_versions]
 
 
 def cardan_joint(*args):
@@ -166,16 +166,16 @@ def test_every_quantity_in_the_cli_help_names_its_unit():
     ],
 )
 def test_simulate_refuses_a_misspelt_name_naming_the_right_one(fmu_path, arguments, wrong, right):
+    from cardan_joint.host.simulate import simulate
     from cardan_joint.names import UnknownNameError
-    from cardan_joint.simulate import simulate
 
     with pytest.raises(UnknownNameError, match=f"'{wrong}'; did you mean {right}"):
         simulate(fmu_path, stop_time=0.01, output_interval=1e-3, **arguments)
 
 
 def test_simulate_refuses_a_constant_bend_angle_with_a_nonzero_rate(fmu_path):
+    from cardan_joint.host.simulate import simulate
     from cardan_joint.names import UsageError
-    from cardan_joint.simulate import simulate
 
     with pytest.raises(UsageError, match="bend_angle = 0.3 is given as a constant"):
         simulate(fmu_path, stop_time=0.01, inputs={"bend_angle": 0.3, "bend_angle_rate": 1.0})
@@ -189,8 +189,8 @@ def test_simulate_refuses_a_constant_bend_angle_with_a_nonzero_rate(fmu_path):
 
 
 def test_simulate_names_the_build_command_of_a_missing_fmu(tmp_path):
-    from cardan_joint.fmu_info import MissingFMUError
-    from cardan_joint.simulate import simulate
+    from cardan_joint.host.fmu_info import MissingFMUError
+    from cardan_joint.host.simulate import simulate
 
     with pytest.raises(MissingFMUError, match="`python build_fmu.py --model Motor --dest "):
         simulate(tmp_path / "Motor.fmu")

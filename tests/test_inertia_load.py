@@ -6,10 +6,10 @@ import math
 import numpy as np
 import pytest
 
-from cardan_joint.instance import FmuInstance
+from cardan_joint.host.instance import FmuInstance
+from cardan_joint.models.inertia_load.model import InertiaLoad
 from cardan_joint.physics import Refusal
-from cardan_joint.physics.driveline import exact_rotor_step
-from cardan_joint.physics.inertia_load import InertiaLoad
+from cardan_joint.physics.stepped import exact_rotor_step
 
 
 def _ode(load, torques, steps):

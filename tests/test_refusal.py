@@ -6,13 +6,14 @@ import math
 import numpy as np
 import pytest
 
-from cardan_joint import variables as table
-from cardan_joint.physics import CardanJoint, Reason, Refusal
-from cardan_joint.physics.compliant import CompliantJoint
-from cardan_joint.physics.driveline import Motor
-from cardan_joint.physics.inertia_load import InertiaLoad
-from cardan_joint.physics.propshaft import Propshaft
-from cardan_joint.simulate import RefusalError, SimulationError, simulate
+from cardan_joint.host.simulate import RefusalError, SimulationError, simulate
+from cardan_joint.models.compliant_joint.model import CompliantJoint
+from cardan_joint.models.inertia_load.model import InertiaLoad
+from cardan_joint.models.motor.model import Motor
+from cardan_joint.models.propshaft import Propshaft
+from cardan_joint.models.universal_joint import variables as table
+from cardan_joint.models.universal_joint.model import CardanJoint
+from cardan_joint.physics import Reason, Refusal
 
 GUARD = table.BY_NAME["max_bend_angle"].start
 # One way to meet each reason: (start values, step size).

@@ -10,23 +10,23 @@ from pathlib import Path
 
 ROOT = Path(__file__).resolve().parents[1]
 sys.path.insert(0, str(ROOT / "fmu_src"))
-from cardan_joint import variables as table  # noqa: E402
+from cardan_joint.models.universal_joint import variables as table  # noqa: E402
 
 COPIED = ("fmu_src", "tests", "build_fmu.py", "pyproject.toml", "README.md")
 RESTORED = (
     "        values = {name: float(state[name]) "
     "for name in self.table.INPUTS + self.table.PARAMETERS}\n"
 )
-MODEL = "fmu_src/cardan_joint/physics/model.py"
+MODEL = "fmu_src/cardan_joint/models/universal_joint/model.py"
 VALUES = "fmu_src/cardan_joint/physics/values.py"
-SLAVE = "fmu_src/cardan_joint/fmu/slave.py"
-CORE = "fmu_src/cardan_joint/fmu/core.py"
+SLAVE = "fmu_src/cardan_joint/fmi/slave.py"
+CORE = "fmu_src/cardan_joint/fmi/core.py"
 GUARDS = "tests/test_guards.py"
 SLAVE_GUARDS = "tests/test_slave_guards.py"
 ROBUSTNESS = "tests/test_robustness.py"
-COMPLIANT = "fmu_src/cardan_joint/physics/compliant.py"
+COMPLIANT = "fmu_src/cardan_joint/models/compliant_joint/model.py"
 COMPLIANT_TESTS = "tests/test_compliant_joint.py"
-INERTIA_LOAD = "fmu_src/cardan_joint/physics/inertia_load.py"
+INERTIA_LOAD = "fmu_src/cardan_joint/models/inertia_load/model.py"
 
 
 @dataclass(frozen=True)
@@ -256,7 +256,7 @@ MUTATIONS = (
     # The motor's own guard (its value checks are the ones above).
     Mutation(
         "motor: rotor speed at the step's end",
-        "fmu_src/cardan_joint/physics/driveline.py",
+        "fmu_src/cardan_joint/models/motor/model.py",
         "if not abs(speed) <= self._SPEED_LIMIT:",
         "if False:",
         ("tests/test_driveline.py", "tests/test_refusal.py", "-k", "unusable_inputs or reads_back"),
@@ -370,7 +370,7 @@ MUTATIONS = (
     # The build, called as a library: the caller's sys.modules as it was.
     Mutation(
         "build: drops its staged modules",
-        "fmu_src/cardan_joint/build.py",
+        "fmu_src/cardan_joint/build/builder.py",
         "n.split(\".\")[0] in (package_dir.name,",
         "n.split(\".\")[0] in (package_dir.name + \"_\",",
         ("tests/test_build.py",),
@@ -378,7 +378,7 @@ MUTATIONS = (
     # Plumbing that keeps a user's result and messages clean.
     Mutation(
         "simulate: a refused run ends at its last good point",
-        "fmu_src/cardan_joint/simulate.py",
+        "fmu_src/cardan_joint/host/simulate.py",
         "            result = _without_repeated_end(result)\n",
         "            pass\n",
         ("tests/test_refusal.py", "-k", "simulate_raises"),
@@ -392,7 +392,7 @@ MUTATIONS = (
     ),
     Mutation(
         "cosim: libcosimpy missing names its extra",
-        "fmu_src/cardan_joint/cosim.py",
+        "fmu_src/cardan_joint/host/cosim.py",
         '    require("libcosimpy", "cosim", "running in libcosim")\n'
         "    from libcosimpy.CosimExecution import CosimExecution\n"
         "    from libcosimpy.CosimLogging import CosimLogLevel, log_output_level\n\n",
@@ -439,14 +439,14 @@ MUTATIONS = (
     ),
     Mutation(
         "exact rotor step: series near zero drag",
-        "fmu_src/cardan_joint/physics/driveline.py",
+        "fmu_src/cardan_joint/physics/stepped.py",
         "    if abs(z) > 0.05:\n",
         "    if True:\n",
         ("tests/test_inertia_load.py",),
     ),
     Mutation(
         "ssp: a missing file is named",
-        "fmu_src/cardan_joint/ssp.py",
+        "fmu_src/cardan_joint/host/ssp.py",
         "    if not path.is_file():\n",
         "    if False:\n",
         ("tests/test_compliant_system.py", "-k", "broken"),

@@ -2,8 +2,8 @@
 
 Pure data types with the lookups every wrapper needs (FMI 2 and FMI 3
 registration, model descriptions, README tables); the tables themselves are
-`variables` (the UniversalJoint), `propshaft_variables` and
-`driveline_variables`. No FMI import: the physics reads its defaults from them.
+each model folder's `variables` (`models/<name>/variables.py`). No FMI import:
+the physics reads its defaults from them.
 """
 
 from collections.abc import Mapping
@@ -42,8 +42,8 @@ class Variable:
 
 class VariableTable:
     """One model's variables with the lookups every wrapper needs. The module
-    `variables` is itself the UniversalJoint's table (same attribute names);
-    other models build one (e.g. `propshaft_variables.propshaft_table`)."""
+    `models/universal_joint/variables.py` is itself the UniversalJoint's table
+    (same attribute names); other models build one (e.g. `units.table_of`)."""
 
     def __init__(self, variables, units: Mapping[str, Unit]):
         """`units`: the unit definitions (name -> Unit) its description declares."""

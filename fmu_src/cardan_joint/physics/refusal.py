@@ -12,7 +12,6 @@ import re
 from dataclasses import dataclass, field
 from enum import Enum
 
-from .. import variables as table
 from ..units import RAD_TO_DEG
 
 
@@ -79,19 +78,19 @@ _TEMPLATES = {
 }
 # Fixed by the reason, so not written in the message.
 _IMPLIED = {
-    Reason.BEND_ANGLE: ("bend_angle", "rad"),
-    Reason.BEND_AT_STEP_END: ("bend_angle", "rad"),
-    Reason.BEND_PEAK_IN_STEP: ("bend_angle", "rad"),
-    Reason.BEND_GUARD: ("max_bend_angle", "rad"),
-    Reason.STEP_SIZE: ("step_size", "s"),
-    Reason.ANGLE_OVERFLOW: ("input_angle", "rad"),
-    Reason.SPEED_OVERFLOW: ("input_speed", "rad/s"),
-    Reason.SHAFT_ANGLE: (None, "rad"),
-    Reason.WORKING_ANGLE_GUARD: ("max_working_angle", "rad"),
-    Reason.WORKING_ANGLE: (None, "rad"),
-    Reason.ROTOR_SPEED: ("speed", "rad/s"),
-    Reason.LOAD_SPEED: ("speed", "rad/s"),
-    Reason.TWIST_OVERFLOW: ("twist_angle", "rad"),
+    Reason.BEND_ANGLE: ("bend_angle", "rad", "input"),
+    Reason.BEND_AT_STEP_END: ("bend_angle", "rad", "input"),
+    Reason.BEND_PEAK_IN_STEP: ("bend_angle", "rad", "input"),
+    Reason.BEND_GUARD: ("max_bend_angle", "rad", "parameter"),
+    Reason.STEP_SIZE: ("step_size", "s", ""),
+    Reason.ANGLE_OVERFLOW: ("input_angle", "rad", "output"),
+    Reason.SPEED_OVERFLOW: ("input_speed", "rad/s", "input"),
+    Reason.SHAFT_ANGLE: (None, "rad", ""),
+    Reason.WORKING_ANGLE_GUARD: ("max_working_angle", "rad", ""),
+    Reason.WORKING_ANGLE: (None, "rad", ""),
+    Reason.ROTOR_SPEED: ("speed", "rad/s", ""),
+    Reason.LOAD_SPEED: ("speed", "rad/s", ""),
+    Reason.TWIST_OVERFLOW: ("twist_angle", "rad", ""),
 }
 _PREFIX = "t = {time} s: "
 _FLOAT = r"-?(?:inf|nan|[0-9][0-9.e+-]*)"
@@ -134,13 +133,13 @@ class Refusal:
     time: float
     unit: str
     details: dict = field(default_factory=dict)
-    # "input" or "parameter": the joint's table knows its own variables; other
-    # models (the propshaft) name it.
+    # "input", "parameter" or "output": named by the refusal, or fixed by its reason.
     kind: str = ""
 
     def __post_init__(self):
-        if not self.kind and self.variable in table.BY_NAME:
-            object.__setattr__(self, "kind", table.BY_NAME[self.variable].causality)
+        implied = _IMPLIED.get(self.code)
+        if not self.kind and implied and implied[0] == self.variable:
+            object.__setattr__(self, "kind", implied[2])
 
     @property
     def text(self) -> str:
@@ -207,7 +206,7 @@ class Refusal:
             match = pattern.search(text)
             if match:
                 found = match.groupdict()
-                variable, unit = _IMPLIED.get(reason, (None, None))
+                variable, unit, _ = _IMPLIED.get(reason, (None, None, ""))
                 variable, unit = variable or found.get("variable"), unit or found.get("unit")
                 numbers = {
                     name: float(value) for name, value in found.items() if name not in _TEXT_FIELDS

@@ -16,7 +16,7 @@ from .timing import compare, timed
 
 
 def add_arguments(parser, default_name="design_sweep"):
-    from ..simulate import DEFAULT_FMU
+    from ..host.simulate import DEFAULT_FMU
 
     defaults = SweepSpec()
     parser.add_argument("--fmu", default=str(DEFAULT_FMU), help="FMU file (default %(default)s)")

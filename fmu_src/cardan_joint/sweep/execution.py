@@ -139,7 +139,7 @@ def connect(scheduler: str | None = None, n_workers: int = 2) -> tuple:
 def _import_fmu_stack():
     import fmpy.fmi2  # noqa: F401
 
-    from .. import simulate  # noqa: F401
+    from ..host import simulate  # noqa: F401
 
 
 def warm_up(client):
