@@ -58,7 +58,10 @@ class RefusalError(SimulationError):
 
 def first_refusal(texts: Iterable[str]) -> "Refusal | None":
     """The first `Refusal` written in `texts` (the FMU's log), or None."""
+    from ..models import discover
     from ..physics.refusal import Refusal
+
+    discover()  # every model's own reasons are declared (read back) with its folder
 
     for text in texts:
         try:

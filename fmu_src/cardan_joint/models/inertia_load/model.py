@@ -7,9 +7,10 @@ torque, not a friction: at standstill it turns the load backwards unless the
 drive torque balances it. Same protocol and checks as the Motor.
 """
 
-from ...physics.refusal import Reason, Refusal
+from ...physics.refusal import Refusal
 from ...physics.stepped import _TableModel, exact_rotor_step
 from ...physics.values import bounds
+from .refusals import InertiaLoadReason
 from .variables import INERTIA_LOAD
 
 
@@ -42,7 +43,7 @@ class InertiaLoad(_TableModel):
         )
         if not abs(speed) <= self._SPEED_LIMIT:
             return Refusal(
-                Reason.LOAD_SPEED,
+                InertiaLoadReason.LOAD_SPEED,
                 "speed",
                 speed,
                 self._SPEED_LIMIT,

@@ -5,9 +5,10 @@ the rotor obeys J d(omega)/dt = T_s - k omega - T_L, a linear ODE solved exactly
 over a step (`physics.stepped.exact_rotor_step`): no integration error at any step.
 """
 
-from ...physics.refusal import Reason, Refusal
+from ...physics.refusal import Refusal
 from ...physics.stepped import _TableModel, exact_rotor_step
 from ...physics.values import bounds
+from .refusals import MotorReason
 from .variables import MOTOR
 
 
@@ -56,7 +57,7 @@ class Motor(_TableModel):
         )
         if not abs(speed) <= self._SPEED_LIMIT:
             return Refusal(
-                Reason.ROTOR_SPEED,
+                MotorReason.ROTOR_SPEED,
                 "speed",
                 speed,
                 self._SPEED_LIMIT,
