@@ -42,7 +42,7 @@ class NoNumpy:
 
 def slave_classes() -> dict:
     from cardan_joint.fmi.slave import ModelSlave
-    from cardan_joint.fmi.slave3 import CardanJointSlave3
+    from cardan_joint.fmi.slave3 import ModelSlave3
 
     def bound(name, folder, **settings):
         return type(name, (ModelSlave,), {"model_folder": folder, "build_settings": settings})
@@ -54,7 +54,7 @@ def slave_classes() -> dict:
         "Propshaft4": bound("Propshaft4", "propshaft", joints=4),
         "Motor": bound("Motor", "motor"),
         "Load": bound("Load", "load"),
-        "UniversalJoint3": CardanJointSlave3,
+        "UniversalJoint3": ModelSlave3,
     }
 
 

@@ -4,6 +4,7 @@ every model the build offers, and a misspelt name is refused naming the right on
 import subprocess
 import sys
 
+import numpy as np
 import pytest
 from conftest import ROOT, build_fmu, run_build
 
@@ -202,3 +203,21 @@ def test_setting_an_output_says_it_is_an_output(built, tmp_path):
     )
     assert run.returncode == 2
     assert "'speed' is an output of Motor, not an input or parameter" in run.stderr
+
+
+@pytest.mark.parametrize("key", sorted(MODELS))
+def test_every_models_fmi3_build_validates_and_equals_its_fmi2_build(built, key):
+    from fmpy.validation import validate_fmu
+
+    from cardan_joint.simulate import flat_columns, simulate
+
+    fmi2, fmi3 = built(key, 2), built(key, 3)
+    assert validate_fmu(str(fmi3)) == []
+    assert FmuInfo.read(fmi3).model_description.fmiVersion == "3.0"
+    runs = [
+        flat_columns(simulate(fmu, stop_time=0.05, output_interval=1e-3)) for fmu in (fmi2, fmi3)
+    ]
+    outputs = FmuInfo.read(fmi2).columns("output")
+    assert outputs and len(runs[0]) == len(runs[1]) == 51
+    for name in outputs:
+        np.testing.assert_array_equal(runs[1][name], runs[0][name], err_msg=f"{key}: {name}")

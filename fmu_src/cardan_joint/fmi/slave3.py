@@ -1,8 +1,8 @@
 """The pythonfmu3 slave: the FMI 3.0 co-simulation face of `core.SlaveCore`.
 
 No equation and no joint logic live here: this maps FMI 3 value references
-(the independent variable `time`, then one per row of
-`variables.fmi3_variables()`, vectors as Float64 arrays) onto the flat indices
+(the independent variable `time`, then one per row of the model table's
+`fmi3_variables()`, vectors as Float64 arrays) onto the flat indices
 `core` works with. pythonfmu3 0.3.4's C layer shares pythonfmu's traps:
 any Python exception becomes fmi3Fatal (so every entry point catches
 everything), and it copies exactly `nValues` values out of a getter's list
@@ -23,21 +23,12 @@ from pythonfmu3.enums import Fmi3Initial, Fmi3Status
 from pythonfmu3.fmi3slave import Fmi3StepResult
 from pythonfmu3.variables import Dimension
 
-from ..models.universal_joint import variables as table
+from .binding import ModelBinding
 from .core import SlaveCore
 from .model_description3 import complete
 from .references import log_categories
 
 TIME_REFERENCE = 0
-GROUPS = table.fmi3_variables()
-# Value reference -> the flat indices (FMI 2 value references) it holds.
-_NAMES = SlaveCore._refs.names
-_FLAT = ((),) + tuple(tuple(_NAMES.index(row.name) for row in group.rows) for group in GROUPS)
-_SIZE = tuple(len(flat) or 1 for flat in _FLAT)  # elements per value reference
-_LONGEST = max(_SIZE)
-_SETTABLE = frozenset(
-    vr for vr, group in enumerate(GROUPS, start=1) if group.causality in ("input", "parameter")
-)
 _STEP_RESULTS = {status: Fmi3StepResult(status=status) for status in Fmi3Status}
 # cppfmu::Logger (pythonfmu3 0.3.4, pinned): { void* environment; callback logMessage; ... }.
 _LOGGER_CALLBACK_OFFSET = ctypes.sizeof(ctypes.c_void_p)
@@ -49,9 +40,34 @@ def _host_has_logger(logger_address) -> bool:
     return bool(ctypes.c_void_p.from_address(logger_address + _LOGGER_CALLBACK_OFFSET).value)
 
 
-class CardanJointSlave3(SlaveCore, Fmi3Slave):
+class ModelSlave3(ModelBinding, SlaveCore, Fmi3Slave):
+    """The FMI 3 slave of every model: a model's script subclasses it and names
+    its folder (`model_folder`), whose spec sets the table and the physics."""
+
     log_categories = log_categories("fmi3")
     _STATUS, _API, _STATE = Fmi3Status, "fmi3", "State"
+    # The model's FMI 3 variables and, per value reference, the flat indices
+    # (FMI 2 value references) it holds, its size, whether it can be set.
+    GROUPS: tuple = ()
+    _FLAT: tuple = ()
+    _SIZE: tuple = ()
+    _LONGEST = 1
+    _SETTABLE: frozenset = frozenset()
+
+    def __init_subclass__(cls, **kwargs):
+        super().__init_subclass__(**kwargs)
+        cls._lay_out()
+
+    @classmethod
+    def _lay_out(cls):
+        cls.GROUPS = groups = cls.table.fmi3_variables()
+        names = cls._refs.names
+        cls._FLAT = ((),) + tuple(tuple(names.index(r.name) for r in g.rows) for g in groups)
+        cls._SIZE = tuple(len(flat) or 1 for flat in cls._FLAT)
+        cls._LONGEST = max(cls._SIZE)
+        cls._SETTABLE = frozenset(
+            vr for vr, g in enumerate(groups, start=1) if g.causality in ("input", "parameter")
+        )
 
     def __init__(self, **kwargs):
         super().__init__(**kwargs)
@@ -72,7 +88,7 @@ class CardanJointSlave3(SlaveCore, Fmi3Slave):
                 description="Simulation time",
             )
         )
-        for group in GROUPS:
+        for group in self.GROUPS:
             self._register(group)
 
     def _register(self, group):
@@ -95,7 +111,7 @@ class CardanJointSlave3(SlaveCore, Fmi3Slave):
 
     def to_xml(self, model_options=None):
         starts = {name: getattr(self._model, name) for name in self._refs.known}
-        return complete(super().to_xml(model_options or {}), GROUPS, starts, self.table)
+        return complete(super().to_xml(model_options or {}), self.GROUPS, starts, self.table)
 
     # --- messages ------------------------------------------------------------
 
@@ -134,10 +150,10 @@ class CardanJointSlave3(SlaveCore, Fmi3Slave):
         try:
             indices = []
             for vr in vrs:
-                indices.extend(_FLAT[vr])
+                indices.extend(self._FLAT[vr])
             return indices
         except IndexError:
-            bad = next(vr for vr in vrs if not 0 <= vr < len(_FLAT))
+            bad = next(vr for vr in vrs if not 0 <= vr < len(self._FLAT))
             self._report(
                 f"{caller}: no Float64 variable has value reference {bad}", Fmi3Status.error
             )
@@ -147,7 +163,7 @@ class CardanJointSlave3(SlaveCore, Fmi3Slave):
         try:
             indices = self._flat_indices(vrs, "fmi3GetFloat64")
             if indices is None:
-                return [math.nan] * (_LONGEST * len(vrs))
+                return [math.nan] * (self._LONGEST * len(vrs))
             if TIME_REFERENCE in vrs:  # the one value reference with no flat index
                 return [
                     value
@@ -155,20 +171,20 @@ class CardanJointSlave3(SlaveCore, Fmi3Slave):
                     for value in (
                         [self._model.time]
                         if vr == TIME_REFERENCE
-                        else self._get_flat(list(_FLAT[vr]))
+                        else self._get_flat(list(self._FLAT[vr]))
                     )
                 ]
             return self._get_flat(indices)
         except Exception as error:
             self._fault("fmi3GetFloat64", error)
-            return [math.nan] * (_LONGEST * len(vrs))
+            return [math.nan] * (self._LONGEST * len(vrs))
 
     def set_float64(self, vrs, values):
         try:
             indices = self._flat_indices(vrs, "fmi3SetFloat64")
             if indices is None:
                 return
-            sizes = [_SIZE[vr] for vr in vrs]
+            sizes = [self._SIZE[vr] for vr in vrs]
             if len(values) != sum(sizes):
                 self._report(
                     f"fmi3SetFloat64: {len(values)} values for {sum(sizes)} "
@@ -176,7 +192,7 @@ class CardanJointSlave3(SlaveCore, Fmi3Slave):
                     Fmi3Status.error,
                 )
                 return
-            refused = [vr for vr in vrs if vr not in _SETTABLE]
+            refused = [vr for vr in vrs if vr not in self._SETTABLE]
             if refused:
                 names = ", ".join(self._fmi3_name(vr) for vr in refused)
                 self._report(
@@ -184,16 +200,15 @@ class CardanJointSlave3(SlaveCore, Fmi3Slave):
                     Fmi3Status.error,
                 )
                 starts = [sum(sizes[:k]) for k in range(len(vrs))]
-                kept = [k for k, vr in enumerate(vrs) if vr in _SETTABLE]
-                indices = [i for k in kept for i in _FLAT[vrs[k]]]
+                kept = [k for k, vr in enumerate(vrs) if vr in self._SETTABLE]
+                indices = [i for k in kept for i in self._FLAT[vrs[k]]]
                 values = [v for k in kept for v in values[starts[k] : starts[k] + sizes[k]]]
             self._set_flat(indices, values, "fmi3SetFloat64")
         except Exception as error:
             self._fault("fmi3SetFloat64", error)
 
-    @staticmethod
-    def _fmi3_name(vr):
-        return "time" if vr == TIME_REFERENCE else GROUPS[vr - 1].name
+    def _fmi3_name(self, vr):
+        return "time" if vr == TIME_REFERENCE else self.GROUPS[vr - 1].name
 
     # The FMU has Float64 variables only; pythonfmu3's typed accessors would raise
     # (fmi3Fatal) on any other call, so these refuse politely instead.
@@ -201,7 +216,7 @@ class CardanJointSlave3(SlaveCore, Fmi3Slave):
         self._report(
             f"the FMU has no {kind} variables (value references {list(vrs)})", Fmi3Status.error
         )
-        return [fill] * (_LONGEST * len(vrs))
+        return [fill] * (self._LONGEST * len(vrs))
 
     def get_int32(self, vrs):
         return self._no_such_variables("Int32", vrs, 0)
@@ -232,3 +247,6 @@ class CardanJointSlave3(SlaveCore, Fmi3Slave):
 
     def set_string(self, vrs, values):
         self._no_such_variables("String", vrs, "")
+
+
+ModelSlave3._lay_out()  # the unbound base (tests): the core's default table

@@ -40,7 +40,7 @@ class Model:
     make: Callable[..., Any]
     live_outputs: tuple[str, ...] = ()
     owner: str = "model"
-    fmi_versions: tuple[int, ...] = (2,)
+    fmi_versions: tuple[int, ...] = (2, 3)
     default_settings: Mapping = field(default_factory=dict)
     # Raises StartValueError for settings the model cannot be built with.
     check_settings: Callable[[Mapping], None] | None = None

@@ -14,5 +14,4 @@ MODEL = Model(
     make=stepped(CardanJoint),
     live_outputs=("input_angle",),
     owner="joint",
-    fmi_versions=(2, 3),
 )

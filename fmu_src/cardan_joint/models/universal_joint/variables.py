@@ -9,13 +9,10 @@ Pure data: no FMI import, so the physics can read its defaults from here.
 """
 
 import math
-import os
-import re
-from dataclasses import dataclass
 
 from ...units import DEG_TO_RAD
 from ...units import JOINT_UNITS as UNITS
-from ...variable_schema import _IN, _OUT, _PAR, Variable, VariableTable
+from ...variable_schema import _IN, _OUT, _PAR, Variable, VariableTable, fmi3_groups
 
 # Inputs each output depends on directly (FMI ModelStructure "dependencies").
 # Declaring them lets a master see that speed flows downstream without the load,
@@ -126,50 +123,9 @@ start_values = _TABLE.start_values
 ARRAY_STEMS = ("crosspiece_angular_velocity", "crosspiece_torque", "crosspiece_quaternion")
 
 
-@dataclass(frozen=True)
-class Group:
-    """One FMI 3 variable: a scalar row, or the rows of one array in element order.
-    Every attribute but the name and description is the rows' common one."""
-
-    name: str
-    rows: tuple
-
-    def __getattr__(self, attribute):
-        if attribute.startswith("_"):  # copy/pickle probe before `rows` exists
-            raise AttributeError(attribute)
-        return getattr(self.rows[0], attribute)
-
-    @property
-    def description(self) -> str:
-        """The rows' common prefix (to a word) with each element's rest, in order."""
-        texts = [row.description for row in self.rows]
-        if len(texts) == 1:
-            return texts[0]
-        common = os.path.commonprefix(texts)
-        common = common[: common.rfind(" ") + 1]
-        return common + " / ".join(text[len(common) :] for text in texts)
-
-
-def _group(stem):
-    rows = tuple(v for v in VARIABLES if re.fullmatch(re.escape(stem) + r"_\d", v.name))
-    first = VARIABLES.index(rows[0])
-    shared = ("causality", "unit", "display_unit", "min", "max", "depends_on", "start")
-    assert rows == VARIABLES[first : first + len(rows)], f"{stem}: rows must be consecutive"
-    assert all(getattr(r, a) == getattr(rows[0], a) for r in rows for a in shared), (
-        f"{stem}: the elements of an array share causality, unit, range and dependencies"
-    )
-    return Group(stem, rows)
-
-
 def fmi3_variables() -> tuple:
     """The FMI 3 variables in table order: arrays where ARRAY_STEMS says, else scalars."""
-    arrays = {g.rows[0].name: g for g in map(_group, ARRAY_STEMS)}
-    in_array = {row.name for g in arrays.values() for row in g.rows}
-    return tuple(
-        arrays.get(v.name) or Group(v.name, (v,))
-        for v in VARIABLES
-        if v.name in arrays or v.name not in in_array
-    )
+    return fmi3_groups(VARIABLES, ARRAY_STEMS)
 
 
 # FMI 3 array name -> its FMI 2 rows in element order (to split an array's values).
