@@ -54,7 +54,9 @@ def slave_classes() -> dict:
         "Propshaft4": bound("Propshaft4", "propshaft", joints=4),
         "Motor": bound("Motor", "motor"),
         "Load": bound("Load", "load"),
-        "UniversalJoint3": ModelSlave3,
+        "UniversalJoint3": type(
+            "UniversalJoint3", (ModelSlave3,), {"model_folder": "universal_joint"}
+        ),
     }
 
 

@@ -315,7 +315,10 @@ def test_an_internal_fault_in_a_step_is_an_error_status_not_an_exception(monkeyp
 
     from cardan_joint.fmi.slave3 import ModelSlave3
 
-    slave = ModelSlave3(instance_name="faulty")
+    class Joint(ModelSlave3):
+        model_folder = "universal_joint"
+
+    slave = Joint(instance_name="faulty")
     slave.enter_initialization_mode()
     slave.exit_initialization_mode()
     monkeypatch.setattr(slave._model, "step", lambda step_size: 1 / 0)
@@ -328,6 +331,7 @@ def test_the_model_description_carries_the_builds_start_values():
     from cardan_joint.fmi.slave3 import ModelSlave3
 
     class Bent(ModelSlave3):
+        model_folder = "universal_joint"
         start_overrides = {"bend_angle": 0.2, "max_bend_angle": math.nextafter(1.2, 2.0)}
 
     variables = {v.get("name"): v for v in Bent(instance_name="bent").to_xml().iter("Float64")}

@@ -426,7 +426,9 @@ def test_invalid_load_holds_only_the_outputs_that_depend_on_it(model_description
 def test_the_slave_survives_a_host_without_stderr(monkeypatch):
     from cardan_joint.fmi.slave import ModelSlave
 
-    slave = ModelSlave(instance_name="no-stderr")
+    slave = type("Joint", (ModelSlave,), {"model_folder": "universal_joint"})(
+        instance_name="no-stderr"
+    )
     monkeypatch.setattr(sys, "stderr", None)
     slave.set_real([0], [math.nan])
     assert slave.do_step(0.0, 0.01) is False
@@ -437,14 +439,14 @@ def test_the_slave_survives_a_host_without_stderr(monkeypatch):
 def test_a_refused_step_leaves_the_clock_alone():
     from cardan_joint.fmi.slave import ModelSlave
 
-    slave = ModelSlave(instance_name="clock")
+    slave = type("Joint", (ModelSlave,), {"model_folder": "universal_joint"})(instance_name="clock")
     slave.setup_experiment(0.0)
     slave.exit_initialization_mode()
     assert slave.do_step(0.0, 0.5) is True
     saved = slave._get_fmu_state()
     slave.set_real([2], [1.5])  # beyond the guard
     assert slave.do_step(123.0, 0.5) is False
-    assert slave._get_fmu_state()["joint"]["time"] == saved["joint"]["time"] == 0.5
+    assert slave._get_fmu_state()["model"]["time"] == saved["model"]["time"] == 0.5
 
 
 @pytest.mark.parametrize(

@@ -15,6 +15,11 @@ from cardan_joint.models.universal_joint import variables as table
 from cardan_joint.models.universal_joint.model import CardanJoint
 from cardan_joint.physics import Reason, Refusal
 
+
+class Joint(ModelSlave):
+    model_folder = "universal_joint"
+
+
 REFERENCE = {name: k for k, name in enumerate(v.name for v in table.VARIABLES)}
 ALL = list(range(len(table.VARIABLES)))
 PEAK = dict(bend_angle=1.38, bend_angle_rate=2.0, bend_angle_acceleration=-100.0)
@@ -22,7 +27,7 @@ PEAK_STEP = 0.04  # both ends at 1.38 rad, the vertex at 1.40 rad > 80 deg
 
 
 def initialized(**start):
-    slave = ModelSlave(instance_name="guarded")
+    slave = Joint(instance_name="guarded")
     slave.setup_experiment(0.0)
     slave.set_real([REFERENCE[n] for n in start], list(start.values()))
     slave.exit_initialization_mode()
@@ -140,7 +145,7 @@ def test_a_state_missing_a_joint_value_is_refused():
     slave, other = initialized(), initialized(input_speed=77.0)
     other.do_step(0.0, 0.3)
     state = other._get_fmu_state()
-    del state["joint"]["fraction_error"]
+    del state["model"]["fraction_error"]
     restored(slave, state, "KeyError")
 
 

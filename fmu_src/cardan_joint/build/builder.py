@@ -122,10 +122,10 @@ def _stage(
     )
     script = _rewrite(
         script,
-        r"^    model_folder = \"\w+\"$",
+        r"^    model_folder = \"\"  # .*$",
         f"    model_folder = {folder!r}",
         "model_folder",
-        "model_folder" in script,
+        True,
     )
     script = _rewrite(
         script,

@@ -31,8 +31,6 @@ class ModelBinding:
         super().__init_subclass__(**kwargs)
 
     def _new_model(self):
-        if self._spec is None:  # the unbound base (tests): the core's default model
-            return super()._new_model()
         return self._spec.make(self.build_settings, **self.start_overrides)
 
     def _initialization_warnings(self):

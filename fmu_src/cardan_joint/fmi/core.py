@@ -1,7 +1,7 @@
 """What every slave of this project shares, whatever the model and the FMI version.
 
 No equation lives here: a slave maps its variables onto a physics object
-(`_new_model()`: the joint, the propshaft, the motor, the load) that offers
+(`_new_model()`: whatever the model folder's spec makes, see `binding`) that offers
 start, step, outputs, parameter_fault, input_problem, invalid_inputs, state and
 restore, the problems as `Refusal`s. This mixin keeps the behaviour around it:
 the output cache, the outputs held while an input is invalid, the refused step
@@ -20,8 +20,6 @@ import json
 from typing import Any
 
 from .. import __version__
-from ..models.universal_joint import variables as joint_table
-from ..models.universal_joint.model import CardanJoint
 from .references import References
 
 
@@ -35,21 +33,18 @@ class SlaveCore:
     author = "Cardan joint FMU team"
     license = "MIT"
     version = __version__
-    description = (
-        "Exact Cardan (Hooke) universal joint: output shaft motion, crosspiece "
-        "orientation and dynamics, input torque and secondary couples"
-    )
+    description = ""  # the model's (its spec's, see binding.py)
     # Each slave makes its library's DefaultExperiment of these.
     experiment = {"start_time": 0.0, "stop_time": 2.0, "step_size": 1e-3}
     # Start values that differ from the table's, written in by the build script.
     start_overrides: dict = {}
-    # The model's variable table; a subclass for another model sets it, `_new_model`
-    # and `live_outputs` (the leading outputs that follow the model's state even
+    # The model's variable table; a model's slave sets it, `_new_model` and
+    # `live_outputs` (the leading outputs that follow the model's state even
     # while inputs are invalid); the flat indices follow.
-    table: Any = joint_table
-    live_outputs: tuple[str, ...] = ("input_angle",)
-    owner = "joint"  # what stays put in messages
-    _refs = References(joint_table, live_outputs)
+    table: Any = None
+    live_outputs: tuple[str, ...] = ()
+    owner = "model"  # what stays put in messages
+    _refs: Any = None
     # Set by each FMI version's slave: its status enumeration, "fmi2"/"fmi3" and
     # "state"/"State" (for messages naming FMI functions).
     _STATUS: Any
@@ -62,14 +57,15 @@ class SlaveCore:
 
     def __init_subclass__(cls, **kwargs):
         super().__init_subclass__(**kwargs)
-        cls._refs = References(cls.table, cls.live_outputs)
+        if cls.table is not None:
+            cls._refs = References(cls.table, cls.live_outputs)
 
     def _new_model(self):
         """The physics object the slave maps its variables onto."""
-        return CardanJoint(**self.start_overrides)
+        raise NotImplementedError(f"{type(self).__name__} names no model")
 
     def _initialization_warnings(self):
-        """Messages logged as warnings when initialization ends (none for the joint)."""
+        """Messages logged as warnings when initialization ends (none by default)."""
         return ()
 
     def _init_model(self):
@@ -239,7 +235,7 @@ class SlaveCore:
     def _get_fmu_state(self):
         try:
             return {
-                "joint": self._model.state(),
+                "model": self._model.state(),
                 "start_time": self._start_time,
                 "initialized": self._initialized,
                 "outputs_held": list(self._outputs_held),
@@ -259,7 +255,7 @@ class SlaveCore:
                 self.table.INPUTS
             ):
                 raise ValueError("the state is from another version of the FMU")
-            self._model.restore(state["joint"])  # all or nothing
+            self._model.restore(state["model"])  # all or nothing
             self._start_time = float(state["start_time"])
             self._initialized = bool(state["initialized"])
             self._outputs_held, self._inputs_held = held_outputs, held_inputs

@@ -6,8 +6,6 @@ output dependencies; FMPy's validator rejects the result. This adds them.
 
 from xml.etree.ElementTree import Element, SubElement
 
-from ..models.universal_joint import variables as joint_table
-
 
 def _number(value: float) -> str:
     return repr(float(value))
@@ -33,9 +31,8 @@ def _unit_definitions(table) -> Element:
     return node
 
 
-def complete(root: Element, table=joint_table) -> Element:
-    """`root` with units, ranges and ModelStructure from `table` (the joint's by
-    default; any `variables.VariableTable` for another model)."""
+def complete(root: Element, table) -> Element:
+    """`root` with units, ranges and ModelStructure from the model's `table`."""
     children = list(root)
     position = next(i for i, node in enumerate(children) if node.tag == "CoSimulation") + 1
     root.insert(position, _unit_definitions(table))

@@ -20,7 +20,7 @@ from cardan_joint.fmi.slave import ModelSlave
 ctypes.pythonapi.Py_IncRef(ctypes.py_object(globals()))
 
 
-class UniversalJoint(ModelSlave):
-    model_folder = "universal_joint"
+class ModelFmu(ModelSlave):
+    model_folder = ""  # the model's folder under models/
     build_settings = {}
     start_overrides = {}

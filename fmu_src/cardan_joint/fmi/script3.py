@@ -21,7 +21,7 @@ from cardan_joint.fmi.slave3 import ModelSlave3
 
 # pythonfmu3's builder and C loader find the slave class by a regular expression
 # that wants `Fmi3Slave` itself among the bases named on this line.
-class UniversalJoint(ModelSlave3, Fmi3Slave):
-    model_folder = "universal_joint"
+class ModelFmu(ModelSlave3, Fmi3Slave):
+    model_folder = ""  # the model's folder under models/
     build_settings = {}
     start_overrides = {}

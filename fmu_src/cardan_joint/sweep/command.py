@@ -159,13 +159,8 @@ def _run(args, fmu, spec, store, progress):
         table, seconds = timed(run_serial, fmu, spec, progress, store)
         print(f"serial: {seconds:.1f} s, {store.written} cases computed")
         return table
-    (client, cluster), startup = timed(connect, args.scheduler, args.workers)
-    try:
+    with connect(args.scheduler, args.workers) as (client, _, startup):
         table, seconds = timed(run_dask, fmu, spec, client, progress, store)
-    finally:
-        client.close()
-        if cluster is not None:
-            cluster.close()
     print(
         f"Dask: {seconds:.1f} s (+ {startup:.1f} s to start or reach the cluster), "
         f"{store.written} cases computed"

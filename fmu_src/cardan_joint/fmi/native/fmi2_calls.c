@@ -241,7 +241,7 @@ fmi2Status fmi2SetRealInputDerivatives(fmi2Component c, const fmi2ValueReference
 {
     (void)vr, (void)n, (void)order, (void)value;
     return unsupported(c, "fmi2SetRealInputDerivatives",
-                       "set input_acceleration and the bend angle rates as inputs instead");
+                       "canInterpolateInputs is false: set the inputs at each step instead");
 }
 
 fmi2Status fmi2GetRealOutputDerivatives(fmi2Component c, const fmi2ValueReference vr[], size_t n,
