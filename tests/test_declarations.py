@@ -24,9 +24,9 @@ from cardan_joint.physics.values import value_ranges
     "model, variables, state",
     [
         (CardanJoint, table, ()),
-        (Motor, MOTOR, ("speed", "angle")),
+        (Motor, MOTOR, ()),
         (Load, LOAD, ()),
-        (InertiaLoad, INERTIA_LOAD, ("speed", "angle")),
+        (InertiaLoad, INERTIA_LOAD, ()),
     ],
     ids=["joint", "motor", "load", "inertia_load"],
 )

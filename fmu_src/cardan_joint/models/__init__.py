@@ -55,21 +55,18 @@ class Model:
 
     def check_start_values(self, values: Mapping[str, float], settings: Mapping) -> None:
         """Raise StartValueError unless `values` name inputs and parameters only and
-        the model built with `settings` can run with them."""
-        from ..names import unknown
+        the model built with `settings` can run with them (the physics' own checks:
+        its unknown-name check names the nearest valid names)."""
+        from ..physics.values import UnknownVariableError
 
         if self.check_settings:
             self.check_settings(settings)
-        table = self.table_for(settings)
-        settable = set(table.INPUTS) | set(table.PARAMETERS)
-        strangers = sorted(set(values) - settable)
-        if strangers:
-            built = f" of the {self.default_name(settings)}"
-            kind = f"input or parameter{built} (only they have start values)"
+        try:
+            model = self.make(settings, **values)
+        except UnknownVariableError as error:
             raise StartValueError(
-                f"cannot set a start value: {unknown(strangers[0], settable, kind)}"
-            )
-        model = self.make(settings, **values)
+                f"cannot set a start value: {error} (only inputs and parameters have one)"
+            ) from None
         problem = model.parameter_problem() or model.input_problem()
         if problem:
             raise StartValueError(f"invalid start values: {problem.text}")

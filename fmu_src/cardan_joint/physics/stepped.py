@@ -1,18 +1,28 @@
-"""What the models stepped from a variable table share: `_TableModel` (inputs and
-parameters as attributes with the table's start values, their checks, the step
-and the state) and the exact rotor step of a driven inertia.
+"""The one stepped-model base every model's physics derives from: `SteppedModel`
+(inputs and parameters as attributes with the table's start values, their
+checks, the step and the saved state), `ShaftModel` (a model driven at an
+input shaft kept as exact revolutions) and `RotorModel` (one rotor advanced by
+`exact_rotor_step`, the exact step of a driven inertia).
 
-Every stepped model follows `CardanJoint`'s protocol (start, step returning a
+Every stepped model follows this protocol (start, step returning a
 `Refusal` or None, outputs in table order, parameter_fault, input_problem,
 invalid_inputs, state/restore), which the FMU slaves' core relies on; the value
 and step-size checks are the joint's (`values.ValueChecks`).
 """
 
 import math
+from typing import Any
 
-from ..variable_schema import VariableTable
 from .refusal import Refusal
-from .values import ValueChecks, set_start_values, value_ranges
+from .values import (
+    SavedState,
+    Table,
+    ValueChecks,
+    advance_input,
+    bounds,
+    set_start_values,
+    value_ranges,
+)
 
 
 def _phi2(z: float) -> float:
@@ -42,10 +52,14 @@ def exact_rotor_step(speed: float, inertia: float, damping: float, torque: float
     return speed + acceleration * h * phi1, h * (speed + acceleration * h * _phi2(z))
 
 
-class _TableModel(ValueChecks):
-    """Inputs and parameters as attributes with the table's start values; the checks."""
+class SteppedModel(ValueChecks, SavedState):
+    """The one base of the stepped models: inputs and parameters as attributes
+    with the table's start values, their checks, the step (the checks, then
+    `_advance`, then the clock) and the saved state (`SavedState`)."""
 
-    table: VariableTable
+    table: Table
+    _input_ranges: tuple
+    _parameter_ranges: tuple
 
     def __init__(self, **values: float) -> None:
         table = self.table
@@ -66,6 +80,7 @@ class _TableModel(ValueChecks):
         return self._value_problem(self.table.INPUTS, self._input_ranges)
 
     def invalid_inputs(self) -> set:
+        """Names of the inputs unusable at this instant (non-finite, out of range)."""
         return {r.variable for r in self._bad_values(self.table.INPUTS, self._input_ranges)}
 
     def step(self, step_size: float) -> Refusal | None:
@@ -81,18 +96,61 @@ class _TableModel(ValueChecks):
         """Move the state `h` s on, or refuse (then nothing has changed)."""
         raise NotImplementedError(f"{type(self).__name__} must advance its state")
 
-    def _variables(self) -> tuple[str, ...]:
-        return self.table.INPUTS + self.table.PARAMETERS
 
-    def state(self) -> dict:
-        values = {name: getattr(self, name) for name in self._variables()}
-        values["time"] = self.time
-        return values
+class ShaftModel(SteppedModel):
+    """A stepped model driven at an input shaft (the joint, the propshaft): the
+    shaft's angle kept as exact revolutions, advanced exactly at constant
+    acceleration over a step (`values.advance_input`)."""
 
-    def restore(self, state: dict) -> None:
-        """Take a `state()`; all or nothing (a malformed state raises and changes nothing)."""
-        values = {name: float(state[name]) for name in self._variables()}
-        values["time"] = float(state["time"])
-        for name, value in values.items():
-            setattr(self, name, value)
-        self.parameter_fault = self.parameter_problem()
+    _SHAFT = True
+    _speed_limit: float
+    input_speed: float
+    input_acceleration: float
+
+    def _advance(self, h: float) -> Refusal | None:
+        advanced = advance_input(
+            self._angle, self.input_speed, self.input_acceleration, h, self._speed_limit, self.time
+        )
+        if isinstance(advanced, Refusal):
+            return advanced
+        self._angle, self.input_speed = advanced
+        return None
+
+    @property
+    def input_angle(self) -> float:
+        return float(self._angle)
+
+
+class RotorModel(SteppedModel):
+    """A stepped model whose state is one rotor (the motor, the inertia load):
+    speed and angle from their start parameters, advanced by the exact rotor
+    step, a speed beyond `speed_start`'s range refused with `_SPEED_REASON`."""
+
+    _STATE = ("speed", "angle")
+    _SPEED_REASON: Any
+    _TORQUE_INPUT: str  # the input named in the speed refusal
+    speed_start: float
+    angle_start: float
+    speed: float
+    angle: float
+
+    def start(self, time: float) -> None:
+        super().start(time)
+        valid = not self.parameter_fault
+        self.speed = self.speed_start if valid else 0.0
+        self.angle = self.angle_start if valid else 0.0
+
+    def _rotor(self) -> tuple[float, float, float]:
+        """(inertia, damping, torque held over the step) of the rotor now."""
+        raise NotImplementedError(f"{type(self).__name__} must name its rotor")
+
+    def _advance(self, h: float) -> Refusal | None:
+        speed, increment = exact_rotor_step(self.speed, *self._rotor(), h)
+        limit = bounds(self.table.BY_NAME["speed_start"])[1]
+        if not abs(speed) <= limit:
+            torque = self._TORQUE_INPUT
+            details = {torque: getattr(self, torque), "step_size": h}
+            return Refusal(self._SPEED_REASON, "speed", speed, limit, self.time, "rad/s", details)
+        self.angle += increment
+        self.speed = speed
+        return None

@@ -3,11 +3,11 @@ constant torque; it has no state: torque = J a + c omega + T0 of the shaft motio
 it is given."""
 
 from ...physics.refusal import Refusal
-from ...physics.stepped import _TableModel
+from ...physics.stepped import SteppedModel
 from .variables import LOAD
 
 
-class Load(_TableModel):
+class Load(SteppedModel):
     table = LOAD
 
     # `LOAD`'s inputs and parameters, set by __init__.

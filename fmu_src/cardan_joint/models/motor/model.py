@@ -5,32 +5,23 @@ the rotor obeys J d(omega)/dt = T_s - k omega - T_L, a linear ODE solved exactly
 over a step (`physics.stepped.exact_rotor_step`): no integration error at any step.
 """
 
-from ...physics.refusal import Refusal
-from ...physics.stepped import _TableModel, exact_rotor_step
-from ...physics.values import bounds
+from ...physics.stepped import RotorModel
 from .refusals import MotorReason
 from .variables import MOTOR
 
 
-class Motor(_TableModel):
+class Motor(RotorModel):
     table = MOTOR
-    _SPEED_LIMIT = bounds(MOTOR.BY_NAME["speed_start"])[1]
+    _SPEED_REASON = MotorReason.ROTOR_SPEED
+    _TORQUE_INPUT = "load_torque"
 
-    # `MOTOR`'s input and parameters (set by __init__), then the rotor's state.
+    # `MOTOR`'s input and parameters (set by __init__); the rotor's state is the base's.
     load_torque: float
     stall_torque: float
     no_load_speed: float
     rotor_inertia: float
     speed_start: float
     angle_start: float
-    speed: float
-    angle: float
-
-    def start(self, time: float) -> None:
-        super().start(time)
-        valid = not self.parameter_fault
-        self.speed = self.speed_start if valid else 0.0
-        self.angle = self.angle_start if valid else 0.0
 
     @property
     def drag_constant(self) -> float:
@@ -47,32 +38,10 @@ class Motor(_TableModel):
     def time_constant(self) -> float:
         return self.rotor_inertia / self.drag_constant
 
-    def _advance(self, h: float) -> Refusal | None:
-        speed, increment = exact_rotor_step(
-            self.speed,
-            self.rotor_inertia,
-            self.drag_constant,
-            self.stall_torque - self.load_torque,
-            h,
-        )
-        if not abs(speed) <= self._SPEED_LIMIT:
-            return Refusal(
-                MotorReason.ROTOR_SPEED,
-                "speed",
-                speed,
-                self._SPEED_LIMIT,
-                self.time,
-                "rad/s",
-                {"load_torque": self.load_torque, "step_size": h},
-            )
-        self.angle += increment
-        self.speed = speed
-        return None
+    def _rotor(self) -> tuple[float, float, float]:
+        return self.rotor_inertia, self.drag_constant, self.stall_torque - self.load_torque
 
     def outputs(self) -> tuple:
         """Values of `MOTOR.OUTPUTS`: speed, acceleration, angle, motor torque."""
         torque = self.torque(self.speed)
         return (self.speed, (torque - self.load_torque) / self.rotor_inertia, self.angle, torque)
-
-    def _variables(self) -> tuple[str, ...]:
-        return super()._variables() + ("speed", "angle")

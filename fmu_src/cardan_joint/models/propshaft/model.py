@@ -11,7 +11,8 @@ import math
 
 from ...physics.refusal import Reason, Refusal
 from ...physics.revolutions import split_angle
-from ...physics.values import SavedState, ValueChecks, advance_input, set_start_values, value_ranges
+from ...physics.stepped import ShaftModel
+from ...physics.values import angle_limit_problem, set_start_values, value_ranges
 from .chain import chain
 from .checks import angle_warnings
 from .fluctuation import equivalent_angle, speed_ratio_fluctuation
@@ -19,7 +20,7 @@ from .geometry import HALF_PI, TWO_PI, Layout, layout
 from .variables import propshaft_table
 
 
-class Propshaft(ValueChecks, SavedState):
+class Propshaft(ShaftModel):
     # The inputs and parameters every layout has, set from the table by __init__;
     # the per-shaft angles, phases and inertias are read by name (`getattr`).
     input_speed: float
@@ -36,7 +37,7 @@ class Propshaft(ValueChecks, SavedState):
         self._fluctuation: tuple[Layout, float] | None = None
         self.joints = joints
         self._layout_outputs: tuple[Layout, tuple] | None = None
-        set_start_values(self, table, values, "propshaft")
+        set_start_values(self, table, values, f"{joints}-joint Propshaft")
         by_name = table.BY_NAME
         self._input_ranges = value_ranges(by_name, table.INPUTS)
         assert all(low == -high for _, low, high, _ in self._input_ranges), "symmetric ranges"
@@ -93,18 +94,9 @@ class Propshaft(ValueChecks, SavedState):
                     "rad",
                     kind="parameter",
                 )
-        guard = self.max_working_angle
-        if not 0.0 < guard < HALF_PI:
-            return Refusal(
-                Reason.WORKING_ANGLE_GUARD,
-                "max_working_angle",
-                guard,
-                0.0 if guard <= 0.0 else HALF_PI,
-                self.time,
-                "rad",
-                kind="parameter",
-            )
-        return None
+        return angle_limit_problem(
+            Reason.WORKING_ANGLE_GUARD, "max_working_angle", self.max_working_angle, self.time
+        )
 
     def _geometry(self):
         return layout(
@@ -140,34 +132,7 @@ class Propshaft(ValueChecks, SavedState):
             return None
         return self._value_problem(self.table.INPUTS, self._input_ranges)
 
-    def invalid_inputs(self) -> set:
-        return {r.variable for r in self._bad_values(self.table.INPUTS, self._input_ranges)}
-
-    def step(self, step_size: float) -> Refusal | None:
-        """Advance by `step_size`; return None, or why the step was refused (then
-        nothing has changed)."""
-        problem = self.step_problem(step_size)
-        if problem:
-            return problem
-        advanced = advance_input(
-            self._angle,
-            self.input_speed,
-            self.input_acceleration,
-            step_size,
-            self._speed_limit,
-            self.time,
-        )
-        if isinstance(advanced, Refusal):
-            return advanced
-        self._angle, self.input_speed = advanced
-        self.time += step_size
-        return None
-
     # --- outputs -----------------------------------------------------------
-
-    @property
-    def input_angle(self) -> float:
-        return float(self._angle)
 
     def kinematics(self) -> tuple[float, float]:
         """(output angle - input angle, output speed) now: what a compliant layer

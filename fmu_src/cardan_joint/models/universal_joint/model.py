@@ -16,14 +16,8 @@ from ...physics.refusal import Reason, Refusal
 from ...physics.response import JointResponse
 from ...physics.response import _response as joint_response_kernel
 from ...physics.revolutions import split_angle
-from ...physics.values import (
-    SavedState,
-    ValueChecks,
-    advance_input,
-    bounds,
-    set_start_values,
-    value_ranges,
-)
+from ...physics.stepped import ShaftModel
+from ...physics.values import angle_limit_problem, bounds, set_start_values, value_ranges
 from ...variable_schema import Variable
 from . import variables as table
 
@@ -47,8 +41,11 @@ _LOAD_LIMIT = bounds(table.BY_NAME["load_torque"])[1]
 _FROM_RESPONSE = itemgetter(*(JointResponse._fields.index(name) for name in table.OUTPUTS[2:]))
 
 
-class CardanJoint(ValueChecks, SavedState):
+class CardanJoint(ShaftModel):
     table = table
+    _input_ranges = _INPUT_RANGES
+    _parameter_ranges = _PARAMETER_RANGES
+    _speed_limit = _SPEED_LIMIT
 
     # Inputs and parameters (`variables.INPUTS`, `variables.PARAMETERS`): __init__
     # sets each from the table, so the names here must be the table's.
@@ -96,11 +93,9 @@ class CardanJoint(ValueChecks, SavedState):
         problem = self._value_problem(table.PARAMETERS, _PARAMETER_RANGES)
         if problem:
             return problem
-        guard = self.max_bend_angle
-        if not 0.0 < guard < table.HALF_PI:
-            limit = 0.0 if guard <= 0.0 else table.HALF_PI
-            return Refusal(Reason.BEND_GUARD, "max_bend_angle", guard, limit, self.time, "rad")
-        return None
+        return angle_limit_problem(
+            Reason.BEND_GUARD, "max_bend_angle", self.max_bend_angle, self.time
+        )
 
     # --- stepping ----------------------------------------------------------
 
@@ -146,7 +141,7 @@ class CardanJoint(ValueChecks, SavedState):
     def invalid_inputs(self) -> set:
         """Names of the inputs unusable at this instant (non-finite, out of range,
         bend angle at or beyond the guard)."""
-        invalid = {r.variable for r in self._bad_values(table.INPUTS, _INPUT_RANGES)}
+        invalid = super().invalid_inputs()
         if not abs(self.bend_angle) < self.max_bend_angle:
             invalid.add("bend_angle")
         return invalid
@@ -170,30 +165,18 @@ class CardanJoint(ValueChecks, SavedState):
                 )
         return max(candidates, key=lambda c: abs(c[2]))
 
-    def step(self, step_size: float) -> Refusal | None:
-        """Advance by `step_size`; return None, or the Refusal of the step (then
-        nothing has changed)."""
-        problem = self.step_problem(step_size)
+    def _advance(self, h: float) -> Refusal | None:
+        """The input shaft (`ShaftModel`), then the bend angle, exact for its constant
+        acceleration over the step; a refusal changes nothing."""
+        problem = super()._advance(h)
         if problem:
             return problem
-        h = step_size
-        advanced = advance_input(
-            self._angle, self.input_speed, self.input_acceleration, h, _SPEED_LIMIT, self.time
-        )
-        if isinstance(advanced, Refusal):
-            return advanced
-        self._angle, self.input_speed = advanced
         rate, bend_acceleration = self.bend_angle_rate, self.bend_angle_acceleration
         self.bend_angle += h * (rate + 0.5 * bend_acceleration * h)
         self.bend_angle_rate = rate + bend_acceleration * h
-        self.time += h
         return None
 
     # --- outputs -----------------------------------------------------------
-
-    @property
-    def input_angle(self) -> float:
-        return float(self._angle)
 
     def response(self) -> JointResponse:
         angle, phase = self._angle, self._phase
