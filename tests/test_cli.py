@@ -1,26 +1,15 @@
 """The `cardan-joint` command, run as a user runs it (separate processes)."""
 
 import re
-import subprocess
 import sys
 from pathlib import Path
 
 import numpy as np
 import pytest
+from conftest import cardan_joint
 
 from cardan_joint import cli, results
 from cardan_joint.models.universal_joint import variables as table
-
-ROOT = Path(__file__).resolve().parents[1]
-
-
-def cardan_joint(*args, cwd=ROOT):
-    return subprocess.run(
-        [sys.executable, "-m", "cardan_joint.cli", *map(str, args)],
-        capture_output=True,
-        text=True,
-        cwd=cwd,
-    )
 
 
 @pytest.fixture(scope="module")

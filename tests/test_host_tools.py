@@ -6,7 +6,7 @@ import sys
 
 import numpy as np
 import pytest
-from conftest import ROOT, build_fmu, run_build
+from conftest import ROOT, build_fmu, cardan_joint, run_build
 
 from cardan_joint import results
 from cardan_joint.host.fmu_info import FmuInfo, build_command
@@ -14,15 +14,6 @@ from cardan_joint.models import MODELS
 
 # Every model the build offers, for every FMI version it offers.
 BUILDS = [(key, version) for key, spec in MODELS.items() for version in spec.fmi_versions]
-
-
-def cardan_joint(*args):
-    return subprocess.run(
-        [sys.executable, "-m", "cardan_joint.cli", *map(str, args)],
-        capture_output=True,
-        text=True,
-        cwd=ROOT,
-    )
 
 
 @pytest.fixture(scope="module")
