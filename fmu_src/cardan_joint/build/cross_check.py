@@ -32,7 +32,7 @@ import numpy as np
 
 MODEL = "UniversalJoint"
 TOOL_ID = "cardan_joint"
-DOCS = Path(__file__).resolve().parents[2] / "docs" / MODEL
+DOCS = Path(__file__).resolve().parents[3] / "docs" / MODEL
 
 OPTIONS = {"StartTime": 0.0, "StopTime": 1.0, "StepSize": 1e-3, "RelTol": 1e-6}
 # Inputs linear in time, their rates given beside them, so that every step is
