@@ -9,8 +9,8 @@ import json
 import shutil
 from pathlib import Path
 
-from cardan_joint import variables as table
-from cardan_joint.native import install_loader
+from cardan_joint.fmi.native import install_loader
+from cardan_joint.models.universal_joint import variables as table
 
 from .timing import ROOT, run_checked
 

@@ -21,7 +21,7 @@ from pythonfmu import Fmi2Causality, Fmi2Slave, Fmi2Variability, Real
 from pythonfmu.enums import Fmi2Initial
 
 # pythonfmu 0.7.0's loader releases one reference too many to this module's
-# namespace at every fmi2Instantiate (see fmu_src/cardan_joint/fmu/UniversalJoint.py).
+# namespace at every fmi2Instantiate (see fmu_src/cardan_joint/fmi/script2.py).
 ctypes.pythonapi.Py_IncRef(ctypes.py_object(globals()))
 
 CONFIG = json.loads(Path(__file__).with_name("floor.json").read_text())

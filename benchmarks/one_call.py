@@ -20,7 +20,7 @@ import statistics
 import time
 from array import array
 
-from cardan_joint import variables as table
+from cardan_joint.models.universal_joint import variables as table
 
 from .step_cost import STEP_SIZE, TIMING_INPUTS
 from .timing import against, chunks, in_fresh_process, met, us
@@ -32,7 +32,7 @@ PYTHON_PATHS = ("physics", "slave set/do_step/get", "slave fast_step")
 
 
 def _physics_stepper():
-    from cardan_joint.physics.model import CardanJoint
+    from cardan_joint.models.universal_joint.model import CardanJoint
 
     joint = CardanJoint(**TIMING_INPUTS)
     step, outputs = joint.step, joint.outputs
@@ -47,9 +47,12 @@ def _physics_stepper():
 
 
 def _slave():
-    from cardan_joint.fmu.slave import CardanJointSlave
+    from cardan_joint.fmi.slave import ModelSlave
 
-    slave = CardanJointSlave(instance_name="benchmark")
+    class Joint(ModelSlave):
+        model_folder = "universal_joint"
+
+    slave = Joint(instance_name="benchmark")
     slave.setup_experiment(0.0)
     refs = slave._refs
     slave.set_real(refs.all_inputs, list(TIMING_INPUTS.values()))

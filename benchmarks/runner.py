@@ -24,8 +24,8 @@ import time
 from dataclasses import dataclass
 from pathlib import Path
 
-from cardan_joint import variables as table
 from cardan_joint.extras import MissingExtra, require
+from cardan_joint.models.universal_joint import variables as table
 
 from .accuracy import accuracy, accuracy_rows, accuracy_table, worker_accuracy
 from .c_host import c_host_cost, c_host_rows

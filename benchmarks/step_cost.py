@@ -8,8 +8,8 @@ all of them within milliseconds, so their ratio holds where absolute times do no
 
 import time
 
-from cardan_joint import variables as table
-from cardan_joint.instance import FmuInstance
+from cardan_joint.host.instance import FmuInstance
+from cardan_joint.models.universal_joint import variables as table
 
 from .timing import StepClock, against, chunks, in_fresh_process, met, peak_rss_kib, us
 

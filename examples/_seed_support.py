@@ -10,8 +10,8 @@ import numpy as np
 from _support import example_fmu, example_parser, output_folder
 
 from cardan_joint import results
-from cardan_joint.plotting import pyplot, save_figure  # noqa: F401 - pyplot: for the seed scripts
-from cardan_joint.simulate import simulate
+from cardan_joint.host.plotting import pyplot, save_figure  # noqa: F401 - pyplot: for the seed scripts
+from cardan_joint.host.simulate import simulate
 
 # Dark enough on white for thin lines, distinct for up to six bend angles.
 COLORS = ("tab:blue", "tab:orange", "tab:green", "tab:red", "tab:purple", "tab:brown")

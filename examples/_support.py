@@ -1,14 +1,14 @@
 """Plumbing shared by the examples: the command line, the FMU they need, legends.
 
-Figures otherwise come from cardan_joint.plotting.
+Figures otherwise come from cardan_joint.host.plotting.
 """
 
 import argparse
 import sys
 from pathlib import Path
 
-from cardan_joint.fmu_info import build_command as fmu_build_command
-from cardan_joint.simulate import DEFAULT_FMU
+from cardan_joint.host.fmu_info import build_command as fmu_build_command
+from cardan_joint.host.simulate import DEFAULT_FMU
 
 DEFAULT_MODEL = "UniversalJoint"
 

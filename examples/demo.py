@@ -13,9 +13,9 @@ import numpy as np
 from _support import example_fmu, example_parser, output_folder
 
 from cardan_joint import results
-from cardan_joint import variables as table
-from cardan_joint.plotting import pyplot, save_figure
-from cardan_joint.simulate import simulate
+from cardan_joint.host.plotting import pyplot, save_figure
+from cardan_joint.host.simulate import simulate
+from cardan_joint.models.universal_joint import variables as table
 from cardan_joint.units import RAD_PER_S_TO_RPM, RAD_TO_DEG, RPM_TO_RAD_PER_S
 
 

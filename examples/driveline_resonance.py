@@ -25,9 +25,9 @@ import numpy as np
 
 from cardan_joint import results
 from cardan_joint.build import build
-from cardan_joint.driveline_system import torsional_step
-from cardan_joint.instance import FmuInstance
-from cardan_joint.plotting import pyplot, save_figure
+from cardan_joint.host.driveline_system import torsional_step
+from cardan_joint.host.instance import FmuInstance
+from cardan_joint.host.plotting import pyplot, save_figure
 from cardan_joint.units import RAD_PER_S_TO_RPM
 
 sys.path.insert(0, str(Path(__file__).resolve().parent))

@@ -17,10 +17,10 @@ from pathlib import Path
 
 import numpy as np
 
-from cardan_joint import driveline_system as system
 from cardan_joint import results
 from cardan_joint.extras import MissingExtra, require
-from cardan_joint.plotting import pyplot, save_figure
+from cardan_joint.host import driveline_system as system
+from cardan_joint.host.plotting import pyplot, save_figure
 from cardan_joint.units import RAD_PER_S_TO_RPM
 
 sys.path.insert(0, str(Path(__file__).resolve().parent))

@@ -64,9 +64,9 @@ import numpy as np
 from _support import example_fmu, example_parser, output_folder
 
 from cardan_joint import results
-from cardan_joint.instance import ExtractedFMU
+from cardan_joint.host.instance import ExtractedFMU
+from cardan_joint.host.plotting import pyplot, save_figure
 from cardan_joint.physics import quantities
-from cardan_joint.plotting import pyplot, save_figure
 
 COUPLINGS = ("lead", "hold", "angle")
 ARRANGEMENTS = {"Z": -1.0, "W": 1.0}  # sign of joint 2's bend angle

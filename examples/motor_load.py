@@ -21,8 +21,8 @@ import numpy as np
 from _support import example_fmu, example_parser, legend_outside, output_folder
 
 from cardan_joint import results
-from cardan_joint.plotting import pyplot, save_figure
-from cardan_joint.simulate import DEFAULT_FMU
+from cardan_joint.host.plotting import pyplot, save_figure
+from cardan_joint.host.simulate import DEFAULT_FMU
 from cardan_joint.units import RAD_PER_S_TO_RPM
 
 # (A keyword dict like tests/test_robustness.py's inputs: alike in shape only.)
@@ -53,7 +53,7 @@ class Driveline:
     """The FMU instance plus the master's closure of the motor and load sides."""
 
     def __init__(self, fmu_path, p):
-        from cardan_joint.instance import FmuInstance
+        from cardan_joint.host.instance import FmuInstance
 
         self.p = p
         i1, i2, i3 = p["inertia"]

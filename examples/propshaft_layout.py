@@ -23,9 +23,9 @@ import warnings
 import numpy as np
 from _support import example_fmu, example_parser, legend_outside, output_folder
 
-from cardan_joint.physics.propshaft import angle_report, best_phasing, layout
-from cardan_joint.plotting import pyplot, save_figure
-from cardan_joint.simulate import simulate
+from cardan_joint.host.plotting import pyplot, save_figure
+from cardan_joint.host.simulate import simulate
+from cardan_joint.models.propshaft import angle_report, best_phasing, layout
 from cardan_joint.units import RAD_PER_S_TO_RPM
 
 SIDE_DEG = (-3.0, -1.0, -3.0)

@@ -27,6 +27,33 @@ def run_build(dest: Path, *args: str, timeout: float | None = None):
     return subprocess.run(command, capture_output=True, text=True, cwd=ROOT, timeout=timeout)
 
 
+def cardan_joint(*args, cwd: Path = ROOT):
+    """Run the `cardan-joint` command in its own process; the completed process."""
+    return subprocess.run(
+        [sys.executable, "-m", "cardan_joint.cli", *map(str, args)],
+        capture_output=True,
+        text=True,
+        cwd=cwd,
+    )
+
+
+def refused_keeping_state(model, change: dict, words, held_input: str) -> None:
+    """`model` (stepped once) refuses a step after `change` with a message holding
+    `words` that reads back exactly, and keeps its state but `held_input`."""
+    from cardan_joint.physics import Refusal
+
+    model.step(0.5)
+    before = model.state()
+    for name, value in change.items():
+        setattr(model, name, value)
+    problem = model.step(0.1)
+    assert problem and all(word in problem.message for word in words), problem
+    assert Refusal.from_message(problem.message) == problem
+    after = model.state()
+    after.pop(held_input), before.pop(held_input)
+    assert after == before
+
+
 def build_fmu(dest: Path, *args: str) -> Path:
     """Build as run_build does; the FMU's path, as the build reports it."""
     result = run_build(dest, *args)

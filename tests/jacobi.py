@@ -5,8 +5,8 @@ import shutil
 
 import numpy as np
 
-from cardan_joint import driveline_system as system
-from cardan_joint.instance import FmuInstance
+from cardan_joint.host import driveline_system as system
+from cardan_joint.host.instance import FmuInstance
 
 
 def jacobi_master(
@@ -21,7 +21,7 @@ def jacobi_master(
     from fmpy import extract
     from fmpy.ssp.ssd import find_components, read_ssd
 
-    from cardan_joint.ssp import fmpy_parameter_set
+    from cardan_joint.host.ssp import fmpy_parameter_set
 
     unzipped = extract(str(ssp_path))
     parameters = {p.name: float(p.value) for p in fmpy_parameter_set(ssp_path).parameters}

@@ -41,22 +41,22 @@ class NoNumpy:
 
 
 def slave_classes() -> dict:
-    from cardan_joint.fmu.driveline_slaves import LoadSlave, MotorSlave
-    from cardan_joint.fmu.propshaft_slave import PropshaftSlave
-    from cardan_joint.fmu.slave import CardanJointSlave
-    from cardan_joint.fmu.slave3 import CardanJointSlave3
+    from cardan_joint.fmi.slave import ModelSlave
+    from cardan_joint.fmi.slave3 import ModelSlave3
 
-    def propshaft(joints):
-        return type(f"Propshaft{joints}", (PropshaftSlave,), {"build_settings": {"joints": joints}})
+    def bound(name, folder, **settings):
+        return type(name, (ModelSlave,), {"model_folder": folder, "build_settings": settings})
 
     return {
-        "UniversalJoint": CardanJointSlave,
-        "Propshaft2": propshaft(2),
-        "Propshaft3": propshaft(3),
-        "Propshaft4": propshaft(4),
-        "Motor": MotorSlave,
-        "Load": LoadSlave,
-        "UniversalJoint3": CardanJointSlave3,
+        "UniversalJoint": bound("UniversalJoint", "universal_joint"),
+        "Propshaft2": bound("Propshaft2", "propshaft", joints=2),
+        "Propshaft3": bound("Propshaft3", "propshaft", joints=3),
+        "Propshaft4": bound("Propshaft4", "propshaft", joints=4),
+        "Motor": bound("Motor", "motor"),
+        "Load": bound("Load", "load"),
+        "UniversalJoint3": type(
+            "UniversalJoint3", (ModelSlave3,), {"model_folder": "universal_joint"}
+        ),
     }
 
 

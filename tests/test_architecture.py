@@ -1,15 +1,106 @@
-"""Physics apart from plumbing: the physics package imports no FMI stack."""
+"""Physics apart from plumbing, and the layers of the package.
 
+Layers, each importing only its own and lower ones: the shared physics and data
+(`physics/`, `units`, `variable_schema`, `names`, `extras`, `results`) <- the model folders
+(`models/<name>/`: a model's table, physics and spec; one model may build on
+another) <- `fmi/` (the slaves) <- `build/` <- `host/` <- the commands (`sweep/`,
+`cli`, the `simulate` entry point). Checked on the source, statically.
+"""
+
+import ast
 import subprocess
 import sys
+from pathlib import Path
+
+import pytest
+
+PACKAGE = Path(__file__).resolve().parents[1] / "fmu_src" / "cardan_joint"
+LAYERS = {"shared": 0, "models": 1, "fmi": 2, "build": 3, "host": 4, "commands": 5}
+TOP = {"physics": "shared", "models": "models", "fmi": "fmi", "build": "build", "host": "host"}
+SHARED_MODULES = {"__init__", "units", "variable_schema", "names", "extras", "results"}
 
 
-def test_physics_imports_neither_pythonfmu_nor_fmpy():
+def _layer(module: str) -> str:
+    """The layer of `module` (dotted, under cardan_joint; "" is the package)."""
+    head = module.split(".")[0] if module else "__init__"
+    if head in TOP:
+        return TOP[head]
+    return "shared" if head in SHARED_MODULES else "commands"
+
+
+def _module(path: Path) -> str:
+    parts = path.relative_to(PACKAGE).with_suffix("").parts
+    return ".".join(parts[:-1] if parts[-1] == "__init__" else parts)
+
+
+def _imports(path: Path):
+    """The cardan_joint modules `path` imports (dotted, under cardan_joint)."""
+    package = (
+        _module(path).split(".") if path.name == "__init__.py" else _module(path).split(".")[:-1]
+    )
+    package = [p for p in package if p]
+    for node in ast.walk(ast.parse(path.read_text())):
+        if isinstance(node, ast.ImportFrom):
+            if node.level:
+                base = package[: len(package) - (node.level - 1)]
+                target = ".".join(base + ([node.module] if node.module else []))
+            elif node.module and node.module.split(".")[0] == "cardan_joint":
+                target = node.module.partition(".")[2]
+            else:
+                continue
+            yield target
+        elif isinstance(node, ast.Import):
+            for alias in node.names:
+                if alias.name.split(".")[0] == "cardan_joint":
+                    yield alias.name.partition(".")[2]
+
+
+SOURCES = sorted(PACKAGE.rglob("*.py"))
+
+
+@pytest.mark.parametrize("path", SOURCES, ids=lambda p: str(p.relative_to(PACKAGE)))
+def test_a_module_imports_no_higher_layer(path):
+    own = _layer(_module(path))
+    higher = [target for target in _imports(path) if LAYERS[_layer(target)] > LAYERS[own]]
+    assert not higher, f"{own} module {_module(path)} imports {higher}"
+
+
+def test_the_layer_check_sees_an_upward_import(tmp_path):
+    # The check above must be able to fail: a physics module importing a model.
+    fake = PACKAGE / "physics" / "values.py"
+    assert _layer(_module(fake)) == "shared"
+    assert _layer("models.load.model") == "models"
+    assert LAYERS[_layer("host.simulate")] > LAYERS[_layer("fmi.slave")]
+
+
+def test_physics_and_models_import_neither_pythonfmu_nor_fmpy():
     check = (
-        "import sys, cardan_joint.physics as p; p.CardanJoint().outputs(); "
+        "import sys, cardan_joint.models as m; "
+        "[spec.make(spec.default_settings).outputs() for spec in m.discover().values()]; "
         "print(sorted(m for m in sys.modules if m.split('.')[0] in "
-        "('pythonfmu', 'fmpy', 'matplotlib', 'dask', 'libcosimpy')))"
+        "('pythonfmu', 'pythonfmu3', 'fmpy', 'matplotlib', 'dask', 'libcosimpy')))"
     )
     run = subprocess.run([sys.executable, "-c", check], capture_output=True, text=True, timeout=60)
     assert run.returncode == 0, run.stderr
     assert run.stdout.strip() == "[]"
+
+
+def test_every_model_folder_is_discovered():
+    from cardan_joint.models import discover
+
+    folders = {p.parent.name for p in (PACKAGE / "models").glob("*/spec.py")}
+    assert {spec.folder for spec in discover().values()} == folders
+    assert len(folders) >= 7
+
+
+def test_the_fmi_layer_names_no_model():
+    import re
+
+    from cardan_joint.models import discover
+
+    names = {n for spec in discover().values() for n in (spec.key, spec.folder)}
+    names.add("CardanJoint")
+    word = re.compile(r"\b(" + "|".join(sorted(names)) + r")\b")
+    for path in sorted((PACKAGE / "fmi").rglob("*.py")):
+        found = word.search(path.read_text())
+        assert found is None, f"{path.relative_to(PACKAGE)} names the model {found.group(0)}"

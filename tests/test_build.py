@@ -9,8 +9,8 @@ import pytest
 from conftest import build_fmu
 
 from cardan_joint import sweep
-from cardan_joint.archive import normalise
 from cardan_joint.build import build
+from cardan_joint.build.archive import normalise
 
 
 def test_a_build_leaves_no_module_of_its_staged_copy_behind(tmp_path):

@@ -10,7 +10,7 @@ from pathlib import Path
 import numpy as np
 import pytest
 
-from cardan_joint.native import search_path, shared_libpython
+from cardan_joint.fmi.native import search_path, shared_libpython
 
 EMPTY_ENVIRONMENT = {"PATH": "/usr/bin:/bin"}
 STEPS, DT = 10_000, 1e-3
@@ -184,7 +184,7 @@ def test_fmpy_and_libcosim_in_a_python_that_links_libpython_statically(fmu_path)
     source = str(Path(__file__).resolve().parents[1] / "fmu_src")
     script = (
         "from fmpy import simulate_fmu\n"
-        "from cardan_joint.cosim import run_libcosim\n"
+        "from cardan_joint.host.cosim import run_libcosim\n"
         f"fmu = {str(fmu_path)!r}\n"
         "r = simulate_fmu(fmu, stop_time=0.5, output_interval=1e-3,"
         " start_values={'input_speed': 12.0, 'bend_angle': 0.4})\n"

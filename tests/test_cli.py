@@ -1,26 +1,15 @@
 """The `cardan-joint` command, run as a user runs it (separate processes)."""
 
 import re
-import subprocess
 import sys
 from pathlib import Path
 
 import numpy as np
 import pytest
+from conftest import cardan_joint
 
 from cardan_joint import cli, results
-from cardan_joint import variables as table
-
-ROOT = Path(__file__).resolve().parents[1]
-
-
-def cardan_joint(*args, cwd=ROOT):
-    return subprocess.run(
-        [sys.executable, "-m", "cardan_joint.cli", *map(str, args)],
-        capture_output=True,
-        text=True,
-        cwd=cwd,
-    )
+from cardan_joint.models.universal_joint import variables as table
 
 
 @pytest.fixture(scope="module")
@@ -229,7 +218,7 @@ def test_the_command_leaves_argv_and_stderr_alone(built_fmu, tmp_path, monkeypat
         seen.append((sys.argv[0], sys.stderr))
         return 0
 
-    monkeypatch.setattr(cardan_joint.simulate, "simulate", fake_simulate)
+    monkeypatch.setattr(cardan_joint.host.simulate, "simulate", fake_simulate)
     monkeypatch.setattr(cardan_joint.build, "main", fake_build)
     assert (
         cli.main(

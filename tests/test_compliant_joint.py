@@ -8,11 +8,12 @@ import numpy as np
 import pytest
 from reference.geometry import geometric_reference
 
-from cardan_joint.compliant_variables import COMPLIANT_JOINT
-from cardan_joint.instance import FmuInstance
-from cardan_joint.physics import CardanJoint, Reason, Refusal
-from cardan_joint.physics.compliant import CompliantDrive, CompliantJoint
-from cardan_joint.physics.inertia_load import InertiaLoad
+from cardan_joint.host.instance import FmuInstance
+from cardan_joint.models.compliant_joint.model import CompliantDrive, CompliantJoint
+from cardan_joint.models.compliant_joint.variables import COMPLIANT_JOINT
+from cardan_joint.models.inertia_load.model import InertiaLoad
+from cardan_joint.models.universal_joint.model import CardanJoint
+from cardan_joint.physics import Reason, Refusal
 
 INERTIA = (0.02, 0.03, 0.045)
 START = dict(

@@ -8,10 +8,10 @@ import pytest
 from conftest import build_fmu
 from reference.propshaft import PropshaftReference
 
-from cardan_joint.compliant_variables import compliant_propshaft_table
-from cardan_joint.instance import FmuInstance
+from cardan_joint.host.instance import FmuInstance
+from cardan_joint.models.compliant_propshaft.model import CompliantPropshaft
+from cardan_joint.models.compliant_propshaft.variables import compliant_propshaft_table
 from cardan_joint.physics import Reason
-from cardan_joint.physics.compliant_propshaft import CompliantPropshaft
 
 D = math.radians
 SIDE, TOP, PHASES = [D(2), D(-9), D(4), D(0)], [D(0), D(3), D(-5), D(1)], [0.4, -0.2]

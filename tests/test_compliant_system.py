@@ -8,9 +8,9 @@ import pytest
 from jacobi import jacobi_master
 from reference.compliant_driveline import simulate_compliant_driveline
 
-from cardan_joint import driveline_system as system
-from cardan_joint.compliant_variables import COMPLIANT_JOINT
-from cardan_joint.ssp import SSPError, check_ssp, fmpy_parameter_set
+from cardan_joint.host import driveline_system as system
+from cardan_joint.host.ssp import SSPError, check_ssp, fmpy_parameter_set
+from cardan_joint.models.compliant_joint.variables import COMPLIANT_JOINT
 
 STOP_TIME = 0.1  # about; each run stops after a whole number of its steps
 WIRING = dict(connections=system.COMPLIANT_CONNECTIONS, recorded=system.COMPLIANT_RECORDED)

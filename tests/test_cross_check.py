@@ -8,7 +8,7 @@ from fmpy.cross_check import validate_result
 from fmpy.cross_check.validate_vendor_repo import validate_test_fmu
 from fmpy.util import read_csv, read_ref_opt_file
 
-from cardan_joint import cross_check
+from cardan_joint.build import cross_check
 
 FILES = {
     "UniversalJoint.fmu",
@@ -71,7 +71,7 @@ def test_the_reference_files_in_docs_are_current(folder, tmp_path):
     for path in fresh:
         committed = ROOT / "docs" / "UniversalJoint" / path.name
         assert committed.read_bytes() == path.read_bytes(), (
-            f"{committed} is stale: run python -m cardan_joint.cross_check"
+            f"{committed} is stale: run python -m cardan_joint.build.cross_check"
         )
         assert (folder / path.name).read_bytes() == path.read_bytes()
     assert (folder / "README.md").read_bytes() == (cross_check.DOCS / "README.md").read_bytes()

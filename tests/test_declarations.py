@@ -6,24 +6,27 @@ from xml.etree.ElementTree import Element, SubElement
 
 import pytest
 
-from cardan_joint import variables as table
-from cardan_joint.driveline_variables import LOAD, MOTOR
-from cardan_joint.fmu import model_description, model_description3
-from cardan_joint.inertia_load_variables import INERTIA_LOAD
-from cardan_joint.physics import CardanJoint, Load, Motor
-from cardan_joint.physics.inertia_load import InertiaLoad
-from cardan_joint.physics.propshaft import Propshaft
+from cardan_joint.fmi import model_description, model_description3
+from cardan_joint.models.inertia_load.model import InertiaLoad
+from cardan_joint.models.inertia_load.variables import INERTIA_LOAD
+from cardan_joint.models.load.model import Load
+from cardan_joint.models.load.variables import LOAD
+from cardan_joint.models.motor.model import Motor
+from cardan_joint.models.motor.variables import MOTOR
+from cardan_joint.models.propshaft import Propshaft
+from cardan_joint.models.propshaft.variables import propshaft_table
+from cardan_joint.models.universal_joint import variables as table
+from cardan_joint.models.universal_joint.model import CardanJoint
 from cardan_joint.physics.values import value_ranges
-from cardan_joint.propshaft_variables import propshaft_table
 
 
 @pytest.mark.parametrize(
     "model, variables, state",
     [
         (CardanJoint, table, ()),
-        (Motor, MOTOR, ("speed", "angle")),
+        (Motor, MOTOR, ()),
         (Load, LOAD, ()),
-        (InertiaLoad, INERTIA_LOAD, ("speed", "angle")),
+        (InertiaLoad, INERTIA_LOAD, ()),
     ],
     ids=["joint", "motor", "load", "inertia_load"],
 )
@@ -52,7 +55,7 @@ def test_a_model_description_without_model_variables_names_the_missing_element()
     root = Element("fmiModelDescription")
     SubElement(root, "CoSimulation")
     with pytest.raises(ValueError, match="<fmiModelDescription> has no <ModelVariables>"):
-        model_description.complete(root)
+        model_description.complete(root, table)
 
 
 def test_an_fmi3_variable_without_a_value_reference_is_named():

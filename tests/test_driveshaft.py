@@ -5,7 +5,7 @@ import math
 import pytest
 from conftest import load_example
 
-from cardan_joint.instance import ExtractedFMU
+from cardan_joint.host.instance import ExtractedFMU
 
 
 @pytest.fixture(scope="module")

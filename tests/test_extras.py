@@ -19,7 +19,7 @@ def test_require_names_the_module_and_the_extra(monkeypatch):
 
 
 def test_libcosim_runs_without_libcosimpy_say_which_extra(monkeypatch, tmp_path):
-    from cardan_joint.cosim import run_libcosim, run_libcosim_ssp
+    from cardan_joint.host.cosim import run_libcosim, run_libcosim_ssp
 
     monkeypatch.setitem(sys.modules, "libcosimpy", None)
     with pytest.raises(MissingExtra, match=r"\[cosim\]"):
@@ -29,7 +29,7 @@ def test_libcosim_runs_without_libcosimpy_say_which_extra(monkeypatch, tmp_path)
 
 
 def test_a_libcosim_log_level_typo_is_named():
-    from cardan_joint.cosim import run_libcosim_ssp
+    from cardan_joint.host.cosim import run_libcosim_ssp
 
     with pytest.raises(ValueError, match="log_level 'warn' is none of trace, debug"):
         run_libcosim_ssp("none.ssp", 1.0, 1e-3, ["Motor.speed"], log_level="warn")

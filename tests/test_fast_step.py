@@ -1,4 +1,4 @@
-"""Issue 21: the one-call step (fmu/fast_step.py) against setReal, doStep and getReal.
+"""Issue 21: the one-call step (fmi/fast_step.py) against setReal, doStep and getReal.
 
 Two slaves of each model take the same random inputs, one through the normal
 accessors, one as the native loader will drive it: inputs written into a
@@ -17,10 +17,29 @@ from array import array
 import pytest
 from pythonfmu.enums import Fmi2Status
 
-from cardan_joint.fmu.driveline_slaves import LoadSlave, MotorSlave
-from cardan_joint.fmu.propshaft_slave import PropshaftSlave
-from cardan_joint.fmu.slave import CardanJointSlave
-from cardan_joint.fmu.slave3 import CardanJointSlave3
+from cardan_joint.fmi.slave import ModelSlave
+from cardan_joint.fmi.slave3 import ModelSlave3
+
+
+class CardanJointSlave(ModelSlave):
+    model_folder = "universal_joint"
+
+
+class PropshaftSlave(ModelSlave):
+    model_folder = "propshaft"
+
+
+class MotorSlave(ModelSlave):
+    model_folder = "motor"
+
+
+class LoadSlave(ModelSlave):
+    model_folder = "load"
+
+
+class CardanJointSlave3(ModelSlave3):
+    model_folder = "universal_joint"
+
 
 SLAVES = (CardanJointSlave, PropshaftSlave, MotorSlave, LoadSlave)
 STEP = 1e-3

@@ -5,8 +5,8 @@ import math
 import numpy as np
 import pytest
 
-from cardan_joint import variables as table
-from cardan_joint.instance import FmuInstance
+from cardan_joint.host.instance import FmuInstance
+from cardan_joint.models.universal_joint import variables as table
 
 GROUPS = table.fmi3_variables()
 ARRAYS = {"crosspiece_quaternion": 4, "crosspiece_angular_velocity": 3, "crosspiece_torque": 3}
@@ -313,9 +313,12 @@ def test_many_instances_in_one_process_are_independent(fmi3_description, fmi3_un
 def test_an_internal_fault_in_a_step_is_an_error_status_not_an_exception(monkeypatch):
     from pythonfmu3.enums import Fmi3Status
 
-    from cardan_joint.fmu.slave3 import CardanJointSlave3
+    from cardan_joint.fmi.slave3 import ModelSlave3
 
-    slave = CardanJointSlave3(instance_name="faulty")
+    class Joint(ModelSlave3):
+        model_folder = "universal_joint"
+
+    slave = Joint(instance_name="faulty")
     slave.enter_initialization_mode()
     slave.exit_initialization_mode()
     monkeypatch.setattr(slave._model, "step", lambda step_size: 1 / 0)
@@ -325,9 +328,10 @@ def test_an_internal_fault_in_a_step_is_an_error_status_not_an_exception(monkeyp
 
 
 def test_the_model_description_carries_the_builds_start_values():
-    from cardan_joint.fmu.slave3 import CardanJointSlave3
+    from cardan_joint.fmi.slave3 import ModelSlave3
 
-    class Bent(CardanJointSlave3):
+    class Bent(ModelSlave3):
+        model_folder = "universal_joint"
         start_overrides = {"bend_angle": 0.2, "max_bend_angle": math.nextafter(1.2, 2.0)}
 
     variables = {v.get("name"): v for v in Bent(instance_name="bent").to_xml().iter("Float64")}

@@ -13,7 +13,7 @@ import numpy as np
 import pytest
 from test_c_host import EMPTY_ENVIRONMENT, run_host
 
-from cardan_joint.native import fmi3_headers
+from cardan_joint.fmi.native import fmi3_headers
 
 
 def broken_copy(fmi3_unzipped, tmp_path, break_it) -> Path:

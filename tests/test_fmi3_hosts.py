@@ -7,8 +7,8 @@ import textwrap
 import numpy as np
 import pytest
 
-from cardan_joint import variables as table
-from cardan_joint.simulate import SimulationError, flat_columns, simulate
+from cardan_joint.host.simulate import SimulationError, flat_columns, simulate
+from cardan_joint.models.universal_joint import variables as table
 
 
 def test_simulate_with_input_signals_matches_fmi2(fmu_path, fmi3_path):

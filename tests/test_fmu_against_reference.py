@@ -11,7 +11,7 @@ import pytest
 from reference.geometry import geometric_reference
 from tolerance import assert_close
 
-from cardan_joint.instance import FmuInstance
+from cardan_joint.host.instance import FmuInstance
 
 GUARD = math.radians(80.0)  # the FMU's default max_bend_angle
 STEPS = 40

@@ -2,7 +2,7 @@
 
 from fmpy.validation import validate_fmu
 
-from cardan_joint import variables as table
+from cardan_joint.models.universal_joint import variables as table
 
 # docs/UniversalJoint/README.md's interface table, in its order.
 PHYSICS_NAMES = {

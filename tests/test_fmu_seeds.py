@@ -7,7 +7,7 @@ import pytest
 from fmpy import simulate_fmu
 from test_seeds import DISTRIBUTIONS, MAKER_TABLE, truncated
 
-from cardan_joint.instance import FmuInstance
+from cardan_joint.host.instance import FmuInstance
 
 
 def _parabola_peak(x, y):

@@ -7,9 +7,10 @@ from fractions import Fraction
 import numpy as np
 from fmpy import simulate_fmu
 
-from cardan_joint import variables as table
-from cardan_joint.instance import FmuInstance
-from cardan_joint.physics import CardanJoint, cardan_error
+from cardan_joint.host.instance import FmuInstance
+from cardan_joint.models.universal_joint import variables as table
+from cardan_joint.models.universal_joint.model import CardanJoint
+from cardan_joint.physics import cardan_error
 
 
 def test_default_experiment_runs_with_plain_simulate_fmu(fmu_path, model_description):

@@ -7,9 +7,9 @@ import math
 from hypothesis import HealthCheck, given, settings
 from hypothesis import strategies as st
 
-from cardan_joint import variables as table
-from cardan_joint.instance import FmuInstance
-from cardan_joint.physics import CardanJoint
+from cardan_joint.host.instance import FmuInstance
+from cardan_joint.models.universal_joint import variables as table
+from cardan_joint.models.universal_joint.model import CardanJoint
 
 DISCARD = 2
 nasty = st.sampled_from(

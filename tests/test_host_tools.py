@@ -4,24 +4,16 @@ every model the build offers, and a misspelt name is refused naming the right on
 import subprocess
 import sys
 
+import numpy as np
 import pytest
-from conftest import ROOT, build_fmu, run_build
+from conftest import ROOT, build_fmu, cardan_joint, run_build
 
 from cardan_joint import results
-from cardan_joint.fmu_info import FmuInfo, build_command
+from cardan_joint.host.fmu_info import FmuInfo, build_command
 from cardan_joint.models import MODELS
 
 # Every model the build offers, for every FMI version it offers.
-BUILDS = [(key, version) for key, spec in MODELS.items() for version in sorted(spec.scripts)]
-
-
-def cardan_joint(*args):
-    return subprocess.run(
-        [sys.executable, "-m", "cardan_joint.cli", *map(str, args)],
-        capture_output=True,
-        text=True,
-        cwd=ROOT,
-    )
+BUILDS = [(key, version) for key, spec in MODELS.items() for version in spec.fmi_versions]
 
 
 @pytest.fixture(scope="module")
@@ -166,16 +158,16 @@ def test_every_quantity_in_the_cli_help_names_its_unit():
     ],
 )
 def test_simulate_refuses_a_misspelt_name_naming_the_right_one(fmu_path, arguments, wrong, right):
+    from cardan_joint.host.simulate import simulate
     from cardan_joint.names import UnknownNameError
-    from cardan_joint.simulate import simulate
 
     with pytest.raises(UnknownNameError, match=f"'{wrong}'; did you mean {right}"):
         simulate(fmu_path, stop_time=0.01, output_interval=1e-3, **arguments)
 
 
 def test_simulate_refuses_a_constant_bend_angle_with_a_nonzero_rate(fmu_path):
+    from cardan_joint.host.simulate import simulate
     from cardan_joint.names import UsageError
-    from cardan_joint.simulate import simulate
 
     with pytest.raises(UsageError, match="bend_angle = 0.3 is given as a constant"):
         simulate(fmu_path, stop_time=0.01, inputs={"bend_angle": 0.3, "bend_angle_rate": 1.0})
@@ -189,8 +181,8 @@ def test_simulate_refuses_a_constant_bend_angle_with_a_nonzero_rate(fmu_path):
 
 
 def test_simulate_names_the_build_command_of_a_missing_fmu(tmp_path):
-    from cardan_joint.fmu_info import MissingFMUError
-    from cardan_joint.simulate import simulate
+    from cardan_joint.host.fmu_info import MissingFMUError
+    from cardan_joint.host.simulate import simulate
 
     with pytest.raises(MissingFMUError, match="`python build_fmu.py --model Motor --dest "):
         simulate(tmp_path / "Motor.fmu")
@@ -202,3 +194,21 @@ def test_setting_an_output_says_it_is_an_output(built, tmp_path):
     )
     assert run.returncode == 2
     assert "'speed' is an output of Motor, not an input or parameter" in run.stderr
+
+
+@pytest.mark.parametrize("key", sorted(MODELS))
+def test_every_models_fmi3_build_validates_and_equals_its_fmi2_build(built, key):
+    from fmpy.validation import validate_fmu
+
+    from cardan_joint.simulate import flat_columns, simulate
+
+    fmi2, fmi3 = built(key, 2), built(key, 3)
+    assert validate_fmu(str(fmi3)) == []
+    assert FmuInfo.read(fmi3).model_description.fmiVersion == "3.0"
+    runs = [
+        flat_columns(simulate(fmu, stop_time=0.05, output_interval=1e-3)) for fmu in (fmi2, fmi3)
+    ]
+    outputs = FmuInfo.read(fmi2).columns("output")
+    assert outputs and len(runs[0]) == len(runs[1]) == 51
+    for name in outputs:
+        np.testing.assert_array_equal(runs[1][name], runs[0][name], err_msg=f"{key}: {name}")

@@ -5,11 +5,11 @@ import math
 
 import numpy as np
 import pytest
+from conftest import refused_keeping_state
 
-from cardan_joint.instance import FmuInstance
-from cardan_joint.physics import Refusal
-from cardan_joint.physics.driveline import exact_rotor_step
-from cardan_joint.physics.inertia_load import InertiaLoad
+from cardan_joint.host.instance import FmuInstance
+from cardan_joint.models.inertia_load.model import InertiaLoad
+from cardan_joint.physics.stepped import exact_rotor_step
 
 
 def _ode(load, torques, steps):
@@ -69,16 +69,7 @@ def test_a_constant_torque_turns_the_load_backwards_from_standstill():
 def test_refuses_unusable_inputs_and_keeps_its_state(change, words):
     load = InertiaLoad(inertia=0.3)
     load.drive_torque = 50.0
-    load.step(0.5)
-    before = load.state()
-    for name, value in change.items():
-        setattr(load, name, value)
-    problem = load.step(0.1)
-    assert problem and all(word in problem.message for word in words), problem
-    assert Refusal.from_message(problem.message) == problem
-    after = load.state()
-    after.pop("drive_torque"), before.pop("drive_torque")
-    assert after == before
+    refused_keeping_state(load, change, words, "drive_torque")
 
 
 def test_a_zero_inertia_is_a_parameter_fault():

@@ -6,8 +6,8 @@ from types import SimpleNamespace
 
 import pytest
 
-from cardan_joint.fmu_info import MissingFMUError
-from cardan_joint.instance import ExtractedFMU, FmuInstance, StepRefusedError
+from cardan_joint.host.fmu_info import MissingFMUError
+from cardan_joint.host.instance import ExtractedFMU, FmuInstance, StepRefusedError
 
 
 def test_open_unzips_and_removes_its_copy_on_leaving_the_block(fmu_path):

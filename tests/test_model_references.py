@@ -7,7 +7,7 @@ from conftest import ROOT
 from fmpy import simulate_fmu
 from fmpy.util import read_csv, read_ref_opt_file
 
-from cardan_joint import cross_check
+from cardan_joint.build import cross_check
 
 FIXTURES = {"CompliantJoint": "compliant_joint_fmu_path", "InertiaLoad": "inertia_load_fmu_path"}
 
@@ -17,7 +17,7 @@ def test_reference_files_are_current_and_the_fmu_reproduces_them(model, request,
     docs = ROOT / "docs" / model
     for path in cross_check.write_reference_files(tmp_path, model):
         assert (docs / path.name).read_bytes() == path.read_bytes(), (
-            f"docs/{model}/{path.name} is stale: run python -m cardan_joint.cross_check "
+            f"docs/{model}/{path.name} is stale: run python -m cardan_joint.build.cross_check "
             f"--model {model}"
         )
     options = read_ref_opt_file(str(docs / f"{model}_ref.opt"))
@@ -40,8 +40,9 @@ def test_reference_files_are_current_and_the_fmu_reproduces_them(model, request,
 
 @pytest.mark.parametrize("model", ["CompliantJoint", "InertiaLoad", "CompliantPropshaft"])
 def test_docs_variable_table_is_generated_from_the_models_table(model):
-    from cardan_joint.compliant_variables import COMPLIANT_JOINT, compliant_propshaft_table
-    from cardan_joint.inertia_load_variables import INERTIA_LOAD
+    from cardan_joint.models.compliant_joint.variables import COMPLIANT_JOINT
+    from cardan_joint.models.compliant_propshaft.variables import compliant_propshaft_table
+    from cardan_joint.models.inertia_load.variables import INERTIA_LOAD
 
     table = {
         "CompliantJoint": COMPLIANT_JOINT,

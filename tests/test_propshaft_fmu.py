@@ -11,7 +11,7 @@ from conftest import build_fmu, load_example
 from reference.propshaft import PropshaftReference
 from tolerance import assert_close
 
-from cardan_joint.instance import FmuInstance
+from cardan_joint.host.instance import FmuInstance
 
 DISCARD = 2
 D = math.radians
@@ -246,7 +246,7 @@ def test_the_worked_layout_example_cancels_at_the_helpers_phasing(
 
 
 def test_the_fmu_reports_cancellation_only_at_the_right_phasing(description, propshaft_unzipped):
-    from cardan_joint.physics.propshaft import best_phasing, layout
+    from cardan_joint.models.propshaft import best_phasing, layout
 
     side, top = [0.0, D(-4.0), D(-1.0)], [0.0, 0.0, D(3.5)]
     geometry = layout(side, top, [0.0])

@@ -9,7 +9,7 @@ import pytest
 from reference.propshaft import PropshaftReference
 from tolerance import assert_close
 
-from cardan_joint.physics.propshaft import (
+from cardan_joint.models.propshaft import (
     Propshaft,
     angle_report,
     best_phasing,

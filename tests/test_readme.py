@@ -6,7 +6,7 @@ from pathlib import Path
 import pytest
 
 from cardan_joint.models import MODELS
-from cardan_joint.variables import fmi3_array_table, markdown_table
+from cardan_joint.models.universal_joint.variables import fmi3_array_table, markdown_table
 
 ROOT = Path(__file__).resolve().parents[1]
 README = (ROOT / "README.md").read_text()
@@ -45,8 +45,9 @@ def test_every_model_the_build_offers_has_its_page(model):
 
 
 def _tables():
-    from cardan_joint.driveline_variables import LOAD, MOTOR
-    from cardan_joint.propshaft_variables import propshaft_table
+    from cardan_joint.models.load.variables import LOAD
+    from cardan_joint.models.motor.variables import MOTOR
+    from cardan_joint.models.propshaft.variables import propshaft_table
 
     return {
         "UniversalJoint": markdown_table(),

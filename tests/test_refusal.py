@@ -6,13 +6,17 @@ import math
 import numpy as np
 import pytest
 
-from cardan_joint import variables as table
-from cardan_joint.physics import CardanJoint, Reason, Refusal
-from cardan_joint.physics.compliant import CompliantJoint
-from cardan_joint.physics.driveline import Motor
-from cardan_joint.physics.inertia_load import InertiaLoad
-from cardan_joint.physics.propshaft import Propshaft
-from cardan_joint.simulate import RefusalError, SimulationError, simulate
+from cardan_joint.host.simulate import RefusalError, SimulationError, simulate
+from cardan_joint.models.compliant_joint.model import CompliantJoint
+from cardan_joint.models.inertia_load.model import InertiaLoad
+from cardan_joint.models.inertia_load.refusals import InertiaLoadReason
+from cardan_joint.models.motor.model import Motor
+from cardan_joint.models.motor.refusals import MotorReason
+from cardan_joint.models.propshaft import Propshaft
+from cardan_joint.models.universal_joint import variables as table
+from cardan_joint.models.universal_joint.model import CardanJoint
+from cardan_joint.physics import Reason, Refusal
+from cardan_joint.physics.refusal import reasons
 
 GUARD = table.BY_NAME["max_bend_angle"].start
 # One way to meet each reason: (start values, step size).
@@ -41,22 +45,22 @@ CAUSES = {
     Reason.WORKING_ANGLE_GUARD: [(dict(max_working_angle=2.0), 0.1)],
     Reason.WORKING_ANGLE: [(dict(shaft_1_side_angle=0.6, max_working_angle=0.5), 0.1)],
     # The motor's.
-    Reason.ROTOR_SPEED: [
+    MotorReason.ROTOR_SPEED: [
         (dict(load_torque=9e8, stall_torque=60.0, no_load_speed=100.0, rotor_inertia=0.3), 0.1)
     ],
     # The inertia load's.
-    Reason.LOAD_SPEED: [(dict(drive_torque=9e8, inertia=0.3, drag=0.0), 0.1)],
+    InertiaLoadReason.LOAD_SPEED: [(dict(drive_torque=9e8, inertia=0.3, drag=0.0), 0.1)],
     # The compliant drive's.
     Reason.TWIST_OVERFLOW: [(dict(input_speed=0.0, output_speed=-1e5), 1e11)],
 }
 PROPSHAFT_REASONS = {Reason.SHAFT_ANGLE, Reason.WORKING_ANGLE_GUARD, Reason.WORKING_ANGLE}
-MOTOR_REASONS = {Reason.ROTOR_SPEED}
+MOTOR_REASONS = {MotorReason.ROTOR_SPEED}
 
 
 def _model(reason, start):
     if reason in MOTOR_REASONS:
         return Motor(**start)
-    if reason is Reason.LOAD_SPEED:
+    if reason is InertiaLoadReason.LOAD_SPEED:
         return InertiaLoad(**start)
     if reason is Reason.TWIST_OVERFLOW:
         return CompliantJoint(**start)
@@ -64,11 +68,11 @@ def _model(reason, start):
 
 
 def test_every_reason_has_a_cause():
-    assert set(CAUSES) == set(Reason)
+    assert set(CAUSES) == set(reasons())
 
 
 @pytest.mark.parametrize("time", [0.0, 0.1 + 0.2, 1e-300, 12345.678901234567])
-@pytest.mark.parametrize("reason", list(Reason))
+@pytest.mark.parametrize("reason", list(CAUSES))
 def test_each_refusal_reads_back_exactly_from_its_message(reason, time):
     for start, step_size in CAUSES[reason]:
         joint = _model(reason, start)
@@ -84,6 +88,26 @@ def test_each_refusal_reads_back_exactly_from_its_message(reason, time):
             repr(x) for x in (refusal.value, refusal.limit, refusal.time)
         ]
         assert back.details == refusal.details or math.isnan(refusal.value)
+
+
+def test_a_model_declares_its_own_reasons():
+    from enum import Enum
+
+    from cardan_joint.physics.refusal import register_reasons
+
+    class Untemplated(str, Enum):
+        JAM = "jam"
+
+    with pytest.raises(ValueError, match="Untemplated.JAM has no message template"):
+        register_reasons(Untemplated, {})
+
+    class Clashing(str, Enum):
+        ROTOR = "rotor_speed"
+
+    with pytest.raises(ValueError, match="'rotor_speed' is already declared"):
+        register_reasons(Clashing, {Clashing.ROTOR: "x {value} {limit}"})
+    # The motor's reason lives in its folder, not in the shared enumeration.
+    assert MotorReason.ROTOR_SPEED in reasons() and "ROTOR_SPEED" not in Reason.__members__
 
 
 def test_the_message_names_variable_value_limit_and_time():

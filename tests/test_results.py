@@ -6,7 +6,7 @@ import numpy as np
 import pytest
 
 from cardan_joint import results, units
-from cardan_joint import variables as table
+from cardan_joint.models.universal_joint import variables as table
 
 
 def test_csv_round_trip_is_exact_in_fmpys_format(tmp_path):

@@ -6,7 +6,8 @@ from fractions import Fraction
 from hypothesis import given, settings
 from hypothesis import strategies as st
 
-from cardan_joint.physics import CardanJoint, advance, cardan_error, split_angle
+from cardan_joint.models.universal_joint.model import CardanJoint
+from cardan_joint.physics import advance, cardan_error, split_angle
 
 
 def exact(angle):

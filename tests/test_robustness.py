@@ -10,10 +10,10 @@ import numpy as np
 import pytest
 from conftest import build_fmu, run_build
 
-from cardan_joint import variables as table
-from cardan_joint.instance import FmuInstance, status_of
-from cardan_joint.physics import CardanJoint
-from cardan_joint.simulate import SimulationError, simulate
+from cardan_joint.host.instance import FmuInstance, status_of
+from cardan_joint.host.simulate import SimulationError, simulate
+from cardan_joint.models.universal_joint import variables as table
+from cardan_joint.models.universal_joint.model import CardanJoint
 
 DISCARD = 2
 GOOD = dict(
@@ -331,7 +331,7 @@ def test_libcosim_and_fmpy_agree_on_a_ten_second_run(fmu_path):
     pytest.importorskip("libcosimpy")
     from fmpy import simulate_fmu
 
-    from cardan_joint.cosim import run_libcosim
+    from cardan_joint.host.cosim import run_libcosim
 
     inputs = dict(
         input_speed=10.0,
@@ -424,9 +424,11 @@ def test_invalid_load_holds_only_the_outputs_that_depend_on_it(model_description
 
 
 def test_the_slave_survives_a_host_without_stderr(monkeypatch):
-    from cardan_joint.fmu.slave import CardanJointSlave
+    from cardan_joint.fmi.slave import ModelSlave
 
-    slave = CardanJointSlave(instance_name="no-stderr")
+    slave = type("Joint", (ModelSlave,), {"model_folder": "universal_joint"})(
+        instance_name="no-stderr"
+    )
     monkeypatch.setattr(sys, "stderr", None)
     slave.set_real([0], [math.nan])
     assert slave.do_step(0.0, 0.01) is False
@@ -435,16 +437,16 @@ def test_the_slave_survives_a_host_without_stderr(monkeypatch):
 
 
 def test_a_refused_step_leaves_the_clock_alone():
-    from cardan_joint.fmu.slave import CardanJointSlave
+    from cardan_joint.fmi.slave import ModelSlave
 
-    slave = CardanJointSlave(instance_name="clock")
+    slave = type("Joint", (ModelSlave,), {"model_folder": "universal_joint"})(instance_name="clock")
     slave.setup_experiment(0.0)
     slave.exit_initialization_mode()
     assert slave.do_step(0.0, 0.5) is True
     saved = slave._get_fmu_state()
     slave.set_real([2], [1.5])  # beyond the guard
     assert slave.do_step(123.0, 0.5) is False
-    assert slave._get_fmu_state()["joint"]["time"] == saved["joint"]["time"] == 0.5
+    assert slave._get_fmu_state()["model"]["time"] == saved["model"]["time"] == 0.5
 
 
 @pytest.mark.parametrize(

@@ -1,4 +1,4 @@
-"""What a user of `cardan_joint.simulate` sees: nothing on a clean run, and each
+"""What a user of `cardan_joint.host.simulate` sees: nothing on a clean run, and each
 distinct warning once."""
 
 import warnings
@@ -6,7 +6,7 @@ import warnings
 import numpy as np
 import pytest
 
-from cardan_joint.simulate import simulate
+from cardan_joint.host.simulate import simulate
 
 
 def test_a_run_with_some_inputs_given_prints_nothing(fmu_path, capfd):

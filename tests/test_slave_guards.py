@@ -9,10 +9,16 @@ import math
 import pytest
 from pythonfmu.enums import Fmi2Status
 
-from cardan_joint import variables as table
-from cardan_joint.fmu.slave import CardanJointSlave
-from cardan_joint.instance import FmuInstance
-from cardan_joint.physics import CardanJoint, Reason, Refusal
+from cardan_joint.fmi.slave import ModelSlave
+from cardan_joint.host.instance import FmuInstance
+from cardan_joint.models.universal_joint import variables as table
+from cardan_joint.models.universal_joint.model import CardanJoint
+from cardan_joint.physics import Reason, Refusal
+
+
+class Joint(ModelSlave):
+    model_folder = "universal_joint"
+
 
 REFERENCE = {name: k for k, name in enumerate(v.name for v in table.VARIABLES)}
 ALL = list(range(len(table.VARIABLES)))
@@ -21,7 +27,7 @@ PEAK_STEP = 0.04  # both ends at 1.38 rad, the vertex at 1.40 rad > 80 deg
 
 
 def initialized(**start):
-    slave = CardanJointSlave(instance_name="guarded")
+    slave = Joint(instance_name="guarded")
     slave.setup_experiment(0.0)
     slave.set_real([REFERENCE[n] for n in start], list(start.values()))
     slave.exit_initialization_mode()
@@ -122,7 +128,7 @@ def restored(slave, state, words):
 )
 def test_a_serialized_state_that_is_no_state_is_refused(data, words):
     slave = initialized()
-    state = CardanJointSlave._fmu_state_from_bytes(data)
+    state = ModelSlave._fmu_state_from_bytes(data)
     assert "invalid_state" in state
     restored(slave, state, words)
 
@@ -130,7 +136,7 @@ def test_a_serialized_state_that_is_no_state_is_refused(data, words):
 def test_a_state_of_another_fmu_version_is_refused():
     slave, other = initialized(), initialized(input_speed=77.0)
     other.do_step(0.0, 0.3)
-    state = json.loads(CardanJointSlave._fmu_state_to_bytes(other._get_fmu_state()))
+    state = json.loads(ModelSlave._fmu_state_to_bytes(other._get_fmu_state()))
     state["outputs_held"] = state["outputs_held"][:-1]
     restored(slave, state, "another version")
 
@@ -139,7 +145,7 @@ def test_a_state_missing_a_joint_value_is_refused():
     slave, other = initialized(), initialized(input_speed=77.0)
     other.do_step(0.0, 0.3)
     state = other._get_fmu_state()
-    del state["joint"]["fraction_error"]
+    del state["model"]["fraction_error"]
     restored(slave, state, "KeyError")
 
 

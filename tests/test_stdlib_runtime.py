@@ -13,7 +13,7 @@ from pathlib import Path
 import pytest
 from runtime_driver import INPUTS, STEP_SIZE, STEPS
 
-from cardan_joint.instance import FmuInstance
+from cardan_joint.host.instance import FmuInstance
 
 DRIVER = Path(__file__).with_name("runtime_driver.py")
 

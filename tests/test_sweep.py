@@ -17,10 +17,8 @@ TINY = sweep.SweepSpec(
 
 @pytest.fixture(scope="module")
 def client():
-    client, cluster = sweep.connect(None, n_workers=2)
-    yield client
-    client.close()
-    cluster.close()
+    with sweep.connect(None, n_workers=2) as (client, _, _):
+        yield client
 
 
 @pytest.fixture(scope="module")

@@ -6,7 +6,7 @@ import math
 import threading
 import time
 
-from cardan_joint.instance import FmuInstance
+from cardan_joint.host.instance import FmuInstance
 from cardan_joint.physics import Reason, Refusal
 
 THREADS = 8

@@ -12,7 +12,7 @@ from hypothesis import strategies as st
 from reference.multibody import simulate_multibody, state_quantities
 from symbolic import derived
 
-from cardan_joint.instance import FmuInstance
+from cardan_joint.host.instance import FmuInstance
 from cardan_joint.physics import joint_response
 
 GUARD = math.radians(85.0)

@@ -28,7 +28,7 @@ IMAGES = ROOT / "docs" / "img"
 MANIFEST = IMAGES / "gallery.json"
 PACKAGE = "fmu_src/cardan_joint"
 # What every example draws with: its command line and the plot style.
-COMMON = ("examples/_support.py", f"{PACKAGE}/plotting.py")
+COMMON = ("examples/_support.py", f"{PACKAGE}/host/plotting.py")
 SEEDS = ("examples/_seed_support.py",)
 
 
@@ -59,7 +59,7 @@ EXAMPLES = (
         "driveline_ssp",
         ("driveline_ssp.png",),
         model=None,
-        sources=(f"{PACKAGE}/driveline_system.py",),
+        sources=(f"{PACKAGE}/host/driveline_system.py",),
     ),
     Example(
         "seed_wikipedia",

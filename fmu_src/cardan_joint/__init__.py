@@ -1,8 +1,8 @@
 """Exact Cardan (Hooke) universal joint.
 
 `cardan_joint.physics` holds every equation (pure Python + numpy, no FMI);
-`cardan_joint.fmu` maps FMI variables onto it; `cardan_joint.build` and
-`cardan_joint.simulate` wrap pythonfmu and FMPy. Nothing is imported eagerly so
+`cardan_joint.fmi` maps FMI variables onto it; `cardan_joint.build` and
+`cardan_joint.host.simulate` wrap pythonfmu and FMPy. Nothing is imported eagerly so
 that the physics stays importable without the FMI stack.
 """
 

@@ -21,9 +21,9 @@ import sys
 from pathlib import Path
 
 from . import results
-from .fmu_info import FmuInfo, MissingFMUError
+from .host.fmu_info import FmuInfo, MissingFMUError
+from .host.run_inputs import read_input_csv, split_assignments, with_constants
 from .names import UsageError
-from .run_inputs import read_input_csv, split_assignments, with_constants
 
 PROG = "cardan-joint"
 # Runs with fewer steps finish before a progress bar would help.
@@ -47,7 +47,7 @@ def write_outputs(result, output: Path, plot: Path, names, title, display) -> st
     existed = {p: p.exists() for p in (output, plot)}
     results.write_csv(result, output)
     if len(result):
-        from .plotting import plot_time_series
+        from .host.plotting import plot_time_series
 
         plot_time_series(result, names, plot, title, display)
         return (
@@ -86,7 +86,7 @@ def _refusal(error, start: bool, stop_time) -> str:
 
 
 def simulate_command(args):
-    from .simulate import SimulationError, flat_columns, simulate
+    from .host.simulate import SimulationError, flat_columns, simulate
 
     info = FmuInfo.read(args.fmu)  # read once: names, units, start values
     constants, parameters = split_assignments(args.set, info)
@@ -174,7 +174,7 @@ def _parser():
         "An input left unset does what the FMU does with it: holds its start "
         "value, or follows its rate (a speed its acceleration, a bend angle its rate).",
     )
-    from .simulate import DEFAULT_FMU
+    from .host.simulate import DEFAULT_FMU
 
     run.add_argument(
         "--fmu", default=str(DEFAULT_FMU), help="FMU file, any model (default %(default)s)"

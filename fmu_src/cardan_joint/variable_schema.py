@@ -2,10 +2,12 @@
 
 Pure data types with the lookups every wrapper needs (FMI 2 and FMI 3
 registration, model descriptions, README tables); the tables themselves are
-`variables` (the UniversalJoint), `propshaft_variables` and
-`driveline_variables`. No FMI import: the physics reads its defaults from them.
+each model folder's `variables` (`models/<name>/variables.py`). No FMI import:
+the physics reads its defaults from them.
 """
 
+import os
+import re
 from collections.abc import Mapping
 from dataclasses import dataclass
 
@@ -42,8 +44,8 @@ class Variable:
 
 class VariableTable:
     """One model's variables with the lookups every wrapper needs. The module
-    `variables` is itself the UniversalJoint's table (same attribute names);
-    other models build one (e.g. `propshaft_variables.propshaft_table`)."""
+    `models/universal_joint/variables.py` is itself the UniversalJoint's table
+    (same attribute names); other models build one (e.g. `units.table_of`)."""
 
     def __init__(self, variables, units: Mapping[str, Unit]):
         """`units`: the unit definitions (name -> Unit) its description declares."""
@@ -59,6 +61,10 @@ class VariableTable:
 
     def markdown_table(self) -> str:
         return markdown_table(self.VARIABLES)
+
+    def fmi3_variables(self) -> tuple:
+        """Its FMI 3 variables (scalars: the table's rows name no arrays)."""
+        return fmi3_groups(self.VARIABLES)
 
 
 def _names(variables, causality):
@@ -83,3 +89,50 @@ def markdown_table(variables) -> str:
         span = f"[{low}, {high}]" if (low or high) else ""
         rows.append(f"| `{v.name}` | {v.causality} | {unit} | {start} | {span} | {v.description} |")
     return "\n".join(rows) + "\n"
+
+
+@dataclass(frozen=True)
+class Group:
+    """One FMI 3 variable: a scalar row, or the rows of one array in element order.
+    Every attribute but the name and description is the rows' common one."""
+
+    name: str
+    rows: tuple
+
+    def __getattr__(self, attribute):
+        if attribute.startswith("_"):  # copy/pickle probe before `rows` exists
+            raise AttributeError(attribute)
+        return getattr(self.rows[0], attribute)
+
+    @property
+    def description(self) -> str:
+        """The rows' common prefix (to a word) with each element's rest, in order."""
+        texts = [row.description for row in self.rows]
+        if len(texts) == 1:
+            return texts[0]
+        common = os.path.commonprefix(texts)
+        common = common[: common.rfind(" ") + 1]
+        return common + " / ".join(text[len(common) :] for text in texts)
+
+
+def _group(variables: tuple, stem: str) -> "Group":
+    rows = tuple(v for v in variables if re.fullmatch(re.escape(stem) + r"_\d", v.name))
+    first = variables.index(rows[0])
+    shared = ("causality", "unit", "display_unit", "min", "max", "depends_on", "start")
+    assert rows == variables[first : first + len(rows)], f"{stem}: rows must be consecutive"
+    assert all(getattr(r, a) == getattr(rows[0], a) for r in rows for a in shared), (
+        f"{stem}: the elements of an array share causality, unit, range and dependencies"
+    )
+    return Group(stem, rows)
+
+
+def fmi3_groups(variables: tuple, array_stems: tuple = ()) -> tuple:
+    """The FMI 3 variables in table order: one array of the rows `<stem>_<i>` for
+    each of `array_stems` (FMI 2 has one row per element), else scalars."""
+    arrays = {g.rows[0].name: g for g in (_group(variables, stem) for stem in array_stems)}
+    in_array = {row.name for g in arrays.values() for row in g.rows}
+    return tuple(
+        arrays.get(v.name) or Group(v.name, (v,))
+        for v in variables
+        if v.name in arrays or v.name not in in_array
+    )

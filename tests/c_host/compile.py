@@ -4,10 +4,10 @@ host (host.c and friends) and the FMI 3.0 host (host3.c, on the standard's heade
 import subprocess
 from pathlib import Path
 
-from cardan_joint.native import compiler, fmi3_headers
+from cardan_joint.fmi.native import compiler, fmi3_headers
 
 HERE = Path(__file__).resolve().parent
-NATIVE = HERE.parents[1] / "fmu_src" / "cardan_joint" / "native"
+NATIVE = HERE.parents[1] / "fmu_src" / "cardan_joint" / "fmi" / "native"
 FMI3_HOST = sorted(HERE.glob("*3.c"))  # host3.c, fuzz3.c, threads3.c
 
 

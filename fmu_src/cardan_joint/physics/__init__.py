@@ -1,14 +1,13 @@
-"""Exact physics of the Cardan joint: pure Python, no FMI import.
+"""The physics every model shares: pure Python, no FMI import.
 
 Angles in rad, speeds in rad/s, torques in N.m. `psi` is the input-pin angle
 (input angle + yoke phase), `beta` the bend angle. `joint_response` holds every
 closed form and works on Python scalars (through `math`, cheap enough for one
 call per FMU step) and on numpy arrays (broadcast, no Python loops);
-`CardanJoint` steps the joint in time as the FMU does.
+each model's own physics lives in its folder (`models/<name>/model.py`,
+e.g. `CardanJoint` in `models/universal_joint/`).
 """
 
-from .driveline import Load, Motor
-from .model import CardanJoint
 from .quantities import (
     cardan_error,
     degree_of_unevenness,
@@ -23,10 +22,7 @@ from .response import JointResponse, joint_response
 from .revolutions import RevolutionAngle, advance, split_angle
 
 __all__ = [
-    "CardanJoint",
     "JointResponse",
-    "Load",
-    "Motor",
     "Reason",
     "Refusal",
     "RevolutionAngle",

@@ -12,7 +12,6 @@ import re
 from dataclasses import dataclass, field
 from enum import Enum
 
-from .. import variables as table
 from ..units import RAD_TO_DEG
 
 
@@ -29,8 +28,6 @@ class Reason(str, Enum):
     SHAFT_ANGLE = "shaft_angle_invalid"  # a propshaft shaft angle not in (-pi/2, pi/2)
     WORKING_ANGLE_GUARD = "max_working_angle_invalid"  # max_working_angle not in (0, pi/2)
     WORKING_ANGLE = "working_angle"  # a joint's working angle >= the limit
-    ROTOR_SPEED = "rotor_speed"  # the motor's speed out of range at step end
-    LOAD_SPEED = "load_speed"  # the inertia load's speed out of range at step end
     TWIST_OVERFLOW = "twist_overflow"  # a compliant drive's twist changing by > 1e15 rad
 
 
@@ -43,7 +40,7 @@ _OVERFLOW = (
     "input_speed = {input_speed} rad/s with input_acceleration = {input_acceleration} "
     "rad/s2 over a step of {step_size} s overflows: "
 )
-_TEMPLATES = {
+_TEMPLATES: dict[Enum, str] = {
     Reason.NOT_FINITE: "{kind} {variable} = {value} {unit} is not a finite number "
     "(limit {limit} {unit})",
     Reason.OUT_OF_RANGE: "{kind} {variable} = {value} {unit} is outside its range "
@@ -70,28 +67,22 @@ _TEMPLATES = {
     "limit {limit} rad)",
     Reason.WORKING_ANGLE: "{variable} = {value} rad ({value:deg} deg) is not below the limit "
     "max_working_angle = {limit} rad ({limit:deg} deg)",
-    Reason.ROTOR_SPEED: "input load_torque = {load_torque} N.m over a step of {step_size} s "
-    "drives the rotor speed to {value} rad/s, beyond the limit {limit} rad/s",
-    Reason.LOAD_SPEED: "input drive_torque = {drive_torque} N.m over a step of {step_size} s "
-    "drives the load speed to {value} rad/s, beyond the limit {limit} rad/s",
     Reason.TWIST_OVERFLOW: "the shaft speeds over a step of {step_size} s would change the "
     "twist_angle by {value} rad, beyond the limit {limit} rad per step",
 }
 # Fixed by the reason, so not written in the message.
-_IMPLIED = {
-    Reason.BEND_ANGLE: ("bend_angle", "rad"),
-    Reason.BEND_AT_STEP_END: ("bend_angle", "rad"),
-    Reason.BEND_PEAK_IN_STEP: ("bend_angle", "rad"),
-    Reason.BEND_GUARD: ("max_bend_angle", "rad"),
-    Reason.STEP_SIZE: ("step_size", "s"),
-    Reason.ANGLE_OVERFLOW: ("input_angle", "rad"),
-    Reason.SPEED_OVERFLOW: ("input_speed", "rad/s"),
-    Reason.SHAFT_ANGLE: (None, "rad"),
-    Reason.WORKING_ANGLE_GUARD: ("max_working_angle", "rad"),
-    Reason.WORKING_ANGLE: (None, "rad"),
-    Reason.ROTOR_SPEED: ("speed", "rad/s"),
-    Reason.LOAD_SPEED: ("speed", "rad/s"),
-    Reason.TWIST_OVERFLOW: ("twist_angle", "rad"),
+_IMPLIED: dict[Enum, tuple] = {
+    Reason.BEND_ANGLE: ("bend_angle", "rad", "input"),
+    Reason.BEND_AT_STEP_END: ("bend_angle", "rad", "input"),
+    Reason.BEND_PEAK_IN_STEP: ("bend_angle", "rad", "input"),
+    Reason.BEND_GUARD: ("max_bend_angle", "rad", "parameter"),
+    Reason.STEP_SIZE: ("step_size", "s", ""),
+    Reason.ANGLE_OVERFLOW: ("input_angle", "rad", "output"),
+    Reason.SPEED_OVERFLOW: ("input_speed", "rad/s", "input"),
+    Reason.SHAFT_ANGLE: (None, "rad", ""),
+    Reason.WORKING_ANGLE_GUARD: ("max_working_angle", "rad", ""),
+    Reason.WORKING_ANGLE: (None, "rad", ""),
+    Reason.TWIST_OVERFLOW: ("twist_angle", "rad", ""),
 }
 _PREFIX = "t = {time} s: "
 _FLOAT = r"-?(?:inf|nan|[0-9][0-9.e+-]*)"
@@ -120,27 +111,49 @@ def _pattern(template):
 _PATTERNS = {reason: _pattern(_PREFIX + template) for reason, template in _TEMPLATES.items()}
 
 
+def register_reasons(reasons: type[Enum], templates: dict, implied: dict | None = None) -> None:
+    """Declare a model's own reasons (a `str` Enum in its folder's `refusals.py`)
+    with one message template each and the (variable, unit, kind) each fixes:
+    they render and read back as the shared `Reason`s do, without a change here."""
+    missing = [reason for reason in reasons if reason not in templates]
+    if missing:
+        raise ValueError(f"{reasons.__name__}.{missing[0].name} has no message template")
+    taken = {reason.value for reason in _TEMPLATES if not isinstance(reason, reasons)}
+    clash = [reason for reason in reasons if reason.value in taken]
+    if clash:
+        raise ValueError(f"reason code {clash[0].value!r} is already declared")
+    for reason in reasons:
+        _TEMPLATES[reason] = templates[reason]
+        _PATTERNS[reason] = _pattern(_PREFIX + templates[reason])
+    _IMPLIED.update(implied or {})
+
+
+def reasons() -> tuple:
+    """Every reason declared so far: the shared ones and the imported models'."""
+    return tuple(_TEMPLATES)
+
+
 @dataclass(frozen=True, eq=False)
 class Refusal:
-    """A refusal: `code` (a `Reason`), the `variable` and its `value`, the `limit`
+    """A refusal: `code` (a `Reason` or a model's own), the `variable` and its `value`, the `limit`
     crossed and its `unit`, the `time` (s) and the reason's further numbers in
     `details` (the range for OUT_OF_RANGE, the rates and the time into the step
     for a bend reached within it, the speed and step for an overflow)."""
 
-    code: Reason
+    code: Enum
     variable: str
     value: float
     limit: float
     time: float
     unit: str
     details: dict = field(default_factory=dict)
-    # "input" or "parameter": the joint's table knows its own variables; other
-    # models (the propshaft) name it.
+    # "input", "parameter" or "output": named by the refusal, or fixed by its reason.
     kind: str = ""
 
     def __post_init__(self):
-        if not self.kind and self.variable in table.BY_NAME:
-            object.__setattr__(self, "kind", table.BY_NAME[self.variable].causality)
+        implied = _IMPLIED.get(self.code)
+        if not self.kind and implied and implied[0] == self.variable:
+            object.__setattr__(self, "kind", implied[2])
 
     @property
     def text(self) -> str:
@@ -207,7 +220,7 @@ class Refusal:
             match = pattern.search(text)
             if match:
                 found = match.groupdict()
-                variable, unit = _IMPLIED.get(reason, (None, None))
+                variable, unit, _ = _IMPLIED.get(reason, (None, None, ""))
                 variable, unit = variable or found.get("variable"), unit or found.get("unit")
                 numbers = {
                     name: float(value) for name, value in found.items() if name not in _TEXT_FIELDS

@@ -6,6 +6,7 @@ import math
 from collections.abc import Iterator, Mapping
 from typing import Protocol
 
+from ..names import unknown
 from ..variable_schema import Variable
 from .refusal import Reason, Refusal, crossed_limit
 from .revolutions import RevolutionAngle, advance
@@ -13,6 +14,7 @@ from .revolutions import RevolutionAngle, advance
 # Beyond 1e15 rad a float has no fractional digits left: the pin's position
 # after such a step is undefined, and the exact turn arithmetic would overflow.
 MAX_INCREMENT = 1e15
+HALF_PI = 0.5 * math.pi
 
 
 class Table(Protocol):
@@ -53,12 +55,19 @@ def bounds(variable: Variable) -> tuple[float, float]:
     return variable.min, variable.max
 
 
+class UnknownVariableError(TypeError):
+    """A start value for a name that is no input or parameter of the model."""
+
+
 def set_start_values(model, table: Table, values: Mapping[str, float], what: str) -> None:
     """Every input and parameter of `model` from the table's start values, then
-    `values`; an unknown name is a TypeError naming `what` (the model's kind)."""
-    unknown = set(values) - set(table.INPUTS) - set(table.PARAMETERS)
-    if unknown:
-        raise TypeError(f"unknown {what} variable(s): {', '.join(sorted(unknown))}")
+    `values`; an unknown name is an UnknownVariableError naming `what` (the
+    model) and the nearest valid names (the one check of start-value names)."""
+    settable = set(table.INPUTS) | set(table.PARAMETERS)
+    strangers = sorted(set(values) - settable)
+    if strangers:
+        kind = f"input or parameter of the {what}"
+        raise UnknownVariableError(unknown(strangers[0], settable, kind))
     for name, value in {**table.start_values(), **values}.items():
         setattr(model, name, float(value))
 
@@ -122,6 +131,16 @@ class ValueChecks:
         return self.input_problem(step_size)
 
 
+def angle_limit_problem(reason, name: str, value: float, time: float) -> Refusal | None:
+    """The Refusal of an angle limit parameter not strictly between 0 and pi/2
+    (where a joint locks), or None: the one guard of max_bend_angle and
+    max_working_angle."""
+    if 0.0 < value < HALF_PI:
+        return None
+    limit = 0.0 if value <= 0.0 else HALF_PI
+    return Refusal(reason, name, value, limit, time, "rad", kind="parameter")
+
+
 def advance_input(
     angle: RevolutionAngle,
     speed: float,
@@ -147,33 +166,48 @@ def advance_input(
 
 
 class SavedState:
-    """state()/restore() of a model with a variable `table`, a clock and an input
-    angle kept as exact revolutions; `start(time)` re-derives everything else."""
+    """state()/restore() of every stepped model, in one format: the table's inputs
+    and parameters, the clock, the float attributes named in `_STATE` (the
+    model's own state, e.g. a rotor's speed and angle) and, for a model with
+    an input shaft (`_SHAFT`), its angle as exact revolutions. `start(time)`
+    re-derives everything else."""
 
     table: Table
     time: float
     _angle: RevolutionAngle
+    _STATE: tuple[str, ...] = ()
+    _SHAFT = False
 
     def start(self, time: float) -> None:
         raise NotImplementedError(f"{type(self).__name__} must define its start")
 
+    def _saved_names(self) -> tuple[str, ...]:
+        return self.table.INPUTS + self.table.PARAMETERS + self._STATE
+
     def state(self) -> dict:
         """Everything that defines the model, as JSON-serialisable values."""
-        values = {name: getattr(self, name) for name in self.table.INPUTS + self.table.PARAMETERS}
-        a = self._angle
-        values.update(
-            time=self.time, turns=a.turns, fraction=a.fraction, fraction_error=a.fraction_error
-        )
+        values = {name: getattr(self, name) for name in self._saved_names()}
+        values["time"] = self.time
+        if self._SHAFT:
+            a = self._angle
+            values.update(turns=a.turns, fraction=a.fraction, fraction_error=a.fraction_error)
         return values
 
     def restore(self, state: dict) -> None:
         """Take a `state()`; all or nothing (a malformed state raises and changes nothing)."""
-        values = {name: float(state[name]) for name in self.table.INPUTS + self.table.PARAMETERS}
+        values = {name: float(state[name]) for name in self._saved_names()}
         time = float(state["time"])
-        angle = RevolutionAngle(
-            int(state["turns"]), float(state["fraction"]), float(state["fraction_error"])
+        angle = (
+            RevolutionAngle(
+                int(state["turns"]), float(state["fraction"]), float(state["fraction_error"])
+            )
+            if self._SHAFT
+            else None
         )
-        for name, value in values.items():
-            setattr(self, name, value)
+        for name in self.table.INPUTS + self.table.PARAMETERS:
+            setattr(self, name, values[name])
         self.start(time)
-        self._angle = angle
+        for name in self._STATE:
+            setattr(self, name, values[name])
+        if angle is not None:
+            self._angle = angle

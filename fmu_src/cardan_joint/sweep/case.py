@@ -26,7 +26,7 @@ _RECORDED = (
 
 
 def _failure_message(error):
-    from ..simulate import SimulationError
+    from ..host.simulate import SimulationError
 
     text = " ".join(str(error).split())
     return text if isinstance(error, SimulationError) else f"{type(error).__name__}: {text}"
@@ -34,7 +34,7 @@ def _failure_message(error):
 
 def cosimulate(fmu_dir, stop_time, step, inputs, start_values, output):
     """The sweep's one call into the FMU stack (the place to switch how FMUs are run)."""
-    from ..simulate import simulate
+    from ..host.simulate import simulate
 
     return simulate(
         fmu_dir,

@@ -16,7 +16,7 @@ from .timing import compare, timed
 
 
 def add_arguments(parser, default_name="design_sweep"):
-    from ..simulate import DEFAULT_FMU
+    from ..host.simulate import DEFAULT_FMU
 
     defaults = SweepSpec()
     parser.add_argument("--fmu", default=str(DEFAULT_FMU), help="FMU file (default %(default)s)")
@@ -159,13 +159,8 @@ def _run(args, fmu, spec, store, progress):
         table, seconds = timed(run_serial, fmu, spec, progress, store)
         print(f"serial: {seconds:.1f} s, {store.written} cases computed")
         return table
-    (client, cluster), startup = timed(connect, args.scheduler, args.workers)
-    try:
+    with connect(args.scheduler, args.workers) as (client, _, startup):
         table, seconds = timed(run_dask, fmu, spec, client, progress, store)
-    finally:
-        client.close()
-        if cluster is not None:
-            cluster.close()
     print(
         f"Dask: {seconds:.1f} s (+ {startup:.1f} s to start or reach the cluster), "
         f"{store.written} cases computed"

@@ -5,7 +5,9 @@ the table, to the store if there is one (so an interrupted sweep resumes with
 what is missing), and to the progress bar (tqdm, on stderr).
 """
 
-from collections.abc import Callable
+import time
+from collections.abc import Callable, Iterator
+from contextlib import contextmanager
 from os import PathLike
 from pathlib import Path
 from typing import TYPE_CHECKING
@@ -126,20 +128,28 @@ QUIET_CLUSTER = {
 }
 
 
-def connect(scheduler: str | None = None, n_workers: int = 2) -> tuple:
-    """(client, cluster or None): a new LocalCluster unless a scheduler address is given."""
+@contextmanager
+def connect(scheduler: str | None = None, n_workers: int = 2) -> Iterator[tuple]:
+    """(client, cluster or None, start-up s) for a `with` block: a new LocalCluster
+    unless a scheduler address is given. Leaving the block closes the client, and
+    the cluster when it is ours (the one teardown of every Dask run)."""
     from dask.distributed import Client
 
-    if scheduler:
-        return Client(scheduler), None
-    cluster = local_cluster(n_workers)
-    return Client(cluster), cluster
+    start = time.perf_counter()
+    cluster = None if scheduler else local_cluster(n_workers)
+    client = Client(scheduler or cluster)
+    try:
+        yield client, cluster, time.perf_counter() - start
+    finally:
+        client.close()
+        if cluster is not None:
+            cluster.close()
 
 
 def _import_fmu_stack():
     import fmpy.fmi2  # noqa: F401
 
-    from .. import simulate  # noqa: F401
+    from ..host import simulate  # noqa: F401
 
 
 def warm_up(client):

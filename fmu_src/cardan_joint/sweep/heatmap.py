@@ -9,7 +9,7 @@ from pathlib import Path
 
 import numpy as np
 
-from ..plotting import pyplot, save_figure
+from ..host.plotting import pyplot, save_figure
 from .spec import ACCELERATION_LIMIT, SweepSpec
 
 HATCH_COLOR, FAILED_COLOR = "0.55", "0.75"  # seen on dark and light cells

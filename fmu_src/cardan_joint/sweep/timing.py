@@ -46,16 +46,11 @@ def _measured(function, *args, client=None):
 def _dask_run(fmu, spec, scheduler, n_workers, progress):
     """(table, sweep s, start-up s, others' CPUs): a fresh cluster per run,
     closed before the serial run so its scheduler cannot slow that run down."""
-    (client, cluster), startup = timed(connect, scheduler, n_workers)
-    try:
+    with connect(scheduler, n_workers) as (client, cluster, startup):
         warm_up(client)
         table, seconds, others = _measured(
             run_dask, fmu, spec, client, progress, client=client if cluster is not None else None
         )
-    finally:
-        client.close()
-        if cluster is not None:
-            cluster.close()
     return table, seconds, startup, others if cluster is not None else None
 
 

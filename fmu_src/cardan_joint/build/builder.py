@@ -1,0 +1,320 @@
+"""Build the project's FMUs with pythonfmu and refuse them unless FMPy validates them.
+
+Which models exist and their start-value checks come from their folders
+(`models/<name>/spec.py`, found by `models.discover`); every model's script is
+written from the one template of its FMI version (`fmi/script<N>.py`). Every
+build ships its own copy of the runtime part of `cardan_joint` (physics, model
+folders, slaves) under a name derived from a
+hash of that code and of the build's settings, and names the slave module
+after the same hash: two different FMUs of this project loaded in one process
+can then never run each other's code (Python keeps one module per name per
+process).
+"""
+
+import argparse
+import hashlib
+import json
+import re
+import shutil
+import sys
+import tempfile
+from pathlib import Path
+
+from ..models import Model, StartValueError, discover
+from ..models import model as find_model
+from ..names import UsageError, parse_assignments
+from .archive import ArchiveError, normalise
+
+PACKAGE_DIR = Path(__file__).resolve().parent.parent
+# What an FMU needs at run time: the shared layers, every model folder (a model
+# may build on another's, as the CompliantPropshaft on the Propshaft) and the
+# slaves. The rest of the package (host, build, the native loader's sources)
+# runs in the host only.
+RUNTIME = (
+    "__init__.py",
+    "names.py",
+    "units.py",
+    "variable_schema.py",
+    "physics",
+    "models",
+    "fmi",
+)
+# Host-only parts of the runtime's folders.
+_HOST_ONLY = ("native", "__pycache__")
+SCRIPTS = {2: PACKAGE_DIR / "fmi" / "script2.py", 3: PACKAGE_DIR / "fmi" / "script3.py"}
+DEFAULT_MODEL = "UniversalJoint"
+FMI_VERSIONS = (2, 3)
+
+
+class BuildError(RuntimeError):
+    pass
+
+
+def _runtime_files(script: Path):
+    for entry in RUNTIME:
+        path = PACKAGE_DIR / entry
+        if not path.is_dir():
+            yield path
+            continue
+        yield from sorted(
+            p
+            for p in path.rglob("*.py")
+            if p != script and not set(p.relative_to(path).parts) & set(_HOST_ONLY)
+        )
+
+
+def _fingerprint(
+    script: Path, folder: str, model_name: str, start_values: dict, settings: dict
+) -> str:
+    digest = hashlib.sha256()
+    for path in [script, *_runtime_files(script)]:
+        digest.update(str(path.relative_to(PACKAGE_DIR)).encode())
+        digest.update(path.read_bytes())
+    digest.update(
+        json.dumps(
+            [folder, model_name, sorted(start_values.items()), sorted(settings.items())]
+        ).encode()
+    )
+    return digest.hexdigest()[:12]
+
+
+def _check_start_values(spec: Model, start_values: dict, settings: dict) -> dict:
+    values = {name: float(value) for name, value in start_values.items()}
+    try:
+        spec.check_start_values(values, settings)
+    except StartValueError as error:
+        raise BuildError(str(error)) from None
+    return values
+
+
+def _rewrite(script: str, pattern: str, replacement: str, what: str, required: bool) -> str:
+    script, count = re.subn(pattern, lambda _: replacement, script, count=1, flags=re.M)
+    if count != 1 and required:
+        raise BuildError(f"the script template no longer has the {what} line the build rewrites")
+    return script
+
+
+def _stage(
+    workdir: Path,
+    script_template: Path,
+    model_name: str,
+    start_values: dict,
+    settings: dict,
+    fingerprint: str,
+    folder: str,
+) -> Path:
+    package = f"cardan_joint_{fingerprint}"
+    target = workdir / package
+    target.mkdir()
+    for entry in RUNTIME:
+        source = PACKAGE_DIR / entry
+        if source.is_dir():
+            # Any __pycache__ copied along is left out of the FMU by archive.normalise.
+            shutil.copytree(source, target / entry, ignore=shutil.ignore_patterns(*_HOST_ONLY))
+        else:
+            shutil.copy2(source, target / entry)
+    script = script_template.read_text().replace("from cardan_joint.", f"from {package}.")
+    base = re.search(r"^class \w+\(([\w, ]+)\):", script, flags=re.M)
+    if base is None:
+        raise BuildError(f"{script_template} has no slave class for the build to rename")
+    script = _rewrite(
+        script, r"^class \w+\([\w, ]+\):", f"class {model_name}({base.group(1)}):", "class", True
+    )
+    script = _rewrite(
+        script,
+        r"^    model_folder = \"\"  # .*$",
+        f"    model_folder = {folder!r}",
+        "model_folder",
+        True,
+    )
+    script = _rewrite(
+        script,
+        r"^    start_overrides = \{\}$",
+        f"    start_overrides = {start_values!r}",
+        "start_overrides",
+        True,
+    )
+    script = _rewrite(
+        script,
+        r"^    build_settings = \{\}$",
+        f"    build_settings = {settings!r}",
+        "build_settings",
+        bool(settings),
+    )
+    script_path = workdir / f"{model_name.lower()}_{fingerprint}.py"
+    script_path.write_text(script)
+    return script_path
+
+
+def _fmu_builder(fmi_version: int):
+    if fmi_version == 2:
+        from pythonfmu import FmuBuilder
+    else:
+        from pythonfmu3 import FmuBuilder
+    return FmuBuilder
+
+
+def build(
+    dest: str | Path = "dist",
+    model_name: str | None = None,
+    start_values: dict | None = None,
+    validate: bool = True,
+    model: str = DEFAULT_MODEL,
+    settings: dict | None = None,
+    fmi_version: int = 2,
+) -> Path:
+    """Build `<dest>/<model_name>.fmu` (FMI 3: `<dest>/fmi3/<model_name>.fmu`);
+    raise BuildError unless FMPy validates it."""
+    try:
+        spec = find_model(model)
+    except StartValueError as error:
+        raise BuildError(str(error)) from None
+    settings = {**spec.default_settings, **(settings or {})}
+    model_name = model_name or spec.default_name(settings)
+    if not re.fullmatch(r"[A-Za-z_][A-Za-z0-9_]*", model_name):
+        raise BuildError(f"model name {model_name!r} must be a Python identifier")
+    if fmi_version not in spec.fmi_versions:
+        raise BuildError(
+            f"{model} is built for FMI {', '.join(map(str, spec.fmi_versions))} only, "
+            f"not FMI {fmi_version}"
+        )
+    script_template = SCRIPTS[fmi_version]
+    start_values = _check_start_values(spec, start_values or {}, settings)
+    dest = Path(dest).resolve() / ("fmi3" if fmi_version == 3 else "")
+    dest.mkdir(parents=True, exist_ok=True)
+    fingerprint = _fingerprint(script_template, spec.folder, model_name, start_values, settings)
+    builder = _fmu_builder(fmi_version)
+    with tempfile.TemporaryDirectory(prefix="cardan_joint_build_") as workdir:
+        script = _stage(
+            Path(workdir),
+            script_template,
+            model_name,
+            start_values,
+            settings,
+            fingerprint,
+            spec.folder,
+        )
+        package_dir = script.parent / f"cardan_joint_{fingerprint}"
+        try:
+            fmu = builder.build_FMU(script, dest=dest, project_files=[package_dir])
+        finally:
+            # pythonfmu imported the staged script and package: drop them, so a
+            # second build in this process cannot pick up this one's code. (Third-
+            # party modules they imported stay: numpy cannot be imported twice.)
+            for name in [
+                n for n in sys.modules if n.split(".")[0] in (package_dir.name, script.stem)
+            ]:
+                del sys.modules[name]
+    fmu = Path(fmu)
+    # --- native loader (issue 11): C hosts run the FMU without any set-up ---
+    from ..fmi.native import NativeBuildError, install_loader
+
+    try:
+        install_loader(fmu, model_name, fmi_version)
+    except NativeBuildError as error:
+        fmu.unlink()
+        raise BuildError(str(error)) from None
+    # --- end native loader ---
+    # Last: everything that writes into the FMU has written (see archive.py).
+    try:
+        normalise(fmu, fmi_version)
+    except ArchiveError as error:
+        fmu.unlink()
+        raise BuildError(str(error)) from None
+    if validate:
+        from fmpy.validation import validate_fmu
+
+        problems = validate_fmu(str(fmu))
+        if problems:
+            fmu.unlink()
+            raise BuildError("FMPy's validate_fmu rejected the FMU:\n  " + "\n  ".join(problems))
+    return fmu
+
+
+def main(argv=None, prog=None) -> int:
+    parser = argparse.ArgumentParser(
+        prog=prog,
+        description="Build and validate an FMU of this project (default: the UniversalJoint FMU).",
+    )
+    parser.add_argument(
+        "--model",
+        default=DEFAULT_MODEL,
+        choices=sorted(discover()),
+        help="which model to build (default: %(default)s)",
+    )
+    parser.add_argument(
+        "--fmi-version",
+        type=int,
+        default=2,
+        choices=FMI_VERSIONS,
+        help="FMI version (default: 2; FMI 3 goes to DEST/fmi3/)",
+    )
+    parser.add_argument("--dest", default="dist", help="output folder (default: dist)")
+    parser.add_argument(
+        "--name", default=None, help="model name and FMU file name (default: the model's own name)"
+    )
+    parser.add_argument(
+        "--set",
+        action="append",
+        default=[],
+        metavar="NAME=VALUE",
+        help="start value of an input or parameter in SI units (rad, rad/s, N.m, kg.m2), "
+        "e.g. --set bend_angle=0.2",
+    )
+    parser.add_argument(
+        "--joints",
+        type=int,
+        default=None,
+        metavar="N",
+        help="Propshaft only: number of joints, 2 (Propshaft, the default), "
+        "3 or 4 (Propshaft3, Propshaft4)",
+    )
+    parser.add_argument(
+        "--cross-check",
+        action="store_true",
+        help="also write DEST/cross-check/fmus/2.0/cs/linux64/... with the "
+        "reference run (fmi-cross-check layout; default model only)",
+    )
+    args = parser.parse_args(argv)
+    settings = {}
+    if args.joints is not None:
+        if "joints" not in discover()[args.model].default_settings:
+            parser.error(f"--joints does not apply to {args.model}")
+        settings["joints"] = args.joints
+    if args.cross_check and (
+        args.model != DEFAULT_MODEL
+        or args.fmi_version != 2
+        or args.name not in (None, DEFAULT_MODEL)
+        or args.set
+    ):
+        parser.error(
+            "--cross-check takes the default model: its reference run assumes the "
+            "default FMI 2 UniversalJoint with its start values (no --model, "
+            "--fmi-version, --name or --set)"
+        )
+    try:
+        start_values = parse_assignments(args.set)
+    except UsageError as error:
+        parser.error(str(error))
+    try:
+        fmu = build(
+            args.dest,
+            args.name,
+            start_values,
+            model=args.model,
+            settings=settings,
+            fmi_version=args.fmi_version,
+        )
+    except BuildError as error:
+        print(f"build_fmu: {error}", file=sys.stderr)
+        return 1
+    print(f"built and validated {fmu}")
+    if args.cross_check:
+        from .cross_check import write_cross_check
+
+        print(f"wrote {write_cross_check(Path(args.dest) / 'cross-check', fmu)}")
+    return 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())

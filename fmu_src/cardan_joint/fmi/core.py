@@ -1,0 +1,291 @@
+"""What every slave of this project shares, whatever the model and the FMI version.
+
+No equation lives here: a slave maps its variables onto a physics object
+(`_new_model()`: whatever the model folder's spec makes, see `binding`) that offers
+start, step, outputs, parameter_fault, input_problem, invalid_inputs, state and
+restore, the problems as `Refusal`s. This mixin keeps the behaviour around it:
+the output cache, the outputs held while an input is invalid, the refused step
+that leaves the model untouched, the parameters fixed after initialization and
+the complete FMU state. It addresses variables by *flat index*, the position
+in the class's variable `table` (inputs, parameters, outputs), which is the
+FMI 2 value reference; the FMI 3 slave maps its own value references onto it.
+
+Both pythonfmu libraries turn any Python exception into a fatal status, so
+every method here that a slave calls catches everything. A slave mixes this in
+before its pythonfmu base and provides `_STATUS` (its status enumeration),
+`_API` and `_STATE` (for messages naming FMI functions) and `_report`.
+"""
+
+import json
+from typing import Any
+
+from .. import __version__
+from .fast_step import FastStep
+from .references import References
+
+
+def _readable(seconds: float) -> str:
+    """A master's step sizes and clocks carry float noise (0.0010000000000000009):
+    12 digits hide it, in the same style as the refusal's own exact values (1.0)."""
+    return repr(float(f"{seconds:.12g}"))
+
+
+class SlaveCore(FastStep):
+    author = "Cardan joint FMU team"
+    license = "MIT"
+    version = __version__
+    description = ""  # the model's (its spec's, see binding.py)
+    # Each slave makes its library's DefaultExperiment of these.
+    experiment = {"start_time": 0.0, "stop_time": 2.0, "step_size": 1e-3}
+    # Start values that differ from the table's, written in by the build script.
+    start_overrides: dict = {}
+    # The model's variable table; a model's slave sets it, `_new_model` and
+    # `live_outputs` (the leading outputs that follow the model's state even
+    # while inputs are invalid); the flat indices follow.
+    table: Any = None
+    live_outputs: tuple[str, ...] = ()
+    owner = "model"  # what stays put in messages
+    _refs: Any = None
+    # Set by each FMI version's slave: its status enumeration, "fmi2"/"fmi3" and
+    # "state"/"State" (for messages naming FMI functions).
+    _STATUS: Any
+    _API: str
+    _STATE: str
+
+    def _report(self, message: str, status) -> None:
+        """Log `message` with `status` (each FMI version's slave says how)."""
+        raise NotImplementedError
+
+    def __init_subclass__(cls, **kwargs):
+        super().__init_subclass__(**kwargs)
+        if cls.table is not None:
+            cls._refs = References(cls.table, cls.live_outputs)
+
+    def _new_model(self):
+        """The physics object the slave maps its variables onto."""
+        raise NotImplementedError(f"{type(self).__name__} names no model")
+
+    def _initialization_warnings(self):
+        """Messages logged as warnings when initialization ends (none by default)."""
+        return ()
+
+    def _init_model(self):
+        refs = self._refs
+        self._model = self._new_model()
+        self._start_time = 0.0
+        self._initialized = False
+        self._outputs = None  # cached outputs; None = recompute on next read
+        self._inputs_checked = False
+        self._outputs_held, self._inputs_held = refs.nan_outputs, refs.inputs_of(self._model)
+        if not (self._model.parameter_fault or self._model.input_problem()):
+            self._outputs_held = self._model.outputs()
+
+    def _fault(self, where: str, error: BaseException) -> None:
+        try:
+            self._report(
+                f"internal error in {where}: {type(error).__name__}: {error}", self._STATUS.error
+            )
+        except Exception:
+            pass
+
+    # --- life cycle ----------------------------------------------------------
+
+    def _restart(self):
+        """Re-apply the start time and parameters (before initialization ends)."""
+        self._model.start(self._start_time)
+        self._outputs = None
+        self._inputs_checked = False
+
+    def exit_initialization_mode(self):
+        try:
+            self._restart()
+            self._initialized = True
+            problem = self._model.parameter_fault
+            if problem:
+                self._report(
+                    f"{problem.message}; every step will be refused until it is fixed",
+                    self._STATUS.error,
+                )
+            for message in self._initialization_warnings():
+                self._report(message, self._STATUS.warning)
+        except Exception as error:
+            self._fault("exit_initialization_mode", error)
+
+    def _step(self, current_time, step_size):
+        """Take the step; return the status: ok, discard (refused, the model as it
+        was), or error (an internal fault, reported)."""
+        try:
+            model = self._model
+            time = model.time
+            model.time = current_time
+            problem = model.step(step_size)
+            if problem:
+                model.time = time
+                self._report(
+                    f"{problem.message}; step of {_readable(step_size)} s refused, the "
+                    f"{self.owner} stays at t = {_readable(current_time)} s",
+                    self._STATUS.discard,
+                )
+                return self._STATUS.discard
+            self._outputs = None
+            self._inputs_checked = True
+            return self._STATUS.ok
+        except Exception as error:
+            self._fault("do_step", error)
+            return self._STATUS.error
+
+    # --- values --------------------------------------------------------------
+
+    def _current_outputs(self):
+        model = self._model
+        if not self._inputs_checked:
+            problem = model.parameter_fault or model.input_problem()
+            if problem:
+                self._report(
+                    f"{problem.at(model.time).message}; outputs that depend on it "
+                    f"are held at the last valid inputs",
+                    self._STATUS.warning,
+                )
+                return self._held_outputs(model)
+            self._inputs_checked = True
+        self._outputs = self._outputs_held = model.outputs()
+        self._inputs_held = self._refs.inputs_of(model)
+        return self._outputs
+
+    def _held_outputs(self, model):
+        """Outputs with invalid inputs: each output that depends on an invalid input
+        keeps its last valid value, the others (and the live outputs, the state)
+        follow the valid inputs, as the declared dependencies promise."""
+        live = (
+            tuple(getattr(model, name) for name in self.live_outputs)
+            + self._outputs_held[len(self.live_outputs) :]
+        )
+        if model.parameter_fault:
+            return live
+        invalid = model.invalid_inputs()
+        inputs = self.table.INPUTS
+        current = self._refs.inputs_of(model)
+        try:
+            for name, held in zip(inputs, self._inputs_held):
+                if name in invalid:
+                    setattr(model, name, held)
+            fresh = model.outputs()
+        finally:
+            for name, value in zip(inputs, current):
+                setattr(model, name, value)
+        return tuple(
+            live[i] if dependencies & invalid else fresh[i]
+            for i, dependencies in enumerate(self._refs.output_dependencies)
+        )
+
+    def _get_flat(self, indices):
+        """Values at flat indices; raises IndexError for an index out of range."""
+        outputs = self._outputs or self._current_outputs()
+        refs = self._refs
+        if indices == refs.all_outputs:
+            return list(outputs)
+        model, first = self._model, refs.first_output
+        return [
+            outputs[i - first] if i >= first else getattr(model, refs.known[i]) for i in indices
+        ]
+
+    def _set_flat(self, indices, values, setter: str):
+        """Set inputs and parameters by flat index; anything else is reported
+        (as an error of `setter`) and ignored."""
+        try:
+            model, refs = self._model, self._refs
+            known = refs.known
+            if indices == refs.all_inputs:
+                for name, value in zip(self.table.INPUTS, values):
+                    setattr(model, name, float(value))
+                self._outputs = None
+                self._inputs_checked = False
+                return
+            parameters_changed = False
+            for i, value in zip(indices, values):
+                if not 0 <= i < refs.first_output:
+                    self._report(
+                        f"{setter} on {self._name_of(i)} ignored: only inputs and "
+                        f"parameters can be set",
+                        self._STATUS.error,
+                    )
+                elif i in refs.inputs:
+                    setattr(model, known[i], float(value))
+                elif self._initialized:
+                    self._report(
+                        f"parameter {known[i]} = {value!r} ignored: fixed "
+                        f"parameters cannot change after initialization",
+                        self._STATUS.error,
+                    )
+                else:
+                    setattr(model, known[i], float(value))
+                    parameters_changed = True
+            if parameters_changed:
+                self._restart()  # outputs in initialization mode see them at once
+            self._outputs = None
+            self._inputs_checked = False
+        except Exception as error:
+            self._fault(setter, error)
+
+    def _name_of(self, index):
+        names = self._refs.names
+        return names[index] if 0 <= index < len(names) else f"value reference {index}"
+
+    # --- FMU state -----------------------------------------------------------
+
+    def _get_fmu_state(self):
+        try:
+            return {
+                "model": self._model.state(),
+                "start_time": self._start_time,
+                "initialized": self._initialized,
+                "outputs_held": list(self._outputs_held),
+                "inputs_held": list(self._inputs_held),
+            }
+        except Exception as error:
+            self._fault(f"{self._API}GetFMU{self._STATE}", error)
+            return {"invalid_state": f"{self._API}GetFMU{self._STATE} failed: {error}"}
+
+    def _set_fmu_state(self, state):
+        try:
+            if "invalid_state" in state:
+                raise ValueError(state["invalid_state"])
+            held_outputs = tuple(float(v) for v in state["outputs_held"])
+            held_inputs = tuple(float(v) for v in state["inputs_held"])
+            if len(held_outputs) != len(self.table.OUTPUTS) or len(held_inputs) != len(
+                self.table.INPUTS
+            ):
+                raise ValueError("the state is from another version of the FMU")
+            self._model.restore(state["model"])  # all or nothing
+            self._start_time = float(state["start_time"])
+            self._initialized = bool(state["initialized"])
+            self._outputs_held, self._inputs_held = held_outputs, held_inputs
+        except Exception as error:
+            self._report(
+                f"{self._API}SetFMU{self._STATE} ignored, the {self.owner} keeps its "
+                f"state: {type(error).__name__}: {error}",
+                self._STATUS.error,
+            )
+        finally:
+            self._outputs = None
+            self._inputs_checked = False
+
+    # Class methods: both loaders call these on the class, not on an instance.
+    @classmethod
+    def _fmu_state_to_bytes(cls, state):
+        try:
+            return json.dumps(state).encode("utf-8")
+        except Exception as error:
+            return json.dumps({"invalid_state": f"serialization failed: {error}"}).encode()
+
+    @classmethod
+    def _fmu_state_from_bytes(cls, data):
+        # Returning a marked state instead of raising: the set-state call then says why.
+        try:
+            state = json.loads(data.decode("utf-8"))
+            if not isinstance(state, dict):
+                raise ValueError("not a serialized FMU state of this project")
+            return state
+        except Exception as error:
+            reason = f"{cls._API}DeSerializeFMU{cls._STATE} got no valid state: {error}"
+            return {"invalid_state": reason}

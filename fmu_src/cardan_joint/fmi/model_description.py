@@ -1,0 +1,67 @@
+"""Complete pythonfmu's model description from the variable table.
+
+pythonfmu 0.7.0 writes neither units nor min/max, nor InitialUnknowns, nor
+output dependencies; FMPy's validator rejects the result. This adds them.
+"""
+
+from xml.etree.ElementTree import Element, SubElement
+
+
+def _number(value: float) -> str:
+    return repr(float(value))
+
+
+def child(node: Element, tag: str) -> Element:
+    """`node`'s `tag` element; a model description without it cannot be completed."""
+    found = node.find(tag)
+    if found is None:
+        raise ValueError(f"model description: <{node.tag}> has no <{tag}> element")
+    return found
+
+
+def _unit_definitions(table) -> Element:
+    node = Element("UnitDefinitions")
+    for unit in table.UNITS.values():
+        unit_node = SubElement(node, "Unit", name=unit.name)
+        SubElement(
+            unit_node, "BaseUnit", {base: str(exponent) for base, exponent in unit.exponents}
+        )
+        for display, factor in unit.display:
+            SubElement(unit_node, "DisplayUnit", name=display, factor=_number(factor))
+    return node
+
+
+def complete(root: Element, table) -> Element:
+    """`root` with units, ranges and ModelStructure from the model's `table`."""
+    children = list(root)
+    position = next(i for i, node in enumerate(children) if node.tag == "CoSimulation") + 1
+    root.insert(position, _unit_definitions(table))
+
+    index = {}
+    for i, scalar in enumerate(child(root, "ModelVariables"), start=1):
+        variable = table.BY_NAME[scalar.get("name")]
+        index[variable.name] = i
+        if variable.initial and scalar.get("initial") is None:
+            scalar.set("initial", variable.initial)
+        real = child(scalar, "Real")
+        real.set("unit", variable.unit)
+        if variable.display_unit:
+            real.set("displayUnit", variable.display_unit)
+        for attribute in ("min", "max"):
+            value = getattr(variable, attribute)
+            if value is not None:
+                real.set(attribute, _number(value))
+
+    structure = child(root, "ModelStructure")
+    for node in list(structure):
+        structure.remove(node)
+    outputs = SubElement(structure, "Outputs")
+    initial_unknowns = SubElement(structure, "InitialUnknowns")
+    for name in table.OUTPUTS:
+        variable = table.BY_NAME[name]
+        dependencies = " ".join(str(index[d]) for d in variable.depends_on)
+        SubElement(outputs, "Unknown", index=str(index[name]), dependencies=dependencies)
+        # At initialization an output depends on the inputs and on the parameters
+        # (geometry, start angle, inertias), so no narrower list is declared.
+        SubElement(initial_unknowns, "Unknown", index=str(index[name]))
+    return root

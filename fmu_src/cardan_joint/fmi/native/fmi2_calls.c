@@ -1,0 +1,252 @@
+/* The fmi2 functions after fmi2Instantiate: each checks the instance and the
+ * FMI 2.0 co-simulation state machine, enters Python's thread state for this
+ * host thread, forwards to pythonfmu, and returns the worst status logged.
+ * A call the standard does not allow in the current state, on a NULL array or
+ * on an FMU state this instance did not hand out is answered with fmi2Error and
+ * a message, without reaching Python, and changes nothing. */
+#define _GNU_SOURCE
+#include "instance.h"
+
+#include <dlfcn.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+/* Reading in the instantiated state is beyond FMI 2.0 but harmless: start values. */
+#define READABLE ALIVE
+#define SETTABLE (STATE_INSTANTIATED | STATE_INITIALIZATION | STATE_STEP_COMPLETE)
+
+int resolve_slave_api(void *handle, char *error, size_t size)
+{
+#define RESOLVE(member, symbol, result, parameters)                                      \
+    if (!(slave.member = (result(*) parameters)dlsym(handle, #symbol))) {                \
+        snprintf(error, size, "pythonfmu's binary has no %s", #symbol);                  \
+        return -1;                                                                       \
+    }
+    SLAVE_FUNCTIONS(RESOLVE)
+#undef RESOLVE
+    return 0;
+}
+
+const char *where(enum state state)
+{
+    switch (state) {
+    case STATE_INSTANTIATED:
+        return "before initialization: call fmi2EnterInitializationMode and "
+               "fmi2ExitInitializationMode first";
+    case STATE_INITIALIZATION:
+        return "in initialization mode: call fmi2ExitInitializationMode first";
+    case STATE_STEP_COMPLETE:
+        return "after initialization";
+    case STATE_TERMINATED:
+        return "after fmi2Terminate: call fmi2Reset to start again";
+    default:
+        return "after a fatal error: only fmi2FreeInstance is allowed";
+    }
+}
+
+/* --- life cycle --------------------------------------------------------------- */
+
+void free_instance(struct instance *in)
+{
+    while (in->n_fmu_states)
+        drop_state(in, &in->fmu_states[0]);
+    if (in->slave)
+        slave.free_instance(in->slave);
+    for (size_t i = 0; i < in->n_categories; i++)
+        free(in->categories[i]);
+    in->magic = 0;
+    free(in->categories);
+    free(in->fmu_states);
+    free(in->name);
+    free(in->guid);
+    free(in->resources_uri);
+    free(in);
+}
+
+const char *fmi2GetTypesPlatform(void) { return "default"; }
+const char *fmi2GetVersion(void) { return "2.0"; }
+
+void fmi2FreeInstance(fmi2Component c)
+{
+    struct instance *in = enter(c, ANY, "fmi2FreeInstance");
+    if (in)
+        free_instance(in);
+}
+
+fmi2Status fmi2SetDebugLogging(fmi2Component c, fmi2Boolean on, size_t n, const fmi2String categories[])
+{
+    struct instance *in = enter(c, ANY, "fmi2SetDebugLogging");
+    return in ? set_debug_logging(in, "fmi2SetDebugLogging", on, n, categories) : fmi2Error;
+}
+
+fmi2Status fmi2SetupExperiment(fmi2Component c, fmi2Boolean tolerance_defined, fmi2Real tolerance,
+                               fmi2Real start, fmi2Boolean stop_defined, fmi2Real stop)
+{
+    struct instance *in = enter(c, STATE_INSTANTIATED, "fmi2SetupExperiment");
+    return in ? leave(in, slave.setup_experiment(in->slave, tolerance_defined, tolerance, start,
+                                                 stop_defined, stop))
+              : fmi2Error;
+}
+
+static fmi2Status transition(fmi2Component c, unsigned allowed, const char *function,
+                             fmi2Status (*call)(fmi2Component), enum state next)
+{
+    struct instance *in = enter(c, allowed, function);
+    if (!in)
+        return fmi2Error;
+    fmi2Status status = leave(in, call(in->slave));
+    if (status <= fmi2Error && in->state != STATE_FATAL)
+        in->state = next;
+    return status;
+}
+
+fmi2Status fmi2EnterInitializationMode(fmi2Component c)
+{
+    return transition(c, STATE_INSTANTIATED, "fmi2EnterInitializationMode",
+                      slave.enter_initialization, STATE_INITIALIZATION);
+}
+
+fmi2Status fmi2ExitInitializationMode(fmi2Component c)
+{
+    return transition(c, STATE_INITIALIZATION, "fmi2ExitInitializationMode",
+                      slave.exit_initialization, STATE_STEP_COMPLETE);
+}
+
+fmi2Status fmi2Terminate(fmi2Component c)
+{
+    return transition(c, STATE_STEP_COMPLETE, "fmi2Terminate", slave.terminate,
+                      STATE_TERMINATED);
+}
+
+/* pythonfmu's own reset makes a fresh Python slave (its constructor, run again). */
+fmi2Status fmi2Reset(fmi2Component c)
+{
+    return transition(c, ALIVE, "fmi2Reset", slave.reset, STATE_INSTANTIATED);
+}
+
+/* --- values ------------------------------------------------------------------- */
+
+#define VALUES(get_or_set, Type, member, allowed, constness)                             \
+    fmi2Status fmi2##get_or_set##Type(fmi2Component c, const fmi2ValueReference vr[],   \
+                                      size_t n, constness fmi2##Type value[])            \
+    {                                                                                    \
+        const char *function = "fmi2" #get_or_set #Type;                                 \
+        struct instance *in = enter(c, allowed, function);                               \
+        if (!in || !arrays_given(in, function, n, vr, value))                            \
+            return fmi2Error;                                                            \
+        return leave(in, slave.member(in->slave, vr, n, value));                         \
+    }
+VALUES(Get, Real, get_real, READABLE, )
+VALUES(Get, Integer, get_integer, READABLE, )
+VALUES(Get, Boolean, get_boolean, READABLE, )
+VALUES(Get, String, get_string, READABLE, )
+VALUES(Set, Integer, set_integer, SETTABLE, const)
+VALUES(Set, Boolean, set_boolean, SETTABLE, const)
+VALUES(Set, String, set_string, SETTABLE, const)
+
+/* After initialization a fixed parameter stays as it is, even if a restored FMU
+ * state makes the slave believe it is not initialized yet. */
+static const char *fixed_parameter_in(const struct instance *in, const fmi2ValueReference vr[],
+                                      size_t n)
+{
+    for (size_t i = 0; i < n; i++)
+        for (int k = 0; k < in->fixed->count; k++)
+            if (in->fixed->parameters[k].vr == vr[i])
+                return in->fixed->parameters[k].name;
+    return NULL;
+}
+
+fmi2Status fmi2SetReal(fmi2Component c, const fmi2ValueReference vr[], size_t n,
+                       const fmi2Real value[])
+{
+    struct instance *in = enter(c, SETTABLE, "fmi2SetReal");
+    if (!in || !arrays_given(in, "fmi2SetReal", n, vr, value))
+        return fmi2Error;
+    const char *fixed = in->state == STATE_STEP_COMPLETE ? fixed_parameter_in(in, vr, n) : NULL;
+    if (fixed) {
+        reportf(in, fmi2Error, "parameter %s is fixed: it can be set only before "
+                "fmi2ExitInitializationMode; the call was ignored", fixed);
+        return fmi2Error;
+    }
+    return leave(in, slave.set_real(in->slave, vr, n, value));
+}
+
+/* --- stepping and status ------------------------------------------------------ */
+
+fmi2Status fmi2DoStep(fmi2Component c, fmi2Real time, fmi2Real step, fmi2Boolean no_set_prior)
+{
+    struct instance *in = enter(c, STATE_STEP_COMPLETE, "fmi2DoStep");
+    return in ? leave(in, slave.do_step(in->slave, time, step, no_set_prior)) : fmi2Error;
+}
+
+fmi2Status fmi2GetRealStatus(fmi2Component c, fmi2StatusKind kind, fmi2Real *value)
+{
+    struct instance *in = enter(c, READABLE, "fmi2GetRealStatus");
+    if (!in || !arrays_given(in, "fmi2GetRealStatus", 1, value, value))
+        return fmi2Error;
+    return leave(in, slave.get_real_status(in->slave, kind, value));
+}
+
+fmi2Status fmi2GetBooleanStatus(fmi2Component c, fmi2StatusKind kind, fmi2Boolean *value)
+{
+    struct instance *in = enter(c, READABLE, "fmi2GetBooleanStatus");
+    if (!in || !arrays_given(in, "fmi2GetBooleanStatus", 1, value, value))
+        return fmi2Error;
+    return leave(in, slave.get_boolean_status(in->slave, kind, value));
+}
+
+static fmi2Status unsupported(fmi2Component c, const char *function, const char *why)
+{
+    struct instance *in = enter(c, ANY, function);
+    if (in)
+        reportf(in, fmi2Error, "%s is not supported: %s", function, why);
+    return fmi2Error;
+}
+
+fmi2Status fmi2GetStatus(fmi2Component c, const fmi2StatusKind kind, fmi2Status *value)
+{
+    (void)kind, (void)value;
+    return unsupported(c, "fmi2GetStatus", "fmi2DoStep never returns fmi2Pending");
+}
+
+fmi2Status fmi2GetIntegerStatus(fmi2Component c, const fmi2StatusKind kind, fmi2Integer *value)
+{
+    (void)kind, (void)value;
+    return unsupported(c, "fmi2GetIntegerStatus", "the FMU has no integer status");
+}
+
+fmi2Status fmi2GetStringStatus(fmi2Component c, const fmi2StatusKind kind, fmi2String *value)
+{
+    (void)kind, (void)value;
+    return unsupported(c, "fmi2GetStringStatus", "fmi2DoStep never returns fmi2Pending");
+}
+
+fmi2Status fmi2CancelStep(fmi2Component c)
+{
+    return unsupported(c, "fmi2CancelStep", "fmi2DoStep always completes before it returns");
+}
+
+fmi2Status fmi2GetDirectionalDerivative(fmi2Component c, const fmi2ValueReference u[], size_t nu,
+                                        const fmi2ValueReference z[], size_t nz,
+                                        const fmi2Real du[], fmi2Real dz[])
+{
+    (void)u, (void)nu, (void)z, (void)nz, (void)du, (void)dz;
+    return unsupported(c, "fmi2GetDirectionalDerivative",
+                       "providesDirectionalDerivative is false");
+}
+
+fmi2Status fmi2SetRealInputDerivatives(fmi2Component c, const fmi2ValueReference vr[], size_t n,
+                                       const fmi2Integer order[], const fmi2Real value[])
+{
+    (void)vr, (void)n, (void)order, (void)value;
+    return unsupported(c, "fmi2SetRealInputDerivatives",
+                       "canInterpolateInputs is false: set the inputs at each step instead");
+}
+
+fmi2Status fmi2GetRealOutputDerivatives(fmi2Component c, const fmi2ValueReference vr[], size_t n,
+                                        const fmi2Integer order[], fmi2Real value[])
+{
+    (void)vr, (void)n, (void)order, (void)value;
+    return unsupported(c, "fmi2GetRealOutputDerivatives", "maxOutputDerivativeOrder is 0");
+}

@@ -1,0 +1,125 @@
+"""The pythonfmu (FMI 2.0) slave: the FMI 2 face of `core.SlaveCore`.
+
+No equation and no model logic live here (that is `core`, for every model and
+both FMI versions): value references are the core's flat indices. What lives
+here is FMI 2 plumbing that pythonfmu 0.7.0 gets wrong for a robust
+component: any Python exception reaching its C layer becomes fmi2Fatal, so
+every method it calls catches everything; a refused step returns False
+(fmi2Discard); the typed accessors of other types refuse politely; and every
+problem is logged (the FMU's native loader makes sure it reaches the host, see
+`cardan_joint.fmi.native`).
+"""
+
+import math
+
+from pythonfmu import Fmi2Causality, Fmi2Slave, Fmi2Variability, Real
+from pythonfmu.default_experiment import DefaultExperiment
+from pythonfmu.enums import Fmi2Initial, Fmi2Status
+
+from .binding import ModelBinding
+from .core import SlaveCore
+from .model_description import complete
+from .references import log_categories
+
+
+class ModelSlave(ModelBinding, SlaveCore, Fmi2Slave):
+    """The FMI 2 slave of every model: a model's script subclasses it and names
+    its folder (`model_folder`), whose spec sets the table and the physics."""
+
+    default_experiment = DefaultExperiment(**SlaveCore.experiment)
+    log_categories = log_categories("fmi2")
+    _STATUS, _API, _STATE = Fmi2Status, "fmi2", "state"
+
+    def __init__(self, **kwargs):
+        super().__init__(**kwargs)
+        self._init_model()
+        for name in self._refs.names:
+            self._register(self.table.BY_NAME[name])
+
+    def _register(self, variable):
+        causality = Fmi2Causality[variable.causality]
+        initial = Fmi2Initial[variable.initial] if variable.initial else None
+        reference = len(self.vars)
+        self.register_variable(
+            Real(
+                variable.name,
+                causality=causality,
+                description=variable.description,
+                variability=Fmi2Variability[variable.variability],
+                initial=initial,
+                getter=lambda: self.get_real([reference])[0],
+                setter=lambda value: self.set_real([reference], [value]),
+            )
+        )
+
+    def to_xml(self, model_options=None):
+        options = {
+            "canGetAndSetFMUstate": True,
+            "canSerializeFMUstate": True,
+            **(model_options or {}),
+        }
+        return complete(super().to_xml(options), self.table)
+
+    def _report(self, message: str, status: Fmi2Status) -> None:
+        # No stderr here: the FMU's native loader hands every message to the host's
+        # logger (warnings and refusals even with debug logging off), or to stderr
+        # when the host gave no logger or $CARDAN_JOINT_FMU_STDERR asks for it.
+        self.log(message, status)
+
+    # --- life cycle ----------------------------------------------------------
+
+    def setup_experiment(self, start_time, stop_time=None, tolerance=None):
+        try:
+            self._start_time = float(start_time)
+            self._restart()
+        except Exception as error:
+            self._fault("setup_experiment", error)
+
+    def do_step(self, current_time, step_size):
+        return self._step(current_time, step_size) == Fmi2Status.ok
+
+    # --- values --------------------------------------------------------------
+
+    def get_real(self, vrs):
+        try:
+            return self._get_flat(vrs)
+        except Exception as error:
+            bad = [vr for vr in vrs if not 0 <= vr < len(self._refs.names)]
+            if bad:
+                self._report(
+                    f"get_real: no Real variable has value reference {bad[0]}", Fmi2Status.error
+                )
+            else:
+                self._fault("get_real", error)
+            return [math.nan] * len(vrs)
+
+    def set_real(self, vrs, values):
+        self._set_flat(vrs, values, "set_real")
+
+    # The FMU has Real variables only; pythonfmu's typed accessors would raise
+    # (fmi2Fatal) on any other call, so these refuse politely instead.
+    def _no_such_variables(self, kind, vrs):
+        self._report(
+            f"the FMU has no {kind} variables (value references {list(vrs)})", Fmi2Status.error
+        )
+
+    def get_integer(self, vrs):
+        self._no_such_variables("Integer", vrs)
+        return [0] * len(vrs)
+
+    def get_boolean(self, vrs):
+        self._no_such_variables("Boolean", vrs)
+        return [False] * len(vrs)
+
+    def get_string(self, vrs):
+        self._no_such_variables("String", vrs)
+        return [""] * len(vrs)
+
+    def set_integer(self, vrs, values):
+        self._no_such_variables("Integer", vrs)
+
+    def set_boolean(self, vrs, values):
+        self._no_such_variables("Boolean", vrs)
+
+    def set_string(self, vrs, values):
+        self._no_such_variables("String", vrs)

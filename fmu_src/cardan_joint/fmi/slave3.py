@@ -1,0 +1,250 @@
+"""The pythonfmu3 slave: the FMI 3.0 co-simulation face of `core.SlaveCore`.
+
+No equation and no joint logic live here: this maps FMI 3 value references
+(the independent variable `time`, then one per row of the model table's
+`fmi3_variables()`, vectors as Float64 arrays) onto the flat indices
+`core` works with. pythonfmu3 0.3.4's C layer shares pythonfmu's traps:
+any Python exception becomes fmi3Fatal (so every entry point catches
+everything), and it copies exactly `nValues` values out of a getter's list
+without checking its length (so a getter always returns enough, NaN-padded
+when a value reference is unknown). Unlike pythonfmu 0.7.0 it forwards log
+messages whether or not debug logging is on, and `do_step` can return any
+status; but it calls the host's logger without checking for NULL, which FMI
+3.0 allows, so messages go to stderr instead when the host gave no logger.
+"""
+
+import ctypes
+import math
+import sys
+
+from pythonfmu3 import Float64, Fmi3Causality, Fmi3Slave, Fmi3Variability
+from pythonfmu3.default_experiment import DefaultExperiment
+from pythonfmu3.enums import Fmi3Initial, Fmi3Status
+from pythonfmu3.fmi3slave import Fmi3StepResult
+from pythonfmu3.variables import Dimension
+
+from .binding import ModelBinding
+from .core import SlaveCore
+from .model_description3 import complete
+from .references import log_categories
+
+TIME_REFERENCE = 0
+_STEP_RESULTS = {status: Fmi3StepResult(status=status) for status in Fmi3Status}
+# cppfmu::Logger (pythonfmu3 0.3.4, pinned): { void* environment; callback logMessage; ... }.
+_LOGGER_CALLBACK_OFFSET = ctypes.sizeof(ctypes.c_void_p)
+
+
+def _host_has_logger(logger_address) -> bool:
+    if not isinstance(logger_address, int) or logger_address == 0:
+        return False
+    return bool(ctypes.c_void_p.from_address(logger_address + _LOGGER_CALLBACK_OFFSET).value)
+
+
+class ModelSlave3(ModelBinding, SlaveCore, Fmi3Slave):
+    """The FMI 3 slave of every model: a model's script subclasses it and names
+    its folder (`model_folder`), whose spec sets the table and the physics."""
+
+    log_categories = log_categories("fmi3")
+    _STATUS, _API, _STATE = Fmi3Status, "fmi3", "State"
+    # The model's FMI 3 variables and, per value reference, the flat indices
+    # (FMI 2 value references) it holds, its size, whether it can be set.
+    GROUPS: tuple = ()
+    _FLAT: tuple = ()
+    _SIZE: tuple = ()
+    _LONGEST = 1
+    _SETTABLE: frozenset = frozenset()
+
+    def __init_subclass__(cls, **kwargs):
+        super().__init_subclass__(**kwargs)
+        if cls.table is not None:
+            cls._lay_out()
+
+    @classmethod
+    def _lay_out(cls):
+        cls.GROUPS = groups = cls.table.fmi3_variables()
+        names = cls._refs.names
+        cls._FLAT = ((),) + tuple(tuple(names.index(r.name) for r in g.rows) for g in groups)
+        cls._SIZE = tuple(len(flat) or 1 for flat in cls._FLAT)
+        cls._LONGEST = max(cls._SIZE)
+        cls._SETTABLE = frozenset(
+            vr for vr, g in enumerate(groups, start=1) if g.causality in ("input", "parameter")
+        )
+
+    def __init__(self, **kwargs):
+        super().__init__(**kwargs)
+        # Fmi3SlaveBase.__init__ sets these on the instance: the class's would not show.
+        cls = type(self)
+        self.author, self.license, self.version = cls.author, cls.license, cls.version
+        self.description = cls.description
+        self.default_experiment = DefaultExperiment(**cls.experiment)
+        self._last_message = None
+        # The builder instantiates without a logger (no C layer, nothing to crash).
+        self._log_to_host = "logger" not in kwargs or _host_has_logger(kwargs["logger"])
+        self._init_model()
+        self.register_variable(
+            Float64(
+                "time",
+                causality=Fmi3Causality.independent,
+                variability=Fmi3Variability.continuous,
+                description="Simulation time",
+            )
+        )
+        for group in self.GROUPS:
+            self._register(group)
+
+    def _register(self, group):
+        initial = Fmi3Initial[group.initial] if group.initial else None
+        variable = Float64(
+            group.name,
+            causality=Fmi3Causality[group.causality],
+            description=group.description,
+            variability=Fmi3Variability[group.variability],
+            initial=initial,
+            getter=lambda: None,
+            setter=lambda value: None,
+        )
+        if len(group.rows) > 1:
+            # Attached after construction: pythonfmu3 0.3.4 imports numpy for any
+            # array variable only because its own array accessors need it; this
+            # slave answers arrays itself (get_float64), on the standard library.
+            variable._dimensions = [Dimension(start=str(len(group.rows)))]
+        self.register_variable(variable)
+
+    def to_xml(self, model_options=None):
+        starts = {name: getattr(self._model, name) for name in self._refs.known}
+        return complete(super().to_xml(model_options or {}), self.GROUPS, starts, self.table)
+
+    # --- messages ------------------------------------------------------------
+
+    def _report(self, message: str, status: Fmi3Status) -> None:
+        if self._log_to_host:
+            self.log(message, status)
+            return
+        # Once per distinct message; a host without a usable stderr must not make it fatal.
+        if message != self._last_message:
+            self._last_message = message
+            try:
+                sys.stderr.write(
+                    f"[{self.modelName} {self.instance_name}] {status.name.upper()}: {message}\n"
+                )
+                sys.stderr.flush()
+            except Exception:
+                pass
+
+    # --- life cycle ----------------------------------------------------------
+
+    def enter_initialization_mode(self):
+        # pythonfmu3 0.3.4 does not pass fmi3EnterInitializationMode's start time on:
+        # the clock starts at 0 and follows each fmi3DoStep's communication point.
+        try:
+            self._restart()
+        except Exception as error:
+            self._fault("enter_initialization_mode", error)
+
+    def do_step(self, current_time, step_size):
+        return _STEP_RESULTS[self._step(current_time, step_size)]
+
+    # --- values --------------------------------------------------------------
+
+    def _flat_indices(self, vrs, caller):
+        """The flat indices of `vrs`, or None after reporting an unknown reference."""
+        try:
+            indices = []
+            for vr in vrs:
+                indices.extend(self._FLAT[vr])
+            return indices
+        except IndexError:
+            bad = next(vr for vr in vrs if not 0 <= vr < len(self._FLAT))
+            self._report(
+                f"{caller}: no Float64 variable has value reference {bad}", Fmi3Status.error
+            )
+            return None
+
+    def get_float64(self, vrs):
+        try:
+            indices = self._flat_indices(vrs, "fmi3GetFloat64")
+            if indices is None:
+                return [math.nan] * (self._LONGEST * len(vrs))
+            if TIME_REFERENCE in vrs:  # the one value reference with no flat index
+                return [
+                    value
+                    for vr in vrs
+                    for value in (
+                        [self._model.time]
+                        if vr == TIME_REFERENCE
+                        else self._get_flat(list(self._FLAT[vr]))
+                    )
+                ]
+            return self._get_flat(indices)
+        except Exception as error:
+            self._fault("fmi3GetFloat64", error)
+            return [math.nan] * (self._LONGEST * len(vrs))
+
+    def set_float64(self, vrs, values):
+        try:
+            indices = self._flat_indices(vrs, "fmi3SetFloat64")
+            if indices is None:
+                return
+            sizes = [self._SIZE[vr] for vr in vrs]
+            if len(values) != sum(sizes):
+                self._report(
+                    f"fmi3SetFloat64: {len(values)} values for {sum(sizes)} "
+                    f"elements of value references {list(vrs)}: nothing set",
+                    Fmi3Status.error,
+                )
+                return
+            refused = [vr for vr in vrs if vr not in self._SETTABLE]
+            if refused:
+                names = ", ".join(self._fmi3_name(vr) for vr in refused)
+                self._report(
+                    f"fmi3SetFloat64 on {names} ignored: only inputs and parameters can be set",
+                    Fmi3Status.error,
+                )
+                starts = [sum(sizes[:k]) for k in range(len(vrs))]
+                kept = [k for k, vr in enumerate(vrs) if vr in self._SETTABLE]
+                indices = [i for k in kept for i in self._FLAT[vrs[k]]]
+                values = [v for k in kept for v in values[starts[k] : starts[k] + sizes[k]]]
+            self._set_flat(indices, values, "fmi3SetFloat64")
+        except Exception as error:
+            self._fault("fmi3SetFloat64", error)
+
+    def _fmi3_name(self, vr):
+        return "time" if vr == TIME_REFERENCE else self.GROUPS[vr - 1].name
+
+    # The FMU has Float64 variables only; pythonfmu3's typed accessors would raise
+    # (fmi3Fatal) on any other call, so these refuse politely instead.
+    def _no_such_variables(self, kind, vrs, fill):
+        self._report(
+            f"the FMU has no {kind} variables (value references {list(vrs)})", Fmi3Status.error
+        )
+        return [fill] * (self._LONGEST * len(vrs))
+
+    def get_int32(self, vrs):
+        return self._no_such_variables("Int32", vrs, 0)
+
+    def get_int64(self, vrs):
+        return self._no_such_variables("Int64", vrs, 0)
+
+    def get_uint64(self, vrs):
+        return self._no_such_variables("UInt64", vrs, ctypes.c_uint64(0))  # read via .value
+
+    def get_boolean(self, vrs):
+        return self._no_such_variables("Boolean", vrs, False)
+
+    def get_string(self, vrs):
+        return self._no_such_variables("String", vrs, "")
+
+    def set_int32(self, vrs, values):
+        self._no_such_variables("Int32", vrs, 0)
+
+    def set_int64(self, vrs, values):
+        self._no_such_variables("Int64", vrs, 0)
+
+    def set_uint64(self, vrs, values):
+        self._no_such_variables("UInt64", vrs, 0)
+
+    def set_boolean(self, vrs, values):
+        self._no_such_variables("Boolean", vrs, False)
+
+    def set_string(self, vrs, values):
+        self._no_such_variables("String", vrs, "")

@@ -1,0 +1,2 @@
+"""What runs FMUs: simulate, the instance helper, FMU facts, plots, inputs,
+libcosim, SSP and systems."""

@@ -1,0 +1,299 @@
+"""One FMU instance (FMI 2.0 or 3.0) on FMPy's low-level API, its Float variables by name.
+
+The one wrapper around FMPy's slave classes that tests, examples and benchmarks
+share: initialisation with start values, set/get by name, stepping (raising
+the FMU's own reason, or returning the status), FMU states, an optional log
+sink, terminate/free on leaving `with`. It knows no model: names come from
+the FMU's model description.
+
+    with FmuInstance.open("dist/UniversalJoint.fmu", start_values={...}) as joint:
+        joint.step(1e-3)
+        joint.get("output_speed")
+
+    with ExtractedFMU("dist/UniversalJoint.fmu") as fmu:      # unzipped once
+        with fmu.instance("joint1") as one, fmu.instance("joint2") as two: ...
+"""
+
+from __future__ import annotations
+
+import shutil
+from collections.abc import Callable, Iterable
+from pathlib import Path
+from typing import Any
+
+from ..names import check_known
+from .fmu_info import FmuInfo, require_fmu
+
+Message = tuple[int, str, str]  # (FMI status, category, text)
+# FMPy's opaque handle of a saved FMU state (fmi2FMUstate / fmi3FMUState pointer).
+FMUState = Any
+
+
+def _slave(model_description, unzipped: str, name: str):
+    from fmpy.fmi2 import FMU2Slave
+    from fmpy.fmi3 import FMU3Slave
+
+    fmi3 = model_description.fmiVersion.startswith("3")
+    return (FMU3Slave if fmi3 else FMU2Slave)(
+        guid=model_description.guid,
+        unzipDirectory=unzipped,
+        modelIdentifier=model_description.coSimulation.modelIdentifier,
+        instanceName=name,
+    )
+
+
+# FmuInstance hides FMI 3's call sequence, array getters and FMU-state names.
+_VERSIONS = ("2.0", "3.0")
+
+
+class _Recent(list):
+    """The current call's log messages, each also passed on to the user's sink."""
+
+    def __init__(self, also: Any) -> None:
+        super().__init__()
+        self.also = also
+
+    def append(self, message: Message) -> None:
+        super().append(message)
+        if self.also is not None:
+            self.also.append(message)
+
+
+def logging_callbacks(sink: Any) -> Any:
+    """FMI 2 callbacks whose logger appends (status, category, message) to `sink`."""
+    from fmpy.fmi2 import defaultCallbacks, fmi2CallbackFunctions, fmi2CallbackLoggerTYPE
+
+    callbacks = fmi2CallbackFunctions()
+    callbacks.logger = fmi2CallbackLoggerTYPE(
+        lambda env, instance, status, category, message: sink.append(
+            (status, category.decode(), message.decode())
+        )
+    )
+    callbacks.allocateMemory = defaultCallbacks.allocateMemory
+    callbacks.freeMemory = defaultCallbacks.freeMemory
+    return callbacks
+
+
+def status_of(call, *args, **kwargs) -> int:
+    """The FMI status of a call FMPy raises on (fmi2Discard or worse), 0 for OK."""
+    from fmpy.fmi1 import FMICallException
+
+    try:
+        call(*args, **kwargs)
+        return 0
+    except (FMICallException, StepRefusedError) as refusal:
+        return refusal.status
+
+
+class StepRefusedError(RuntimeError):
+    """A refused step: the FMU's own reason (variable, value, limit, time), its FMI `status`."""
+
+    def __init__(self, text: str, status: int) -> None:
+        super().__init__(text)
+        self.status = status
+
+
+class FmuInstance:
+    """One instance of an unzipped FMU, initialised and ready to step from `start_time`.
+
+    `messages`: a list (anything with `append`) that also receives the FMU's
+    log messages as (status, category, text). Logging is always on (pythonfmu
+    forwards nothing otherwise): a refused step raises with the FMU's reason.
+    `exit_initialization=False`
+    leaves it in Initialization Mode (start values set) until
+    `exit_initialization_mode()`.
+    """
+
+    def __init__(
+        self,
+        model_description: Any,
+        unzipped: str | Path,
+        name: str = "instance",
+        start_values: dict[str, float] | None = None,
+        start_time: float = 0.0,
+        messages: Any = None,
+        exit_initialization: bool = True,
+    ) -> None:
+        version = model_description.fmiVersion
+        if version not in _VERSIONS:
+            raise ValueError(
+                f"FMI version {version} of {model_description.modelName!r} is not "
+                f"supported; supported: {', '.join(_VERSIONS)}"
+            )
+        self.model_description = model_description
+        self.info = FmuInfo(model_description)
+        self.references = {v.name: v.valueReference for v in model_description.modelVariables}
+        self.outputs = self.info.outputs
+        self.fmi3 = self.info.fmi3
+        # Elements per variable (FMI 3 arrays; 1 for a scalar).
+        self.sizes = {name: v.size for name, v in self.info.variables.items()}
+        self.fmu = _slave(model_description, str(unzipped), name)
+        self._cleanup: list[Callable[[], None]] = []
+        # The messages of the current call only: a refused step raises with them.
+        self.recent = sink = _Recent(messages)
+        if self.fmi3:
+            # FMPy keeps the callback on the FMU object, so it outlives the instance.
+            self.callbacks = None
+            self.fmu.instantiate(
+                logMessage=lambda env, status, category, message: sink.append(
+                    (status, category.decode(), message.decode())
+                )
+            )
+        else:
+            # Kept on the instance: ctypes callbacks must outlive the FMU.
+            self.callbacks = logging_callbacks(sink)
+            self.fmu.instantiate(callbacks=self.callbacks, loggingOn=True)
+        self._cleanup.append(self.fmu.freeInstance)
+        try:
+            if self.fmi3:
+                self.fmu.enterInitializationMode(startTime=start_time)
+            else:
+                self.fmu.setupExperiment(startTime=start_time)
+                self.fmu.enterInitializationMode()
+            if start_values:
+                self.set(**start_values)
+            self.time = start_time
+            if exit_initialization:
+                self.exit_initialization_mode()
+        except BaseException:
+            self.close()
+            raise
+
+    def exit_initialization_mode(self) -> int:
+        """Leave initialization; the FMI status is kept as `init_status` (fmi2Error
+        for parameters that cannot run: the instance stays usable, every step is
+        refused until they are fixed)."""
+        self.init_status = status_of(self.fmu.exitInitializationMode)
+        self._cleanup.append(self.fmu.terminate)
+        return self.init_status
+
+    @classmethod
+    def open(cls, fmu: str | Path, **arguments) -> FmuInstance:
+        """An instance of an .fmu file (unzipped here, removed on close) or of an
+        unzipped FMU directory (left alone); MissingFMUError names the build command."""
+        extracted = ExtractedFMU(fmu)
+        try:
+            instance = cls(extracted.model_description, extracted.directory, **arguments)
+        except BaseException:
+            extracted.close()
+            raise
+        instance._cleanup.insert(0, extracted.close)
+        return instance
+
+    def __enter__(self) -> FmuInstance:
+        return self
+
+    def __exit__(self, *exc) -> None:
+        self.close()
+
+    def _refs(self, names: Iterable[str]) -> list[int]:
+        names = list(names)
+        check_known(names, self.references, f"variable of {self.info.model_name}")
+        return [self.references[n] for n in names]
+
+    def set(self, **values: float) -> None:
+        setter = self.fmu.setFloat64 if self.fmi3 else self.fmu.setReal
+        setter(self._refs(values), list(values.values()))
+
+    def values(self, *names: str) -> list:
+        """The variables' values, in the order named; an FMI 3 array comes as a list."""
+        if not self.fmi3:
+            return self.fmu.getReal(self._refs(names))
+        flat = iter(self.fmu.getFloat64(self._refs(names), sum(self.sizes[n] for n in names)))
+        return [
+            [next(flat) for _ in range(self.sizes[n])] if self.sizes[n] > 1 else next(flat)
+            for n in names
+        ]
+
+    def get(self, *names: str) -> dict[str, float]:
+        return dict(zip(names, self.values(*names)))
+
+    def get_outputs(self) -> dict[str, float]:
+        return self.get(*self.outputs)
+
+    def get_flat_outputs(self) -> dict[str, float]:
+        """Every output by its FMI 2 name (an FMI 3 array split into its rows)."""
+        values: dict[str, float] = {}
+        for name, value in self.get_outputs().items():
+            columns = self.info.variables[name].columns
+            values.update(zip(columns, value) if isinstance(value, list) else [(name, value)])
+        return values
+
+    def step(self, step_size: float) -> None:
+        """Step from `self.time`; a refusal raises StepRefusedError: the FMU's reason."""
+        from fmpy.fmi1 import FMICallException
+
+        self.recent.clear()
+        try:
+            self.fmu.doStep(currentCommunicationPoint=self.time, communicationStepSize=step_size)
+        except FMICallException as refused:
+            reasons = [text for status, _, text in self.recent if status >= 2] or [
+                f"(the FMU gave no reason; {refused})"
+            ]
+            raise StepRefusedError(
+                f"{self.info.model_name} refused the step at t = {self.time:.9g} s: "
+                + "; ".join(reasons),
+                refused.status,
+            ) from None
+        self.time += step_size
+
+    def try_step(self, step_size: float) -> int:
+        """Step; return the FMI status (a refused step leaves the time where it was)."""
+        return status_of(self.step, step_size)
+
+    def try_set(self, **values: float) -> int:
+        """Set; return the FMI status (fmi2Error for a call FMI does not allow)."""
+        return status_of(self.set, **values)
+
+    def get_state(self) -> FMUState:
+        return self.fmu.getFMUState() if self.fmi3 else self.fmu.getFMUstate()
+
+    def set_state(self, state: FMUState) -> None:
+        (self.fmu.setFMUState if self.fmi3 else self.fmu.setFMUstate)(state)
+
+    def free_state(self, state: FMUState) -> None:
+        (self.fmu.freeFMUState if self.fmi3 else self.fmu.freeFMUstate)(state)
+
+    def serialize_state(self, state: FMUState) -> bytes:
+        return bytes(
+            (self.fmu.serializeFMUState if self.fmi3 else self.fmu.serializeFMUstate)(state)
+        )
+
+    def deserialize_state(self, serialized: bytes) -> FMUState:
+        return (self.fmu.deserializeFMUState if self.fmi3 else self.fmu.deSerializeFMUstate)(
+            serialized
+        )
+
+    def close(self) -> None:
+        """Terminate and free the instance (and remove what `open` unzipped); once."""
+        if self._cleanup:
+            action = self._cleanup.pop()
+            try:
+                action()
+            finally:  # the rest runs even when one step fails
+                self.close()
+
+
+class ExtractedFMU:
+    """An FMU unzipped once, for any number of instances; a directory is used as is."""
+
+    def __init__(self, fmu: str | Path) -> None:
+        from fmpy import extract, read_model_description
+
+        self.model_description = read_model_description(str(require_fmu(fmu)))
+        self._owned = not Path(fmu).is_dir()
+        self.directory = extract(str(fmu)) if self._owned else str(fmu)
+
+    def instance(self, name: str = "instance", **arguments: Any) -> FmuInstance:
+        return FmuInstance(self.model_description, self.directory, name=name, **arguments)
+
+    def close(self) -> None:
+        if self._owned:
+            shutil.rmtree(self.directory, ignore_errors=True)
+            self._owned = False
+
+    def __enter__(self) -> ExtractedFMU:
+        return self
+
+    def __exit__(self, *exc) -> None:
+        self.close()

@@ -1,0 +1,1 @@
+"""The compliant_joint model: its table, physics and spec (spec.py)."""

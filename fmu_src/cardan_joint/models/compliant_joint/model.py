@@ -1,0 +1,196 @@
+"""A rigid drive with a torsional spring-damper at its output, as a stepped system.
+
+`CompliantDrive` wraps a rigid drive (the joint, the propshaft): the rigid drive
+keeps the input shaft, bend and exact kinematics; between its kinematic output
+and the output shaft sits a spring k with a damper c in parallel. The output
+shaft's speed and acceleration are inputs (from the load side), held over a
+step as polynomials, like the input shaft's; the output angle is their exact
+integral. The state kept here is the lag = input angle - output angle, a small
+number (the twist minus the kinematic offset), so the twist carries no error of
+large angles however long the run:
+
+    twist   = (kinematic output angle - input angle) + lag
+    torque  = k twist + c (kinematic output speed - output_speed)
+
+and the input torque is the rigid drive's with `load_torque` = that torque (its
+inertia and bend-rate terms included). Same protocol as every stepped model.
+"""
+
+from ...physics.refusal import Reason, Refusal
+from ...physics.values import MAX_INCREMENT, ValueChecks, set_start_values, value_ranges
+from ..universal_joint.model import CardanJoint
+from .variables import COMPLIANT_JOINT
+
+# The rigid drive's outputs the compliant one replaces with its own.
+_REPLACED = ("input_angle", "output_angle", "output_speed", "output_acceleration")
+
+
+class CompliantDrive(ValueChecks):
+    """The spring-damper layer; a subclass names the rigid drive's kinematic offset."""
+
+    # The spring's own inputs and parameters (the rest are the rigid drive's).
+    output_speed: float
+    output_acceleration: float
+    twist_angle_start: float
+    torsional_stiffness: float
+    torsional_damping: float
+
+    def __init__(self, rigid, table, what: str, **values: float) -> None:
+        object.__setattr__(self, "rigid", rigid)
+        rigid_names = rigid.table.INPUTS + rigid.table.PARAMETERS
+        # The rigid drive's inputs, parameters and clock live in it, read and
+        # written through this object (see __getattr__ / __setattr__).
+        shared = {n for n in table.INPUTS + table.PARAMETERS if n in rigid_names} | {"time"}
+        object.__setattr__(self, "_shared", frozenset(shared))
+        self.table = table
+        self._own_inputs = tuple(n for n in table.INPUTS if n not in shared)
+        self._own_parameters = tuple(n for n in table.PARAMETERS if n not in shared)
+        self._input_ranges = value_ranges(table.BY_NAME, self._own_inputs)
+        self._parameter_ranges = value_ranges(table.BY_NAME, self._own_parameters)
+        rigid_outputs = rigid.table.OUTPUTS
+        passed = [n for n in table.OUTPUTS if n in rigid_outputs and n not in _REPLACED]
+        self._passed = tuple(rigid_outputs.index(n) for n in passed)
+        rigid.load_torque = 0.0  # the rigid checks see no load; outputs() sets it
+        set_start_values(self, table, values, what)
+        self.start(0.0)
+
+    def __getattr__(self, name):
+        # Only for names not found on the object; before __init__ (a copy being
+        # made) there is nothing to forward to.
+        if name in self.__dict__.get("_shared", ()):
+            return getattr(self.rigid, name)
+        raise AttributeError(name)
+
+    def __setattr__(self, name, value):
+        if name in self._shared:
+            setattr(self.rigid, name, value)
+        else:
+            object.__setattr__(self, name, value)
+
+    def _kinematics(self) -> tuple[float, float]:
+        """(kinematic output angle - input angle, kinematic output speed) now."""
+        raise NotImplementedError(f"{type(self).__name__} must give its kinematics")
+
+    # --- set-up and checks ---------------------------------------------------
+
+    def start(self, time: float) -> None:
+        """Rigid drive at its start, the output shaft `twist_angle_start` behind its
+        kinematic output; parameters are checked here, once."""
+        self.rigid.start(time)
+        self.parameter_fault = self.parameter_problem()
+        valid = not self.parameter_fault and not self.rigid.input_problem()
+        offset = self._kinematics()[0] if valid else 0.0
+        self._lag = (self.twist_angle_start if valid else 0.0) - offset
+
+    def parameter_problem(self) -> Refusal | None:
+        return self.rigid.parameter_problem() or self._value_problem(
+            self._own_parameters, self._parameter_ranges
+        )
+
+    def input_problem(self, step_size: float = 0.0) -> Refusal | None:
+        return self.rigid.input_problem(step_size) or self._value_problem(
+            self._own_inputs, self._input_ranges
+        )
+
+    def invalid_inputs(self) -> set:
+        own = {r.variable for r in self._bad_values(self._own_inputs, self._input_ranges)}
+        return self.rigid.invalid_inputs() | own
+
+    # --- stepping ------------------------------------------------------------
+
+    def step(self, step_size: float) -> Refusal | None:
+        """Advance by `step_size`; None, or the Refusal (then nothing has changed)."""
+        problem = self.step_problem(step_size)
+        if problem:
+            return problem
+        h, rigid = step_size, self.rigid
+        speed, acceleration = self.output_speed, self.output_acceleration
+        # Input angle increment minus output angle increment, both exact polynomials.
+        change = h * (
+            (rigid.input_speed - speed) + 0.5 * (rigid.input_acceleration - acceleration) * h
+        )
+        if not abs(change) <= MAX_INCREMENT:
+            details = {"step_size": h}
+            return Refusal(
+                Reason.TWIST_OVERFLOW,
+                "twist_angle",
+                change,
+                MAX_INCREMENT,
+                self.time,
+                "rad",
+                details,
+            )
+        problem = rigid.step(h)
+        if problem:
+            return problem
+        self._lag += change
+        self.output_speed = speed + acceleration * h
+        return None
+
+    # --- outputs -------------------------------------------------------------
+
+    @property
+    def input_angle(self) -> float:
+        return self.rigid.input_angle
+
+    @property
+    def output_angle(self) -> float:
+        return self.rigid.input_angle - self._lag
+
+    def outputs(self) -> tuple:
+        """Values of the table's outputs, in order."""
+        offset, kinematic_speed = self._kinematics()
+        twist = offset + self._lag
+        stiffness = self.torsional_stiffness
+        torque = stiffness * twist + self.torsional_damping * (kinematic_speed - self.output_speed)
+        rigid = self.rigid
+        rigid.load_torque = torque
+        try:
+            values = rigid.outputs()
+        finally:
+            rigid.load_torque = 0.0
+        angle = values[0]  # every rigid drive's first output is its input angle
+        spring = (angle, angle - self._lag, twist, torque, kinematic_speed)
+        return (*spring, 0.5 * stiffness * twist * twist, *(values[i] for i in self._passed))
+
+    # --- saved state ---------------------------------------------------------
+
+    def state(self) -> dict:
+        values = {n: getattr(self, n) for n in self._own_inputs + self._own_parameters}
+        return {**values, "lag": self._lag, "rigid": self.rigid.state()}
+
+    def restore(self, state: dict) -> None:
+        """Take a `state()`; all or nothing (a malformed state raises and changes nothing)."""
+        values = {n: float(state[n]) for n in self._own_inputs + self._own_parameters}
+        lag = float(state["lag"])
+        self.rigid.restore(state["rigid"])
+        for name, value in values.items():
+            setattr(self, name, value)
+        self._lag = lag
+        self.parameter_fault = self.parameter_problem()
+
+
+class CompliantJoint(CompliantDrive):
+    """The single joint (`CardanJoint`) with the spring-damper at its output."""
+
+    table = COMPLIANT_JOINT
+
+    # The rigid joint's inputs and parameters, kept in `rigid` (see CompliantDrive).
+    input_speed: float
+    input_acceleration: float
+    bend_angle: float
+    bend_angle_rate: float
+    bend_angle_acceleration: float
+    yoke_phase: float
+    input_angle_start: float
+    crosspiece_inertia_1: float
+    crosspiece_inertia_2: float
+    crosspiece_inertia_3: float
+    max_bend_angle: float
+
+    def __init__(self, **values: float) -> None:
+        super().__init__(CardanJoint(), COMPLIANT_JOINT, "compliant joint", **values)
+
+    def _kinematics(self) -> tuple[float, float]:
+        r = self.rigid.response()
+        return r.cardan_error, r.output_speed

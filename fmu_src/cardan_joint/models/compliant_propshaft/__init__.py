@@ -1,0 +1,1 @@
+"""The compliant_propshaft model: its table, physics and spec (spec.py)."""

@@ -1,0 +1,22 @@
+"""The CompliantPropshaft FMU: the Propshaft (N joints) with the compliant layer."""
+
+from .. import Model
+from ..propshaft.spec import check_joints, joints_namer
+from .model import CompliantPropshaft
+from .variables import compliant_propshaft_table
+
+MODEL = Model(
+    key="CompliantPropshaft",
+    description=(
+        "Propshaft of several exact Cardan joints in 3-D with a torsional "
+        "spring-damper at its output: takes both shaft speeds, returns both torques"
+    ),
+    table_for=lambda settings: compliant_propshaft_table(settings.get("joints", 2)),
+    make=lambda settings, **values: CompliantPropshaft(settings.get("joints", 2), **values),
+    live_outputs=("input_angle", "output_angle"),
+    owner="joint",
+    default_settings={"joints": 2},
+    check_settings=check_joints("CompliantPropshaft"),
+    name_for=joints_namer("CompliantPropshaft"),
+    warns=True,
+)

@@ -1,0 +1,1 @@
+"""The inertia_load model: its table, physics and spec (spec.py)."""

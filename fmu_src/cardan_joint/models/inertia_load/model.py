@@ -1,0 +1,37 @@
+"""`InertiaLoad`: a driven machine with inertia, as a stepped system.
+
+J d(omega)/dt = drive_torque - drag omega - constant_torque, the drive torque held
+over a step: the Motor's linear rotor equation, solved exactly by the same
+`physics.stepped.exact_rotor_step` (drag = 0 included). The constant torque is a
+torque, not a friction: at standstill it turns the load backwards unless the
+drive torque balances it. Same protocol and checks as the Motor.
+"""
+
+from ...physics.stepped import RotorModel
+from .refusals import InertiaLoadReason
+from .variables import INERTIA_LOAD
+
+
+class InertiaLoad(RotorModel):
+    table = INERTIA_LOAD
+    _SPEED_REASON = InertiaLoadReason.LOAD_SPEED
+    _TORQUE_INPUT = "drive_torque"
+
+    # `INERTIA_LOAD`'s input and parameters (set by __init__); the state is the base's.
+    drive_torque: float
+    inertia: float
+    drag: float
+    constant_torque: float
+    speed_start: float
+    angle_start: float
+
+    def _net_torque(self) -> float:
+        return self.drive_torque - self.constant_torque
+
+    def _rotor(self) -> tuple[float, float, float]:
+        return self.inertia, self.drag, self._net_torque()
+
+    def outputs(self) -> tuple:
+        """Values of `INERTIA_LOAD.OUTPUTS`: speed, acceleration, angle."""
+        acceleration = (self._net_torque() - self.drag * self.speed) / self.inertia
+        return (self.speed, acceleration, self.angle)

@@ -1,0 +1,1 @@
+"""The load model: its table, physics and spec (spec.py)."""

@@ -1,0 +1,1 @@
+"""The motor model: its table, physics and spec (spec.py)."""

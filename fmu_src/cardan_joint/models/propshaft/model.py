@@ -1,0 +1,196 @@
+"""The propshaft as a stepped system: what the Propshaft FMU keeps between steps.
+
+Same contract as `physics.model.CardanJoint` (the slave drives both): inputs
+and parameters as attributes, the input angle as exact revolutions, `step`
+advances exactly for inputs polynomial over the step or refuses with a message
+and changes nothing, `outputs` evaluates the closed forms. The geometry is
+fixed at `start`; the fluctuation search runs once, at the first output read.
+"""
+
+import math
+
+from ...physics.refusal import Reason, Refusal
+from ...physics.revolutions import split_angle
+from ...physics.stepped import ShaftModel
+from ...physics.values import angle_limit_problem, set_start_values, value_ranges
+from .chain import chain
+from .checks import angle_warnings
+from .fluctuation import equivalent_angle, speed_ratio_fluctuation
+from .geometry import HALF_PI, TWO_PI, Layout, layout
+from .variables import propshaft_table
+
+
+class Propshaft(ShaftModel):
+    # The inputs and parameters every layout has, set from the table by __init__;
+    # the per-shaft angles, phases and inertias are read by name (`getattr`).
+    input_speed: float
+    input_acceleration: float
+    load_torque: float
+    input_angle_start: float
+    crosspiece_inertia_1: float
+    crosspiece_inertia_2: float
+    crosspiece_inertia_3: float
+    max_working_angle: float
+
+    def __init__(self, joints: int = 2, **values: float) -> None:
+        self.table = table = propshaft_table(joints)
+        self._fluctuation: tuple[Layout, float] | None = None
+        self.joints = joints
+        self._layout_outputs: tuple[Layout, tuple] | None = None
+        set_start_values(self, table, values, f"{joints}-joint Propshaft")
+        by_name = table.BY_NAME
+        self._input_ranges = value_ranges(by_name, table.INPUTS)
+        assert all(low == -high for _, low, high, _ in self._input_ranges), "symmetric ranges"
+        self._limits = tuple((name, high) for name, _, high, _ in self._input_ranges)
+        self._parameter_ranges = value_ranges(by_name, table.PARAMETERS, "max_working_angle")
+        self._speed_limit = by_name["input_speed"].max
+        self._sides = tuple(f"shaft_{k}_side_angle" for k in range(joints + 1))
+        self._tops = tuple(f"shaft_{k}_top_angle" for k in range(joints + 1))
+        self._phases = tuple(f"shaft_{k}_yoke_phase" for k in range(1, joints))
+        self._inertias = tuple(f"shaft_{k}_inertia" for k in range(1, joints))
+        self.start(0.0)
+
+    # --- set-up ------------------------------------------------------------
+
+    def start(self, time: float) -> None:
+        """Put the input angle at `input_angle_start`, the clock at `time`, and fix the
+        geometry (parameters are fixed from here on, as in FMI)."""
+        self.time = float(time)
+        self.parameter_fault = self._angle_problem()
+        valid = not self.parameter_fault
+        self._angle = split_angle(self.input_angle_start if valid else 0.0)
+        if not valid:
+            return
+        self._inertia = tuple(getattr(self, n) for n in self._inertias)
+        self._crosspiece = (
+            self.crosspiece_inertia_1,
+            self.crosspiece_inertia_2,
+            self.crosspiece_inertia_3,
+        )
+        self.layout = self._geometry()
+        self.parameter_fault = self._working_angle_problem(self.layout)
+        if self.parameter_fault:
+            return
+        # Shaft angles start on the branch nearest the input angle (the contract).
+        offsets = chain(
+            self.layout, self._angle.fraction, 0.0, 0.0, angle_error=self._angle.fraction_error
+        ).offsets
+        self._shifts = tuple(TWO_PI * round(o / TWO_PI) for o in offsets)
+
+    def _angle_problem(self):
+        problem = self._value_problem(self.table.PARAMETERS, self._parameter_ranges)
+        if problem:
+            return problem
+        # Built like values.ValueChecks' refusals (one Refusal call per reason).
+        for name in self._sides + self._tops:
+            value = getattr(self, name)
+            if not abs(value) < HALF_PI:
+                return Refusal(
+                    Reason.SHAFT_ANGLE,
+                    name,
+                    value,
+                    math.copysign(HALF_PI, value),
+                    self.time,
+                    "rad",
+                    kind="parameter",
+                )
+        return angle_limit_problem(
+            Reason.WORKING_ANGLE_GUARD, "max_working_angle", self.max_working_angle, self.time
+        )
+
+    def _geometry(self):
+        return layout(
+            [getattr(self, n) for n in self._sides],
+            [getattr(self, n) for n in self._tops],
+            [getattr(self, n) for n in self._phases],
+        )
+
+    def _working_angle_problem(self, geometry):
+        guard = self.max_working_angle
+        for k, beta in enumerate(geometry.working_angles, start=1):
+            if not beta < guard:
+                return Refusal(
+                    Reason.WORKING_ANGLE,
+                    f"joint_{k}_working_angle",
+                    beta,
+                    guard,
+                    self.time,
+                    "rad",
+                    kind="parameter",
+                )
+        return None
+
+    def parameter_problem(self):
+        """Why the parameters cannot run, or None (checks the current values)."""
+        return self._angle_problem() or self._working_angle_problem(self._geometry())
+
+    # --- stepping ----------------------------------------------------------
+
+    def input_problem(self, step_size: float = 0.0):
+        """Why the inputs cannot be used over the next step, or None."""
+        if all(abs(getattr(self, name)) <= high for name, high in self._limits):
+            return None
+        return self._value_problem(self.table.INPUTS, self._input_ranges)
+
+    # --- outputs -----------------------------------------------------------
+
+    def kinematics(self) -> tuple[float, float]:
+        """(output angle - input angle, output speed) now: what a compliant layer
+        winds its spring by, without the rounding of two large angles."""
+        angle = self._angle
+        state = self._chain(angle.fraction, angle.fraction_error)
+        return state.offsets[-1] - self._shifts[-1], state.speeds[-1]
+
+    def _chain(self, fraction, error):
+        return chain(
+            self.layout,
+            fraction,
+            self.input_speed,
+            self.input_acceleration,
+            self._crosspiece,
+            self._inertia,
+            self.load_torque,
+            error,
+        )
+
+    def fluctuation(self) -> float:
+        # Kept with its geometry: a restart (setup, initialization, state restore)
+        # with unchanged parameters does not search again.
+        if self._fluctuation is None or self._fluctuation[0] != self.layout:
+            self._fluctuation = (self.layout, speed_ratio_fluctuation(self.layout))
+        return self._fluctuation[1]
+
+    def outputs(self) -> tuple:
+        """Values of the table's outputs, in order; raises nothing for valid inputs."""
+        angle = self._angle
+        state = self._chain(angle.fraction, angle.fraction_error)
+        gamma0 = float(angle)
+        angles = [gamma0 + (o - shift) for o, shift in zip(state.offsets, self._shifts)]
+        values = [gamma0]
+        for k in range(self.joints - 1):
+            values += [angles[k], state.speeds[k], state.accelerations[k]]
+        return (
+            *values,
+            angles[-1],
+            state.speeds[-1],
+            state.accelerations[-1],
+            state.input_torque,
+            state.kinetic_energy,
+            *self._geometry_outputs(),
+        )
+
+    def _geometry_outputs(self) -> tuple:
+        """Working angles, fluctuation and equivalent angle: fixed with the layout,
+        so computed once per layout (`start` makes a new one), not at every step."""
+        cached = self._layout_outputs
+        if cached is None or cached[0] is not self.layout:
+            fluctuation = self.fluctuation()
+            values = (*self.layout.working_angles, fluctuation, equivalent_angle(fluctuation))
+            cached = self._layout_outputs = (self.layout, values)
+        return cached[1]
+
+    def warnings(self):
+        """The industry's angle checks at the current input speed (never refusals)."""
+        if self.parameter_fault:
+            return ()
+        return angle_warnings(self.layout.working_angles, self.fluctuation(), self.input_speed)[0]

@@ -1,0 +1,48 @@
+"""The Propshaft FMU: N exact Cardan joints in 3-D (`--joints N`, 2 by default)."""
+
+from collections.abc import Mapping
+
+from .. import Model, StartValueError
+from .model import Propshaft
+from .variables import JOINTS, propshaft_table
+
+
+def check_joints(key: str):
+    """`Model.check_settings` of an N-joint model named `key`."""
+
+    def check(settings: Mapping) -> None:
+        if settings.get("joints") not in JOINTS:
+            raise StartValueError(
+                f"--joints {settings.get('joints')!r}: the {key} is built for "
+                f"{', '.join(map(str, JOINTS))} joints"
+            )
+
+    return check
+
+
+def joints_namer(key: str):
+    """`Model.name_for` of an N-joint model: `key`, or `key<N>` beyond 2 joints."""
+
+    def name_for(settings: Mapping) -> str:
+        joints = settings.get("joints", 2)
+        return key if joints == 2 else f"{key}{joints}"
+
+    return name_for
+
+
+MODEL = Model(
+    key="Propshaft",
+    description=(
+        "Propshaft of several exact Cardan joints in 3-D: working angles from "
+        "side and top views, yoke phasing, intermediate shaft inertia, input "
+        "torque, speed-ratio fluctuation and the joint makers' angle checks"
+    ),
+    table_for=lambda settings: propshaft_table(settings.get("joints", 2)),
+    make=lambda settings, **values: Propshaft(settings.get("joints", 2), **values),
+    live_outputs=("input_angle",),
+    owner="joint",
+    default_settings={"joints": 2},
+    check_settings=check_joints("Propshaft"),
+    name_for=joints_namer("Propshaft"),
+    warns=True,
+)

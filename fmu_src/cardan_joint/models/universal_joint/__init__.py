@@ -1,0 +1,1 @@
+"""The universal_joint model: its table, physics and spec (spec.py)."""
