@@ -1,6 +1,6 @@
 """Run-up of a bent compliant joint through the driveline's torsional resonance.
 
-    python examples/driveline_resonance.py [--out results] [--docs docs/CompliantJoint]
+    python examples/driveline_resonance.py [--out results]
 
 The CompliantJoint FMU (bent 20 deg) drives the InertiaLoad FMU through its
 spring-damper, co-simulated by a plain Jacobi master (FMPy's low-level API); the
@@ -11,12 +11,12 @@ omega_n = sqrt(k / J_load) at the input speed omega_n / 2. Writes
 driveline_resonance.png (twist and output torque against input speed, the
 predicted resonance speed marked), driveline_resonance_orders.png (spectrum of
 the output torque against input speed with the 2nd and 4th order lines) and
-driveline_resonance.csv to --out, the PNGs also to --docs; prints the peak.
+driveline_resonance.csv to --out (tools/gallery.py copies the PNGs into
+docs/img); prints the peak.
 """
 
 import argparse
 import math
-import shutil
 import sys
 import tempfile
 from pathlib import Path
@@ -141,7 +141,6 @@ def plot_orders(rows, path, seconds=2.0):
 def main(argv=None):
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     parser.add_argument("--out", default="results", help="folder for the results")
-    parser.add_argument("--docs", default="docs/CompliantJoint", help="folder for the PNGs")
     parser.add_argument("--rate", type=float, default=RATE, help="run-up rate [rad/s2]")
     args = parser.parse_args(argv)
     out = output_folder(args)
@@ -153,9 +152,6 @@ def main(argv=None):
         plot_run_up(rows, out / "driveline_resonance.png"),
         plot_orders(rows, out / "driveline_resonance_orders.png"),
     ]
-    Path(args.docs).mkdir(parents=True, exist_ok=True)
-    for figure in figures:
-        shutil.copy(figure, Path(args.docs) / figure.name)
     speed = resonance_speed(rows)
     print(
         f"twist peak at input speed {speed:.3f} rad/s, predicted omega_n / 2 = {PREDICTED:.3f} "

@@ -62,6 +62,11 @@ EXAMPLES = (
         sources=(f"{PACKAGE}/host/driveline_system.py",),
     ),
     Example(
+        "driveline_resonance",
+        ("driveline_resonance.png", "driveline_resonance_orders.png"),
+        model=None,
+    ),
+    Example(
         "seed_wikipedia",
         tuple(
             f"seed_wikipedia_{n}.png"
