@@ -235,7 +235,6 @@ def test_finding_and_starting_a_python_spawns_no_process(c_host, unzipped_fmu, t
         env=EMPTY_ENVIRONMENT,
         timeout=120,
     )
-    assert "instance" in run.stdout, run.stderr  # it ran the machine's Python
-    assert "Python 3.11" in run.stderr or "instance ok" in run.stdout, run.stderr
+    assert "instance ok" in run.stdout, run.stderr  # it found and ran the machine's Python
     (host,) = trace.read_text().splitlines()  # only strace's own execve of the host
     assert f'execve("{c_host}"' in host

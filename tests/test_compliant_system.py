@@ -77,7 +77,6 @@ def test_jacobi_error_against_the_monolithic_ode_falls_at_first_order(compliant_
 
 
 def test_both_ssp_hosts_finish_and_are_the_jacobi_master_with_their_first_inputs(compliant_ssp):
-    pytest.importorskip("libcosimpy")
     path, _, _, _, h = compliant_ssp
     recorded = system.COMPLIANT_RECORDED
     n = round(STOP_TIME / h)

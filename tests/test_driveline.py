@@ -228,7 +228,6 @@ def test_ssp_writer_refuses_a_connection_to_a_missing_connector(tmp_path, compon
 
 
 def test_both_hosts_apply_the_parameter_sets_and_differ_only_by_the_first_step(driveline_ssp):
-    pytest.importorskip("libcosimpy")
     differences = {}
     for h in (1e-3, 5e-4):
         fmpy_rows = system.run_fmpy(driveline_ssp, 0.2, h)
@@ -244,7 +243,6 @@ def test_both_hosts_apply_the_parameter_sets_and_differ_only_by_the_first_step(d
 
 
 def test_example_writes_the_ssp_both_csvs_and_the_plot(tmp_path):
-    pytest.importorskip("libcosimpy")
     run = subprocess.run(
         [sys.executable, str(ROOT / "examples" / "driveline_ssp.py"), "--out", str(tmp_path)],
         capture_output=True,
@@ -266,7 +264,6 @@ def test_example_writes_the_ssp_both_csvs_and_the_plot(tmp_path):
 
 
 def test_each_host_is_exactly_a_jacobi_master_with_its_own_first_inputs(driveline_ssp):
-    pytest.importorskip("libcosimpy")
     h, stop_time = 1e-3, 0.1
     fmpy_rows = system.run_fmpy(driveline_ssp, stop_time, h)
     libcosim_rows = system.run_libcosim(driveline_ssp, stop_time, h)

@@ -328,7 +328,6 @@ def test_builds_with_other_names_and_defaults_coexist_in_one_process(
 
 
 def test_libcosim_and_fmpy_agree_on_a_ten_second_run(fmu_path):
-    pytest.importorskip("libcosimpy")
     from fmpy import simulate_fmu
 
     from cardan_joint.host.cosim import run_libcosim

@@ -141,6 +141,14 @@ def test_a_state_of_another_fmu_version_is_refused():
     restored(slave, state, "another version")
 
 
+def test_a_state_saved_by_the_previous_release_is_refused_by_name():
+    """1.0 kept the model's values under "joint", in another format."""
+    slave, other = initialized(), initialized(input_speed=77.0)
+    state = json.loads(ModelSlave._fmu_state_to_bytes(other._get_fmu_state()))
+    state["joint"] = state.pop("model")
+    restored(slave, state, "another version")
+
+
 def test_a_state_missing_a_joint_value_is_refused():
     slave, other = initialized(), initialized(input_speed=77.0)
     other.do_step(0.0, 0.3)

@@ -6,4 +6,4 @@
 that the physics stays importable without the FMI stack.
 """
 
-__version__ = "1.0.0"
+__version__ = "1.1.0"

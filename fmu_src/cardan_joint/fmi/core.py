@@ -252,8 +252,11 @@ class SlaveCore(FastStep):
                 raise ValueError(state["invalid_state"])
             held_outputs = tuple(float(v) for v in state["outputs_held"])
             held_inputs = tuple(float(v) for v in state["inputs_held"])
-            if len(held_outputs) != len(self.table.OUTPUTS) or len(held_inputs) != len(
-                self.table.INPUTS
+            # Before 1.1 the model's values were kept under "joint", in another format.
+            if (
+                "model" not in state
+                or len(held_outputs) != len(self.table.OUTPUTS)
+                or len(held_inputs) != len(self.table.INPUTS)
             ):
                 raise ValueError("the state is from another version of the FMU")
             self._model.restore(state["model"])  # all or nothing

@@ -25,7 +25,7 @@ def _attribute(node: Element, name: str) -> str:
 
 
 def complete(root: Element, groups, starts, table) -> Element:
-    """`groups`: `variables.fmi3_variables()`, the order the slave registered them in
+    """`groups`: the table's `fmi3_variables()`, the order the slave registered them in
     (after the independent variable `time`); `starts`: name -> start value (the
     build's, which may differ from the table's)."""
     cosimulation = child(root, "CoSimulation")

@@ -55,7 +55,7 @@ class References:
         self.pack_outputs = struct.Struct(f"={len(table.OUTPUTS)}d").pack_into
 
     def layout(self) -> dict:
-        """The one-call step's buffers (fmu/fast_step.py), by flat index.
+        """The one-call step's buffers (fmi/fast_step.py), by flat index.
 
         known: `known_size` doubles, flat index i in slot i: the inputs (slots
         0 to inputs - 1), then the parameters (slots inputs to known_size - 1).

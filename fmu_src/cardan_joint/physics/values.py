@@ -1,5 +1,5 @@
 """Checks of variable values, the input shaft's exact advance and the saved
-state, shared by every stepped model (the joint, the propshaft): one Refusal
+state, shared by every stepped model (physics/stepped.py): one Refusal
 per bad value, one state format."""
 
 import math

@@ -67,11 +67,15 @@ static int beside_library(struct python_location *python)
             continue;
         char lib[PATH_MAX], zip[PATH_MAX + 32];
         snprintf(lib, sizeof lib, "%s", stdlib);
-        *strrchr(lib, '/') = '\0';  /* <prefix>/lib */
+        char *cut = strrchr(lib, '/');
+        if (!cut || cut == lib) /* a standard library at /python3.X has no prefix */
+            continue;
+        *cut = '\0'; /* <prefix>/lib */
         if (!python->home[0]) {
             snprintf(python->home, sizeof python->home, "%s", lib);
             char *end = strrchr(python->home, '/');
-            end[end == python->home] = '\0';  /* <prefix>, "/" for /lib */
+            if (end)
+                end[end == python->home] = '\0'; /* <prefix>, "/" for /lib */
         }
         if (!python->path[0]) {
             snprintf(zip, sizeof zip, "%s/python3%d.zip", lib, minor);

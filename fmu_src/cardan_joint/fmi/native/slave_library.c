@@ -34,9 +34,10 @@ int load_slave_library(const char *suffix, int (*resolve)(void *, char *, size_t
     int result = 0;
     pthread_mutex_lock(&lock);
     if (!loaded) {
-        Dl_info self;
+        Dl_info self = {0};
         char path[PATH_MAX];
-        dladdr((void *)&load_slave_library, &self);
+        if (!dladdr((void *)&load_slave_library, &self) || !self.dli_fname)
+            self.dli_fname = "";
         snprintf(path, sizeof path, "%s", self.dli_fname);
         char *slash = strrchr(path, '/');
         snprintf(slash ? slash + 1 : path, sizeof path - (size_t)(slash ? slash + 1 - path : 0),
@@ -46,6 +47,7 @@ int load_slave_library(const char *suffix, int (*resolve)(void *, char *, size_t
             snprintf(error, size, "cannot load pythonfmu's binary: %s", dlerror());
             result = -1;
         } else if (resolve(handle, error, size)) {
+            dlclose(handle);
             result = -1;
         } else {
             finalize_slave = (void (*)(void))dlsym(handle, "finalizePythonInterpreter");

@@ -49,7 +49,8 @@ static int read_module_name(const char *resources, char *module, size_t length, 
     int found = file && fgets(module, (int)length, file);
     if (file)
         fclose(file);
-    module[strcspn(module, "\r\n")] = '\0';
+    if (found) /* else module holds nothing of the file's, not even a terminator */
+        module[strcspn(module, "\r\n")] = '\0';
     if (!found || !*module) {
         snprintf(error, size, "cannot read the slave's module name from %s: the resources "
                               "folder is incomplete, rebuild the FMU", name);

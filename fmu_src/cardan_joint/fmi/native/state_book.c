@@ -38,6 +38,8 @@ void keep_state(struct instance *in, fmi2FMUstate state)
 fmi2Status drop_state(struct instance *in, fmi2FMUstate *state)
 {
     size_t i = find_state(in, *state);
+    if (i == (size_t)-1) /* callers check known_state first: never free a foreign state */
+        return fmi2Error;
     in->fmu_states[i] = in->fmu_states[--in->n_fmu_states];
     return free_slave_state(in, state);
 }

@@ -1,5 +1,5 @@
-"""`CompliantPropshaft`: the propshaft (`propshaft.Propshaft`, N joints in 3-D) with
-the torsional spring-damper of `compliant.CompliantDrive` at its output end: the
+"""`CompliantPropshaft`: the propshaft (`models.propshaft.model.Propshaft`, N joints in 3-D) with
+the torsional spring-damper of `models.compliant_joint.model.CompliantDrive` at its output end: the
 same layer, inputs, parameters and outputs as the `CompliantJoint`'s."""
 
 from ..compliant_joint.model import CompliantDrive

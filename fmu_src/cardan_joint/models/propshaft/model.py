@@ -1,6 +1,6 @@
 """The propshaft as a stepped system: what the Propshaft FMU keeps between steps.
 
-Same contract as `physics.model.CardanJoint` (the slave drives both): inputs
+Same contract as `models.universal_joint.model.CardanJoint` (the slave drives both): inputs
 and parameters as attributes, the input angle as exact revolutions, `step`
 advances exactly for inputs polynomial over the step or refuses with a message
 and changes nothing, `outputs` evaluates the closed forms. The geometry is
