@@ -1,0 +1,24 @@
+/* The one-call step's per-instance arrays and Python objects (fast_path.c
+ * sets them up and calls the slave, fast_values.c serves values from them). */
+#ifndef CARDAN_JOINT_FAST_PATH_H
+#define CARDAN_JOINT_FAST_PATH_H
+
+#include "instance.h"
+
+typedef struct _object PyObject;
+
+/* The slave's methods, in the order fast_path.c looks them up. */
+enum fast_method { FAST_STEP, FAST_OUTPUTS, FAST_LOAD, FAST_STORE };
+
+struct fast_path {
+    PyObject *slave, *views[2], *methods[4];
+    long inputs, known_size, first_output, outputs;
+    int stale;          /* the outputs array is not current */
+    int inputs_written; /* the slave has not taken the host's latest inputs yet */
+    double *known, *values;
+    char *resources;
+};
+
+long fast_call(struct instance *in, enum fast_method method, double time, double step);
+
+#endif

@@ -1,0 +1,77 @@
+/* The one-call step's values (the protocol: fmu/fast_step.py): input writes
+ * and Real reads answered from the instance's arrays, doStep in one call into
+ * the slave, and the slave kept in step with the arrays around every other
+ * call (fast_path.c sets the arrays up and makes the calls). */
+#include "fast_path.h"
+
+/* Before any other call into the slave: it takes the host's latest inputs. */
+void fast_before(struct instance *in)
+{
+    struct fast_path *fast = in->fast;
+    if (!fast || !fast->inputs_written)
+        return;
+    fast_call(in, FAST_LOAD, 0, 0);
+    fast->inputs_written = 0;
+}
+
+/* After any other call into the slave: it may have changed inputs or parameters. */
+void fast_after(struct instance *in)
+{
+    struct fast_path *fast = in->fast;
+    if (!fast)
+        return;
+    fast_call(in, FAST_STORE, 0, 0);
+    fast->stale = 1;
+}
+
+int fast_serves(const struct instance *in, const unsigned vr[], size_t n, int inputs_only)
+{
+    const struct fast_path *fast = in->fast;
+    if (!fast)
+        return 0;
+    unsigned limit = (unsigned)(inputs_only ? fast->inputs : fast->first_output + fast->outputs);
+    for (size_t i = 0; i < n; i++)
+        if (vr[i] >= limit)
+            return 0;
+    return 1;
+}
+
+/* Call only when fast_serves(in, vr, n, 1). */
+void fast_set(struct instance *in, const unsigned vr[], size_t n, const double value[])
+{
+    struct fast_path *fast = in->fast;
+    for (size_t i = 0; i < n; i++)
+        fast->known[vr[i]] = value[i];
+    fast->stale = fast->inputs_written = 1;
+}
+
+/* Call only when fast_serves(in, vr, n, 0); the status getReal would return. */
+fmi2Status fast_get(struct instance *in, const unsigned vr[], size_t n, double value[])
+{
+    struct fast_path *fast = in->fast;
+    long status = fmi2OK;
+    if (fast->stale) {
+        status = fast_call(in, FAST_OUTPUTS, 0, 0);
+        fast->inputs_written = 0;
+        /* Held outputs (warning) are evaluated, and warned about, at every read. */
+        fast->stale = status != fmi2OK;
+    }
+    for (size_t i = 0; i < n; i++)
+        value[i] = vr[i] < (unsigned)fast->first_output
+                       ? fast->known[vr[i]]
+                       : fast->values[vr[i] - (unsigned)fast->first_output];
+    /* pythonfmu's getReal answers OK: the warning is in the log (leave() sees it). */
+    return status == fmi2Warning ? fmi2OK : (fmi2Status)status;
+}
+
+/* doStep in one call into Python; -1 when the instance has no fast path. */
+int fast_step(struct instance *in, double time, double step)
+{
+    struct fast_path *fast = in->fast;
+    if (!fast)
+        return -1;
+    long status = fast_call(in, FAST_STEP, time, step);
+    fast->inputs_written = 0;
+    fast->stale = status != fmi2OK;
+    return (int)status;
+}

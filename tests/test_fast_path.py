@@ -1,0 +1,151 @@
+"""Issue 21, the loader's side of the one-call step (native/fast_path.c): in a
+host the FMU's Real values are served in C and doStep enters the slave once;
+an instance whose slave cannot be claimed keeps plain forwarding, and both
+give the same values, statuses and messages, bit for bit.
+
+The slave's Python is observed in this process (FMPy loads the FMU here):
+its classes are those of the FMU's own copy of cardan_joint, reached through
+the script module pythonfmu imported."""
+
+import math
+import struct
+import sys
+from pathlib import Path
+
+import pytest
+
+from cardan_joint import variables as table
+from cardan_joint.instance import ExtractedFMU, status_of
+
+GOOD = dict(
+    input_speed=12.0,
+    input_acceleration=3.0,
+    bend_angle=0.4,
+    bend_angle_rate=0.05,
+    bend_angle_acceleration=-0.1,
+    load_torque=80.0,
+)
+PLAIN_ENTRIES = ("set_real", "get_real", "do_step")
+
+
+@pytest.fixture(scope="module")
+def extracted(fmu_path):
+    with ExtractedFMU(fmu_path) as fmu:
+        yield fmu
+
+
+def slave_classes(extracted):
+    """The FMU copy's slave class and its FastStep, once an instance made pythonfmu
+    import the script."""
+    module = (Path(extracted.directory) / "resources" / "slavemodule.txt").read_text().strip()
+    script = sys.modules[module]
+    slave = next(
+        v for v in vars(script).values() if isinstance(v, type) and hasattr(v, "fast_claim")
+    )
+    return slave, next(c for c in slave.__mro__ if c.__name__ == "FastStep")
+
+
+def count_entries(monkeypatch, slave_class, names):
+    """Count the calls of these methods of the FMU's slave (found on its class at call time)."""
+    counts = dict.fromkeys(names, 0)
+    for name in names:
+        owner = next(c for c in slave_class.__mro__ if name in vars(c))
+        original = vars(owner)[name]
+
+        def counted(self, *args, _original=original, _name=name):
+            counts[_name] += 1
+            return _original(self, *args)
+
+        monkeypatch.setattr(owner, name, counted)
+    return counts
+
+
+def bits(values):
+    return struct.pack(f"{len(values)}d", *values)
+
+
+def test_a_step_enters_the_slave_once_and_values_never(extracted, monkeypatch):
+    with extracted.instance("warm-up"):
+        pass
+    slave_class, _ = slave_classes(extracted)
+    with extracted.instance("fast") as fast:
+        counts = count_entries(monkeypatch, slave_class, (*PLAIN_ENTRIES, "_step"))
+        for k in range(50):
+            fast.set(**{**GOOD, "load_torque": 80.0 + k})
+            fast.step(1e-3)
+            outputs = fast.get_outputs()
+        assert counts == {"set_real": 0, "get_real": 0, "do_step": 0, "_step": 50}
+        assert all(math.isfinite(v) for v in outputs.values())
+        # A reset builds a new slave: the loader finds it and keeps the fast path.
+        fast.fmu.reset()
+        fast.fmu.setupExperiment(startTime=0.0)
+        fast.fmu.enterInitializationMode()
+        fast.fmu.exitInitializationMode()
+        fast.set(**GOOD)
+        fast.step(1e-3)
+        fast.get_outputs()
+        assert counts == {"set_real": 0, "get_real": 0, "do_step": 0, "_step": 51}
+
+
+def scenario(instance):
+    """Every kind of call the fast path serves or steps around, and what each gave:
+    values as bits, statuses and messages."""
+    seen = []
+    record = seen.append
+    fmu = instance.fmu
+    instance.set(max_bend_angle=1.2)  # a parameter in initialization mode: forwarded
+    record(bits(instance.values(*table.OUTPUTS)))
+    record(instance.exit_initialization_mode())
+    for k in range(20):
+        instance.set(**{**GOOD, "input_speed": 12.0 + 0.5 * k, "bend_angle": 0.3 + 0.01 * k})
+        record(instance.try_step(1e-3))
+        record(bits(instance.values(*table.INPUTS, *table.OUTPUTS)))  # moved inputs too
+    instance.set(bend_angle=0.5)  # one input, then a read: direct feedthrough
+    record(bits(instance.values("output_speed", "bend_angle")))
+    instance.set(bend_angle=2.0)  # beyond the guard: outputs held, warned at each read
+    record(bits(instance.values(*table.OUTPUTS)))
+    record(bits(instance.values("output_angle")))
+    record(instance.try_step(1e-3))  # refused: the state stays
+    record(instance.try_set(yoke_phase=0.3))  # a fixed parameter after initialization
+    instance.set(bend_angle=0.4)
+    state = instance.get_state()
+    record(instance.try_step(1e-3))
+    record(bits(instance.values(*table.OUTPUTS)))
+    serialized = instance.serialize_state(state)
+    instance.set_state(state)
+    record(bits(instance.values(*table.INPUTS, *table.OUTPUTS)))
+    restored = instance.deserialize_state(serialized)
+    record(instance.try_step(2e-3))
+    instance.set_state(restored)
+    record(instance.try_step(1e-3))
+    record(bits(instance.values(*table.INPUTS, *table.OUTPUTS)))
+    instance.free_state(state)
+    instance.free_state(restored)
+    record(status_of(fmu.getReal, [len(table.VARIABLES) + 3]))  # no such variable: forwarded
+    return seen
+
+
+def test_plain_forwarding_when_the_slave_cannot_be_claimed_gives_the_same_bits(
+    extracted, monkeypatch
+):
+    with extracted.instance("warm-up"):
+        pass
+    slave_class, fast_step = slave_classes(extracted)
+    fast_messages, plain_messages = [], []
+    with extracted.instance("same", exit_initialization=False, messages=fast_messages) as fast:
+        counts = count_entries(monkeypatch, slave_class, PLAIN_ENTRIES)
+        fast_run = scenario(fast)
+        fast_counts = dict(counts)
+    monkeypatch.setattr(fast_step, "fast_claim", staticmethod(lambda name: None))
+    with extracted.instance("same", exit_initialization=False, messages=plain_messages) as plain:
+        counts = count_entries(monkeypatch, slave_class, PLAIN_ENTRIES)
+        plain_run = scenario(plain)
+        plain_counts = dict(counts)
+    # The fast instance forwarded only the parameter set and the read of a
+    # variable it does not have.
+    assert fast_counts == {"set_real": 1, "get_real": 1, "do_step": 0}
+    assert plain_counts["do_step"] == 24 and plain_counts["set_real"] >= 24
+    assert fast_run == plain_run
+    assert fast_messages == plain_messages
+    assert any(status == 1 and "held" in text for status, _, text in fast_messages)
+    assert any(status == 2 for status, _, _ in fast_messages)  # the refused step
