@@ -26,6 +26,7 @@ GOOD = dict(
     load_torque=80.0,
 )
 PLAIN_ENTRIES = ("set_real", "get_real", "do_step")
+LAST_SUCCESSFUL_TIME, TERMINATED = 2, 3  # fmi2StatusKind
 
 
 @pytest.fixture(scope="module")
@@ -87,6 +88,11 @@ def test_a_step_enters_the_slave_once_and_values_never(extracted, monkeypatch):
         assert counts == {"set_real": 0, "get_real": 0, "do_step": 0, "_step": 51}
 
 
+def step_status(fmu):
+    """What FMPy's simulate_fmu asks after a refused step (pythonfmu's doStep keeps it)."""
+    return bits([fmu.getRealStatus(LAST_SUCCESSFUL_TIME)]), fmu.getBooleanStatus(TERMINATED)
+
+
 def scenario(instance):
     """Every kind of call the fast path serves or steps around, and what each gave:
     values as bits, statuses and messages."""
@@ -96,20 +102,24 @@ def scenario(instance):
     instance.set(max_bend_angle=1.2)  # a parameter in initialization mode: forwarded
     record(bits(instance.values(*table.OUTPUTS)))
     record(instance.exit_initialization_mode())
+    record(step_status(fmu))  # NaN before any step
     for k in range(20):
         instance.set(**{**GOOD, "input_speed": 12.0 + 0.5 * k, "bend_angle": 0.3 + 0.01 * k})
         record(instance.try_step(1e-3))
         record(bits(instance.values(*table.INPUTS, *table.OUTPUTS)))  # moved inputs too
+        record(step_status(fmu))
     instance.set(bend_angle=0.5)  # one input, then a read: direct feedthrough
     record(bits(instance.values("output_speed", "bend_angle")))
     instance.set(bend_angle=2.0)  # beyond the guard: outputs held, warned at each read
     record(bits(instance.values(*table.OUTPUTS)))
     record(bits(instance.values("output_angle")))
     record(instance.try_step(1e-3))  # refused: the state stays
+    record(step_status(fmu))
     record(instance.try_set(yoke_phase=0.3))  # a fixed parameter after initialization
     instance.set(bend_angle=0.4)
     state = instance.get_state()
     record(instance.try_step(1e-3))
+    record(step_status(fmu))  # taken again after a refused one
     record(bits(instance.values(*table.OUTPUTS)))
     serialized = instance.serialize_state(state)
     instance.set_state(state)

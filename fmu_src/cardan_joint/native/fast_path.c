@@ -13,6 +13,7 @@
 #include "fast_path.h"
 
 #include <dlfcn.h>
+#include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -224,6 +225,7 @@ void fast_attach(struct instance *in, const char *resources)
     if (!resolve() || !(in->fast = calloc(1, sizeof *in->fast)))
         return;
     in->fast->resources = copy_of(resources);
+    in->fast->last_successful_time = NAN;
     PyGILState_STATE gil = p_PyGILState_Ensure();
     if (!set_up(in, in->fast))
         drop(in);

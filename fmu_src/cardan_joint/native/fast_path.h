@@ -16,6 +16,8 @@ struct fast_path {
     int stale;          /* the outputs array is not current */
     int inputs_written; /* the slave has not taken the host's latest inputs yet */
     double *known, *values;
+    double last_successful_time; /* what pythonfmu's doStep would have kept, */
+    int terminated;              /* for fmi2GetRealStatus and fmi2GetBooleanStatus */
     char *resources;
 };
 

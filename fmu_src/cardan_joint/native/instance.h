@@ -126,6 +126,8 @@ int fast_serves(const struct instance *in, const unsigned vr[], size_t n, int in
 void fast_set(struct instance *in, const unsigned vr[], size_t n, const double value[]);
 fmi2Status fast_get(struct instance *in, const unsigned vr[], size_t n, double value[]);
 int fast_step(struct instance *in, double time, double step);
+int fast_last_successful_time(const struct instance *in, double *value);
+int fast_terminated(const struct instance *in, int *value);
 char *copy_of(const char *text);  /* strdup, "" for NULL */
 void free_instance(struct instance *in);
 void report(struct instance *in, fmi2Status status, const char *category, const char *text);
