@@ -52,6 +52,8 @@ def _host_has_logger(logger_address) -> bool:
 class CardanJointSlave3(SlaveCore, Fmi3Slave):
     log_categories = log_categories("fmi3")
     _STATUS, _API, _STATE = Fmi3Status, "fmi3", "State"
+    # The native loader's one-call step maps value references to flat indices by it.
+    fast_flat = _FLAT
 
     def __init__(self, **kwargs):
         super().__init__(**kwargs)

@@ -42,7 +42,8 @@ typedef int PyGILState_STATE; /* an enum in Python.h */
     X(PyObject *, PyList_GetItem, (PyObject *, Py_ssize_t))                               \
     X(int, PyList_SetSlice, (PyObject *, Py_ssize_t, Py_ssize_t, PyObject *))             \
     X(void, Py_IncRef, (PyObject *)) X(void, Py_DecRef, (PyObject *))                     \
-    X(PyObject *, PyErr_Occurred, (void)) X(void, PyErr_Clear, (void))
+    X(PyObject *, PyErr_Occurred, (void)) X(void, PyErr_Clear, (void))                    \
+    X(int, PyBytes_AsStringAndSize, (PyObject *, char **, Py_ssize_t *))
 
 #define DECLARE(result, name, parameters) static result(*p_##name) parameters;
 FAST_FUNCTIONS(DECLARE)
@@ -66,7 +67,16 @@ static const char CLAIM[] =
     "'outputs'))\n"
     "found = int(len(sizes) == 4 and 0 < sizes[0] <= sizes[1] == sizes[2] and sizes[3] > 0)\n"
     "if found:\n"
-    "    inputs, known_size, first_output, outputs = sizes\n";
+    "    inputs, known_size, first_output, outputs = sizes\n"
+    "    # FMI 3: value reference -> flat indices (slave3._FLAT), as int64s: the\n"
+    "    # count of references, each one's first index, the end, then the indices.\n"
+    "    refs = getattr(slave, 'fast_flat', None)\n"
+    "    starts = [0]\n"
+    "    for ref in refs or ():\n"
+    "        starts.append(starts[-1] + len(ref))\n"
+    "    import array\n"
+    "    flat_table = array.array('q', [len(refs), *starts, *(i for r in refs for i in r)]"
+    ").tobytes() if refs else b''\n";
 
 static const char *const METHODS[] = {"fast_step", "fast_outputs", "fast_load", "fast_store"};  /* enum fast_method */
 
@@ -155,6 +165,28 @@ static long global_long(PyObject *globals, const char *name)
     return value ? p_PyLong_AsLong(value) : 0;
 }
 
+/* FMI 3's value references (CLAIM's flat_table), or none for FMI 2's flat ones. */
+static int read_flat_table(struct fast_path *fast, PyObject *table)
+{
+    char *bytes;
+    Py_ssize_t size;
+    free(fast->table);
+    fast->table = NULL;
+    if (!table || p_PyBytes_AsStringAndSize(table, &bytes, &size) || size % 8)
+        return 0;
+    if (size == 0)
+        return 1;
+    long long n = size / 8, limit = fast->first_output + fast->outputs;
+    if (!(fast->table = malloc((size_t)size)))
+        return 0;
+    memcpy(fast->table, bytes, (size_t)size);
+    long long refs = fast->table[0];
+    int ok = refs >= 1 && n >= refs + 2 && fast->table[refs + 1] == n - refs - 2;
+    for (long long i = refs + 2; ok && i < n; i++)
+        ok = fast->table[i] >= 0 && fast->table[i] < limit;
+    return ok;
+}
+
 /* With the GIL: claim the slave this thread just constructed; 0 if none fits. */
 static int claim(struct instance *in, struct fast_path *fast)
 {
@@ -171,6 +203,7 @@ static int claim(struct instance *in, struct fast_path *fast)
         fast->known_size = global_long(globals, "known_size");
         fast->first_output = global_long(globals, "first_output");
         fast->outputs = global_long(globals, "outputs");
+        found = read_flat_table(fast, p_PyDict_GetItemString(globals, "flat_table"));
     }
     if (result)
         p_Py_DecRef(result);
@@ -215,6 +248,7 @@ static void drop(struct instance *in)
     forget(fast);
     free(fast->known);
     free(fast->values);
+    free(fast->table);
     free(fast->resources);
     free(fast);
     in->fast = NULL;

@@ -19,6 +19,10 @@ struct fast_path {
     double last_successful_time; /* what pythonfmu's doStep would have kept, */
     int terminated;              /* for fmi2GetRealStatus and fmi2GetBooleanStatus */
     char *resources;
+    /* FMI 3 (NULL for FMI 2, whose value references are the flat indices):
+     * {n, start[0..n], indices...}: value reference vr < n holds the flat
+     * indices indices[start[vr]] to indices[start[vr + 1] - 1]. */
+    long long *table;
 };
 
 long fast_call(struct instance *in, enum fast_method method, double time, double step);

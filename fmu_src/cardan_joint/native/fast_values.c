@@ -24,24 +24,52 @@ void fast_after(struct instance *in)
     fast->stale = 1;
 }
 
+/* The flat indices of value reference vr (0 if none: FMI 3's time, an unknown one). */
+static long long flat_of(const struct fast_path *fast, unsigned vr, const long long **indices,
+                         long long *own)
+{
+    const long long *table = fast->table;
+    if (!table) {
+        *own = vr;
+        *indices = own;
+        return 1;
+    }
+    if (vr >= (unsigned long long)table[0])
+        return 0;
+    const long long *start = table + 1;
+    *indices = start + table[0] + 1 + start[vr];
+    return start[vr + 1] - start[vr];
+}
+
 int fast_serves(const struct instance *in, const unsigned vr[], size_t n, int inputs_only)
 {
     const struct fast_path *fast = in->fast;
     if (!fast)
         return 0;
-    unsigned limit = (unsigned)(inputs_only ? fast->inputs : fast->first_output + fast->outputs);
-    for (size_t i = 0; i < n; i++)
-        if (vr[i] >= limit)
+    long long limit = inputs_only ? fast->inputs : fast->first_output + fast->outputs, own;
+    for (size_t i = 0; i < n; i++) {
+        const long long *indices;
+        long long count = flat_of(fast, vr[i], &indices, &own);
+        if (count == 0)
             return 0;
+        for (long long k = 0; k < count; k++)
+            if (indices[k] >= limit)
+                return 0;
+    }
     return 1;
 }
 
-/* Call only when fast_serves(in, vr, n, 1). */
+/* Call only when fast_serves(in, vr, n, 1); value holds every element in order. */
 void fast_set(struct instance *in, const unsigned vr[], size_t n, const double value[])
 {
     struct fast_path *fast = in->fast;
-    for (size_t i = 0; i < n; i++)
-        fast->known[vr[i]] = value[i];
+    long long own;
+    for (size_t i = 0; i < n; i++) {
+        const long long *indices;
+        long long count = flat_of(fast, vr[i], &indices, &own);
+        for (long long k = 0; k < count; k++)
+            fast->known[indices[k]] = *value++;
+    }
     fast->stale = fast->inputs_written = 1;
 }
 
@@ -56,10 +84,15 @@ fmi2Status fast_get(struct instance *in, const unsigned vr[], size_t n, double v
         /* Held outputs (warning) are evaluated, and warned about, at every read. */
         fast->stale = status != fmi2OK;
     }
-    for (size_t i = 0; i < n; i++)
-        value[i] = vr[i] < (unsigned)fast->first_output
-                       ? fast->known[vr[i]]
-                       : fast->values[vr[i] - (unsigned)fast->first_output];
+    long long own;
+    for (size_t i = 0; i < n; i++) {
+        const long long *indices;
+        long long count = flat_of(fast, vr[i], &indices, &own);
+        for (long long k = 0; k < count; k++)
+            *value++ = indices[k] < fast->first_output
+                           ? fast->known[indices[k]]
+                           : fast->values[indices[k] - fast->first_output];
+    }
     /* pythonfmu's getReal answers OK: the warning is in the log (leave() sees it). */
     return status == fmi2Warning ? fmi2OK : (fmi2Status)status;
 }
