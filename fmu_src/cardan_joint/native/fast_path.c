@@ -78,8 +78,8 @@ static const char CLAIM[] =
     "    flat_table = array.array('q', [len(refs), *starts, *(i for r in refs for i in r)]"
     ").tobytes() if refs else b''\n";
 
-static const char *const METHODS[] = {"fast_step", "fast_outputs", "fast_load", "fast_store"};  /* enum fast_method */
-
+/* In the order of enum fast_method. */
+static const char *const METHODS[] = {"fast_step", "fast_outputs", "fast_load", "fast_store"};
 
 static int resolve(void)
 {
@@ -191,7 +191,8 @@ static int read_flat_table(struct fast_path *fast, PyObject *table)
 static int claim(struct instance *in, struct fast_path *fast)
 {
     PyObject *globals = p_PyDict_New(), *result = NULL;
-    if (globals && set_global(globals, "resources", p_PyUnicode_DecodeFSDefault(fast->resources)) &&
+    if (globals &&
+        set_global(globals, "resources", p_PyUnicode_DecodeFSDefault(fast->resources)) &&
         set_global(globals, "name", p_PyUnicode_FromString(in->name)) &&
         !p_PyDict_SetItemString(globals, "__builtins__", p_PyEval_GetBuiltins()))
         result = p_PyRun_String(CLAIM, PY_FILE_INPUT, globals, globals);
