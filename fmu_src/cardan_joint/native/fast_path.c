@@ -14,7 +14,6 @@
 
 #include <dlfcn.h>
 #include <math.h>
-#include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
 #include <sys/types.h>
@@ -170,21 +169,8 @@ static int read_flat_table(struct fast_path *fast, PyObject *table)
 {
     char *bytes;
     Py_ssize_t size;
-    free(fast->table);
-    fast->table = NULL;
-    if (!table || p_PyBytes_AsStringAndSize(table, &bytes, &size) || size % 8)
-        return 0;
-    if (size == 0)
-        return 1;
-    long long n = size / 8, limit = fast->first_output + fast->outputs;
-    if (!(fast->table = malloc((size_t)size)))
-        return 0;
-    memcpy(fast->table, bytes, (size_t)size);
-    long long refs = fast->table[0];
-    int ok = refs >= 1 && n >= refs + 2 && fast->table[refs + 1] == n - refs - 2;
-    for (long long i = refs + 2; ok && i < n; i++)
-        ok = fast->table[i] >= 0 && fast->table[i] < limit;
-    return ok;
+    return table && !p_PyBytes_AsStringAndSize(table, &bytes, &size) &&
+           fast_table(fast, bytes, (size_t)size);
 }
 
 /* With the GIL: claim the slave this thread just constructed; 0 if none fits. */
@@ -235,11 +221,11 @@ static int set_up(struct instance *in, struct fast_path *fast)
                                                PYBUF_WRITE);
     for (int m = 0; m < 4; m++)
         fast->methods[m] = p_PyObject_GetAttrString(fast->slave, METHODS[m]);
-    int ok = fast->views[0] && fast->views[1] && fast->methods[0] && fast->methods[1] &&
-             fast->methods[2] && fast->methods[3];
+    int ok = fast->views[0] && fast->views[1];
+    for (int m = 0; m < 4; m++)
+        ok = ok && fast->methods[m];
     p_PyErr_Clear();
-    fast->stale = 1;
-    fast->inputs_written = 0;
+    fast->stale = 1, fast->inputs_written = 0;
     return ok && call(in, FAST_STORE, fast->views[0], NULL, NULL, NULL) == fmi2OK;
 }
 
@@ -267,26 +253,21 @@ void fast_attach(struct instance *in, const char *resources)
     p_PyGILState_Release(gil);
 }
 
-void fast_detach(struct instance *in)
-{
-    if (!in->fast)
-        return;
-    PyGILState_STATE gil = p_PyGILState_Ensure();
-    drop(in);
-    p_PyGILState_Release(gil);
-}
-
-/* After pythonfmu's reset: its new slave, or plain forwarding from now on. */
-void fast_reset(struct instance *in)
+/* Before the instance is freed, or after pythonfmu's reset (again: its new
+ * slave, else plain forwarding from now on). */
+static void renew(struct instance *in, int again)
 {
     if (!in->fast)
         return;
     PyGILState_STATE gil = p_PyGILState_Ensure();
     forget(in->fast);
-    if (!set_up(in, in->fast))
+    if (!again || !set_up(in, in->fast))
         drop(in);
     p_PyGILState_Release(gil);
 }
+
+void fast_detach(struct instance *in) { renew(in, 0); }
+void fast_reset(struct instance *in) { renew(in, 1); }
 
 /* One call into the slave, the GIL taken for it: fast_step(time, step, known,
  * outputs), fast_outputs(known, outputs), fast_load(known) or fast_store(known). */

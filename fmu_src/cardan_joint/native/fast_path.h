@@ -25,6 +25,7 @@ struct fast_path {
     long long *table;
 };
 
+int fast_table(struct fast_path *fast, const char *bytes, size_t size);
 long fast_call(struct instance *in, enum fast_method method, double time, double step);
 
 #endif

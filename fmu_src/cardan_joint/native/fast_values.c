@@ -4,6 +4,28 @@
  * call (fast_path.c sets the arrays up and makes the calls). */
 #include "fast_path.h"
 
+#include <stdlib.h>
+#include <string.h>
+
+/* Takes the table of FMI 3's value references (none: FMI 2's are the flat
+ * indices); 0 if it is malformed or names an index beyond the arrays. */
+int fast_table(struct fast_path *fast, const char *bytes, size_t size)
+{
+    free(fast->table);
+    fast->table = NULL;
+    if (size == 0)
+        return 1;
+    long long n = (long long)(size / 8), limit = fast->first_output + fast->outputs;
+    if (size % 8 || !(fast->table = malloc(size)))
+        return 0;
+    memcpy(fast->table, bytes, size);
+    long long refs = fast->table[0];
+    int ok = refs >= 1 && n >= refs + 2 && fast->table[refs + 1] == n - refs - 2;
+    for (long long i = refs + 2; ok && i < n; i++)
+        ok = fast->table[i] >= 0 && fast->table[i] < limit;
+    return ok;
+}
+
 /* Before any other call into the slave: it takes the host's latest inputs. */
 void fast_before(struct instance *in)
 {
