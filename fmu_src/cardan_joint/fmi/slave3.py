@@ -50,6 +50,7 @@ class ModelSlave3(ModelBinding, SlaveCore, Fmi3Slave):
     # (FMI 2 value references) it holds, its size, whether it can be set.
     GROUPS: tuple = ()
     _FLAT: tuple = ()
+    fast_flat: tuple = ()
     _SIZE: tuple = ()
     _LONGEST = 1
     _SETTABLE: frozenset = frozenset()
@@ -64,6 +65,7 @@ class ModelSlave3(ModelBinding, SlaveCore, Fmi3Slave):
         cls.GROUPS = groups = cls.table.fmi3_variables()
         names = cls._refs.names
         cls._FLAT = ((),) + tuple(tuple(names.index(r.name) for r in g.rows) for g in groups)
+        cls.fast_flat = cls._FLAT  # how the native loader's one-call step maps value references
         cls._SIZE = tuple(len(flat) or 1 for flat in cls._FLAT)
         cls._LONGEST = max(cls._SIZE)
         cls._SETTABLE = frozenset(

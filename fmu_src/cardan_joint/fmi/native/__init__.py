@@ -25,6 +25,8 @@ from pathlib import Path
 _COMMON = (
     "report.c",
     "calls.c",
+    "fast_path.c",
+    "fast_values.c",
     "state_book.c",
     "slave_library.c",
     "python_runtime.c",

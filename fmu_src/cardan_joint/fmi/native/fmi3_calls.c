@@ -63,8 +63,11 @@ int values_fit(struct instance3 *in3, const char *function, enum value_type type
             return fmi3Error;                                                                \
         if (nvr == 0)                                                                        \
             return fmi3OK;                                                                   \
-        return (fmi3Status)leave(in, (fmi2Status)member(in->slave, vr, nvr, values,          \
-                                                        n_values));                          \
+        fast_before(in);                                                                     \
+        fmi2Status status = leave(in, (fmi2Status)member(in->slave, vr, nvr, values,         \
+                                                         n_values));                         \
+        fast_after(in);                                                                      \
+        return (fmi3Status)status;                                                           \
     }
 #define ACCESSORS(Type, get, set)                                                            \
     VALUES3(Get, Type, get, READABLE, , 0) VALUES3(Set, Type, set, SETTABLE, const, 1)
@@ -81,7 +84,46 @@ int values_fit(struct instance3 *in3, const char *function, enum value_type type
 #define T_Boolean_ID T_BOOLEAN
 #define T_String_ID T_STRING
 #define NOT_IN_PYTHONFMU3(...) fmi3Error
-ACCESSORS(Float64, slave3.get_float64, slave3.set_float64)
+/* Float64 values of inputs, parameters and outputs come from the one-call
+ * step's arrays when the instance has them (fast_path.c); time and the rest
+ * go to the slave, as every value does without them. */
+fmi3Status fmi3GetFloat64(fmi3Instance c, const fmi3ValueReference vr[], size_t nvr,
+                          fmi3Float64 values[], size_t n_values)
+{
+    struct instance *in = enter(c, READABLE, "fmi3GetFloat64");
+    if (!in || !values_fit((struct instance3 *)in, "fmi3GetFloat64", T_FLOAT64, vr, nvr, values,
+                           n_values, 0))
+        return fmi3Error;
+    if (nvr == 0)
+        return fmi3OK;
+    if (fast_serves(in, vr, nvr, 0))
+        return (fmi3Status)leave(in, fast_get(in, vr, nvr, values));
+    fast_before(in);
+    fmi2Status status =
+        leave(in, (fmi2Status)slave3.get_float64(in->slave, vr, nvr, values, n_values));
+    fast_after(in);
+    return (fmi3Status)status;
+}
+
+fmi3Status fmi3SetFloat64(fmi3Instance c, const fmi3ValueReference vr[], size_t nvr,
+                          const fmi3Float64 values[], size_t n_values)
+{
+    struct instance *in = enter(c, SETTABLE, "fmi3SetFloat64");
+    if (!in || !values_fit((struct instance3 *)in, "fmi3SetFloat64", T_FLOAT64, vr, nvr, values,
+                           n_values, 1))
+        return fmi3Error;
+    if (nvr == 0)
+        return fmi3OK;
+    if (fast_serves(in, vr, nvr, 1)) {
+        fast_set(in, vr, nvr, values);
+        return (fmi3Status)leave(in, fmi2OK);
+    }
+    fast_before(in);
+    fmi2Status status =
+        leave(in, (fmi2Status)slave3.set_float64(in->slave, vr, nvr, values, n_values));
+    fast_after(in);
+    return (fmi3Status)status;
+}
 ACCESSORS(Int32, slave3.get_int32, slave3.set_int32)
 ACCESSORS(Int64, slave3.get_int64, slave3.set_int64)
 ACCESSORS(UInt64, slave3.get_uint64, slave3.set_uint64)
@@ -110,7 +152,11 @@ static fmi3Status transition(fmi3Instance c, unsigned allowed, const char *funct
     struct instance *in = enter(c, allowed, function);
     if (!in)
         return fmi3Error;
+    fast_before(in);
     fmi2Status status = leave(in, (fmi2Status)call(in->slave));
+    if (call == slave3.reset)
+        fast_reset(in);
+    fast_after(in);
     if (status <= fmi2Error && in->state != STATE_FATAL)
         in->state = next;
     return (fmi3Status)status;
@@ -123,9 +169,11 @@ fmi3Status fmi3EnterInitializationMode(fmi3Instance c, fmi3Boolean tolerance_def
     struct instance *in = enter(c, STATE_INSTANTIATED, "fmi3EnterInitializationMode");
     if (!in)
         return fmi3Error;
+    fast_before(in);
     fmi2Status status = leave(in, (fmi2Status)slave3.enter_initialization(
                                       in->slave, tolerance_defined, tolerance, start,
                                       stop_defined, stop));
+    fast_after(in);
     if (status <= fmi2Error && in->state != STATE_FATAL)
         in->state = STATE_INITIALIZATION;
     return (fmi3Status)status;
@@ -164,6 +212,12 @@ fmi3Status fmi3DoStep(fmi3Instance c, fmi3Float64 time, fmi3Float64 step,
         return fmi3Error;
     }
     *event_handling_needed = *terminate = *early_return = fmi3False;
+    int status = fast_step(in, time, step);
+    if (status >= 0) {
+        /* As pythonfmu3 answers: the step's end when taken, its start when not. */
+        *last_successful_time = status == fmi2OK ? time + step : time;
+        return (fmi3Status)leave(in, (fmi2Status)status);
+    }
     return (fmi3Status)leave(in, (fmi2Status)slave3.do_step(in->slave, time, step, no_set_prior,
                                                             event_handling_needed, terminate,
                                                             early_return, last_successful_time));

@@ -143,11 +143,13 @@ fmi3Instance fmi3InstantiateCoSimulation(
         free_instance3(in);
         return NULL;
     }
+    fast_attach(in, resources);
     return in;
 }
 
 void free_instance3(struct instance *in)
 {
+    fast_detach(in);
     while (in->n_fmu_states)
         drop_state(in, &in->fmu_states[0]);
     if (in->slave)

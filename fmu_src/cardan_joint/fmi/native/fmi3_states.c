@@ -15,6 +15,7 @@ fmi3Status fmi3GetFMUState(fmi3Instance c, fmi3FMUState *state)
     struct instance *in = enter(c, ALIVE, "fmi3GetFMUState");
     if (!in || !prepare_new_state(in, state, "fmi3GetFMUState"))
         return fmi3Error;
+    fast_before(in);
     fmi2Status status = leave(in, (fmi2Status)slave3.get_fmu_state(in->slave, state));
     if (*state)
         keep_state(in, *state);
@@ -26,7 +27,10 @@ fmi3Status fmi3SetFMUState(fmi3Instance c, fmi3FMUState state)
     struct instance *in = enter(c, ALIVE, "fmi3SetFMUState");
     if (!in || !known_state(in, state, "fmi3SetFMUState"))
         return fmi3Error;
-    return (fmi3Status)leave(in, (fmi2Status)slave3.set_fmu_state(in->slave, state));
+    fast_before(in);
+    fmi2Status status = leave(in, (fmi2Status)slave3.set_fmu_state(in->slave, state));
+    fast_after(in);
+    return (fmi3Status)status;
 }
 
 fmi3Status fmi3FreeFMUState(fmi3Instance c, fmi3FMUState *state)

@@ -16,6 +16,7 @@ fmi2Status fmi2GetFMUstate(fmi2Component c, fmi2FMUstate *state)
     struct instance *in = enter(c, ALIVE, "fmi2GetFMUstate");
     if (!in || !prepare_new_state(in, state, "fmi2GetFMUstate"))
         return fmi2Error;
+    fast_before(in);
     fmi2Status status = leave(in, slave.get_fmu_state(in->slave, state));
     if (*state)
         keep_state(in, *state);
@@ -27,7 +28,10 @@ fmi2Status fmi2SetFMUstate(fmi2Component c, fmi2FMUstate state)
     struct instance *in = enter(c, ALIVE, "fmi2SetFMUstate");
     if (!in || !known_state(in, state, "fmi2SetFMUstate"))
         return fmi2Error;
-    return leave(in, slave.set_fmu_state(in->slave, state));
+    fast_before(in);
+    fmi2Status status = leave(in, slave.set_fmu_state(in->slave, state));
+    fast_after(in);
+    return status;
 }
 
 fmi2Status fmi2FreeFMUstate(fmi2Component c, fmi2FMUstate *state)

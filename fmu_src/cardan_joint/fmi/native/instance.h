@@ -39,6 +39,7 @@ struct instance {
     const struct fixed_parameters *fixed;
     fmi2FMUstate *fmu_states;        /* the live FMU states this instance handed out */
     size_t n_fmu_states, fmu_states_capacity;
+    struct fast_path *fast;          /* the one-call step's arrays; NULL: plain forwarding */
 };
 
 #define SLAVE_FUNCTIONS(X)                                                            \
@@ -112,6 +113,21 @@ void keep_state(struct instance *in, fmi2FMUstate state);
 int prepare_new_state(struct instance *in, fmi2FMUstate *state, const char *function);
 fmi2Status drop_state(struct instance *in, fmi2FMUstate *state);
 fmi2Status free_slave_state(struct instance *in, fmi2FMUstate *state);
+/* The one-call step (fast_path.c): set up after instantiate (NULL when the slave
+ * cannot take it), re-found after reset; fast_before/fast_after go around every
+ * other call into the slave; fast_serves says whether fast_set (inputs_only) or
+ * fast_get can answer these value references in C. */
+void fast_attach(struct instance *in, const char *resources);
+void fast_detach(struct instance *in);
+void fast_reset(struct instance *in);
+void fast_before(struct instance *in);
+void fast_after(struct instance *in);
+int fast_serves(const struct instance *in, const unsigned vr[], size_t n, int inputs_only);
+void fast_set(struct instance *in, const unsigned vr[], size_t n, const double value[]);
+fmi2Status fast_get(struct instance *in, const unsigned vr[], size_t n, double value[]);
+int fast_step(struct instance *in, double time, double step);
+int fast_last_successful_time(const struct instance *in, double *value);
+int fast_terminated(const struct instance *in, int *value);
 char *copy_of(const char *text);  /* strdup, "" for NULL */
 void free_instance(struct instance *in);
 void report(struct instance *in, fmi2Status status, const char *category, const char *text);

@@ -122,5 +122,6 @@ fmi2Component fmi2Instantiate(fmi2String name, fmi2Type type, fmi2String guid,
         free_instance(in);
         return NULL;
     }
+    fast_attach(in, resources);
     return in;
 }

@@ -1,0 +1,31 @@
+/* The one-call step's per-instance arrays and Python objects (fast_path.c
+ * sets them up and calls the slave, fast_values.c serves values from them). */
+#ifndef CARDAN_JOINT_FAST_PATH_H
+#define CARDAN_JOINT_FAST_PATH_H
+
+#include "instance.h"
+
+typedef struct _object PyObject;
+
+/* The slave's methods, in the order fast_path.c looks them up. */
+enum fast_method { FAST_STEP, FAST_OUTPUTS, FAST_LOAD, FAST_STORE };
+
+struct fast_path {
+    PyObject *slave, *views[2], *methods[4];
+    long inputs, known_size, first_output, outputs;
+    int stale;          /* the outputs array is not current */
+    int inputs_written; /* the slave has not taken the host's latest inputs yet */
+    double *known, *values;
+    double last_successful_time; /* what pythonfmu's doStep would have kept, */
+    int terminated;              /* for fmi2GetRealStatus and fmi2GetBooleanStatus */
+    char *resources;
+    /* FMI 3 (NULL for FMI 2, whose value references are the flat indices):
+     * {n, start[0..n], indices...}: value reference vr < n holds the flat
+     * indices indices[start[vr]] to indices[start[vr + 1] - 1]. */
+    long long *table;
+};
+
+int fast_table(struct fast_path *fast, const char *bytes, size_t size);
+long fast_call(struct instance *in, enum fast_method method, double time, double step);
+
+#endif

@@ -1,0 +1,154 @@
+/* The one-call step's values (the protocol: fmi/fast_step.py): input writes
+ * and Real reads answered from the instance's arrays, doStep in one call into
+ * the slave, and the slave kept in step with the arrays around every other
+ * call (fast_path.c sets the arrays up and makes the calls). */
+#include "fast_path.h"
+
+#include <stdlib.h>
+#include <string.h>
+
+/* Takes the table of FMI 3's value references (none: FMI 2's are the flat
+ * indices); 0 if it is malformed or names an index beyond the arrays. */
+int fast_table(struct fast_path *fast, const char *bytes, size_t size)
+{
+    free(fast->table);
+    fast->table = NULL;
+    if (size == 0)
+        return 1;
+    long long n = (long long)(size / 8), limit = fast->first_output + fast->outputs;
+    if (size % 8 || !(fast->table = malloc(size)))
+        return 0;
+    memcpy(fast->table, bytes, size);
+    long long refs = fast->table[0];
+    int ok = refs >= 1 && n >= refs + 2 && fast->table[refs + 1] == n - refs - 2;
+    for (long long i = refs + 2; ok && i < n; i++)
+        ok = fast->table[i] >= 0 && fast->table[i] < limit;
+    return ok;
+}
+
+/* Before any other call into the slave: it takes the host's latest inputs. */
+void fast_before(struct instance *in)
+{
+    struct fast_path *fast = in->fast;
+    if (!fast || !fast->inputs_written)
+        return;
+    fast_call(in, FAST_LOAD, 0, 0);
+    fast->inputs_written = 0;
+}
+
+/* After any other call into the slave: it may have changed inputs or parameters. */
+void fast_after(struct instance *in)
+{
+    struct fast_path *fast = in->fast;
+    if (!fast)
+        return;
+    fast_call(in, FAST_STORE, 0, 0);
+    fast->stale = 1;
+}
+
+/* The flat indices of value reference vr (0 if none: FMI 3's time, an unknown one). */
+static long long flat_of(const struct fast_path *fast, unsigned vr, const long long **indices,
+                         long long *own)
+{
+    const long long *table = fast->table;
+    if (!table) {
+        *own = vr;
+        *indices = own;
+        return 1;
+    }
+    if (vr >= (unsigned long long)table[0])
+        return 0;
+    const long long *start = table + 1;
+    *indices = start + table[0] + 1 + start[vr];
+    return start[vr + 1] - start[vr];
+}
+
+int fast_serves(const struct instance *in, const unsigned vr[], size_t n, int inputs_only)
+{
+    const struct fast_path *fast = in->fast;
+    if (!fast)
+        return 0;
+    long long limit = inputs_only ? fast->inputs : fast->first_output + fast->outputs, own;
+    for (size_t i = 0; i < n; i++) {
+        const long long *indices;
+        long long count = flat_of(fast, vr[i], &indices, &own);
+        if (count == 0)
+            return 0;
+        for (long long k = 0; k < count; k++)
+            if (indices[k] >= limit)
+                return 0;
+    }
+    return 1;
+}
+
+/* Call only when fast_serves(in, vr, n, 1); value holds every element in order. */
+void fast_set(struct instance *in, const unsigned vr[], size_t n, const double value[])
+{
+    struct fast_path *fast = in->fast;
+    long long own;
+    for (size_t i = 0; i < n; i++) {
+        const long long *indices;
+        long long count = flat_of(fast, vr[i], &indices, &own);
+        for (long long k = 0; k < count; k++)
+            fast->known[indices[k]] = *value++;
+    }
+    fast->stale = fast->inputs_written = 1;
+}
+
+/* Call only when fast_serves(in, vr, n, 0); the status getReal would return. */
+fmi2Status fast_get(struct instance *in, const unsigned vr[], size_t n, double value[])
+{
+    struct fast_path *fast = in->fast;
+    long status = fmi2OK;
+    if (fast->stale) {
+        status = fast_call(in, FAST_OUTPUTS, 0, 0);
+        fast->inputs_written = 0;
+        /* Held outputs (warning) are evaluated, and warned about, at every read. */
+        fast->stale = status != fmi2OK;
+    }
+    long long own;
+    for (size_t i = 0; i < n; i++) {
+        const long long *indices;
+        long long count = flat_of(fast, vr[i], &indices, &own);
+        for (long long k = 0; k < count; k++)
+            *value++ = indices[k] < fast->first_output
+                           ? fast->known[indices[k]]
+                           : fast->values[indices[k] - fast->first_output];
+    }
+    /* pythonfmu's getReal answers OK: the warning is in the log (leave() sees it). */
+    return status == fmi2Warning ? fmi2OK : (fmi2Status)status;
+}
+
+/* doStep in one call into Python; -1 when the instance has no fast path. */
+int fast_step(struct instance *in, double time, double step)
+{
+    struct fast_path *fast = in->fast;
+    if (!fast)
+        return -1;
+    long status = fast_call(in, FAST_STEP, time, step);
+    /* pythonfmu: the step's end when taken, its start when not (NaN before any). */
+    fast->last_successful_time = status == fmi2OK ? time + step : time;
+    fast->terminated |= status != fmi2OK; /* pythonfmu never clears it again */
+    fast->inputs_written = 0;
+    fast->stale = status != fmi2OK;
+    return (int)status;
+}
+
+/* fmi2GetRealStatus(fmi2LastSuccessfulTime) and fmi2GetBooleanStatus(fmi2Terminated)
+ * (FMPy's simulate_fmu asks both after a refused step): kept here, as pythonfmu
+ * keeps them in its doStep, which the one-call step does not go through. */
+int fast_last_successful_time(const struct instance *in, double *value)
+{
+    if (!in->fast)
+        return 0;
+    *value = in->fast->last_successful_time;
+    return 1;
+}
+
+int fast_terminated(const struct instance *in, int *value)
+{
+    if (!in->fast)
+        return 0;
+    *value = in->fast->terminated;
+    return 1;
+}

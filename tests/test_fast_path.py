@@ -1,0 +1,219 @@
+"""Issue 21, the loader's side of the one-call step (fmi/native/fast_path.c): in a
+host the FMU's Real values are served in C and doStep enters the slave once;
+an instance whose slave cannot be claimed keeps plain forwarding, and both
+give the same values, statuses and messages, bit for bit.
+
+The slave's Python is observed in this process (FMPy loads the FMU here):
+its classes are those of the FMU's own copy of cardan_joint, reached through
+the script module pythonfmu imported."""
+
+import ctypes
+import math
+import struct
+import sys
+from pathlib import Path
+
+import pytest
+
+from cardan_joint.host.instance import ExtractedFMU, status_of
+from cardan_joint.models.universal_joint import variables as table
+
+GOOD = dict(
+    input_speed=12.0,
+    input_acceleration=3.0,
+    bend_angle=0.4,
+    bend_angle_rate=0.05,
+    bend_angle_acceleration=-0.1,
+    load_torque=80.0,
+)
+PLAIN_ENTRIES = {
+    2: ("set_real", "get_real", "do_step"),
+    3: ("set_float64", "get_float64", "do_step"),
+}
+LAST_SUCCESSFUL_TIME, TERMINATED = 2, 3  # fmi2StatusKind
+
+
+@pytest.fixture(scope="module", params=[2, 3], ids=["fmi2", "fmi3"])
+def extracted(request):
+    fmu_path = request.getfixturevalue("fmu_path" if request.param == 2 else "fmi3_path")
+    with ExtractedFMU(fmu_path) as fmu:
+        fmu.version = request.param
+        yield fmu
+
+
+def slave_classes(extracted):
+    """The FMU copy's slave class and its FastStep, once an instance made pythonfmu
+    import the script."""
+    module = (Path(extracted.directory) / "resources" / "slavemodule.txt").read_text().strip()
+    script = sys.modules[module]
+    slave = next(
+        v for v in vars(script).values() if isinstance(v, type) and hasattr(v, "fast_claim")
+    )
+    return slave, next(c for c in slave.__mro__ if c.__name__ == "FastStep")
+
+
+def count_entries(monkeypatch, slave_class, names):
+    """Count the calls of these methods of the FMU's slave (found on its class at call time)."""
+    counts = dict.fromkeys(names, 0)
+    for name in names:
+        owner = next(c for c in slave_class.__mro__ if name in vars(c))
+        original = vars(owner)[name]
+
+        def counted(self, *args, _original=original, _name=name):
+            counts[_name] += 1
+            return _original(self, *args)
+
+        monkeypatch.setattr(owner, name, counted)
+    return counts
+
+
+def bits(values):
+    """The exact doubles (an FMI 3 array's elements in order)."""
+    flat = [x for v in values for x in (v if isinstance(v, list) else [v])]
+    return struct.pack(f"{len(flat)}d", *flat)
+
+
+def test_a_step_enters_the_slave_once_and_values_never(extracted, monkeypatch):
+    with extracted.instance("warm-up"):
+        pass
+    slave_class, _ = slave_classes(extracted)
+    with extracted.instance("fast") as fast:
+        plain = PLAIN_ENTRIES[extracted.version]
+        counts = count_entries(monkeypatch, slave_class, (*plain, "_step"))
+        for k in range(50):
+            fast.set(**{**GOOD, "load_torque": 80.0 + k})
+            fast.step(1e-3)
+            outputs = fast.get_flat_outputs()
+        assert counts == {**dict.fromkeys(plain, 0), "_step": 50}
+        assert all(math.isfinite(v) for v in outputs.values())
+        # A reset builds a new slave: the loader finds it and keeps the fast path.
+        fast.fmu.reset()
+        if fast.fmi3:
+            fast.fmu.enterInitializationMode(startTime=0.0)
+        else:
+            fast.fmu.setupExperiment(startTime=0.0)
+            fast.fmu.enterInitializationMode()
+        fast.fmu.exitInitializationMode()
+        fast.set(**GOOD)
+        fast.step(1e-3)
+        fast.get_outputs()
+        assert counts == {**dict.fromkeys(plain, 0), "_step": 51}
+
+
+def step_status(instance, step=1e-3):
+    """A step's status and what the host learns of it: FMI 2 asks afterwards
+    (FMPy's simulate_fmu does after a refused step; pythonfmu's doStep keeps it),
+    FMI 3's doStep answers it (the last successful time)."""
+    fmu = instance.fmu
+    if instance.fmi3:
+        flags = [ctypes.c_bool(True) for _ in range(3)]
+        last = ctypes.c_double(-1.0)
+        status = fmu.dll.fmi3DoStep(
+            fmu.component,
+            ctypes.c_double(instance.time),
+            ctypes.c_double(step),
+            False,
+            *map(ctypes.byref, flags),
+            ctypes.byref(last),
+        )
+        if status == 0:
+            instance.time += step
+        return status, [flag.value for flag in flags], bits([last.value])
+    status = instance.try_step(step)
+    return status, bits([fmu.getRealStatus(LAST_SUCCESSFUL_TIME)]), fmu.getBooleanStatus(TERMINATED)
+
+
+def scenario(instance):
+    """Every kind of call the fast path serves or steps around, and what each gave:
+    values as bits, statuses and messages."""
+    seen = []
+    outputs = instance.outputs
+    record = seen.append
+    fmu = instance.fmu
+    instance.set(max_bend_angle=1.2)  # a parameter in initialization mode: forwarded
+    record(bits(instance.values(*outputs)))
+    record(instance.exit_initialization_mode())
+    if not instance.fmi3:
+        record(bits([fmu.getRealStatus(LAST_SUCCESSFUL_TIME)]))  # NaN before any step
+    for k in range(20):
+        instance.set(**{**GOOD, "input_speed": 12.0 + 0.5 * k, "bend_angle": 0.3 + 0.01 * k})
+        record(step_status(instance))
+        record(bits(instance.values(*table.INPUTS, *outputs)))  # moved inputs too
+    instance.set(bend_angle=0.5)  # one input, then a read: direct feedthrough
+    record(bits(instance.values("output_speed", "bend_angle")))
+    instance.set(bend_angle=2.0)  # beyond the guard: outputs held, warned at each read
+    record(bits(instance.values(*outputs)))
+    record(bits(instance.values("output_angle")))
+    record(step_status(instance))  # refused: the state stays
+    record(instance.try_set(yoke_phase=0.3))  # a fixed parameter after initialization
+    instance.set(bend_angle=0.4)
+    state = instance.get_state()
+    record(step_status(instance))  # taken again after a refused one
+    record(bits(instance.values(*outputs)))
+    serialized = instance.serialize_state(state)
+    instance.set_state(state)
+    record(bits(instance.values(*table.INPUTS, *outputs)))
+    restored = instance.deserialize_state(serialized)
+    record(instance.try_step(2e-3))
+    instance.set_state(restored)
+    record(instance.try_step(1e-3))
+    record(bits(instance.values(*table.INPUTS, *outputs)))
+    instance.free_state(state)
+    instance.free_state(restored)
+    # Forwarded: FMI 2's read of a variable it does not have, FMI 3's time.
+    if instance.fmi3:
+        record(bits(fmu.getFloat64([0])))
+    else:
+        record(status_of(fmu.getReal, [len(table.VARIABLES) + 3]))
+    return seen
+
+
+def test_plain_forwarding_when_the_slave_cannot_be_claimed_gives_the_same_bits(
+    extracted, monkeypatch
+):
+    with extracted.instance("warm-up"):
+        pass
+    slave_class, fast_step = slave_classes(extracted)
+    set_values, get_values, do_step = plain_entries = PLAIN_ENTRIES[extracted.version]
+    fast_messages, plain_messages = [], []
+    with extracted.instance("same", exit_initialization=False, messages=fast_messages) as fast:
+        counts = count_entries(monkeypatch, slave_class, plain_entries)
+        fast_run = scenario(fast)
+        fast_counts = dict(counts)
+    monkeypatch.setattr(fast_step, "fast_claim", staticmethod(lambda name: None))
+    with extracted.instance("same", exit_initialization=False, messages=plain_messages) as plain:
+        counts = count_entries(monkeypatch, slave_class, plain_entries)
+        plain_run = scenario(plain)
+        plain_counts = dict(counts)
+    # The fast instance forwarded only the parameter set and the read of a
+    # variable it does not have.
+    assert fast_counts == {set_values: 1, get_values: 1, do_step: 0}
+    assert plain_counts[do_step] == 24 and plain_counts[set_values] >= 24
+    assert fast_run == plain_run
+    assert fast_messages == plain_messages
+    assert any(status == 1 and "held" in text for status, _, text in fast_messages)
+    assert any(status == 2 for status, _, _ in fast_messages)  # the refused step
+
+
+def test_the_loader_claims_only_the_slave_its_thread_just_made_for_that_instance():
+    import gc
+    import threading
+
+    from cardan_joint.fmi.slave import ModelSlave
+
+    class CardanJointSlave(ModelSlave):
+        model_folder = "universal_joint"
+
+    slave = CardanJointSlave(instance_name="mine")
+    assert CardanJointSlave.fast_claim("other") is None  # another instance's name
+    slave = CardanJointSlave(instance_name="mine")
+    claimed = []
+    elsewhere = threading.Thread(target=lambda: claimed.append(slave.fast_claim("mine")))
+    elsewhere.start()
+    elsewhere.join()
+    assert claimed == [None]  # another thread made no slave
+    assert CardanJointSlave.fast_claim("mine") is slave
+    assert CardanJointSlave.fast_claim("mine") is None  # claimed once
+    CardanJointSlave(instance_name="gone")  # not kept alive by the registry
+    gc.collect()  # its variables' accessors refer back to it
+    assert CardanJointSlave.fast_claim("gone") is None
