@@ -352,8 +352,10 @@ MUTATIONS = (
     Mutation(
         "slave: a state of another version",
         CORE,
-        "if len(held_outputs) != len(self.table.OUTPUTS) or len(held_inputs) != len(\n"
-        "                self.table.INPUTS\n"
+        "if (\n"
+        '                "model" not in state\n'
+        "                or len(held_outputs) != len(self.table.OUTPUTS)\n"
+        "                or len(held_inputs) != len(self.table.INPUTS)\n"
         "            ):",
         "if False:",
         (SLAVE_GUARDS, "-k", "state"),
