@@ -121,7 +121,7 @@ def test_unsupported_calls_wrong_counts_and_call_order_are_errors_with_a_message
             "does not import from",
         ),
         (lambda resources: (resources / "python_runtime.txt").unlink(), "python_runtime.txt"),
-        (lambda resources: (resources / "fmi3_variables.txt").unlink(), "fmi3_variables.txt"),
+        (lambda resources: (resources / "variables.txt").unlink(), "variables.txt"),
         (lambda resources: (resources / "slavemodule.txt").unlink(), "slavemodule.txt"),
     ],
     ids=["slave code cannot import", "no runtime record", "no variables", "no module name"],
@@ -192,5 +192,5 @@ def test_the_fmu_ships_the_loader_and_pythonfmu3s_binary(fmi3_path):
         "binaries/x86_64-linux/UniversalJoint.so",
         "binaries/x86_64-linux/UniversalJoint_pythonfmu3.so",
         "resources/python_runtime.txt",
-        "resources/fmi3_variables.txt",
+        "resources/variables.txt",
     } <= names

@@ -5,6 +5,7 @@ import ctypes
 import math
 import subprocess
 import sys
+import zipfile
 
 import numpy as np
 import pytest
@@ -140,6 +141,49 @@ def test_parameters_cannot_change_after_initialization(model_description, unzipp
         assert joint.try_step(0.01) == 0
     finally:
         joint.close()
+
+
+def _extract_as_fmpy_does(fmu_path, folder):
+    """resources/ and binaries/ only, as FMPy's simulate_fmu: no modelDescription.xml."""
+    with zipfile.ZipFile(fmu_path) as archive:
+        names = [n for n in archive.namelist() if n.startswith(("resources/", "binaries/"))]
+        archive.extractall(folder, names)
+    for library in (folder / "binaries").rglob("*.so"):
+        library.chmod(0o755)
+    return folder
+
+
+def test_fixed_parameters_stay_fixed_after_restoring_a_state_from_before_initialization(
+    model_description, fmu_path, tmp_path
+):
+    # The slave, restored to Initialization Mode, would take the value: only the
+    # loader's guard refuses it, and it must not depend on modelDescription.xml.
+    folder = _extract_as_fmpy_does(fmu_path, tmp_path)
+    assert not (folder / "modelDescription.xml").exists()
+    messages = []
+    joint = FmuInstance(model_description, folder, messages=messages, exit_initialization=False)
+    try:
+        before = joint.get_state()
+        assert joint.exit_initialization_mode() == 0
+        joint.step(0.01)
+        joint.set_state(before)
+        assert joint.try_set(crosspiece_inertia_1=5.0) == 3  # fmi2Error
+        assert joint.get("crosspiece_inertia_1")["crosspiece_inertia_1"] == 0.026
+        assert "parameter crosspiece_inertia_1 is fixed" in messages[-1][2]
+        joint.free_state(before)
+    finally:
+        joint.close()
+
+
+def test_without_its_variable_record_the_fmu_refuses_to_instantiate(
+    model_description, fmu_path, tmp_path
+):
+    folder = _extract_as_fmpy_does(fmu_path, tmp_path)
+    (folder / "resources" / "variables.txt").unlink()
+    messages = []
+    with pytest.raises(Exception, match="(?i)instantiate"):
+        FmuInstance(model_description, folder, messages=messages)
+    assert any("variables.txt" in m[2] and "rebuild" in m[2] for m in messages)
 
 
 def test_plain_simulate_fmu_shows_the_message_on_the_terminal(fmu_path):

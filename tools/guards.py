@@ -453,13 +453,6 @@ MUTATIONS = (
         (COMPLIANT_TESTS, "-k", "rigid_load_range"),
     ),
     Mutation(
-        "compliant: nothing forwarded before __init__ (copies)",
-        COMPLIANT,
-        'if name in self.__dict__.get("_shared", ()):',
-        "if name in self._shared:",
-        (COMPLIANT_TESTS, "-k", "copy"),
-    ),
-    Mutation(
         "compliant: twist overflow refused",
         COMPLIANT,
         "        if not abs(change) <= MAX_INCREMENT:\n",

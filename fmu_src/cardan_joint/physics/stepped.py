@@ -86,7 +86,12 @@ class SteppedModel(ValueChecks, SavedState):
     def step(self, step_size: float) -> Refusal | None:
         """Advance by `step_size`; return None, or the Refusal of the step (then
         nothing has changed, the clock neither)."""
-        problem = self.step_problem(step_size) or self._advance(step_size)
+        return self.step_problem(step_size) or self.advance(step_size)
+
+    def advance(self, step_size: float) -> Refusal | None:
+        """`step` once `step_problem` has passed: a layer over this model (the
+        compliant drive) checks the inputs once, with its own, then advances."""
+        problem = self._advance(step_size)
         if problem:
             return problem
         self.time += step_size

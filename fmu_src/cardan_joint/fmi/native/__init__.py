@@ -6,7 +6,9 @@ friends with the machine's C compiler ($CC, else `cc`; no Python headers
 needed), moves pythonfmu's binary to `binaries/<platform>/<id>_pythonfmu.so`
 (`_pythonfmu3.so`), puts the loader at `binaries/<platform>/<id>.so` and records
 in `resources/python_runtime.txt` what the FMU needs of a Python (a minimum
-version, the build's minor as the preferred one), no machine paths. Where the
+version, the build's minor as the preferred one), no machine paths, and in
+`resources/variables.txt` each variable's reference, type, size and fixedness
+(both loaders read it; hosts need not extract modelDescription.xml). Where the
 host has no Python the loader finds one on the machine (python_discovery.c);
 users point it elsewhere with the variables named in loader.h.
 """
@@ -49,9 +51,10 @@ SOURCES = {
 BINARY_FOLDER = {2: "binaries/linux64", 3: "binaries/x86_64-linux"}
 SLAVE_SUFFIX = {2: "_pythonfmu.so", 3: "_pythonfmu3.so"}
 RECORD = "resources/python_runtime.txt"
-# FMI 3.0: each variable's value reference, type and size, for the loader's value
-# count checks (hosts such as FMPy extract only resources/ and binaries/).
-VARIABLES = "resources/fmi3_variables.txt"
+# Each variable's value reference, type, size and fixedness, for both loaders
+# (FMI 3.0: value count checks; both: the fixed-parameter guard). In resources/:
+# hosts such as FMPy extract only resources/ and binaries/, not modelDescription.xml.
+VARIABLES = "resources/variables.txt"
 _HERE = Path(__file__).resolve().parent
 
 
@@ -150,7 +153,7 @@ def compile_loader(model_identifier: str, output: Path, fmi_version: int = 2) ->
 
 
 def variables_record(model_description: bytes) -> str:
-    """One line per FMI 3.0 variable: value reference, type, size, fixed (0/1), name."""
+    """One line per variable (FMI 2.0 or 3.0): value reference, type, size, fixed (0/1), name."""
     import xml.etree.ElementTree as ElementTree
 
     lines = ["# valueReference type size fixed name (written by the build)"]
@@ -159,11 +162,13 @@ def variables_record(model_description: bytes) -> str:
         size = 1
         for dimension in variable.iter("Dimension"):
             size *= int(dimension.get("start", 0))  # a structural size (0) is refused
+        # FMI 2.0: <ScalarVariable> holds its type as the first child element.
+        tag = variable[0].tag if variable.tag == "ScalarVariable" else variable.tag
         lines.append(
             " ".join(
                 [
                     variable.get("valueReference", ""),
-                    "Int64" if variable.tag == "Enumeration" else variable.tag,
+                    "Int64" if tag == "Enumeration" else tag,
                     str(size),
                     str(int(variable.get("variability") in ("fixed", "constant"))),
                     variable.get("name", ""),
@@ -174,7 +179,7 @@ def variables_record(model_description: bytes) -> str:
 
 
 def install_loader(fmu_path, model_identifier: str, fmi_version: int = 2) -> None:
-    """Rewrite the .fmu in place: loader in front of pythonfmu's binary, runtime record."""
+    """Rewrite the .fmu in place: loader in front of pythonfmu's binary, the records."""
     fmu_path = Path(fmu_path)
     folder = BINARY_FOLDER[fmi_version]
     binary = f"{folder}/{model_identifier}.so"
@@ -200,6 +205,5 @@ def install_loader(fmu_path, model_identifier: str, fmi_version: int = 2) -> Non
                 target.writestr(info, source.read(item))
             target.write(loader, binary)
             target.writestr(RECORD, runtime_record())
-            if fmi_version == 3:
-                target.writestr(VARIABLES, variables_record(source.read("modelDescription.xml")))
+            target.writestr(VARIABLES, variables_record(source.read("modelDescription.xml")))
         shutil.move(str(rewritten), fmu_path)

@@ -14,7 +14,6 @@ enum value_type {
 };
 extern const char *const TYPE_NAMES[N_TYPES];
 
-#define VARIABLES_RECORD "fmi3_variables.txt"
 #define MAX_VARIABLES 256
 struct variables {
     struct variable {

@@ -1,5 +1,5 @@
 /* Each FMI 3.0 variable's value reference, type and size, from the record the
- * build writes (resources/fmi3_variables.txt, see native/__init__.py): the
+ * build writes (resources/VARIABLES_RECORD, see native/__init__.py): the
  * loader checks value references and value counts against it.  Hosts need not
  * extract modelDescription.xml (FMPy extracts resources/ and binaries/ only). */
 #include "fmi3_instance.h"

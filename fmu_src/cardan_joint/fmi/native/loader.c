@@ -92,8 +92,13 @@ fmi2Component fmi2Instantiate(fmi2String name, fmi2Type type, fmi2String guid,
     static int fixed_read;
     pthread_mutex_lock(&fixed_lock);
     if (!fixed_read)
-        fixed_read = read_fixed_parameters(resources, &fixed) == 0;
+        fixed_read = read_fixed_parameters(resources, &fixed, error, sizeof error) == 0;
+    int have_fixed = fixed_read;
     pthread_mutex_unlock(&fixed_lock);
+    if (!have_fixed) {
+        early_message(functions, name, error);
+        return NULL;
+    }
     struct instance *in = calloc(1, sizeof *in);
     if (!in)
         return NULL;

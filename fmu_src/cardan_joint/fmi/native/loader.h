@@ -5,6 +5,8 @@
 #include <stddef.h>
 
 #define RUNTIME_RECORD "python_runtime.txt"
+/* Each variable: value reference, type, size, fixed (0/1), name (native/__init__.py). */
+#define VARIABLES_RECORD "variables.txt"
 #define ENV_LIBRARY "CARDAN_JOINT_FMU_PYTHON_LIBRARY"
 #define ENV_HOME "CARDAN_JOINT_FMU_PYTHON_HOME"
 #define ENV_PATH "CARDAN_JOINT_FMU_PYTHON_PATH"
@@ -42,7 +44,8 @@ struct fixed_parameters {
     } parameters[MAX_FIXED];
     int count;
 };
-int read_fixed_parameters(const char *resources, struct fixed_parameters *fixed);
+int read_fixed_parameters(const char *resources, struct fixed_parameters *fixed,
+                          char *error, size_t size);
 
 /* Resources folder from fmuResourceLocation (a file URI or a plain path). */
 int resources_folder(const char *location, char *folder, size_t size);

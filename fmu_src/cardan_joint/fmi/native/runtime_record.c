@@ -133,31 +133,38 @@ int read_runtime_record(const char *resources, struct runtime_record *record,
     return 0;
 }
 
-/* Fixed parameters from modelDescription.xml (beside resources/): FMI allows
- * setting them only before fmi2ExitInitializationMode, whatever state the slave
- * was restored to. A light scan: the file is the build's own output. */
-int read_fixed_parameters(const char *resources, struct fixed_parameters *fixed)
+/* Fixed parameters from the build's variable record (resources/VARIABLES_RECORD,
+ * the one the FMI 3.0 loader reads): FMI allows setting them only before
+ * fmi2ExitInitializationMode, whatever state the slave was restored to.  Not
+ * modelDescription.xml: hosts need not extract it (FMPy extracts resources/ and
+ * binaries/ only), and a guard that silently turns off is no guard. */
+int read_fixed_parameters(const char *resources, struct fixed_parameters *fixed,
+                          char *error, size_t size)
 {
-    char name[4200];
-    snprintf(name, sizeof name, "%s/../modelDescription.xml", resources);
+    char name[4200], line[256], type[16];
+    snprintf(name, sizeof name, "%s/" VARIABLES_RECORD, resources);
     FILE *file = fopen(name, "r");
-    if (!file)
+    if (!file) {
+        snprintf(error, size, "cannot read %s (%s): the FMU is incomplete, rebuild it", name,
+                 strerror(errno));
         return -1;
-    static char xml[1 << 20];
-    size_t n = fread(xml, 1, sizeof xml - 1, file);
-    fclose(file);
-    xml[n] = '\0';
+    }
     fixed->count = 0;
-    for (char *v = strstr(xml, "<ScalarVariable"); v && fixed->count < MAX_FIXED;
-         v = strstr(v + 1, "<ScalarVariable")) {
-        char *end = strchr(v, '>'), *reference = strstr(v, "valueReference=\"");
-        char *variability = strstr(v, "variability=\"fixed\""), *label = strstr(v, " name=\"");
-        if (!end || !reference || !label || !variability || variability > end)
+    int line_number = 0, ok = 1;
+    while (ok && fgets(line, sizeof line, file)) {
+        line_number++;
+        if (line[0] == '#' || line[0] == '\n')
             continue;
         struct fixed_parameter *p = &fixed->parameters[fixed->count];
-        if (sscanf(reference, "valueReference=\"%u", &p->vr) == 1 &&
-            sscanf(label, " name=\"%63[^\"]", p->name) == 1)
-            fixed->count++;
+        size_t values;
+        int is_fixed;
+        ok = sscanf(line, "%u %15s %zu %d %63s", &p->vr, type, &values, &is_fixed, p->name) == 5;
+        if (ok && is_fixed)
+            ok = fixed->count++ < MAX_FIXED;
     }
-    return 0;
+    fclose(file);
+    if (!ok)
+        snprintf(error, size, "%s, line %d: not 'valueReference type size fixed name' "
+                              "(at most %d fixed): rebuild the FMU", name, line_number, MAX_FIXED);
+    return ok ? 0 : -1;
 }

@@ -16,6 +16,8 @@ and the input torque is the rigid drive's with `load_torque` = that torque (its
 inertia and bend-rate terms included). Same protocol as every stepped model.
 """
 
+from operator import attrgetter
+
 from ...physics.refusal import Reason, Refusal
 from ...physics.values import MAX_INCREMENT, ValueChecks, set_start_values, value_ranges
 from ..universal_joint.model import CardanJoint
@@ -23,6 +25,22 @@ from .variables import COMPLIANT_JOINT
 
 # The rigid drive's outputs the compliant one replaces with its own.
 _REPLACED = ("input_angle", "output_angle", "output_speed", "output_acceleration")
+
+
+def _forward(cls, names) -> None:
+    """A property on `cls` for each name, reading and writing `self.rigid`'s value:
+    made once per class (a propshaft's per-shaft names once per layout), so each
+    access costs a property call, not a failed lookup and __getattr__."""
+    for name in names:
+        if name not in cls.__dict__:
+            setattr(cls, name, property(attrgetter(f"rigid.{name}"), _setter(name)))
+
+
+def _setter(name: str):
+    def set_on_rigid(self, value) -> None:
+        setattr(self.rigid, name, value)
+
+    return set_on_rigid
 
 
 class CompliantDrive(ValueChecks):
@@ -36,12 +54,12 @@ class CompliantDrive(ValueChecks):
     torsional_damping: float
 
     def __init__(self, rigid, table, what: str, **values: float) -> None:
-        object.__setattr__(self, "rigid", rigid)
+        self.rigid = rigid
         rigid_names = rigid.table.INPUTS + rigid.table.PARAMETERS
         # The rigid drive's inputs, parameters and clock live in it, read and
-        # written through this object (see __getattr__ / __setattr__).
+        # written through this object by properties made once per class.
         shared = {n for n in table.INPUTS + table.PARAMETERS if n in rigid_names} | {"time"}
-        object.__setattr__(self, "_shared", frozenset(shared))
+        _forward(type(self), shared)
         self.table = table
         self._own_inputs = tuple(n for n in table.INPUTS if n not in shared)
         self._own_parameters = tuple(n for n in table.PARAMETERS if n not in shared)
@@ -53,19 +71,6 @@ class CompliantDrive(ValueChecks):
         rigid.load_torque = 0.0  # the rigid checks see no load; outputs() sets it
         set_start_values(self, table, values, what)
         self.start(0.0)
-
-    def __getattr__(self, name):
-        # Only for names not found on the object; before __init__ (a copy being
-        # made) there is nothing to forward to.
-        if name in self.__dict__.get("_shared", ()):
-            return getattr(self.rigid, name)
-        raise AttributeError(name)
-
-    def __setattr__(self, name, value):
-        if name in self._shared:
-            setattr(self.rigid, name, value)
-        else:
-            object.__setattr__(self, name, value)
 
     def _kinematics(self) -> tuple[float, float]:
         """(kinematic output angle - input angle, kinematic output speed) now."""
@@ -120,7 +125,7 @@ class CompliantDrive(ValueChecks):
                 "rad",
                 details,
             )
-        problem = rigid.step(h)
+        problem = rigid.advance(h)  # its inputs and parameters were checked above
         if problem:
             return problem
         self._lag += change
