@@ -57,3 +57,22 @@ fmi2Status set_debug_logging(struct instance *in, const char *function, int on, 
     in->logging_on = on;
     return fmi2OK;
 }
+
+/* Both FMI versions free an instance alike; only the slave's own free differs. */
+void release_instance(struct instance *in, void (*free_slave)(void *))
+{
+    fast_detach(in);
+    while (in->n_fmu_states)
+        drop_state(in, &in->fmu_states[0]);
+    if (in->slave)
+        free_slave(in->slave);
+    for (size_t i = 0; i < in->n_categories; i++)
+        free(in->categories[i]);
+    in->magic = 0;
+    free(in->categories);
+    free(in->fmu_states);
+    free(in->name);
+    free(in->guid);
+    free(in->resources_uri);
+    free(in);
+}

@@ -49,20 +49,7 @@ const char *where(enum state state)
 
 void free_instance(struct instance *in)
 {
-    fast_detach(in);
-    while (in->n_fmu_states)
-        drop_state(in, &in->fmu_states[0]);
-    if (in->slave)
-        slave.free_instance(in->slave);
-    for (size_t i = 0; i < in->n_categories; i++)
-        free(in->categories[i]);
-    in->magic = 0;
-    free(in->categories);
-    free(in->fmu_states);
-    free(in->name);
-    free(in->guid);
-    free(in->resources_uri);
-    free(in);
+    release_instance(in, slave.free_instance);
 }
 
 const char *fmi2GetTypesPlatform(void) { return "default"; }

@@ -149,20 +149,7 @@ fmi3Instance fmi3InstantiateCoSimulation(
 
 void free_instance3(struct instance *in)
 {
-    fast_detach(in);
-    while (in->n_fmu_states)
-        drop_state(in, &in->fmu_states[0]);
-    if (in->slave)
-        slave3.free_instance(in->slave);
-    for (size_t i = 0; i < in->n_categories; i++)
-        free(in->categories[i]);
-    in->magic = 0;
-    free(in->categories);
-    free(in->fmu_states);
-    free(in->name);
-    free(in->guid);
-    free(in->resources_uri);
-    free(in);
+    release_instance(in, slave3.free_instance);
 }
 
 void fmi3FreeInstance(fmi3Instance instance)

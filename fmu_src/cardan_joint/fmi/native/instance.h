@@ -130,6 +130,7 @@ int fast_last_successful_time(const struct instance *in, double *value);
 int fast_terminated(const struct instance *in, int *value);
 char *copy_of(const char *text);  /* strdup, "" for NULL */
 void free_instance(struct instance *in);
+void release_instance(struct instance *in, void (*free_slave)(void *));
 void report(struct instance *in, fmi2Status status, const char *category, const char *text);
 void reportf(struct instance *in, fmi2Status status, const char *format, ...)
     __attribute__((format(printf, 3, 4)));
