@@ -47,7 +47,7 @@ class Example:
 EXAMPLES = (
     Example("demo", ("demo.png",)),
     Example("motor_load", ("motor_load.png",)),
-    Example("driveshaft", ("driveshaft.png",)),
+    Example("driveshaft", ("driveshaft.png",), sources=("examples/_driveshaft_support.py",)),
     Example("propshaft_layout", ("propshaft_layout.png",), model="Propshaft"),
     Example(
         "design_sweep",
@@ -90,7 +90,7 @@ EXAMPLES = (
             f"seed_mityushov_misyura_{n}.png"
             for n in ("kinematics", "quaternion", "torques", "energy")
         ),
-        sources=SEEDS,
+        sources=(*SEEDS, "examples/_mityushov_support.py"),
     ),
 )
 

@@ -1,0 +1,82 @@
+"""The mutation table's plumbing guards (tools/guards.py): the build as a
+library, the host's result and messages, the optional extras, the compliant
+driveline and the SSP reader."""
+
+from guards_base import (
+    COMPLIANT,
+    COMPLIANT_TESTS,
+    Mutation,
+)
+
+PLUMBING_MUTATIONS = (
+    # The build, called as a library: the caller's sys.modules as it was.
+    Mutation(
+        "build: drops its staged modules",
+        "fmu_src/cardan_joint/build/builder.py",
+        "n.split(\".\")[0] in (package_dir.name,",
+        "n.split(\".\")[0] in (package_dir.name + \"_\",",
+        ("tests/test_build.py",),
+    ),
+    # Plumbing that keeps a user's result and messages clean.
+    Mutation(
+        "simulate: a refused run ends at its last good point",
+        "fmu_src/cardan_joint/host/simulate.py",
+        "            result = _without_repeated_end(result)\n",
+        "            pass\n",
+        ("tests/test_refusal.py", "-k", "simulate_raises"),
+    ),
+    Mutation(
+        "sweep: Dask missing names its extra",
+        "fmu_src/cardan_joint/sweep/command.py",
+        "    if not args.serial:\n        try:\n            require(",
+        "    if False:\n        try:\n            require(",
+        ("tests/test_extras.py", "-k", "sweep"),
+    ),
+    Mutation(
+        "cosim: libcosimpy missing names its extra",
+        "fmu_src/cardan_joint/host/cosim.py",
+        '    require("libcosimpy", "cosim", "running in libcosim")\n'
+        "    from libcosimpy.CosimExecution import CosimExecution\n"
+        "    from libcosimpy.CosimLogging import CosimLogLevel, log_output_level\n\n",
+        "    from libcosimpy.CosimExecution import CosimExecution\n"
+        "    from libcosimpy.CosimLogging import CosimLogLevel, log_output_level\n\n",
+        ("tests/test_extras.py", "-k", "libcosim_runs"),
+    ),
+    # The compliant driveline (issue 20).
+    Mutation(
+        "compliant: no kinematics at a start with unusable inputs",
+        COMPLIANT,
+        "        valid = not self.parameter_fault and not self.rigid.input_problem()\n",
+        "        valid = not self.parameter_fault\n",
+        (COMPLIANT_TESTS, "-k", "unusable_bend"),
+    ),
+    Mutation(
+        "compliant: the spring's torque leaves the rigid load check",
+        COMPLIANT,
+        "        try:\n            values = rigid.outputs()\n        finally:\n"
+        "            rigid.load_torque = 0.0\n",
+        "        values = rigid.outputs()\n",
+        (COMPLIANT_TESTS, "-k", "rigid_load_range"),
+    ),
+    Mutation(
+        "compliant: twist overflow refused",
+        COMPLIANT,
+        "        if not abs(change) <= MAX_INCREMENT:\n",
+        "        if False:\n",
+        (COMPLIANT_TESTS, "-k", "twist_beyond"),
+    ),
+    Mutation(
+        "exact rotor step: series near zero drag",
+        "fmu_src/cardan_joint/physics/stepped.py",
+        "    if abs(z) > 0.05:\n",
+        "    if True:\n",
+        ("tests/test_inertia_load.py",),
+    ),
+    Mutation(
+        "ssp: a missing file is named",
+        "fmu_src/cardan_joint/host/ssp.py",
+        "    if not path.is_file():\n",
+        "    if False:\n",
+        ("tests/test_compliant_system.py", "-k", "broken"),
+    ),
+)

@@ -1,0 +1,215 @@
+"""The mutation table's step and slave guards (tools/guards.py): the step
+itself, the rotor models' own guard, the slave's answers to refusals, illegal
+calls and states, and the one-call step."""
+
+from guards_base import (
+    CORE,
+    FAST_STEP,
+    FAST_STEP_TESTS,
+    GUARDS,
+    RESTORED,
+    ROBUSTNESS,
+    SLAVE,
+    SLAVE_GUARDS,
+    VALUES,
+    Mutation,
+)
+
+STEP_MUTATIONS = (
+    # The step itself.
+    Mutation(
+        "step size finite",
+        VALUES,
+        "if not (math.isfinite(step_size) and step_size > 0.0):",
+        "if not (step_size > 0.0):",
+        (GUARDS, "-k", "step_size"),
+    ),
+    Mutation(
+        "step size positive",
+        VALUES,
+        "if not (math.isfinite(step_size) and step_size > 0.0):",
+        "if not (math.isfinite(step_size)):",
+        (GUARDS, "-k", "step_size"),
+    ),
+    Mutation(
+        "angle overflow",
+        VALUES,
+        "if abs(increment) <= MAX_INCREMENT and abs(end_speed) <= speed_limit:",
+        "if abs(end_speed) <= speed_limit:",
+        (GUARDS, "-k", "beyond_float_precision"),
+    ),
+    Mutation(
+        "angle overflow named as such",
+        VALUES,
+        "if not abs(increment) <= MAX_INCREMENT:",
+        "if False:",
+        (GUARDS, "-k", "beyond_float_precision"),
+    ),
+    Mutation(
+        "speed at the step's end",
+        VALUES,
+        "if abs(increment) <= MAX_INCREMENT and abs(end_speed) <= speed_limit:",
+        "if abs(increment) <= MAX_INCREMENT:",
+        (GUARDS, "-k", "speed_range"),
+    ),
+    Mutation(
+        "restore: all or nothing",
+        VALUES,
+        RESTORED,
+        RESTORED
+        + "        for name, value in values.items():\n            setattr(self, name, value)\n",
+        (GUARDS, SLAVE_GUARDS, "-k", "state"),
+    ),
+    # The rotor models' own guard (the motor's, the inertia load's; their value
+    # checks are the ones above).
+    Mutation(
+        "motor, inertia load: rotor speed at the step's end",
+        "fmu_src/cardan_joint/physics/stepped.py",
+        "        if not abs(speed) <= limit:\n",
+        "        if False:\n",
+        (
+            "tests/test_driveline.py",
+            "tests/test_inertia_load.py",
+            "tests/test_refusal.py",
+            "-k",
+            "unusable_inputs or reads_back or refuses",
+        ),
+    ),
+    # The slave: what the FMU does with a refusal, illegal calls, states.
+    Mutation(
+        "slave: refused step returns Discard",
+        CORE,
+        "            if problem:\n                model.time = time\n",
+        "            if False:\n                model.time = time\n",
+        (SLAVE_GUARDS, "-k", "step"),
+    ),
+    Mutation(
+        "slave: refused step leaves the clock",
+        CORE,
+        "                model.time = time\n                self._report(",
+        "                self._report(",
+        (f"{ROBUSTNESS}::test_a_refused_step_leaves_the_clock_alone",),
+    ),
+    Mutation(
+        "slave: invalid inputs hold outputs",
+        CORE,
+        "            if problem:\n                self._report(\n"
+        "                    f\"{problem.at(model.time).message}; outputs that depend on it \"",
+        "            if False:\n                self._report(\n"
+        "                    f\"{problem.at(model.time).message}; outputs that depend on it \"",
+        (SLAVE_GUARDS, "-k", "held"),
+    ),
+    Mutation(
+        "slave: held outputs follow the declared dependencies",
+        CORE,
+        "live[i] if dependencies & invalid else fresh[i]",
+        "fresh[i]",
+        (f"{ROBUSTNESS}::test_invalid_load_holds_only_the_outputs_that_depend_on_it",),
+    ),
+    Mutation(
+        "slave: bad parameters are an error at initialization",
+        CORE,
+        "            problem = self._model.parameter_fault\n            if problem:",
+        "            problem = self._model.parameter_fault\n            if False:",
+        (SLAVE_GUARDS, "-k", "initialization"),
+    ),
+    Mutation(
+        "slave: set on an output or unknown reference",
+        CORE,
+        "if not 0 <= i < refs.first_output:",
+        "if False:",
+        (SLAVE_GUARDS, "-k", "setting"),
+    ),
+    Mutation(
+        "slave: parameter set after initialization",
+        CORE,
+        "elif self._initialized:",
+        "elif False:",
+        (SLAVE_GUARDS, "-k", "after_initialization"),
+    ),
+    Mutation(
+        "slave: get of an unknown reference",
+        SLAVE,
+        "            if bad:\n",
+        "            if False:\n",
+        (SLAVE_GUARDS, "-k", "unknown_reference"),
+    ),
+    *(
+        Mutation(
+            f"slave: {call} on the Real-only FMU",
+            SLAVE,
+            f"def {call}(self, vrs",
+            f"def _unused_{call}(self, vrs",
+            (SLAVE_GUARDS, "-k", "other_variable_types"),
+        )
+        for call in (
+            "get_integer",
+            "get_boolean",
+            "get_string",
+            "set_integer",
+            "set_boolean",
+            "set_string",
+        )
+    ),
+    Mutation(
+        "slave: a marked invalid state",
+        CORE,
+        'if "invalid_state" in state:',
+        "if False:",
+        (SLAVE_GUARDS, "-k", "state"),
+    ),
+    Mutation(
+        "slave: a state of another version",
+        CORE,
+        "if (\n"
+        '                "model" not in state\n'
+        "                or len(held_outputs) != len(self.table.OUTPUTS)\n"
+        "                or len(held_inputs) != len(self.table.INPUTS)\n"
+        "            ):",
+        "if False:",
+        (SLAVE_GUARDS, "-k", "state"),
+    ),
+    Mutation(
+        "slave: deserialized bytes that are no dict",
+        CORE,
+        "if not isinstance(state, dict):",
+        "if False:",
+        (SLAVE_GUARDS, "-k", "state"),
+    ),
+    Mutation(
+        "slave: deserialized bytes that are no JSON",
+        CORE,
+        'return {"invalid_state": reason}',
+        "raise",
+        (SLAVE_GUARDS, "-k", "state"),
+    ),
+    # The one-call step (issue 21): what the native loader may keep of its buffers.
+    Mutation(
+        "one-call step: a refused step writes no outputs",
+        FAST_STEP,
+        "        if status:  # refused or faulted",
+        "        if False:  # refused or faulted",
+        (FAST_STEP_TESTS, "-k", "refused_step or normal_paths"),
+    ),
+    Mutation(
+        "one-call step: the inputs a step moved are written back",
+        FAST_STEP,
+        "            refs.pack_inputs(known, 0, *self._inputs_held)\n",
+        "            pass\n",
+        (FAST_STEP_TESTS, "-k", "normal_paths"),
+    ),
+    Mutation(
+        "one-call step: held outputs are not kept",
+        FAST_STEP,
+        "return self._STATUS.ok if self._outputs is not None else self._STATUS.warning",
+        "return self._STATUS.ok",
+        (FAST_STEP_TESTS, "-k", "refused_step or normal_paths"),
+    ),
+    Mutation(
+        "one-call step: a read after an input write checks the inputs",
+        FAST_STEP,
+        "        self._outputs = None\n        self._inputs_checked = False\n",
+        "        self._outputs = None\n",
+        (FAST_STEP_TESTS, "-k", "normal_paths"),
+    ),
+)

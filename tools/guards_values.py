@@ -1,0 +1,179 @@
+"""The mutation table's value guards (tools/guards.py): each input's and
+parameter's finiteness and range, and the bend angle now, at the step's end and
+at its peak inside the step, in the slow path and the fast path."""
+
+from guards_base import (
+    GUARDS,
+    MODEL,
+    SLAVE_GUARDS,
+    VALUES,
+    Mutation,
+)
+
+# guards_base put fmu_src on the path (the mutation run copies the tree, no install).
+from cardan_joint.models.universal_joint import variables as table
+
+FINITE_LOOP = (
+    "        for name in names:\n            value = getattr(self, name)\n"
+    "            if not math.isfinite(value):"
+)
+INPUT_RANGES = '_INPUT_RANGES = _ranges(table.INPUTS, "bend_angle")'
+PARAMETER_RANGES = '_PARAMETER_RANGES = _ranges(table.PARAMETERS, "max_bend_angle")'
+# Every input and parameter but the bend angle and its guard has a table range.
+RANGED_INPUTS = tuple(n for n in table.INPUTS if n != "bend_angle")
+RANGED_PARAMETERS = tuple(n for n in table.PARAMETERS if n != "max_bend_angle")
+ALL_INPUTS = table.INPUTS
+PARAMETERS = table.PARAMETERS
+FAST_PATH = {
+    "input_speed": "abs(self.input_speed) <= _SPEED_LIMIT",
+    "input_acceleration": "abs(self.input_acceleration) <= _ACCELERATION_LIMIT",
+    "bend_angle_rate": "abs(rate) <= _RATE_LIMIT",
+    "bend_angle_acceleration": "abs(acc) <= _BEND_ACCELERATION_LIMIT",
+    "load_torque": "abs(self.load_torque) <= _LOAD_LIMIT",
+}
+PEAK_TESTS = (GUARDS, SLAVE_GUARDS, "-k", "peak")
+
+
+def _skip(name):
+    return FINITE_LOOP.replace(
+        "for name in names:", f"for name in [n for n in names if n != {name!r}]:"
+    )
+
+
+VALUE_MUTATIONS = (
+    # Inputs: finiteness and range, each variable alone, in the slow path and the fast path.
+    *(
+        Mutation(
+            f"input {n} finite", VALUES, FINITE_LOOP, _skip(n), (GUARDS, "-k", "non_finite_input")
+        )
+        for n in ALL_INPUTS
+    ),
+    *(
+        Mutation(
+            f"input {n} range (slow path)",
+            MODEL,
+            INPUT_RANGES,
+            INPUT_RANGES.replace('"bend_angle"', f'"bend_angle", {n!r}'),
+            (GUARDS, "-k", "input"),
+        )
+        for n in RANGED_INPUTS
+    ),
+    *(
+        Mutation(
+            f"input {n} range (fast path)", MODEL, FAST_PATH[n], "True", (GUARDS, "-k", "input")
+        )
+        for n in RANGED_INPUTS
+    ),
+    Mutation(
+        "inputs: any bad value (slow path)",
+        MODEL,
+        "self._value_problem(table.INPUTS, _INPUT_RANGES)",
+        "None",
+        (GUARDS, "-k", "input"),
+    ),
+    # Parameters, checked once per start.
+    *(
+        Mutation(
+            f"parameter {n} finite", VALUES, FINITE_LOOP, _skip(n), (GUARDS, "-k", "parameter")
+        )
+        for n in PARAMETERS
+    ),
+    *(
+        Mutation(
+            f"parameter {n} range",
+            MODEL,
+            PARAMETER_RANGES,
+            PARAMETER_RANGES.replace('"max_bend_angle"', f'"max_bend_angle", {n!r}'),
+            (GUARDS, "-k", "parameter"),
+        )
+        for n in RANGED_PARAMETERS
+    ),
+    Mutation(
+        "parameter max_bend_angle / max_working_angle in (0, pi/2)",
+        VALUES,
+        "    if 0.0 < value < HALF_PI:\n        return None\n",
+        "    if True:\n        return None\n",
+        (GUARDS, "-k", "max_bend_angle"),
+    ),
+    Mutation(
+        "bad parameters refuse every step",
+        VALUES,
+        "if self.parameter_fault:\n            return self.parameter_fault.at(self.time)",
+        "if False:\n            return self.parameter_fault.at(self.time)",
+        (GUARDS, "-k", "parameter or max_bend_angle"),
+    ),
+    Mutation(
+        "bad input_angle_start not used as the start angle",
+        MODEL,
+        "split_angle(self.input_angle_start if valid else 0.0)",
+        "split_angle(self.input_angle_start)",
+        (GUARDS, "-k", "parameter"),
+    ),
+    Mutation(
+        "bad yoke_phase not used as the phase",
+        MODEL,
+        "split_angle(self.yoke_phase if valid else 0.0)",
+        "split_angle(self.yoke_phase)",
+        (GUARDS, "-k", "parameter"),
+    ),
+    # The bend angle: now, at the step's end, at the peak inside the step; both paths.
+    Mutation(
+        "bend angle now (fast path)",
+        MODEL,
+        "and abs(beta) < guard",
+        "and True",
+        (GUARDS, "-k", "bend"),
+    ),
+    Mutation(
+        "bend angle at step end (fast path)",
+        MODEL,
+        "abs(beta + step_size * (rate + 0.5 * acc * step_size)) < guard",
+        "True",
+        (GUARDS, "-k", "bend"),
+    ),
+    Mutation(
+        "bend peak inside the step (fast path)",
+        MODEL,
+        "(rate * acc >= 0.0 or -rate / acc >= step_size)",
+        "True",
+        PEAK_TESTS,
+    ),
+    Mutation(
+        "bend angle now (slow path)",
+        MODEL,
+        "candidates = [(Reason.BEND_ANGLE, 0.0, beta)]",
+        "candidates = [(Reason.BEND_ANGLE, 0.0, 0.0)]",
+        (GUARDS, "-k", "bend"),
+    ),
+    Mutation(
+        "bend angle at step end (slow path)",
+        MODEL,
+        "                    Reason.BEND_AT_STEP_END,\n"
+        "                    step_size,\n"
+        "                    beta + step_size * (rate + 0.5 * acc * step_size),\n",
+        "                    Reason.BEND_AT_STEP_END,\n                    step_size,\n"
+        "                    beta,\n",
+        (GUARDS, "-k", "bend"),
+    ),
+    Mutation(
+        "bend peak inside the step (slow path)",
+        MODEL,
+        "if acc != 0.0 and 0.0 < -rate / acc < step_size:",
+        "if False:",
+        PEAK_TESTS,
+    ),
+    Mutation(
+        "bend angle against max_bend_angle (slow path)",
+        MODEL,
+        "if abs(worst) >= guard:",
+        "if False:",
+        (GUARDS, "-k", "bend"),
+    ),
+    Mutation(
+        "bend angle marks its outputs invalid",
+        MODEL,
+        "if not abs(self.bend_angle) < self.max_bend_angle:",
+        "if False:",
+        (GUARDS, "-k", "bend"),
+    ),
+)
