@@ -8,7 +8,7 @@ from guards_base import (
     FAST_STEP_TESTS,
     GUARDS,
     RESTORED,
-    ROBUSTNESS,
+    ROBUSTNESS_CALLS,
     SLAVE,
     SLAVE_GUARDS,
     VALUES,
@@ -88,7 +88,7 @@ STEP_MUTATIONS = (
         CORE,
         "                model.time = time\n                self._report(",
         "                self._report(",
-        (f"{ROBUSTNESS}::test_a_refused_step_leaves_the_clock_alone",),
+        (f"{ROBUSTNESS_CALLS}::test_a_refused_step_leaves_the_clock_alone",),
     ),
     Mutation(
         "slave: invalid inputs hold outputs",
@@ -104,7 +104,7 @@ STEP_MUTATIONS = (
         CORE,
         "live[i] if dependencies & invalid else fresh[i]",
         "fresh[i]",
-        (f"{ROBUSTNESS}::test_invalid_load_holds_only_the_outputs_that_depend_on_it",),
+        (f"{ROBUSTNESS_CALLS}::test_invalid_load_holds_only_the_outputs_that_depend_on_it",),
     ),
     Mutation(
         "slave: bad parameters are an error at initialization",
