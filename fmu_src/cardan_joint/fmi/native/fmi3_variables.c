@@ -4,7 +4,6 @@
  * extract modelDescription.xml (FMPy extracts resources/ and binaries/ only). */
 #include "fmi3_instance.h"
 
-#include <errno.h>
 #include <stdio.h>
 #include <string.h>
 
@@ -20,37 +19,25 @@ static int type_of(const char *name)
     return -1;
 }
 
+static int keep_variable(const struct record_row *row, void *kept)
+{
+    struct variables *variables = kept;
+    int type = type_of(row->type);
+    if (type < 0 || variables->count >= MAX_VARIABLES)
+        return 0;
+    struct variable *v = &variables->list[variables->count++];
+    v->vr = row->vr;
+    v->type = (enum value_type)type;
+    v->size = row->size;
+    v->fixed = row->fixed;
+    snprintf(v->name, sizeof v->name, "%s", row->name);
+    return 1;
+}
+
 int read_variables(const char *resources, struct variables *variables, char *error, size_t size)
 {
-    char name[4200], line[256], type[16];
-    snprintf(name, sizeof name, "%s/" VARIABLES_RECORD, resources);
-    FILE *file = fopen(name, "r");
-    if (!file) {
-        snprintf(error, size, "cannot read %s (%s): the FMU is incomplete, rebuild it", name,
-                 strerror(errno));
-        return -1;
-    }
     variables->count = 0;
-    int line_number = 0, ok = 1;
-    while (ok && fgets(line, sizeof line, file)) {
-        line_number++;
-        if (line[0] == '#' || line[0] == '\n')
-            continue;
-        struct variable *v = &variables->list[variables->count];
-        ok = variables->count < MAX_VARIABLES &&
-             sscanf(line, "%u %15s %zu %d %63s", &v->vr, type, &v->size, &v->fixed, v->name) == 5 &&
-             type_of(type) >= 0;
-        if (ok) {
-            v->type = (enum value_type)type_of(type);
-            variables->count++;
-        }
-    }
-    fclose(file);
-    if (!ok)
-        snprintf(error, size, "%s, line %d: not 'valueReference type size fixed name' "
-                              "(at most %d variables): rebuild the FMU", name, line_number,
-                 MAX_VARIABLES);
-    return ok ? 0 : -1;
+    return read_variable_record(resources, keep_variable, variables, MAX_VARIABLES, error, size);
 }
 
 const struct variable *find_variable(const struct variables *variables, fmi3ValueReference vr)

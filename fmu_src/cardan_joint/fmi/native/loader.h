@@ -36,6 +36,17 @@ struct runtime_record {
     struct python_location user;  /* $CARDAN_JOINT_FMU_PYTHON_* */
 };
 
+/* One row of resources/VARIABLES_RECORD; `keep` returns 0 for a row it cannot keep. */
+struct record_row {
+    unsigned vr;
+    char type[16];
+    size_t size;
+    int fixed;
+    char name[64];
+};
+int read_variable_record(const char *resources, int (*keep)(const struct record_row *, void *),
+                         void *kept, int most, char *error, size_t size);
+
 #define MAX_FIXED 64
 struct fixed_parameters {
     struct fixed_parameter {

@@ -133,15 +133,14 @@ int read_runtime_record(const char *resources, struct runtime_record *record,
     return 0;
 }
 
-/* Fixed parameters from the build's variable record (resources/VARIABLES_RECORD,
- * the one the FMI 3.0 loader reads): FMI allows setting them only before
- * fmi2ExitInitializationMode, whatever state the slave was restored to.  Not
+/* The build's variable record (resources/VARIABLES_RECORD), one row per
+ * variable: both FMI versions read it, each keeping what it needs.  Not
  * modelDescription.xml: hosts need not extract it (FMPy extracts resources/ and
  * binaries/ only), and a guard that silently turns off is no guard. */
-int read_fixed_parameters(const char *resources, struct fixed_parameters *fixed,
-                          char *error, size_t size)
+int read_variable_record(const char *resources, int (*keep)(const struct record_row *, void *),
+                         void *kept, int most, char *error, size_t size)
 {
-    char name[4200], line[256], type[16];
+    char name[4200], line[256];
     snprintf(name, sizeof name, "%s/" VARIABLES_RECORD, resources);
     FILE *file = fopen(name, "r");
     if (!file) {
@@ -149,22 +148,41 @@ int read_fixed_parameters(const char *resources, struct fixed_parameters *fixed,
                  strerror(errno));
         return -1;
     }
-    fixed->count = 0;
     int line_number = 0, ok = 1;
     while (ok && fgets(line, sizeof line, file)) {
         line_number++;
         if (line[0] == '#' || line[0] == '\n')
             continue;
-        struct fixed_parameter *p = &fixed->parameters[fixed->count];
-        size_t values;
-        int is_fixed;
-        ok = sscanf(line, "%u %15s %zu %d %63s", &p->vr, type, &values, &is_fixed, p->name) == 5;
-        if (ok && is_fixed)
-            ok = fixed->count++ < MAX_FIXED;
+        struct record_row row;
+        ok = sscanf(line, "%u %15s %zu %d %63s", &row.vr, row.type, &row.size, &row.fixed,
+                    row.name) == 5 &&
+             keep(&row, kept);
     }
     fclose(file);
     if (!ok)
         snprintf(error, size, "%s, line %d: not 'valueReference type size fixed name' "
-                              "(at most %d fixed): rebuild the FMU", name, line_number, MAX_FIXED);
+                              "(at most %d kept): rebuild the FMU", name, line_number, most);
     return ok ? 0 : -1;
+}
+
+static int keep_fixed(const struct record_row *row, void *kept)
+{
+    struct fixed_parameters *fixed = kept;
+    if (!row->fixed)
+        return 1;
+    if (fixed->count >= MAX_FIXED)
+        return 0;
+    struct fixed_parameter *p = &fixed->parameters[fixed->count++];
+    p->vr = row->vr;
+    snprintf(p->name, sizeof p->name, "%s", row->name);
+    return 1;
+}
+
+/* FMI allows setting fixed parameters only before fmi2ExitInitializationMode,
+ * whatever state the slave was restored to. */
+int read_fixed_parameters(const char *resources, struct fixed_parameters *fixed,
+                          char *error, size_t size)
+{
+    fixed->count = 0;
+    return read_variable_record(resources, keep_fixed, fixed, MAX_FIXED, error, size);
 }
