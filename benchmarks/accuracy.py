@@ -76,7 +76,7 @@ def rk4_tataru(bend, step, stop_time=1.0):
 
 def exact_output(bend, at_time):
     """Output angle and speed at `at_time` (a double, taken exactly), at 40 digits,
-    by atan(tan psi / cos b) - psi on the principal branch (docs/UniversalJoint/README.md)."""
+    by atan(tan psi / cos b) - psi on the principal branch (models/universal_joint/README.md)."""
     import mpmath
 
     with mpmath.workdps(40):

@@ -18,7 +18,7 @@ def fmu_inertia(paper_inertia):
 
 
 def physics_md_inertia(paper_inertia):
-    """docs/UniversalJoint/README.md's reading: the paper's index k taken as the FMU's axis k."""
+    """models/universal_joint/README.md's reading: the paper's index k taken as the FMU's axis k."""
     return {f"crosspiece_inertia_{k}": value for k, value in enumerate(paper_inertia, start=1)}
 
 

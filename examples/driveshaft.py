@@ -3,7 +3,7 @@
 Joint 1 turns at a prescribed input speed; joint 2's input is the intermediate
 shaft, i.e. joint 1's output speed and acceleration. With equal bend angles and
 the intermediate shaft's yokes in one plane (joint 2's yoke_phase = 90 deg when
-joint 1's is 0, docs/UniversalJoint/README.md) the output turns exactly with the input.
+joint 1's is 0, models/universal_joint/README.md) the output turns exactly with the input.
 
 Arrangements. Joint 2's frame has z' along joint 1's output shaft
 z2 = (sin b, 0, cos b) and the same hinge axis y, so x' = (cos b, 0, -sin b).

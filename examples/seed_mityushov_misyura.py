@@ -6,7 +6,7 @@ two input revolutions; one FMU run per inertia distribution.
 The paper's frame is not the FMU's. Its quaternion (4), with the roll law (3)
 gamma = pi/2 - atan(tan(alpha) cos(theta)), puts its crosspiece axis 1 along the
 input-yoke pin (opposite sense), axis 2 along the cross normal and axis 3 along
-the output-yoke pin; the FMU (docs/UniversalJoint/README.md) has 1 = input pin, 2 = output pin,
+the output-yoke pin; the FMU (models/universal_joint/README.md) has 1 = input pin, 2 = output pin,
 3 = normal. Numerically, the paper's Omega = (-Omega1, Omega3, Omega2) of the
 FMU, and its equations (5) hold only in that order. So this script gives the
 FMU the paper's inertias on the paper's axes (I1 -> input pin, I2 -> normal,
@@ -14,7 +14,7 @@ I3 -> output pin) and plots every vector in the paper's frame, the quaternion
 as well (a constant change of fixed and body frames of the FMU's quaternion).
 The paper's M3 = 0 for I1 = I3 = I2/2 is then the FMU's output-pin torque
 vanishing for a flat cross (normal moment = sum of the pin moments).
-docs/UniversalJoint/README.md reads the paper's indices as the FMU's axes instead (its M3 = 0
+models/universal_joint/README.md reads the paper's indices as the FMU's axes instead (its M3 = 0
 when I2 = I1 + I3, equally true of the FMU); the energy figure shows that
 reading beside the paper's for comparison.
 

@@ -4,7 +4,7 @@ from fmpy.validation import validate_fmu
 
 from cardan_joint.models.universal_joint import variables as table
 
-# docs/UniversalJoint/README.md's interface table, in its order.
+# models/universal_joint/README.md's interface table, in its order.
 PHYSICS_NAMES = {
     "input": (
         "input_speed input_acceleration bend_angle bend_angle_rate "

@@ -1,4 +1,4 @@
-"""The model page's identities (docs/UniversalJoint/README.md) as properties over random
+"""The model page's identities (models/universal_joint/README.md) as properties over random
 bend angles, phases and rates, and scalar/array agreement of the vectorized physics."""
 
 import math

@@ -43,9 +43,9 @@ class Variable:
 
 
 class VariableTable:
-    """One model's variables with the lookups every wrapper needs. The module
-    `models/universal_joint/variables.py` is itself the UniversalJoint's table
-    (same attribute names); other models build one (e.g. `units.table_of`)."""
+    """One model's variables with the lookups every wrapper needs. A model's
+    `variables.py` module may itself be its table (the same attribute names);
+    others build one (e.g. `units.table_of`)."""
 
     def __init__(self, variables, units: Mapping[str, Unit]):
         """`units`: the unit definitions (name -> Unit) its description declares."""
@@ -136,3 +136,20 @@ def fmi3_groups(variables: tuple, array_stems: tuple = ()) -> tuple:
         for v in variables
         if v.name in arrays or v.name not in in_array
     )
+
+
+def array_table(groups) -> str:
+    """A model page's table of its FMI 3 arrays (`groups`: its `fmi3_variables()`)
+    and the FMI 2 variables they hold; empty if it has none."""
+    arrays = [group for group in groups if len(group.rows) > 1]
+    if not arrays:
+        return ""
+    rows = [
+        "| FMI 3 array | FMI 2 variables (elements, in order) | unit (display) |",
+        "|---|---|---|",
+    ]
+    for group in arrays:
+        unit = group.unit + (f" ({group.display_unit})" if group.display_unit else "")
+        elements = ", ".join(f"`{row.name}`" for row in group.rows)
+        rows.append(f"| `{group.name}[{len(group.rows)}]` | {elements} | {unit} |")
+    return "\n".join(rows) + "\n"

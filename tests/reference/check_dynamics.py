@@ -144,7 +144,7 @@ def section_d_multibody(check, horizon=1.0):
 
 
 def section_e_contract(check):
-    """The references against docs/UniversalJoint/README.md's own closed forms / numbers.
+    """The references against models/universal_joint/README.md's own closed forms / numbers.
 
     (Contract cross-check; the references do not use these formulas.)
     """

@@ -1,7 +1,7 @@
 """Independent high-precision reference for the Cardan (Hooke) joint.
 
 Everything here is derived from the *geometric construction* of the joint
-(docs/UniversalJoint/README.md, "Frames and angles"), never from the closed forms for
+(models/universal_joint/README.md, "Frames and angles"), never from the closed forms for
 omega2, a2, Omega or Delta.  Derivatives are taken numerically with
 ``mpmath.diff`` at high working precision, and the torque path is solved as a
 linear system with ``mpmath.lu_solve``.

@@ -1,6 +1,6 @@
 """Forward-dynamics rigid multibody reference of a Cardan joint (constant bend).
 
-Independent of docs/UniversalJoint/README.md's torque-path formulas and of the production code.
+Independent of models/universal_joint/README.md's torque-path formulas and of the production code.
 Three rigid bodies, Newton-Euler equations about the (fixed) joint centre O,
 constraint reactions as unknowns.
 

@@ -1,4 +1,4 @@
-"""Independent high-precision reference for the propshaft (docs/Propshaft/README.md).
+"""Independent high-precision reference for the propshaft (models/propshaft/README.md).
 
 Built from the geometric contract only, never from the single joint's closed
 forms: pin vectors, Rodrigues rotations and cross products in 3-D at mpmath

@@ -19,13 +19,14 @@ import sys
 import tempfile
 from pathlib import Path
 
+from .. import DEFAULT_MODEL
 from ..models import Model, StartValueError
 from ..models import model as find_model
 from .archive import ArchiveError, normalise
 
 PACKAGE_DIR = Path(__file__).resolve().parent.parent
 # What an FMU needs at run time: the shared layers, every model folder (a model
-# may build on another's, as the CompliantPropshaft on the Propshaft) and the
+# may build on another's) and the
 # slaves. The rest of the package (host, build, the native loader's sources)
 # runs in the host only.
 RUNTIME = (
@@ -40,7 +41,6 @@ RUNTIME = (
 # Host-only parts of the runtime's folders.
 _HOST_ONLY = ("native", "__pycache__")
 SCRIPTS = {2: PACKAGE_DIR / "fmi" / "script2.py", 3: PACKAGE_DIR / "fmi" / "script3.py"}
-DEFAULT_MODEL = "UniversalJoint"
 FMI_VERSIONS = (2, 3)
 
 

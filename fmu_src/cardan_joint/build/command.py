@@ -10,10 +10,24 @@ from ..names import UsageError, parse_assignments
 from .builder import DEFAULT_MODEL, FMI_VERSIONS, BuildError, build
 
 
+def _add_setting(parser, setting: str, specs) -> None:
+    """`--<setting>`, offered for the models whose spec declares the setting."""
+    defaults = ", ".join(f"{s.key} {s.default_settings[setting]}" for s in specs)
+    helps = {s.setting_help.get(setting) for s in specs} - {None}
+    parser.add_argument(
+        f"--{setting}",
+        type=type(specs[0].default_settings[setting]),
+        default=None,
+        metavar=setting.upper(),
+        help=f"{'; '.join(sorted(helps)) or setting} (default: {defaults})",
+    )
+
+
 def main(argv=None, prog=None) -> int:
     parser = argparse.ArgumentParser(
         prog=prog,
-        description="Build and validate an FMU of this project (default: the UniversalJoint FMU).",
+        description=f"Build and validate an FMU of this project (default: the {DEFAULT_MODEL} "
+        "FMU).",
     )
     parser.add_argument(
         "--model",
@@ -40,36 +54,39 @@ def main(argv=None, prog=None) -> int:
         help="start value of an input or parameter in SI units (rad, rad/s, N.m, kg.m2), "
         "e.g. --set bend_angle=0.2",
     )
-    parser.add_argument(
-        "--joints",
-        type=int,
-        default=None,
-        metavar="N",
-        help="Propshaft only: number of joints, 2 (Propshaft, the default), "
-        "3 or 4 (Propshaft3, Propshaft4)",
-    )
+    models = discover()
+    for setting in sorted({name for spec in models.values() for name in spec.default_settings}):
+        _add_setting(
+            parser, setting, [spec for spec in models.values() if setting in spec.default_settings]
+        )
     parser.add_argument(
         "--cross-check",
         action="store_true",
-        help="also write DEST/cross-check/fmus/2.0/cs/linux64/... with the "
-        "reference run (fmi-cross-check layout; default model only)",
+        help="also write DEST/cross-check/fmus/2.0/cs/linux64/... with the model's "
+        "reference run (fmi-cross-check layout; a model whose spec declares one)",
     )
     args = parser.parse_args(argv)
+    spec = models[args.model]
     settings = {}
-    if args.joints is not None:
-        if "joints" not in discover()[args.model].default_settings:
-            parser.error(f"--joints does not apply to {args.model}")
-        settings["joints"] = args.joints
+    for setting in sorted({name for s in models.values() for name in s.default_settings}):
+        value = getattr(args, setting)
+        if value is None:
+            continue
+        if setting not in spec.default_settings:
+            parser.error(f"--{setting} does not apply to {args.model}")
+        settings[setting] = value
     if args.cross_check and (
-        args.model != DEFAULT_MODEL
+        spec.reference is None
         or args.fmi_version != 2
-        or args.name not in (None, DEFAULT_MODEL)
+        or args.name not in (None, args.model)
         or args.set
+        or settings
     ):
         parser.error(
-            "--cross-check takes the default model: its reference run assumes the "
-            "default FMI 2 UniversalJoint with its start values (no --model, "
-            "--fmi-version, --name or --set)"
+            "--cross-check takes a model with a reference run "
+            f"({', '.join(s.key for s in models.values() if s.reference)}), built for "
+            "FMI 2 with its own name, start values and settings (no --fmi-version, "
+            "--name, --set or settings): the reference run assumes them"
         )
     try:
         start_values = parse_assignments(args.set)
@@ -91,7 +108,7 @@ def main(argv=None, prog=None) -> int:
     if args.cross_check:
         from .cross_check import write_cross_check
 
-        print(f"wrote {write_cross_check(Path(args.dest) / 'cross-check', fmu)}")
+        print(f"wrote {write_cross_check(Path(args.dest) / 'cross-check', fmu, args.model)}")
     return 0
 
 

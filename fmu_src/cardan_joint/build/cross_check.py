@@ -1,20 +1,19 @@
-"""The UniversalJoint's reference run, in the fmi-cross-check repository layout.
+"""Reference runs: every model's whose spec declares one (`Model.reference`),
+computed by the physics and laid out as the fmi-cross-check repository has them.
 
-    fmus/2.0/cs/linux64/cardan_joint/<version>/UniversalJoint/
-        UniversalJoint.fmu
-        UniversalJoint_in.csv     inputs, linearly interpolated (all six inputs)
-        UniversalJoint_ref.opt    StartTime, StopTime, StepSize, RelTol
-        UniversalJoint_ref.csv    the reference outputs (time + 9 outputs)
-        README.md                 docs/UniversalJoint/README.md
+    fmus/2.0/cs/linux64/cardan_joint/<version>/<Model>/
+        <Model>.fmu
+        <Model>_in.csv     inputs, linearly interpolated (all the model's inputs)
+        <Model>_ref.opt    StartTime, StopTime, StepSize, RelTol
+        <Model>_ref.csv    the reference outputs (time + at most 9 outputs)
+        README.md          the model's page (models/<name>/README.md)
 
-The reference is computed by the physics package (`CardanJoint` stepped as a
+The reference is computed by the physics package (the model stepped as a
 co-simulation master steps the FMU), not by the FMU: a tool that reproduces it
 through the FMU checks the FMI plumbing against the equations. The same three
-files are kept in docs/UniversalJoint/ (tests/test_cross_check.py checks that
-they are current; `python -m cardan_joint.build.cross_check docs/UniversalJoint`
-rewrites them). The CompliantJoint and the InertiaLoad have reference files of
-their own in docs/<model>/ (`CASES`; `python -m cardan_joint.build.cross_check
---model CompliantJoint docs/CompliantJoint`).
+files are kept in the model's folder (the tests check that they are current and
+that the FMU reproduces them); `python -m cardan_joint.build.cross_check --model
+<Model>` rewrites them there.
 """
 
 from __future__ import annotations
@@ -22,108 +21,36 @@ from __future__ import annotations
 import argparse
 import shutil
 import sys
-from collections.abc import Callable
-from dataclasses import dataclass
 from importlib.metadata import PackageNotFoundError, version
 from pathlib import Path
-from typing import Any
 
 import numpy as np
 
-MODEL = "UniversalJoint"
+from .. import DEFAULT_MODEL
+from ..models import Model, ReferenceRun, discover
+
 TOOL_ID = "cardan_joint"
-DOCS = Path(__file__).resolve().parents[3] / "docs" / MODEL
-
-OPTIONS = {"StartTime": 0.0, "StopTime": 1.0, "StepSize": 1e-3, "RelTol": 1e-6}
-# Inputs linear in time, their rates given beside them, so that every step is
-# exact: the shaft runs up 20 -> 40 rad/s while the joint bends 0.2 -> 0.6 rad
-# against a constant load. Two rows: FMI tools interpolate linearly between them.
-INPUT_ROWS = (
-    # time, input_speed, input_acceleration, bend_angle, bend_angle_rate,
-    # bend_angle_acceleration, load_torque
-    (0.0, 20.0, 20.0, 0.2, 0.4, 0.0, 100.0),
-    (1.0, 40.0, 20.0, 0.6, 0.4, 0.0, 100.0),
-)
-# At most 10 columns with the time (the cross-check rules' recommendation).
-REFERENCE_OUTPUTS = (
-    "output_angle",
-    "output_speed",
-    "output_acceleration",
-    "cardan_error",
-    "input_torque",
-    "input_yoke_moment",
-    "output_yoke_moment",
-    "crosspiece_kinetic_energy",
-    "crosspiece_quaternion_0",
-)
 
 
-@dataclass(frozen=True)
-class Case:
-    """One model's reference run: its physics model (made at its table's start
-    values), inputs as rows (time first, then the table's inputs) and outputs."""
-
-    model: str
-    make: Callable[[], Any]
-    input_rows: tuple
-    outputs: tuple
+def with_reference() -> dict[str, Model]:
+    """The models whose spec declares a reference run, by key."""
+    return {key: spec for key, spec in discover().items() if spec.reference}
 
 
-def _joint():
-    from ..models.universal_joint.model import CardanJoint
-
-    return CardanJoint()
-
-
-def _compliant_joint():
-    from ..models.compliant_joint.model import CompliantJoint
-
-    return CompliantJoint()
+def _run(model: str) -> tuple[Model, ReferenceRun]:
+    spec = discover()[model]
+    if spec.reference is None:
+        raise ValueError(
+            f"{model} declares no reference run (its spec's `reference`): "
+            f"models with one: {', '.join(with_reference())}"
+        )
+    return spec, spec.reference
 
 
-def _inertia_load():
-    from ..models.inertia_load.model import InertiaLoad
-
-    return InertiaLoad()
-
-
-CASES = {
-    case.model: case
-    for case in (
-        Case(MODEL, _joint, INPUT_ROWS, REFERENCE_OUTPUTS),
-        # The input shaft as the UniversalJoint's; the output shaft a little slower
-        # and faster in turn, so the spring winds up and back.
-        Case(
-            "CompliantJoint",
-            _compliant_joint,
-            (
-                # time, input_speed, input_acceleration, output_speed,
-                # output_acceleration, bend_angle, bend_angle_rate, bend_angle_acceleration
-                (0.0, 20.0, 20.0, 19.0, 22.0, 0.2, 0.4, 0.0),
-                (1.0, 40.0, 20.0, 41.0, 22.0, 0.6, 0.4, 0.0),
-            ),
-            (
-                "output_angle",
-                "twist_angle",
-                "output_torque",
-                "kinematic_output_speed",
-                "input_torque",
-                "input_yoke_moment",
-                "output_yoke_moment",
-                "spring_energy",
-                "crosspiece_kinetic_energy",
-            ),
-        ),
-        # The drive torque ramps through the constant torque (20 N.m): the load
-        # first turns backwards, then runs up.
-        Case(
-            "InertiaLoad",
-            _inertia_load,
-            ((0.0, 0.0), (1.0, 60.0)),
-            ("speed", "acceleration", "angle"),
-        ),
-    )
-}
+def reference_files(model: str = DEFAULT_MODEL) -> list[Path]:
+    """The model's committed reference files: _in.csv, _ref.opt, _ref.csv."""
+    folder = discover()[model].path
+    return [folder / f"{model}{suffix}" for suffix in ("_in.csv", "_ref.opt", "_ref.csv")]
 
 
 def tool_version() -> str:
@@ -133,70 +60,66 @@ def tool_version() -> str:
         return "0+unknown"
 
 
-def inputs(model: str = MODEL) -> np.ndarray:
+def inputs(model: str = DEFAULT_MODEL) -> np.ndarray:
     """The input signals as a structured array (FMPy's `input` format)."""
-    names = CASES[model].make().table.INPUTS
-    rows = list(CASES[model].input_rows)
-    return np.array(rows, dtype=[("time", float)] + [(n, float) for n in names])
+    spec, run = _run(model)
+    names = spec.table().INPUTS
+    return np.array(list(run.input_rows), dtype=[("time", float)] + [(n, float) for n in names])
 
 
-def reference(model: str = MODEL) -> np.ndarray:
+def reference(model: str = DEFAULT_MODEL) -> np.ndarray:
     """The reference outputs at every communication point, by the physics package."""
-    case = CASES[model]
+    spec, run = _run(model)
     signals = inputs(model)
-    start, stop, step = (OPTIONS[k] for k in ("StartTime", "StopTime", "StepSize"))
+    start, stop, step = (run.options[k] for k in ("StartTime", "StopTime", "StepSize"))
     steps = round((stop - start) / step)
     times = start + step * np.arange(steps + 1)
-    joint = case.make()
-    names, outputs = joint.table.INPUTS, joint.table.OUTPUTS
+    physics = spec.make(spec.default_settings)
+    names, outputs = physics.table.INPUTS, physics.table.OUTPUTS
 
     def apply_inputs(time):
         for name in names:
-            setattr(joint, name, float(np.interp(time, signals["time"], signals[name])))
+            setattr(physics, name, float(np.interp(time, signals["time"], signals[name])))
 
     # As a master records: a sample at each communication point before the
     # inputs of the next step are set (in between, the FMU carries its inputs along).
     apply_inputs(start)
-    joint.start(start)  # after the inputs: a compliant joint starts from the bend angle
+    physics.start(start)  # after the inputs: a compliant joint starts from the bend angle
     rows = []
     for k, time in enumerate(times):
-        values = dict(zip(outputs, joint.outputs()))
-        rows.append((time, *(values[n] for n in case.outputs)))
+        values = dict(zip(outputs, physics.outputs()))
+        rows.append((time, *(values[n] for n in run.outputs)))
         if k == steps:
             break
         apply_inputs(time)
-        problem = joint.step(step)
+        problem = physics.step(step)
         if problem:
             raise RuntimeError(f"the reference run was refused at t = {time}: {problem}")
-    return np.array(rows, dtype=[("time", float)] + [(n, float) for n in case.outputs])
+    return np.array(rows, dtype=[("time", float)] + [(n, float) for n in run.outputs])
 
 
-def write_reference_files(folder: str | Path, model: str = MODEL) -> list[Path]:
+def write_reference_files(folder: str | Path, model: str = DEFAULT_MODEL) -> list[Path]:
     """Write <model>_in.csv, <model>_ref.opt and <model>_ref.csv into `folder`."""
     from ..results import write_csv
 
+    _, run = _run(model)
     folder = Path(folder)
     folder.mkdir(parents=True, exist_ok=True)
-    paths = [folder / f"{model}_in.csv", folder / f"{model}_ref.opt", folder / f"{model}_ref.csv"]
+    paths = [folder / path.name for path in reference_files(model)]
     write_csv(inputs(model), paths[0])
-    paths[1].write_text("".join(f"{key}, {value!r}\n" for key, value in OPTIONS.items()))
+    paths[1].write_text("".join(f"{key}, {value!r}\n" for key, value in run.options.items()))
     write_csv(reference(model), paths[2])
     return paths
 
 
-def write_cross_check(dest: str | Path, fmu_path: str | Path) -> Path:
+def write_cross_check(dest: str | Path, fmu_path: str | Path, model: str = DEFAULT_MODEL) -> Path:
     """Write the model's cross-check folder under `dest`; return that folder."""
-    readme = DOCS / "README.md"
-    if not readme.is_file():
-        raise FileNotFoundError(
-            f"{readme} not found: the cross-check folder is written from "
-            f"a source checkout of the repository"
-        )
-    folder = Path(dest) / "fmus" / "2.0" / "cs" / "linux64" / TOOL_ID / tool_version() / MODEL
+    spec, _ = _run(model)
+    folder = Path(dest) / "fmus" / "2.0" / "cs" / "linux64" / TOOL_ID / tool_version() / model
     folder.mkdir(parents=True, exist_ok=True)
-    shutil.copyfile(fmu_path, folder / f"{MODEL}.fmu")
-    shutil.copyfile(readme, folder / "README.md")
-    write_reference_files(folder)
+    shutil.copyfile(fmu_path, folder / f"{model}.fmu")
+    shutil.copyfile(spec.page, folder / "README.md")
+    write_reference_files(folder, model)
     return folder
 
 
@@ -204,10 +127,14 @@ def main(argv=None) -> int:
     parser = argparse.ArgumentParser(
         description="Rewrite a model's reference files (_in.csv, _ref.opt, _ref.csv)."
     )
-    parser.add_argument("--model", default=MODEL, choices=sorted(CASES), help="the model")
-    parser.add_argument("folder", nargs="?", help="where to write them (default: docs/<model>/)")
+    parser.add_argument(
+        "--model", default=DEFAULT_MODEL, choices=sorted(with_reference()), help="the model"
+    )
+    parser.add_argument(
+        "folder", nargs="?", help="where to write them (default: the model's folder)"
+    )
     args = parser.parse_args(argv)
-    folder = args.folder or DOCS.parent / args.model
+    folder = args.folder or discover()[args.model].path
     for path in write_reference_files(folder, args.model):
         print(f"wrote {path}")
     return 0

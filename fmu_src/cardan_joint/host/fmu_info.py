@@ -21,17 +21,14 @@ class MissingFMUError(FileNotFoundError):
 
 def build_command(fmu: str | Path) -> str:
     """The `build_fmu.py` command that writes `fmu` (its model, FMI version,
-    joints and folder from the file name and place)."""
+    settings and folder from the file name and place)."""
     from ..models import MODELS
 
     path = Path(fmu)
     fmi3 = path.parent.name == "fmi3"
     dest = path.parent.parent if fmi3 else path.parent
     for key, spec in MODELS.items():
-        variants: list[dict[str, int]] = [{}] + [
-            {"joints": joints} for joints in range(2, 9) if "joints" in spec.default_settings
-        ]
-        for settings in variants:
+        for settings in spec.variants():
             if spec.default_name({**spec.default_settings, **settings}) == path.stem:
                 flags = [f"--model {key}"]
                 flags += [
@@ -55,11 +52,11 @@ def require_fmu(fmu: str | Path) -> Path:
 
 
 def array_columns(name: str, size: int) -> tuple[str, ...]:
-    """The FMI 2 columns of an FMI 3 array: the joint's documented names where
-    it has them (its FMI 2 FMU has the same columns), else name_1, name_2, ..."""
-    from ..models.universal_joint.variables import ARRAY_ROWS
+    """The FMI 2 columns of an FMI 3 array: the FMI 2 variables a model's table
+    has for it (its FMI 2 FMU has the same columns), else name_1, name_2, ..."""
+    from ..models import array_rows
 
-    rows = tuple(row.name for row in ARRAY_ROWS.get(name, ()))
+    rows = array_rows().get(name, ())
     return rows if len(rows) == size else tuple(f"{name}_{i + 1}" for i in range(size))
 
 

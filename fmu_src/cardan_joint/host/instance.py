@@ -6,12 +6,12 @@ the FMU's own reason, or returning the status), FMU states, an optional log
 sink, terminate/free on leaving `with`. It knows no model: names come from
 the FMU's model description.
 
-    with FmuInstance.open("dist/UniversalJoint.fmu", start_values={...}) as joint:
-        joint.step(1e-3)
-        joint.get("output_speed")
+    with FmuInstance.open("dist/<Model>.fmu", start_values={...}) as model:
+        model.step(1e-3)
+        model.get("output_speed")
 
-    with ExtractedFMU("dist/UniversalJoint.fmu") as fmu:      # unzipped once
-        with fmu.instance("joint1") as one, fmu.instance("joint2") as two: ...
+    with ExtractedFMU("dist/<Model>.fmu") as fmu:      # unzipped once
+        with fmu.instance("first") as one, fmu.instance("second") as two: ...
 """
 
 from __future__ import annotations

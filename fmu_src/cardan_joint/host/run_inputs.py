@@ -100,7 +100,7 @@ def complete_inputs(inputs, starts: dict, stop_time: float, step: float) -> np.n
     input of the FMU (`starts`: input name -> start value), each missing one
     following what the FMU does with it left unset: held at its start value,
     or carried along its rate."""
-    # Only the carried inputs this FMU has (the propshaft has no bend angle).
+    # Only the carried inputs this FMU has (not every model has a bend angle).
     rates = {n: r for n, r in RATES.items() if n in starts and set(r) <= set(starts)}
     _refuse_contradictions(inputs, rates, starts)
     names = tuple(name for name in starts if name not in rates) + tuple(rates)

@@ -20,12 +20,13 @@ from typing import TYPE_CHECKING, Any
 
 import numpy as np
 
+from .. import DEFAULT_MODEL
 from .fmu_info import FmuInfo, array_columns
 
 if TYPE_CHECKING:  # imported in first_refusal at run time, where it is needed
     from ..physics.refusal import Refusal
 
-DEFAULT_FMU = Path("dist") / "UniversalJoint.fmu"
+DEFAULT_FMU = Path("dist") / f"{DEFAULT_MODEL}.fmu"
 # (status name, category, text) of one FMU log message.
 Message = tuple[str, str, str]
 _STATUS = {0: "ok", 1: "warning", 2: "discard", 3: "error", 4: "fatal", 5: "pending"}

@@ -7,7 +7,7 @@ of this project apply: OSP libcosim ignores system-level bindings, and FMPy's
 `simulate_ssp` applies no binding at all but takes a parameter set with
 hierarchical names, which `fmpy_parameter_set` builds from the bindings.
 The same values are also bound once at system level, as one parameter set
-named after the system with hierarchical names ("Motor.stall_torque"): a host
+named after the system with hierarchical names ("<component>.<parameter>"): a host
 that applies one named parameter set at a time still gets every component's.
 `check_ssp` turns a missing or broken archive into an `SSPError` naming it.
 """
@@ -186,7 +186,7 @@ def check_ssp(path) -> None:
 
 def fmpy_parameter_set(ssp_path):
     """The component-level bindings of `ssp_path` as one FMPy ParameterSet with
-    hierarchical names ("Motor.stall_torque"), the form `simulate_ssp` applies."""
+    hierarchical names ("<component>.<parameter>"), the form `simulate_ssp` applies."""
     from fmpy.ssp.ssd import Parameter, ParameterSet, find_components, read_ssd
 
     check_ssp(ssp_path)

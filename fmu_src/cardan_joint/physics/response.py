@@ -1,4 +1,4 @@
-"""Every closed form of the joint (docs/UniversalJoint/README.md), evaluated in one pass.
+"""Every closed form of the joint (models/universal_joint/README.md), evaluated in one pass.
 
 This one function is the single home of the equations: the FMU calls it once
 per step on floats (through `math`), design sweeps call it on numpy arrays, and
@@ -33,7 +33,8 @@ _new_tuple = tuple.__new__  # skips NamedTuple's Python-level __new__ (once per 
 
 
 class JointResponse(NamedTuple):
-    """Field names are the FMU's output names (docs/UniversalJoint/README.md), plus three extras."""
+    """Field names are the FMU's output names (models/universal_joint/README.md),
+    plus three extras."""
 
     cardan_error: Any
     speed_ratio: Any

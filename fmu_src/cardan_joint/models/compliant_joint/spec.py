@@ -1,6 +1,6 @@
 """The CompliantJoint FMU: the exact joint with a torsional spring-damper at its output."""
 
-from .. import Model, stepped
+from .. import Model, ReferenceRun, stepped
 from .model import CompliantJoint
 from .variables import COMPLIANT_JOINT
 
@@ -14,4 +14,25 @@ MODEL = Model(
     make=stepped(CompliantJoint),
     live_outputs=("input_angle", "output_angle"),
     owner="joint",
+    # The input shaft as the UniversalJoint's; the output shaft a little slower
+    # and faster in turn, so the spring winds up and back.
+    reference=ReferenceRun(
+        input_rows=(
+            # time, input_speed, input_acceleration, output_speed,
+            # output_acceleration, bend_angle, bend_angle_rate, bend_angle_acceleration
+            (0.0, 20.0, 20.0, 19.0, 22.0, 0.2, 0.4, 0.0),
+            (1.0, 40.0, 20.0, 41.0, 22.0, 0.6, 0.4, 0.0),
+        ),
+        outputs=(
+            "output_angle",
+            "twist_angle",
+            "output_torque",
+            "kinematic_output_speed",
+            "input_torque",
+            "input_yoke_moment",
+            "output_yoke_moment",
+            "spring_energy",
+            "crosspiece_kinetic_energy",
+        ),
+    ),
 )

@@ -2,6 +2,7 @@
 
 from .. import Model
 from ..propshaft.spec import check_joints, joints_namer
+from ..propshaft.variables import JOINTS
 from .model import CompliantPropshaft
 from .variables import compliant_propshaft_table
 
@@ -16,6 +17,8 @@ MODEL = Model(
     live_outputs=("input_angle", "output_angle"),
     owner="joint",
     default_settings={"joints": 2},
+    setting_choices={"joints": JOINTS},
+    setting_help={"joints": "number of joints"},
     check_settings=check_joints("CompliantPropshaft"),
     name_for=joints_namer("CompliantPropshaft"),
     warns=True,

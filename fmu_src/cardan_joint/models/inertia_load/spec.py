@@ -1,6 +1,6 @@
 """The InertiaLoad FMU: a driven machine whose speed and angle are its state."""
 
-from .. import Model, stepped
+from .. import Model, ReferenceRun, stepped
 from .model import InertiaLoad
 from .variables import INERTIA_LOAD
 
@@ -13,4 +13,10 @@ MODEL = Model(
     table_for=lambda settings: INERTIA_LOAD,
     make=stepped(InertiaLoad),
     owner="load",
+    # The drive torque ramps through the constant torque (20 N.m): the load
+    # first turns backwards, then runs up.
+    reference=ReferenceRun(
+        input_rows=((0.0, 0.0), (1.0, 60.0)),  # time, drive_torque
+        outputs=("speed", "acceleration", "angle"),
+    ),
 )

@@ -1,4 +1,4 @@
-"""Several Cardan joints in 3-D: a vehicle propshaft (docs/Propshaft/README.md).
+"""Several Cardan joints in 3-D: a vehicle propshaft (models/propshaft/README.md).
 
 `geometry` turns measured side-view and top-view shaft angles into each joint's
 working angle and frame; `chain` evaluates the single joint's closed forms joint

@@ -1,6 +1,6 @@
 """The propshaft as a chain of single Cardan joints, evaluated in closed form.
 
-Shaft angles gamma_k = gamma_0 + o_k (docs/Propshaft/README.md): with the pin
+Shaft angles gamma_k = gamma_0 + o_k (models/propshaft/README.md): with the pin
 of joint k at psi_k = gamma_0 + o_{k-1} + (k-1) pi/2 + phi_{k-1} - b_k (o_0 = 0,
 phi_0 = 0), o_k = o_{k-1} + phi_{k-1} + c_k + Delta(psi_k, beta_k), Delta the
 single joint's cardan error. Each joint's output speed and acceleration are the

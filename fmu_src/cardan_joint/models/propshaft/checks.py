@@ -1,6 +1,6 @@
 """The driveline industry's angle checks: warnings, never refusals.
 
-Sources (docs/Propshaft/README.md, "Angle checks", quotes them):
+Sources (models/propshaft/README.md, "Angle checks", quotes them):
 - Dana Spicer, "Driveline Operating Angle Calculator", Basic rules 1-3 and the
   table "Driveshaft RPM / Max. Operating Angle"
   (https://spicerparts.com/calculators/driveline-operating-angle-calculator):

@@ -1,4 +1,4 @@
-"""The propshaft's constant geometry (docs/Propshaft/README.md, "Geometry").
+"""The propshaft's constant geometry (models/propshaft/README.md, "Geometry").
 
 Frame: x along the nominal driveline, z up, y = z x x. Shaft k points along
 d_k = unit(1, tan(top_k), tan(side_k)); e_k is the unit vector normal to d_k

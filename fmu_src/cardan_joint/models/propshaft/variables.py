@@ -1,4 +1,4 @@
-"""The Propshaft FMU's variable table, for N joints (docs/Propshaft/README.md).
+"""The Propshaft FMU's variable table, for N joints (models/propshaft/README.md).
 
 Same style and units as the joint's table (`variables`): the inputs are the
 UniversalJoint's own rows, so a master connects either FMU the same way.

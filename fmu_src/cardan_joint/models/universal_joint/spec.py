@@ -1,6 +1,6 @@
 """The UniversalJoint FMU: one exact Cardan joint."""
 
-from .. import Model, stepped
+from .. import Model, ReferenceRun, stepped
 from . import variables
 from .model import CardanJoint
 
@@ -14,4 +14,26 @@ MODEL = Model(
     make=stepped(CardanJoint),
     live_outputs=("input_angle",),
     owner="joint",
+    # Inputs linear in time, their rates given beside them, so that every step is
+    # exact: the shaft runs up 20 -> 40 rad/s while the joint bends 0.2 -> 0.6 rad
+    # against a constant load. Two rows: FMI tools interpolate linearly between them.
+    reference=ReferenceRun(
+        input_rows=(
+            # time, input_speed, input_acceleration, bend_angle, bend_angle_rate,
+            # bend_angle_acceleration, load_torque
+            (0.0, 20.0, 20.0, 0.2, 0.4, 0.0, 100.0),
+            (1.0, 40.0, 20.0, 0.6, 0.4, 0.0, 100.0),
+        ),
+        outputs=(
+            "output_angle",
+            "output_speed",
+            "output_acceleration",
+            "cardan_error",
+            "input_torque",
+            "input_yoke_moment",
+            "output_yoke_moment",
+            "crosspiece_kinetic_energy",
+            "crosspiece_quaternion_0",
+        ),
+    ),
 )

@@ -12,7 +12,15 @@ import math
 
 from ...units import DEG_TO_RAD
 from ...units import JOINT_UNITS as UNITS
-from ...variable_schema import _IN, _OUT, _PAR, Variable, VariableTable, fmi3_groups
+from ...variable_schema import (
+    _IN,
+    _OUT,
+    _PAR,
+    Variable,
+    VariableTable,
+    array_table,
+    fmi3_groups,
+)
 
 # Inputs each output depends on directly (FMI ModelStructure "dependencies").
 # Declaring them lets a master see that speed flows downstream without the load,
@@ -139,13 +147,4 @@ def markdown_table() -> str:
 
 def fmi3_array_table() -> str:
     """The README's table of the FMI 3 arrays and the FMI 2 variables they hold."""
-    rows = [
-        "| FMI 3 array | FMI 2 variables (elements, in order) | unit (display) |",
-        "|---|---|---|",
-    ]
-    for group in fmi3_variables():
-        if len(group.rows) > 1:
-            unit = group.unit + (f" ({group.display_unit})" if group.display_unit else "")
-            elements = ", ".join(f"`{row.name}`" for row in group.rows)
-            rows.append(f"| `{group.name}[{len(group.rows)}]` | {elements} | {unit} |")
-    return "\n".join(rows) + "\n"
+    return array_table(fmi3_variables())
