@@ -98,8 +98,25 @@ def c_host3(tmp_path_factory) -> Path:
 
 
 @pytest.fixture(scope="session")
-def fmu_path(tmp_path_factory) -> Path:
-    return build_fmu(tmp_path_factory.mktemp("fmu"))
+def model_fmu(tmp_path_factory):
+    """`model_fmu(key)`: dist/<key>.fmu as `build_fmu.py --model <key>` writes it,
+    built once per session for every test that asks for that model."""
+    built: dict[str, Path] = {}
+
+    def fmu(key: str) -> Path:
+        if key not in built:
+            built[key] = build_fmu(tmp_path_factory.mktemp(key), "--model", key)
+        return built[key]
+
+    return fmu
+
+
+@pytest.fixture(scope="session")
+def fmu_path(model_fmu) -> Path:
+    """The default model's FMU (`build_fmu.py` with no --model)."""
+    from cardan_joint import DEFAULT_MODEL
+
+    return model_fmu(DEFAULT_MODEL)
 
 
 @pytest.fixture(scope="session")
@@ -119,9 +136,9 @@ def model_description(fmu_path):
 
 
 @pytest.fixture(scope="session")
-def propshaft_fmu_path(tmp_path_factory) -> Path:
+def propshaft_fmu_path(model_fmu) -> Path:
     """dist/Propshaft.fmu as `build_fmu.py --model Propshaft` writes it."""
-    return build_fmu(tmp_path_factory.mktemp("propshaft"), "--model", "Propshaft")
+    return model_fmu("Propshaft")
 
 
 @pytest.fixture(scope="session")
@@ -156,18 +173,18 @@ def fmi3_description(fmi3_unzipped):
 
 
 @pytest.fixture(scope="session")
-def inertia_load_fmu_path(tmp_path_factory) -> Path:
+def inertia_load_fmu_path(model_fmu) -> Path:
     """dist/InertiaLoad.fmu as `build_fmu.py --model InertiaLoad` writes it."""
-    return build_fmu(tmp_path_factory.mktemp("inertia_load"), "--model", "InertiaLoad")
+    return model_fmu("InertiaLoad")
 
 
 @pytest.fixture(scope="session")
-def compliant_joint_fmu_path(tmp_path_factory) -> Path:
+def compliant_joint_fmu_path(model_fmu) -> Path:
     """dist/CompliantJoint.fmu as `build_fmu.py --model CompliantJoint` writes it."""
-    return build_fmu(tmp_path_factory.mktemp("compliant_joint"), "--model", "CompliantJoint")
+    return model_fmu("CompliantJoint")
 
 
 @pytest.fixture(scope="session")
-def motor_fmu_path(tmp_path_factory) -> Path:
+def motor_fmu_path(model_fmu) -> Path:
     """dist/Motor.fmu as `build_fmu.py --model Motor` writes it."""
-    return build_fmu(tmp_path_factory.mktemp("motor"), "--model", "Motor")
+    return model_fmu("Motor")

@@ -2,7 +2,7 @@
 
 import numpy as np
 import pytest
-from conftest import ROOT, build_fmu, run_build
+from conftest import build_fmu, run_build
 from fmpy import simulate_fmu
 from fmpy.cross_check import validate_result
 from fmpy.cross_check.validate_vendor_repo import validate_test_fmu
@@ -66,19 +66,27 @@ def test_the_fmu_reproduces_the_reference_with_the_options_and_inputs(folder):
         assert error <= 1e-12 * scale, (name, error, scale)  # measured: <= 7e-15
 
 
-def test_the_reference_files_in_docs_are_current(folder, tmp_path):
-    fresh = cross_check.write_reference_files(tmp_path)
-    for path in fresh:
-        committed = ROOT / "docs" / "UniversalJoint" / path.name
-        assert committed.read_bytes() == path.read_bytes(), (
-            f"{committed} is stale: run python -m cardan_joint.build.cross_check"
-        )
-        assert (folder / path.name).read_bytes() == path.read_bytes()
-    assert (folder / "README.md").read_bytes() == (cross_check.DOCS / "README.md").read_bytes()
+def test_the_folder_holds_the_model_folders_committed_reference_and_page(folder):
+    from cardan_joint.models import discover
+
+    spec = discover()["UniversalJoint"]
+    for committed in cross_check.reference_files("UniversalJoint"):
+        assert (folder / committed.name).read_bytes() == committed.read_bytes()
+    assert (folder / "README.md").read_bytes() == spec.page.read_bytes()
 
 
-def test_cross_check_refuses_a_variant_whose_reference_it_does_not_have(tmp_path):
-    run = run_build(tmp_path, "--cross-check", "--set", "bend_angle=0.1")
+@pytest.mark.parametrize(
+    "args",
+    [
+        ("--set", "bend_angle=0.1"),
+        ("--name", "OtherJoint"),
+        ("--fmi-version", "3"),
+        ("--model", "Propshaft", "--joints", "2"),
+        ("--model", "Motor"),
+    ],
+)
+def test_cross_check_refuses_a_build_its_reference_run_does_not_fit(tmp_path, args):
+    run = run_build(tmp_path, "--cross-check", *args)
     assert run.returncode == 2
-    assert "--cross-check takes the default model" in run.stderr
+    assert "--cross-check takes a model with a reference run" in run.stderr
     assert not any(tmp_path.iterdir())

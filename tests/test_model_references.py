@@ -1,34 +1,34 @@
-"""The compliant models' docs: reference files current and reproduced by the FMUs
-(simulate_fmu), variable tables generated from the tables."""
+"""Every reference run a model's spec declares: its files in the model's folder
+are current (the one generator rewrites them byte for byte) and the model's
+FMU reproduces them (simulate_fmu), for every model discovery finds."""
 
 import numpy as np
 import pytest
-from conftest import ROOT
 from fmpy import simulate_fmu
 from fmpy.util import read_csv, read_ref_opt_file
 
 from cardan_joint.build import cross_check
+from cardan_joint.models import discover
 
-FIXTURES = {"CompliantJoint": "compliant_joint_fmu_path", "InertiaLoad": "inertia_load_fmu_path"}
 
-
-@pytest.mark.parametrize("model", sorted(FIXTURES))
-def test_reference_files_are_current_and_the_fmu_reproduces_them(model, request, tmp_path):
-    docs = ROOT / "docs" / model
-    for path in cross_check.write_reference_files(tmp_path, model):
-        assert (docs / path.name).read_bytes() == path.read_bytes(), (
-            f"docs/{model}/{path.name} is stale: run python -m cardan_joint.build.cross_check "
-            f"--model {model}"
+@pytest.mark.parametrize("model", sorted(cross_check.with_reference()))
+def test_reference_files_are_current_and_the_fmu_reproduces_them(model, model_fmu, tmp_path):
+    committed = cross_check.reference_files(model)
+    for path, fresh in zip(committed, cross_check.write_reference_files(tmp_path, model)):
+        assert path.read_bytes() == fresh.read_bytes(), (
+            f"{path} is stale: run python -m cardan_joint.build.cross_check --model {model}"
         )
-    options = read_ref_opt_file(str(docs / f"{model}_ref.opt"))
-    reference = read_csv(docs / f"{model}_ref.csv")
+    inputs, options_file, outputs = committed
+    options = read_ref_opt_file(str(options_file))
+    reference = read_csv(outputs)
     names = list(reference.dtype.names[1:])
+    assert 0 < len(names) <= 9  # the cross-check rules' 10 columns with the time
     result = simulate_fmu(
-        str(request.getfixturevalue(FIXTURES[model])),
+        str(model_fmu(model)),
         start_time=options["StartTime"],
         stop_time=options["StopTime"],
         output_interval=options["StepSize"],
-        input=read_csv(docs / f"{model}_in.csv"),
+        input=read_csv(inputs),
         output=names,
     )
     np.testing.assert_array_equal(result["time"], reference["time"])
@@ -38,17 +38,16 @@ def test_reference_files_are_current_and_the_fmu_reproduces_them(model, request,
         assert error <= 1e-12 * scale, (name, error, scale)
 
 
-@pytest.mark.parametrize("model", ["CompliantJoint", "InertiaLoad", "CompliantPropshaft"])
-def test_docs_variable_table_is_generated_from_the_models_table(model):
-    from cardan_joint.models.compliant_joint.variables import COMPLIANT_JOINT
-    from cardan_joint.models.compliant_propshaft.variables import compliant_propshaft_table
-    from cardan_joint.models.inertia_load.variables import INERTIA_LOAD
+def test_no_model_folder_holds_reference_files_its_spec_does_not_declare():
+    for key, spec in discover().items():
+        found = {p.name for p in spec.path.iterdir() if p.suffix in (".csv", ".opt")}
+        declared = {p.name for p in cross_check.reference_files(key)} if spec.reference else set()
+        assert found == declared, key
 
-    table = {
-        "CompliantJoint": COMPLIANT_JOINT,
-        "InertiaLoad": INERTIA_LOAD,
-        "CompliantPropshaft": compliant_propshaft_table(2),
-    }[model]
-    text = (ROOT / "docs" / model / "README.md").read_text()
-    begin, end = "<!-- variables:begin -->\n", "<!-- variables:end -->"
-    assert text.split(begin)[1].split(end)[0] == table.markdown_table()
+
+def test_a_model_without_a_reference_run_is_refused_by_name():
+    without = [key for key, spec in discover().items() if spec.reference is None]
+    if not without:
+        pytest.skip("every model declares a reference run")
+    with pytest.raises(ValueError, match=f"{without[0]} declares no reference run"):
+        cross_check.reference(without[0])

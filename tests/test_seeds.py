@@ -1,4 +1,5 @@
-"""The seeds' reference numbers (models/universal_joint/README.md) reproduced by the physics package.
+"""The seeds' reference numbers (models/universal_joint/README.md) reproduced by the physics
+package.
 tests/test_fmu_seeds.py reproduces the same numbers through the FMU."""
 
 import math
@@ -45,8 +46,8 @@ def test_maker_table(bend_deg, error_deg, at_deg):
 
 
 def test_maker_ten_degrees_against_40_digit_arithmetic():
-    # models/universal_joint/README.md quotes 0.43857 deg; the maker's own formula gives 0.4385614 deg
-    # (computed here at 40 digits), which the page prints truncated as 0.438.
+    # models/universal_joint/README.md quotes 0.43857 deg; the maker's own formula gives
+    # 0.4385614 deg (computed here at 40 digits), which the page prints truncated as 0.438.
     import mpmath
 
     with mpmath.workdps(40):

@@ -1,6 +1,6 @@
 """The Load FMU: a driven machine without state."""
 
-from .. import Model, stepped
+from .. import Model, ReferenceRun, stepped
 from .model import Load
 from .variables import LOAD
 
@@ -10,4 +10,10 @@ MODEL = Model(
     table_for=lambda settings: LOAD,
     make=stepped(Load),
     owner="load",
+    # The shaft runs up at a constant 10 rad/s2 from rest: the torque grows from
+    # the constant torque and the inertia's share by the drag's.
+    reference=ReferenceRun(
+        input_rows=((0.0, 0.0, 10.0), (1.0, 10.0, 10.0)),  # time, speed, acceleration
+        outputs=("torque",),
+    ),
 )

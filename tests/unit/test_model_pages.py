@@ -1,0 +1,53 @@
+"""What the docs say about the models is generated from the models: the index in
+README.md and docs/README.md lists every model discovery finds, and each model's
+page holds its table's variables (and FMI 3 arrays) as the code has them. One
+check over discovery for every model, instead of a hand-kept list per test."""
+
+import importlib.util
+
+import pytest
+from conftest import ROOT
+
+from cardan_joint.models import discover
+
+spec = importlib.util.spec_from_file_location("model_pages", ROOT / "tools" / "model_pages.py")
+model_pages = importlib.util.module_from_spec(spec)
+spec.loader.exec_module(model_pages)
+
+
+def test_every_generated_block_is_current():
+    assert model_pages.stale() == [], "run python tools/model_pages.py"
+
+
+@pytest.mark.parametrize("page", model_pages.INDEXES, ids=lambda p: p.parent.name)
+def test_the_index_links_every_model_discovery_finds(page):
+    index = model_pages.model_index(page)
+    for key, model in discover().items():
+        assert f"[{key}](" in index and model.description in index
+        assert (page.parent / index.split(f"[{key}](")[1].split(")")[0]).resolve() == model.page
+
+
+def test_every_models_page_has_its_variable_table():
+    for model in discover().values():
+        blocks = model_pages.page_blocks(model)
+        assert set(model.table().OUTPUTS) <= {
+            line.split("`")[1] for line in blocks["variables"].splitlines()[2:]
+        }
+
+
+def test_a_stale_block_is_found_and_rewritten(tmp_path, monkeypatch):
+    page = tmp_path / "README.md"
+    page.write_text("# Index\n\n<!-- models:begin -->\nold\n<!-- models:end -->\n")
+    monkeypatch.setattr(model_pages, "expected", lambda: {page: {"models": "new\n"}})
+    monkeypatch.setattr(model_pages, "ROOT", tmp_path)
+    assert model_pages.stale() == ["README.md: models"]
+    assert model_pages.rewrite() == [page]
+    assert page.read_text() == "# Index\n\n<!-- models:begin -->\nnew\n<!-- models:end -->\n"
+    assert model_pages.stale() == []
+
+
+def test_a_page_without_its_markers_is_named(tmp_path, monkeypatch):
+    page = tmp_path / "README.md"
+    page.write_text("# A model\n")
+    monkeypatch.setattr(model_pages, "expected", lambda: {page: {"variables": "table\n"}})
+    assert any("<!-- variables:begin -->" in problem for problem in model_pages.stale())
