@@ -4,11 +4,14 @@ installed (non-editable) package must carry them, not only a checkout."""
 
 import fnmatch
 
+import pytest
 from conftest import ROOT
 
 from cardan_joint.models import MODELS_DIR, discover
 
 PACKAGE = MODELS_DIR.parent
+# setuptools calls its pyproject [tool.setuptools] support beta; the read is right.
+pytestmark = pytest.mark.filterwarnings("ignore:Support for `\\[tool.setuptools\\]`")
 
 
 def _installed(path) -> bool:
