@@ -1,10 +1,11 @@
-"""Build dist/UniversalJoint.fmu and check it with FMPy's validator.
+"""Build an FMU (dist/UniversalJoint.fmu by default) and check it with FMPy's validator.
 
-    python build_fmu.py [--dest DIR] [--name MODEL] [--set NAME=VALUE ...] [--cross-check]
+    python build_fmu.py [--model MODEL] [--dest DIR] [--name NAME] [--set NAME=VALUE ...]
+                        [--cross-check]
 
 Exits non-zero, with the validator's problems, if the FMU is not valid.
---cross-check also writes DIR/cross-check/fmus/2.0/cs/linux64/cardan_joint/<version>/UniversalJoint/
-(the FMU with its reference run, in the fmi-cross-check layout).
+--cross-check also writes DIR/cross-check/fmus/2.0/cs/linux64/cardan_joint/<version>/<MODEL>/
+(the FMU with the reference run its model's folder declares, in the fmi-cross-check layout).
 """
 
 import sys

@@ -91,16 +91,3 @@ def test_every_model_folder_is_discovered():
     folders = {p.parent.name for p in (PACKAGE / "models").glob("*/spec.py")}
     assert {spec.folder for spec in discover().values()} == folders
     assert len(folders) >= 7
-
-
-def test_the_fmi_layer_names_no_model():
-    import re
-
-    from cardan_joint.models import discover
-
-    names = {n for spec in discover().values() for n in (spec.key, spec.folder)}
-    names.add("CardanJoint")
-    word = re.compile(r"\b(" + "|".join(sorted(names)) + r")\b")
-    for path in sorted((PACKAGE / "fmi").rglob("*.py")):
-        found = word.search(path.read_text())
-        assert found is None, f"{path.relative_to(PACKAGE)} names the model {found.group(0)}"
