@@ -12,15 +12,7 @@ import math
 
 from ...units import DEG_TO_RAD
 from ...units import JOINT_UNITS as UNITS
-from ...variable_schema import (
-    _IN,
-    _OUT,
-    _PAR,
-    Variable,
-    VariableTable,
-    array_table,
-    fmi3_groups,
-)
+from ...variable_schema import _IN, _OUT, _PAR, Variable, VariableTable, fmi3_groups
 
 # Inputs each output depends on directly (FMI ModelStructure "dependencies").
 # Declaring them lets a master see that speed flows downstream without the load,
@@ -136,15 +128,6 @@ def fmi3_variables() -> tuple:
     return fmi3_groups(VARIABLES, ARRAY_STEMS)
 
 
-# FMI 3 array name -> its FMI 2 rows in element order (to split an array's values).
-ARRAY_ROWS = {group.name: group.rows for group in fmi3_variables() if len(group.rows) > 1}
-
-
 def markdown_table() -> str:
     """The README's variable table (a test keeps the README in step)."""
     return _TABLE.markdown_table()
-
-
-def fmi3_array_table() -> str:
-    """The README's table of the FMI 3 arrays and the FMI 2 variables they hold."""
-    return array_table(fmi3_variables())
