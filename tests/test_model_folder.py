@@ -2,8 +2,13 @@
 name and renaming the model inside that folder only gives a new model whose
 FMUs (FMI 2.0 and 3.0) build, validate and simulate, whose reference run the
 suite's own checks regenerate and reproduce through its FMU, and which the docs
-list: the generated index takes it with no hand edit, and no other file changes.
-Done in a copy of the project: the tree is left alone."""
+list: `tools/model_pages.py` adds it to the generated index blocks of README.md
+and docs/README.md, and no other file outside the new folder changes (no hand
+edit anywhere). Done in a copy of the project: the tree is left alone.
+
+Run it before an in-process build only in its own process: simulating an FMI 2.0
+FMU in-process leaves the FMU's `pythonfmu` in sys.modules (fmi/native's to fix),
+and pythonfmu's builder then looks for its binaries there."""
 
 import hashlib
 import os
