@@ -6,9 +6,10 @@ list: `tools/model_pages.py` adds it to the generated index blocks of README.md
 and docs/README.md, and no other file outside the new folder changes (no hand
 edit anywhere). Done in a copy of the project: the tree is left alone.
 
-Run it before an in-process build only in its own process: simulating an FMI 2.0
-FMU in-process leaves the FMU's `pythonfmu` in sys.modules (fmi/native's to fix),
-and pythonfmu's builder then looks for its binaries there."""
+Known, not this module's: after an FMI 2.0 FMU is simulated in-process, the
+FMU's own `pythonfmu` stays in sys.modules (from its deleted resources folder),
+so a later in-process build in the same session finds no binaries there
+(tests/test_build.py run after this module; fmi/native's to fix)."""
 
 import hashlib
 import os
