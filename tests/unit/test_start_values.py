@@ -7,6 +7,7 @@ own `to_xml`, the call the builders embed in the FMU, so no FMU is built here.
 """
 
 import struct
+
 import pytest
 from pythonfmu import Fmi2Slave
 from pythonfmu3 import Fmi3Slave
@@ -53,9 +54,7 @@ def test_start_values_read_back_as_the_fmus_own(key, fmi_version):
     declared = _declared_starts(slave, fmi_version)
     assert declared, f"{key}: no start value declared"
     for reference, values in declared.items():
-        own = (
-            slave.get_real([reference]) if fmi_version == 2 else slave.get_float64([reference])
-        )
+        own = slave.get_real([reference]) if fmi_version == 2 else slave.get_float64([reference])
         assert [_bits(v) for v in values] == [_bits(v) for v in own], (key, reference, values, own)
 
 
