@@ -298,11 +298,14 @@ def test_example_writes_the_ssp_both_csvs_and_the_plot(tmp_path):
         "Driveline.ssp",
         "driveline_ssp_fmpy.csv",
         "driveline_ssp_libcosim.csv",
+        "driveline_ssp_ecos.csv",
         "driveline_ssp.png",
     ):
         assert (tmp_path / name).stat().st_size > 0
-    rows = results.read_csv(tmp_path / "driveline_ssp_libcosim.csv")
-    assert list(rows.dtype.names[:2]) == ["time", "Motor.speed"] and len(rows) == 1001
+    check_ssp_for_every_host(tmp_path / "Driveline.ssp")
+    for host in ("libcosim", "ecos"):
+        rows = results.read_csv(tmp_path / f"driveline_ssp_{host}.csv")
+        assert list(rows.dtype.names[:2]) == ["time", "Motor.speed"] and len(rows) == 1001
     assert "ratio 2, step 0.0001 s: DIVERGES" in run.stdout
     assert "ratio 0.5, step 0.001 s: bounded" in run.stdout
 

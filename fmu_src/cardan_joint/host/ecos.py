@@ -56,9 +56,11 @@ def _load_tbb() -> None:
     )
 
 
-def _ecospy():
+def require_ecos(purpose: str = "running in Ecos"):
+    """The ``ecospy`` module, its ``libtbb.so.12`` loaded first; MissingExtra (naming
+    `purpose`) without them."""
     _load_tbb()
-    require("ecospy", "ecos", "running in Ecos")
+    require("ecospy", "ecos", purpose)
     import ecospy
 
     return ecospy
@@ -80,12 +82,12 @@ def run_ecos_ssp(
     on, as ``cosim.run_libcosim_ssp`` gives. Times are k h exactly: Ecos adds the
     step to its clock, which drifts by rounding.
     """
-    ecospy = _ecospy()
-    n_steps = round(stop_time / step_size)
-    if not (step_size > 0 and n_steps >= 1 and abs(n_steps * step_size - stop_time) < 1e-9):
+    n_steps = round(stop_time / step_size) if step_size > 0 else 0
+    if n_steps < 1 or abs(n_steps * step_size - stop_time) > 1e-9 * stop_time:
         raise ValueError(
             f"stop_time {stop_time} is not a positive whole number of steps {step_size}"
         )
+    ecospy = require_ecos()
     ecospy.EcosLib.set_log_level(log_level)
     identifiers = {key: "::".join(key.split(".", 1)) for key in outputs}
     result = {key: np.empty(n_steps + 1) for key in outputs}
