@@ -178,3 +178,9 @@ def compliant_joint_fmu_path(tmp_path_factory) -> Path:
 def motor_fmu_path(tmp_path_factory) -> Path:
     """dist/Motor.fmu as `build_fmu.py --model Motor` writes it."""
     return build_fmu(tmp_path_factory.mktemp("motor"), "--model", "Motor")
+
+
+@pytest.fixture(scope="session")
+def load_fmu_path(tmp_path_factory) -> Path:
+    """dist/Load.fmu as `build_fmu.py --model Load` writes it."""
+    return build_fmu(tmp_path_factory.mktemp("load"), "--model", "Load")
