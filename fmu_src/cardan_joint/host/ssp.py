@@ -32,8 +32,9 @@ _XML_NAMESPACES = {
     "ssv": "http://ssp-standard.org/SSP1/SystemStructureParameterValues",
     "oms": "https://raw.githubusercontent.com/OpenModelica/OMSimulator/master/schema/oms.xsd",
 }
-# OMSimulator's vendor annotations (src/OMSimulatorLib/ssd/Tags.cpp): a fixed-step
-# weakly coupled master ("oms-ma") is the Jacobi-type master the other hosts are.
+# OMSimulator's vendor annotations (src/OMSimulatorLib/ssd/Tags.cpp): a weakly
+# coupled system (co-simulation FMUs) with its fixed-step master ("oms-ma"), which
+# steps at the SSP's step as the other hosts do.
 OMS_ANNOTATION_TYPE = "org.openmodelica"
 OMS_MASTER = "oms-ma"
 FMU_TYPE = "application/x-fmu-sharedlibrary"
