@@ -1,13 +1,14 @@
-"""Motor -> drive element -> Load as an SSP system, run by FMPy and by OSP libcosim.
+"""Motor -> drive element -> Load as an SSP system, run by FMPy, OSP libcosim and Ecos.
 
     python examples/driveline_ssp.py [--drive Propshaft|UniversalJoint] [--out results]
 
 Builds the Motor, Load and drive FMUs, writes results/Driveline.ssp (the three
-FMUs, their connections, one parameter set per component), runs it with FMPy's
-`simulate_ssp` and with libcosim, writes results/driveline_ssp_fmpy.csv,
-results/driveline_ssp_libcosim.csv and results/driveline_ssp.png, and prints
-how far the two hosts differ at three step sizes and the torque loop's
-stability against the load-to-motor inertia ratio.
+FMUs, their connections, one parameter set per component, all named
+"Driveline", OMSimulator's annotations), runs it with FMPy's `simulate_ssp`,
+with libcosim and with Ecos, writes results/driveline_ssp_fmpy.csv,
+results/driveline_ssp_libcosim.csv, results/driveline_ssp_ecos.csv and
+results/driveline_ssp.png, and prints how far the hosts differ at three step
+sizes and the torque loop's stability against the load-to-motor inertia ratio.
 """
 
 import argparse
@@ -20,6 +21,7 @@ import numpy as np
 from cardan_joint import results
 from cardan_joint.extras import MissingExtra, require
 from cardan_joint.host import driveline_system as system
+from cardan_joint.host.ecos import require_ecos
 from cardan_joint.host.plotting import pyplot, save_figure
 from cardan_joint.units import RAD_PER_S_TO_RPM
 
@@ -30,14 +32,17 @@ STOP_TIME, STEP = 1.0, 1e-3
 
 
 def host_convergence(ssp, steps=(1e-3, 5e-4, 2.5e-4), stop_time=0.5):
-    """{step: largest |FMPy - libcosim| of the motor speed}: the hosts differ only in
-    the first step's inputs (see docs/cosimulation.md), so this falls in proportion to the step."""
-    return {
-        h: system.host_difference(
-            system.run_fmpy(ssp, stop_time, h), system.run_libcosim(ssp, stop_time, h)
-        )["Motor.speed"]
-        for h in steps
-    }
+    """{step: (largest |FMPy - libcosim|, |FMPy - Ecos|) of the motor speed}: the hosts
+    differ only in the first step's inputs (see docs/cosimulation.md), so this falls in
+    proportion to the step."""
+    outcome = {}
+    for h in steps:
+        fmpy_rows = system.run_fmpy(ssp, stop_time, h)
+        outcome[h] = tuple(
+            system.host_difference(fmpy_rows, run(ssp, stop_time, h))["Motor.speed"]
+            for run in (system.run_libcosim, system.run_ecos)
+        )
+    return outcome
 
 
 def loop_stability(fmus, drive, folder, ratios=(0.5, 0.9, 2.0), steps=(1e-3, 1e-4), n_steps=200):
@@ -110,6 +115,7 @@ def main(argv=None):
     args = parser.parse_args(argv)
     try:
         require("libcosimpy", "cosim", "this example (it runs the system in libcosim too)")
+        require_ecos("this example (it runs the system in Ecos too)")
     except MissingExtra as error:
         sys.exit(f"driveline_ssp: {error}")
     out = output_folder(args)
@@ -118,16 +124,15 @@ def main(argv=None):
         ssp = system.write_driveline_ssp(out / "Driveline.ssp", fmus, args.drive, STOP_TIME)
         fmpy_rows = system.run_fmpy(ssp, STOP_TIME, STEP)
         libcosim_rows = system.run_libcosim(ssp, STOP_TIME, STEP)
-        results.write_csv(fmpy_rows, out / "driveline_ssp_fmpy.csv")
-        results.write_csv(libcosim_rows, out / "driveline_ssp_libcosim.csv")
+        ecos_rows = system.run_ecos(ssp, STOP_TIME, STEP)
+        written = [ssp]
+        for host, rows in (("fmpy", fmpy_rows), ("libcosim", libcosim_rows), ("ecos", ecos_rows)):
+            written.append(results.write_csv(rows, out / f"driveline_ssp_{host}.csv"))
         plot(fmpy_rows, libcosim_rows, out / "driveline_ssp.png", args.drive)
-        print(
-            f"wrote {ssp}, {out / 'driveline_ssp_fmpy.csv'}, "
-            f"{out / 'driveline_ssp_libcosim.csv'} and {out / 'driveline_ssp.png'}"
-        )
-        print("largest |FMPy - libcosim| of the motor speed over 0.5 s:")
-        for h, difference in host_convergence(ssp).items():
-            print(f"  step {h:g} s: {difference:.3e} rad/s")
+        print(f"wrote {', '.join(map(str, written))} and {out / 'driveline_ssp.png'}")
+        print("largest difference of the motor speed over 0.5 s, FMPy - libcosim, FMPy - Ecos:")
+        for h, (libcosim, ecos) in host_convergence(ssp).items():
+            print(f"  step {h:g} s: {libcosim:.3e} rad/s, {ecos:.3e} rad/s")
         print("torque loop bounded (load/motor inertia ratio, step):")
         for (ratio, h), bounded in loop_stability(fmus, args.drive, work).items():
             print(f"  ratio {ratio:g}, step {h:g} s: {'bounded' if bounded else 'DIVERGES'}")

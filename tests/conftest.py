@@ -154,7 +154,14 @@ def propshaft_unzipped(propshaft_fmu_path, tmp_path_factory):
 
 @pytest.fixture(scope="session")
 def fmi3_path(tmp_path_factory) -> Path:
-    return build_fmu(tmp_path_factory.mktemp("fmu3"), "--fmi-version=3")
+    """The FMI 3.0 UniversalJoint with its vectors as arrays (`--fmi3-arrays`)."""
+    return build_fmu(tmp_path_factory.mktemp("fmu3"), "--fmi-version=3", "--fmi3-arrays")
+
+
+@pytest.fixture(scope="session")
+def fmi3_scalar_path(tmp_path_factory) -> Path:
+    """The FMI 3.0 UniversalJoint as built by default: its vectors as scalars."""
+    return build_fmu(tmp_path_factory.mktemp("fmu3_scalars"), "--fmi-version=3")
 
 
 @pytest.fixture(scope="session")
@@ -188,3 +195,9 @@ def compliant_joint_fmu_path(model_fmu) -> Path:
 def motor_fmu_path(model_fmu) -> Path:
     """dist/Motor.fmu as `build_fmu.py --model Motor` writes it."""
     return model_fmu("Motor")
+
+
+@pytest.fixture(scope="session")
+def load_fmu_path(model_fmu) -> Path:
+    """dist/Load.fmu as `build_fmu.py --model Load` writes it."""
+    return model_fmu("Load")

@@ -31,7 +31,12 @@ def test_a_build_leaves_no_module_of_its_staged_copy_behind(tmp_path):
 
 
 @pytest.mark.parametrize(
-    ("fixture", "option"), [("fmu_path", ()), ("fmi3_path", ("--fmi-version=3",))]
+    ("fixture", "option"),
+    [
+        ("fmu_path", ()),
+        ("fmi3_path", ("--fmi-version=3", "--fmi3-arrays")),
+        ("fmi3_scalar_path", ("--fmi-version=3",)),
+    ],
 )
 def test_two_builds_of_the_same_source_are_byte_identical_and_a_sweep_resumes(
     request, tmp_path, fixture, option

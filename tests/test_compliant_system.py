@@ -7,6 +7,7 @@ import numpy as np
 import pytest
 from jacobi import jacobi_master
 from reference.compliant_driveline import simulate_compliant_driveline
+from ssp_checks import check_ssp_for_every_host
 
 from cardan_joint.host import driveline_system as system
 from cardan_joint.host.ssp import SSPError, check_ssp, fmpy_parameter_set
@@ -36,6 +37,7 @@ def _ssp(fmus, folder, ratio):
         motor=motor,
         load=load,
         drive_parameters=drive,
+        step_size=step,
         **WIRING,
     )
     return path, motor, drive, load, step
@@ -93,17 +95,20 @@ def test_both_ssp_hosts_finish_and_are_the_jacobi_master_with_their_first_inputs
             assert np.max(np.abs(rows[key][offset:] - reference[key])) <= 1e-9 * scale, key
 
 
-def test_one_system_parameter_set_carries_every_components_parameters(compliant_ssp):
-    from fmpy.ssp.ssd import read_ssd
-
-    path = compliant_ssp[0]
-    ssd = read_ssd(str(path))
-    (binding,) = ssd.system.parameterBindings
-    (parameter_set,) = binding.parameterValues
-    system_values = {p.name: float(p.value) for p in parameter_set.parameters}
-    component_values = {p.name: float(p.value) for p in fmpy_parameter_set(path).parameters}
-    assert system_values == component_values
-    assert {name.split(".")[0] for name in system_values} == {"Motor", "Drive", "Load"}
+def test_every_component_binds_its_parameters_in_the_one_set_every_host_applies(
+    compliant_ssp,
+):
+    path, motor, drive, load, _ = compliant_ssp
+    # Valid for pyssp-standard, parameter connectors, one set name, OMSimulator's annotations.
+    bound = check_ssp_for_every_host(path)
+    assert bound == {"Motor": motor, "Drive": drive, "Load": load}
+    # FMPy's one parameter set (hierarchical names) holds the same values.
+    fmpy_values = {p.name: float(p.value) for p in fmpy_parameter_set(path).parameters}
+    assert fmpy_values == {
+        f"{component}.{name}": value
+        for component, values in bound.items()
+        for name, value in values.items()
+    }
 
 
 def test_a_missing_or_broken_ssp_is_named_without_a_traceback_of_temporary_files(tmp_path):
@@ -152,6 +157,7 @@ def test_the_compliant_propshaft_runs_the_same_system_at_ratio_1000(
     path = system.write_driveline_ssp(
         folder / "p.ssp", fmus, "CompliantPropshaft", STOP_TIME, motor, load, drive, **WIRING
     )
+    check_ssp_for_every_host(path)
     n = round(STOP_TIME / h)
     rows = jacobi_master(path, n * h, h, None, **WIRING)  # raises on a refused step
     assert len(rows["Motor.speed"]) == n and np.all(np.isfinite(rows["Drive.twist_angle"]))

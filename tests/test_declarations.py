@@ -55,7 +55,7 @@ def test_a_model_description_without_model_variables_names_the_missing_element()
     root = Element("fmiModelDescription")
     SubElement(root, "CoSimulation")
     with pytest.raises(ValueError, match="<fmiModelDescription> has no <ModelVariables>"):
-        model_description.complete(root, table)
+        model_description.complete(root, table, {})
 
 
 def test_an_fmi3_variable_without_a_value_reference_is_named():

@@ -1,48 +1,27 @@
-"""Motor and Load FMUs and the driveline SSP system in FMPy and libcosim."""
+"""Motor and Load FMUs: their physics, refusals and FMU behaviour (the SSP system they
+make: tests/fmu/test_driveline_ssp.py)."""
 
 import math
-import subprocess
-import sys
-import zipfile
 
 import numpy as np
 import pytest
-from conftest import ROOT, build_fmu, refused_keeping_state
-from jacobi import jacobi_master
+from conftest import refused_keeping_state
 
-from cardan_joint import results
-from cardan_joint.host import driveline_system as system
 from cardan_joint.host.instance import ExtractedFMU, FmuInstance
-from cardan_joint.host.ssp import Component, write_ssp
 from cardan_joint.models.load.model import Load
 from cardan_joint.models.motor.model import Motor
 from cardan_joint.physics import Reason
 
 
 @pytest.fixture(scope="module")
-def component_fmus(tmp_path_factory):
-    dest = tmp_path_factory.mktemp("components")
-    return {name: build_fmu(dest, "--model", name) for name in ("Motor", "Load")}
+def component_fmus(motor_fmu_path, load_fmu_path):
+    return {"Motor": motor_fmu_path, "Load": load_fmu_path}
 
 
 @pytest.fixture(scope="module")
 def motor_unzipped(component_fmus):
     with ExtractedFMU(component_fmus["Motor"]) as motor:
         yield motor.directory
-
-
-@pytest.fixture(scope="module")
-def driveline_ssp(component_fmus, request, tmp_path_factory):
-    folder = tmp_path_factory.mktemp("ssp")
-    # The session's FMU of the drive model (built once for all tests).
-    session_fixture = {"UniversalJoint": "fmu_path", "Propshaft": "propshaft_fmu_path"}
-    drive = request.getfixturevalue(session_fixture[system.DRIVE])
-    fmus = {
-        "Motor": component_fmus["Motor"],
-        system.DRIVE_INSTANCE: drive,
-        "Load": component_fmus["Load"],
-    }
-    return system.write_driveline_ssp(folder / "Driveline.ssp", fmus)
 
 
 # --- physics ---------------------------------------------------------------
@@ -199,78 +178,3 @@ def test_motor_fmu_state_round_trips_through_bytes(motor_unzipped):
         motor.time = 0.05
         motor.step(0.05)
         assert motor.get("speed", "angle") == first
-
-
-# --- the SSP system --------------------------------------------------------
-
-
-def test_ssp_holds_the_three_fmus_connections_and_parameter_sets(driveline_ssp):
-    from fmpy.ssp.ssd import read_ssd
-
-    ssd = read_ssd(str(driveline_ssp))  # validates against the SSP schema
-    assert [c.name for c in ssd.system.elements] == ["Motor", system.DRIVE_INSTANCE, "Load"]
-    assert len(ssd.system.connections) == 6
-    names = zipfile.ZipFile(driveline_ssp).namelist()
-    assert {
-        "resources/Motor.fmu",
-        f"resources/{system.DRIVE}.fmu",
-        "resources/Load.fmu",
-        "resources/Motor.ssv",
-        "resources/Drive.ssv",
-        "resources/Load.ssv",
-    } <= set(names)
-
-
-def test_ssp_writer_refuses_a_connection_to_a_missing_connector(tmp_path, component_fmus):
-    motor = Component("Motor", component_fmus["Motor"], {"speed": "output"})
-    with pytest.raises(ValueError, match="Motor has no input connector 'speed'"):
-        write_ssp(tmp_path / "x.ssp", "X", [motor], [("Motor", "speed", "Motor", "speed")], 1.0)
-
-
-def test_both_hosts_apply_the_parameter_sets_and_differ_only_by_the_first_step(driveline_ssp):
-    differences = {}
-    for h in (1e-3, 5e-4):
-        fmpy_rows = system.run_fmpy(driveline_ssp, 0.2, h)
-        libcosim_rows = system.run_libcosim(driveline_ssp, 0.2, h)
-        differences[h] = system.host_difference(fmpy_rows, libcosim_rows)["Motor.speed"]
-        # The parameter sets reached the FMUs in both hosts: motor torque = 120 (1 - w / w0).
-        for rows in (fmpy_rows, libcosim_rows):
-            expected = 120.0 * (1 - rows["Motor.speed"] / system.MOTOR_PARAMETERS["no_load_speed"])
-            np.testing.assert_allclose(rows["Motor.motor_torque"], expected, rtol=1e-12, atol=1e-9)
-    # libcosim starts from the initial outputs, FMPy from zeros: the difference is one
-    # step's impulse, so it halves with the step.
-    assert 1.9 < differences[1e-3] / differences[5e-4] < 2.1, differences
-
-
-def test_example_writes_the_ssp_both_csvs_and_the_plot(tmp_path):
-    run = subprocess.run(
-        [sys.executable, str(ROOT / "examples" / "driveline_ssp.py"), "--out", str(tmp_path)],
-        capture_output=True,
-        text=True,
-        cwd=ROOT,
-    )
-    assert run.returncode == 0, run.stderr
-    for name in (
-        "Driveline.ssp",
-        "driveline_ssp_fmpy.csv",
-        "driveline_ssp_libcosim.csv",
-        "driveline_ssp.png",
-    ):
-        assert (tmp_path / name).stat().st_size > 0
-    rows = results.read_csv(tmp_path / "driveline_ssp_libcosim.csv")
-    assert list(rows.dtype.names[:2]) == ["time", "Motor.speed"] and len(rows) == 1001
-    assert "ratio 2, step 0.0001 s: DIVERGES" in run.stdout
-    assert "ratio 0.5, step 0.001 s: bounded" in run.stdout
-
-
-def test_each_host_is_exactly_a_jacobi_master_with_its_own_first_inputs(driveline_ssp):
-    h, stop_time = 1e-3, 0.1
-    fmpy_rows = system.run_fmpy(driveline_ssp, stop_time, h)
-    libcosim_rows = system.run_libcosim(driveline_ssp, stop_time, h)
-    zeros = {key: 0.0 for key in system.RECORDED}
-    initial = {key: libcosim_rows[key][0] for key in system.RECORDED}
-    for rows, first, offset in ((fmpy_rows, zeros, 0), (libcosim_rows, initial, 1)):
-        reference = jacobi_master(driveline_ssp, stop_time, h, first)
-        for key in system.RECORDED:
-            scale = max(1.0, np.max(np.abs(reference[key])))
-            assert np.max(np.abs(rows[key][offset:] - reference[key])) <= 1e-9 * scale, key

@@ -62,7 +62,7 @@ def _runtime_files(script: Path):
 
 
 def _fingerprint(
-    script: Path, folder: str, model_name: str, start_values: dict, settings: dict
+    script: Path, folder: str, model_name: str, start_values: dict, settings: dict, arrays: bool
 ) -> str:
     digest = hashlib.sha256()
     for path in [script, *_runtime_files(script)]:
@@ -70,7 +70,7 @@ def _fingerprint(
         digest.update(path.read_bytes())
     digest.update(
         json.dumps(
-            [folder, model_name, sorted(start_values.items()), sorted(settings.items())]
+            [folder, model_name, sorted(start_values.items()), sorted(settings.items()), arrays]
         ).encode()
     )
     return digest.hexdigest()[:12]
@@ -100,6 +100,7 @@ def _stage(
     settings: dict,
     fingerprint: str,
     folder: str,
+    fmi3_arrays: bool = False,
 ) -> Path:
     package = f"cardan_joint_{fingerprint}"
     target = workdir / package
@@ -139,6 +140,10 @@ def _stage(
         "build_settings",
         bool(settings),
     )
+    if fmi3_arrays:
+        script = _rewrite(
+            script, r"^    fmi3_arrays = False$", "    fmi3_arrays = True", "fmi3_arrays", True
+        )
     script_path = workdir / f"{model_name.lower()}_{fingerprint}.py"
     script_path.write_text(script)
     return script_path
@@ -160,9 +165,12 @@ def build(
     model: str = DEFAULT_MODEL,
     settings: dict | None = None,
     fmi_version: int = 2,
+    fmi3_arrays: bool = False,
 ) -> Path:
     """Build `<dest>/<model_name>.fmu` (FMI 3: `<dest>/fmi3/<model_name>.fmu`);
-    raise BuildError unless FMPy validates it."""
+    raise BuildError unless FMPy validates it. `fmi3_arrays`: FMI 3 vectors as
+    Float64 arrays instead of the FMI 2.0 scalars (docs/fmi3.md says which hosts
+    read which)."""
     try:
         spec = find_model(model)
     except StartValueError as error:
@@ -176,11 +184,15 @@ def build(
             f"{model} is built for FMI {', '.join(map(str, spec.fmi_versions))} only, "
             f"not FMI {fmi_version}"
         )
+    if fmi3_arrays and fmi_version != 3:
+        raise BuildError(f"FMI 3 arrays need FMI 3, not FMI {fmi_version}")
     script_template = SCRIPTS[fmi_version]
     start_values = _check_start_values(spec, start_values or {}, settings)
     dest = Path(dest).resolve() / ("fmi3" if fmi_version == 3 else "")
     dest.mkdir(parents=True, exist_ok=True)
-    fingerprint = _fingerprint(script_template, spec.folder, model_name, start_values, settings)
+    fingerprint = _fingerprint(
+        script_template, spec.folder, model_name, start_values, settings, fmi3_arrays
+    )
     builder = _fmu_builder(fmi_version)
     with tempfile.TemporaryDirectory(prefix="cardan_joint_build_") as workdir:
         script = _stage(
@@ -191,6 +203,7 @@ def build(
             settings,
             fingerprint,
             spec.folder,
+            fmi3_arrays,
         )
         package_dir = script.parent / f"cardan_joint_{fingerprint}"
         try:

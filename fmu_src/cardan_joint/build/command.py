@@ -42,6 +42,13 @@ def main(argv=None, prog=None) -> int:
         choices=FMI_VERSIONS,
         help="FMI version (default: 2; FMI 3 goes to DEST/fmi3/)",
     )
+    parser.add_argument(
+        "--fmi3-arrays",
+        action="store_true",
+        help="FMI 3 only: vectors (the UniversalJoint's quaternion, angular velocity, "
+        "torque) as Float64 arrays, for hosts that read whole arrays; the default, "
+        "scalars named as in FMI 2.0, every FMI 3 host reads (docs/fmi3.md)",
+    )
     parser.add_argument("--dest", default="dist", help="output folder (default: dist)")
     parser.add_argument(
         "--name", default=None, help="model name and FMU file name (default: the model's own name)"
@@ -66,6 +73,8 @@ def main(argv=None, prog=None) -> int:
         "reference run (fmi-cross-check layout; a model whose spec declares one)",
     )
     args = parser.parse_args(argv)
+    if args.fmi3_arrays and args.fmi_version != 3:
+        parser.error("--fmi3-arrays needs --fmi-version 3")
     spec = models[args.model]
     settings = {}
     for setting in sorted({name for s in models.values() for name in s.default_settings}):
@@ -100,6 +109,7 @@ def main(argv=None, prog=None) -> int:
             model=args.model,
             settings=settings,
             fmi_version=args.fmi_version,
+            fmi3_arrays=args.fmi3_arrays,
         )
     except BuildError as error:
         print(f"build_fmu: {error}", file=sys.stderr)

@@ -1,14 +1,27 @@
 """Complete pythonfmu's model description from the variable table.
 
 pythonfmu 0.7.0 writes neither units nor min/max, nor InitialUnknowns, nor
-output dependencies; FMPy's validator rejects the result. This adds them.
+output dependencies; FMPy's validator rejects the result. This adds them. It
+also writes start values to 16 significant digits, which does not always read
+back as the same double (1.3962634015954636 becomes 1.396263401595464): every
+start is rewritten here as the shortest text that does (`repr`).
 """
 
 from xml.etree.ElementTree import Element, SubElement
 
 
 def _number(value: float) -> str:
+    # The shortest text that reads back as the same double.
     return repr(float(value))
+
+
+def start_text(name: str, starts, rows=None) -> str:
+    """`name`'s start attribute: the FMU's own start value(s) `starts[row]` of each of
+    `rows` (an FMI 3 array's elements; default: the one row `name`)."""
+    missing = [row for row in rows or (name,) if row not in starts]
+    if missing:
+        raise ValueError(f"model description: no start value of {', '.join(missing)} ({name})")
+    return " ".join(_number(starts[row]) for row in rows or (name,))
 
 
 def child(node: Element, tag: str) -> Element:
@@ -31,8 +44,9 @@ def _unit_definitions(table) -> Element:
     return node
 
 
-def complete(root: Element, table) -> Element:
-    """`root` with units, ranges and ModelStructure from the model's `table`."""
+def complete(root: Element, table, starts) -> Element:
+    """`root` with units, ranges and ModelStructure from the model's `table`, and
+    every start value from `starts` (name -> the FMU's own start value)."""
     children = list(root)
     position = next(i for i, node in enumerate(children) if node.tag == "CoSimulation") + 1
     root.insert(position, _unit_definitions(table))
@@ -44,6 +58,8 @@ def complete(root: Element, table) -> Element:
         if variable.initial and scalar.get("initial") is None:
             scalar.set("initial", variable.initial)
         real = child(scalar, "Real")
+        if real.get("start") is not None:
+            real.set("start", start_text(variable.name, starts))
         real.set("unit", variable.unit)
         if variable.display_unit:
             real.set("displayUnit", variable.display_unit)

@@ -8,7 +8,7 @@ all from the model's table, with the same unit definitions as the FMI 2.0 FMU.
 
 from xml.etree.ElementTree import Element, SubElement
 
-from .model_description import _number, _unit_definitions, child
+from .model_description import _number, _unit_definitions, child, start_text
 
 CAPABILITIES = {
     "canHandleVariableCommunicationStepSize": "true",
@@ -27,7 +27,8 @@ def _attribute(node: Element, name: str) -> str:
 def complete(root: Element, groups, starts, table) -> Element:
     """`groups`: the table's `fmi3_variables()`, the order the slave registered them in
     (after the independent variable `time`); `starts`: name -> start value (the
-    build's, which may differ from the table's)."""
+    build's, which may differ from the table's) of every input and parameter; an
+    array's start lists its elements' values."""
     cosimulation = child(root, "CoSimulation")
     for name, value in CAPABILITIES.items():
         cosimulation.set(name, value)
@@ -41,7 +42,8 @@ def complete(root: Element, groups, starts, table) -> Element:
         group = by_name.get(node.get("name"))
         if group is None:  # the independent variable
             continue
-        start = _number(starts[group.name]) if group.name in starts else None
+        rows = tuple(row.name for row in group.rows)
+        start = start_text(group.name, starts, rows) if rows[0] in starts else None
         attributes = {
             "unit": group.unit,
             "displayUnit": group.display_unit,

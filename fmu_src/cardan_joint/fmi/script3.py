@@ -25,3 +25,4 @@ class ModelFmu(ModelSlave3, Fmi3Slave):
     model_folder = ""  # the model's folder under models/
     build_settings = {}
     start_overrides = {}
+    fmi3_arrays = False

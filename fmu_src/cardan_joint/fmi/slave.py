@@ -58,7 +58,8 @@ class ModelSlave(ModelBinding, SlaveCore, Fmi2Slave):
             "canSerializeFMUstate": True,
             **(model_options or {}),
         }
-        return complete(super().to_xml(options), self.table)
+        starts = {name: getattr(self._model, name) for name in self._refs.known}
+        return complete(super().to_xml(options), self.table, starts)
 
     def _report(self, message: str, status: Fmi2Status) -> None:
         # No stderr here: the FMU's native loader hands every message to the host's

@@ -1,8 +1,10 @@
 """The pythonfmu3 slave: the FMI 3.0 co-simulation face of `core.SlaveCore`.
 
 No equation and no joint logic live here: this maps FMI 3 value references
-(the independent variable `time`, then one per row of the model table's
-`fmi3_variables()`, vectors as Float64 arrays) onto the flat indices
+(the independent variable `time`, then one per FMI 3 variable: by default one
+scalar per row of the model's table, the FMI 2.0 variables; with `fmi3_arrays`
+(`--fmi3-arrays`) the table's `fmi3_variables()`, vectors as Float64 arrays)
+onto the flat indices
 `core` works with. pythonfmu3 0.3.4's C layer shares pythonfmu's traps:
 any Python exception becomes fmi3Fatal (so every entry point catches
 everything), and it copies exactly `nValues` values out of a getter's list
@@ -23,6 +25,7 @@ from pythonfmu3.enums import Fmi3Initial, Fmi3Status
 from pythonfmu3.fmi3slave import Fmi3StepResult
 from pythonfmu3.variables import Dimension
 
+from ..variable_schema import fmi3_groups
 from .binding import ModelBinding
 from .core import SlaveCore
 from .model_description3 import complete
@@ -46,6 +49,10 @@ class ModelSlave3(ModelBinding, SlaveCore, Fmi3Slave):
 
     log_categories = log_categories("fmi3")
     _STATUS, _API, _STATE = Fmi3Status, "fmi3", "State"
+    # Vectors as Float64 arrays (written in by the build, `--fmi3-arrays`): hosts that
+    # read a variable one value at a time (OMSimulator, Ecos) get nothing of an
+    # array, so the default is the table's scalars, which every host reads.
+    fmi3_arrays = False
     # The model's FMI 3 variables and, per value reference, the flat indices
     # (FMI 2 value references) it holds, its size, whether it can be set.
     GROUPS: tuple = ()
@@ -62,7 +69,10 @@ class ModelSlave3(ModelBinding, SlaveCore, Fmi3Slave):
 
     @classmethod
     def _lay_out(cls):
-        cls.GROUPS = groups = cls.table.fmi3_variables()
+        table = cls.table
+        cls.GROUPS = groups = (
+            table.fmi3_variables() if cls.fmi3_arrays else fmi3_groups(table.VARIABLES)
+        )
         names = cls._refs.names
         cls._FLAT = ((),) + tuple(tuple(names.index(r.name) for r in g.rows) for g in groups)
         cls.fast_flat = cls._FLAT  # how the native loader's one-call step maps value references

@@ -1,4 +1,4 @@
-"""The driveline system: Motor -> drive element -> Load, as SSP, run in two hosts.
+"""The driveline system: Motor -> drive element -> Load, as SSP, run in three hosts.
 
 The drive element is any FMU with the single joint's drive-path interface
 (inputs input_speed, input_acceleration, load_torque; outputs output_speed,
@@ -9,9 +9,9 @@ output_acceleration, input_torque): `UniversalJoint` or `Propshaft`, named by
     Drive.output_speed, .output_acceleration -> Load.speed, .acceleration
     Load.torque -> Drive.load_torque;  Drive.input_torque -> Motor.load_torque
 
-Both hosts couple explicitly (Jacobi): every FMU steps with the inputs of the
-last communication point, then outputs are passed on. See the README for what
-that does to the torque loop.
+FMPy, libcosim and Ecos couple explicitly (Jacobi): every FMU steps with the
+inputs of the last communication point, then outputs are passed on. See the
+README for what that does to the torque loop.
 
 The compliant system (`COMPLIANT_CONNECTIONS`) couples Motor -> CompliantJoint
 (or CompliantPropshaft) -> InertiaLoad: each inertia is a state of its own FMU,
@@ -29,6 +29,7 @@ from .ssp import Component, check_ssp, fmpy_parameter_set, write_ssp
 
 DRIVE = "Propshaft"
 DRIVE_INSTANCE = "Drive"
+SYSTEM = "Driveline"  # also the name of the parameter set every component binds
 # Drive-element parameters per drive model (anything the drive does not name keeps
 # its FMU's start value).
 DRIVE_PARAMETERS = {
@@ -181,9 +182,11 @@ def write_driveline_ssp(
     drive_parameters=None,
     connections=CONNECTIONS,
     recorded=RECORDED,
+    step_size: float = 1e-3,
 ) -> Path:
     """Write the system as an SSP archive. `fmus`: {instance: FMU path} as from
-    `build_fmus`; parameter dicts override the defaults above (the compliant
+    `build_fmus`; `step_size` is the fixed step the SSP names for OMSimulator;
+    parameter dicts override the defaults above (the compliant
     system: `COMPLIANT_CONNECTIONS`, `COMPLIANT_RECORDED` and its parameters from
     `compliant_parameters`)."""
     parameters = {
@@ -195,7 +198,7 @@ def write_driveline_ssp(
         Component(name, fmus[name], _connectors(name, connections, recorded), parameters[name])
         for name in ("Motor", DRIVE_INSTANCE, "Load")
     ]
-    return write_ssp(path, "Driveline", components, connections, stop_time)
+    return write_ssp(path, SYSTEM, components, connections, stop_time, step_size)
 
 
 def run_fmpy(ssp_path, stop_time: float, step_size: float, recorded=RECORDED) -> dict:
@@ -232,6 +235,15 @@ def run_libcosim(
 
     check_ssp(ssp_path)
     return run_libcosim_ssp(ssp_path, stop_time, step_size, recorded, log_level)
+
+
+def run_ecos(ssp_path, stop_time: float, step_size: float, recorded=RECORDED) -> dict:
+    """Ecos on the same SSP with its one parameter set (`SYSTEM`, every component's
+    binding); samples from t = 0 (initial outputs) on, as `run_libcosim`."""
+    from .ecos import run_ecos_ssp
+
+    check_ssp(ssp_path)
+    return run_ecos_ssp(ssp_path, stop_time, step_size, recorded, parameter_set=SYSTEM)
 
 
 def host_difference(fmpy_rows: dict, libcosim_rows: dict, keys=RECORDED) -> dict:

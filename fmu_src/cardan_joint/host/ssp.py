@@ -2,16 +2,24 @@
 
 `write_ssp` packs the FMUs, a SystemStructure.ssd with their connectors and
 connections, and one parameter set (.ssv) per component, bound at component
-level. Component-level bindings with bare variable names are what both hosts
-of this project apply: OSP libcosim ignores system-level bindings, and FMPy's
-`simulate_ssp` applies no binding at all but takes a parameter set with
-hierarchical names, which `fmpy_parameter_set` builds from the bindings.
-The same values are also bound once at system level, as one parameter set
-named after the system with hierarchical names ("<component>.<parameter>"): a host
-that applies one named parameter set at a time still gets every component's.
+level, each bound parameter declared as a connector of kind "parameter". What
+the hosts users have apply, read in their sources and measured:
+
+- OSP libcosim applies component-level bindings and ignores system-level ones;
+- Ecos collects component-level bindings into sets by the .ssv's set name and
+  applies the one set the user names (`--parameterSet`, `init(parameter_set=)`);
+- FMPy's `simulate_ssp` applies no binding itself but takes one parameter set
+  with hierarchical names, which `fmpy_parameter_set` builds from the bindings;
+- OMSimulator applies every binding, and needs its vendor annotation to create
+  the root system (the system kind: a fixed-step weakly coupled master) and one
+  under DefaultExperiment (else it warns of deprecated content).
+
+So every component's set carries the system's name (Ecos: `--parameterSet
+<system>` applies them all), and the annotations are OMSimulator's own.
 `check_ssp` turns a missing or broken archive into an `SSPError` naming it.
 """
 
+import math
 import zipfile
 from collections.abc import Mapping
 from dataclasses import dataclass, field
@@ -22,7 +30,13 @@ _XML_NAMESPACES = {
     "ssd": "http://ssp-standard.org/SSP1/SystemStructureDescription",
     "ssc": "http://ssp-standard.org/SSP1/SystemStructureCommon",
     "ssv": "http://ssp-standard.org/SSP1/SystemStructureParameterValues",
+    "oms": "https://raw.githubusercontent.com/OpenModelica/OMSimulator/master/schema/oms.xsd",
 }
+# OMSimulator's vendor annotations (src/OMSimulatorLib/ssd/Tags.cpp): a weakly
+# coupled system (co-simulation FMUs) with its fixed-step master ("oms-ma"), which
+# steps at the SSP's step as the other hosts do.
+OMS_ANNOTATION_TYPE = "org.openmodelica"
+OMS_MASTER = "oms-ma"
 FMU_TYPE = "application/x-fmu-sharedlibrary"
 SSV_TYPE = "application/x-ssp-parameter-set"
 
@@ -65,6 +79,15 @@ def _xml(root: Element) -> bytes:
     return b'<?xml version="1.0" encoding="UTF-8"?>\n' + tostring(root, encoding="utf-8") + b"\n"
 
 
+def _oms_annotation(parent: Element, tag: str, **attributes) -> Element:
+    """OMSimulator's `<ssd:Annotations><ssc:Annotation type="org.openmodelica">
+    <oms:Annotations><oms:{tag} .../>` under `parent`; returns the oms:{tag} element."""
+    annotations = SubElement(parent, _qualified("ssd", "Annotations"))
+    annotation = SubElement(annotations, _qualified("ssc", "Annotation"), type=OMS_ANNOTATION_TYPE)
+    oms = SubElement(annotation, _qualified("oms", "Annotations"))
+    return SubElement(oms, _qualified("oms", tag), attributes)
+
+
 def parameter_set_xml(name: str, values: Mapping[str, float]) -> bytes:
     ssv = lambda tag: _qualified("ssv", tag)  # noqa: E731
     root = _root(ssv("ParameterSet"), ("ssv",), version="1.0", name=name)
@@ -75,22 +98,35 @@ def parameter_set_xml(name: str, values: Mapping[str, float]) -> bytes:
     return _xml(root)
 
 
+def _connector_kinds(component: Component) -> dict[str, str]:
+    """The component's connectors: its connected variables, then its bound parameters."""
+    kinds = dict(component.connectors)
+    for parameter in component.parameters:
+        if kinds.setdefault(parameter, "parameter") != "parameter":
+            raise ValueError(
+                f"{component.name}: {parameter!r} is bound as a parameter but connected "
+                f"as an {kinds[parameter]}"
+            )
+    return kinds
+
+
 def system_structure_xml(
-    name: str, components: list[Component], connections: list[Connection], stop_time: float
+    name: str,
+    components: list[Component],
+    connections: list[Connection],
+    stop_time: float,
+    step_size: float,
 ) -> bytes:
     ssd = lambda tag: _qualified("ssd", tag)  # noqa: E731
-    root = _root(ssd("SystemStructureDescription"), ("ssd", "ssc"), version="1.0", name=name)
+    root = _root(ssd("SystemStructureDescription"), ("ssd", "ssc", "oms"), version="1.0", name=name)
     system = SubElement(root, ssd("System"), name=name)
-    if any(component.parameters for component in components):
-        bindings = SubElement(system, ssd("ParameterBindings"))
-        SubElement(bindings, ssd("ParameterBinding"), type=SSV_TYPE, source=_system_source(name))
     elements = SubElement(system, ssd("Elements"))
     for component in components:
         node = SubElement(
             elements, ssd("Component"), name=component.name, source=component.source, type=FMU_TYPE
         )
         connectors = SubElement(node, ssd("Connectors"))
-        for connector, kind in component.connectors.items():
+        for connector, kind in _connector_kinds(component).items():
             SubElement(
                 SubElement(connectors, ssd("Connector"), name=connector, kind=kind),
                 _qualified("ssc", "Real"),
@@ -110,14 +146,39 @@ def system_structure_xml(
             endElement=end_element,
             endConnector=end_connector,
         )
-    SubElement(root, ssd("DefaultExperiment"), startTime="0.0", stopTime=repr(float(stop_time)))
+    information = _oms_annotation(system, "SimulationInformation")
+    SubElement(
+        information,
+        _qualified("oms", "FixedStepMaster"),
+        description=OMS_MASTER,
+        stepSize=repr(float(step_size)),
+    )
+    experiment = SubElement(
+        root, ssd("DefaultExperiment"), startTime="0.0", stopTime=repr(float(stop_time))
+    )
+    # OMSimulator's defaults (Model.h), written out: its reader wants the element.
+    _oms_annotation(
+        experiment,
+        "SimulationInformation",
+        resultFile=f"{name}_res.mat",
+        loggingInterval="0.0",
+        bufferSize="10",
+    )
     return _xml(root)
 
 
 def write_ssp(
-    path, name: str, components: list[Component], connections: list[Connection], stop_time: float
+    path,
+    name: str,
+    components: list[Component],
+    connections: list[Connection],
+    stop_time: float,
+    step_size: float,
 ) -> Path:
-    """Write the SSP archive `path`; return its path."""
+    """Write the SSP archive `path` (`step_size`: OMSimulator's fixed master step;
+    the other hosts take theirs from the caller); return its path."""
+    if not (math.isfinite(step_size) and 0.0 < step_size <= stop_time):
+        raise ValueError(f"step_size {step_size!r} must be in (0, stop_time = {stop_time!r}]")
     by_name = {c.name: c for c in components}
     for start_element, start_connector, end_element, end_connector in connections:
         for element, connector, kind in (
@@ -134,24 +195,17 @@ def write_ssp(
     path.parent.mkdir(parents=True, exist_ok=True)
     with zipfile.ZipFile(path, "w", zipfile.ZIP_DEFLATED) as archive:
         archive.writestr(
-            "SystemStructure.ssd", system_structure_xml(name, components, connections, stop_time)
+            "SystemStructure.ssd",
+            system_structure_xml(name, components, connections, stop_time, step_size),
         )
-        everything = {}
         for component in components:
             archive.write(component.fmu, component.source)
             if component.parameters:
+                # Named after the system: the one set Ecos applies holds every component's.
                 archive.writestr(
-                    component.parameter_source,
-                    parameter_set_xml(component.name, component.parameters),
+                    component.parameter_source, parameter_set_xml(name, component.parameters)
                 )
-            everything.update({f"{component.name}.{n}": v for n, v in component.parameters.items()})
-        if everything:
-            archive.writestr(_system_source(name), parameter_set_xml(name, everything))
     return path
-
-
-def _system_source(name: str) -> str:
-    return f"resources/{name}.ssv"
 
 
 class SSPError(ValueError):

@@ -1,0 +1,150 @@
+"""The driveline SSP system (Motor -> drive element -> Load) in FMPy, libcosim and
+Ecos, and what it carries for OMSimulator and pyssp-standard."""
+
+import math
+import subprocess
+import sys
+import zipfile
+
+import numpy as np
+import pytest
+from conftest import ROOT
+from jacobi import jacobi_master
+from ssp_checks import check_ssp_for_every_host
+
+from cardan_joint import results
+from cardan_joint.host import driveline_system as system
+from cardan_joint.host.ssp import Component, write_ssp
+
+
+@pytest.fixture(scope="module")
+def driveline_ssp(motor_fmu_path, load_fmu_path, request, tmp_path_factory):
+    folder = tmp_path_factory.mktemp("ssp")
+    # The session's FMU of the drive model (built once for all tests).
+    session_fixture = {"UniversalJoint": "fmu_path", "Propshaft": "propshaft_fmu_path"}
+    drive = request.getfixturevalue(session_fixture[system.DRIVE])
+    fmus = {
+        "Motor": motor_fmu_path,
+        system.DRIVE_INSTANCE: drive,
+        "Load": load_fmu_path,
+    }
+    return system.write_driveline_ssp(folder / "Driveline.ssp", fmus)
+
+
+# --- the SSP system --------------------------------------------------------
+
+
+def test_ssp_holds_the_three_fmus_connections_and_parameter_sets(driveline_ssp):
+    from fmpy.ssp.ssd import read_ssd
+
+    # Valid for pyssp-standard, every bound parameter a parameter connector, one set
+    # name for Ecos, OMSimulator's annotations.
+    assert check_ssp_for_every_host(driveline_ssp) == {
+        "Motor": system.MOTOR_PARAMETERS,
+        system.DRIVE_INSTANCE: system.DRIVE_PARAMETERS[system.DRIVE],
+        "Load": system.LOAD_PARAMETERS,
+    }
+
+    ssd = read_ssd(str(driveline_ssp))  # validates against the SSP schema
+    assert [c.name for c in ssd.system.elements] == ["Motor", system.DRIVE_INSTANCE, "Load"]
+    assert len(ssd.system.connections) == 6
+    names = zipfile.ZipFile(driveline_ssp).namelist()
+    assert {
+        "resources/Motor.fmu",
+        f"resources/{system.DRIVE}.fmu",
+        "resources/Load.fmu",
+        "resources/Motor.ssv",
+        "resources/Drive.ssv",
+        "resources/Load.ssv",
+    } <= set(names)
+
+
+def test_ssp_writer_refuses_a_connection_to_a_missing_connector(tmp_path, motor_fmu_path):
+    motor = Component("Motor", motor_fmu_path, {"speed": "output"})
+    with pytest.raises(ValueError, match="Motor has no input connector 'speed'"):
+        write_ssp(
+            tmp_path / "x.ssp", "X", [motor], [("Motor", "speed", "Motor", "speed")], 1.0, 0.1
+        )
+
+
+def test_ssp_writer_refuses_a_parameter_that_is_also_connected_and_a_bad_step(
+    tmp_path, motor_fmu_path
+):
+    motor = Component("Motor", motor_fmu_path, {"load_torque": "input"}, {"load_torque": 1.0})
+    with pytest.raises(ValueError, match="'load_torque' is bound as a parameter but connected"):
+        write_ssp(tmp_path / "x.ssp", "X", [motor], [], 1.0, 0.1)
+    motor = Component("Motor", motor_fmu_path, {}, {"stall_torque": 1.0})
+    for step in (0.0, -1e-3, math.nan, 2.0):
+        with pytest.raises(ValueError, match="step_size .* must be in \\(0, stop_time = 1.0\\]"):
+            write_ssp(tmp_path / "x.ssp", "X", [motor], [], 1.0, step)
+
+
+def test_both_hosts_apply_the_parameter_sets_and_differ_only_by_the_first_step(driveline_ssp):
+    differences = {}
+    for h in (1e-3, 5e-4):
+        fmpy_rows = system.run_fmpy(driveline_ssp, 0.2, h)
+        libcosim_rows = system.run_libcosim(driveline_ssp, 0.2, h)
+        differences[h] = system.host_difference(fmpy_rows, libcosim_rows)["Motor.speed"]
+        # The parameter sets reached the FMUs in both hosts: motor torque = 120 (1 - w / w0).
+        for rows in (fmpy_rows, libcosim_rows):
+            expected = 120.0 * (1 - rows["Motor.speed"] / system.MOTOR_PARAMETERS["no_load_speed"])
+            np.testing.assert_allclose(rows["Motor.motor_torque"], expected, rtol=1e-12, atol=1e-9)
+    # libcosim starts from the initial outputs, FMPy from zeros: the difference is one
+    # step's impulse, so it halves with the step.
+    assert 1.9 < differences[1e-3] / differences[5e-4] < 2.1, differences
+
+
+def test_ecos_applies_the_one_parameter_set_and_differs_from_fmpy_by_the_first_step(
+    driveline_ssp,
+):
+    # Ecos applies the one set named at initialisation: named after the system, it
+    # holds every component's parameters (with a component's name it held one only,
+    # and the run diverged).
+    differences = {}
+    for h in (1e-3, 5e-4):
+        fmpy_rows = system.run_fmpy(driveline_ssp, 0.2, h)
+        ecos_rows = system.run_ecos(driveline_ssp, 0.2, h)
+        expected = 120.0 * (1 - ecos_rows["Motor.speed"] / system.MOTOR_PARAMETERS["no_load_speed"])
+        np.testing.assert_allclose(ecos_rows["Motor.motor_torque"], expected, rtol=1e-12, atol=1e-9)
+        differences[h] = system.host_difference(fmpy_rows, ecos_rows)["Motor.speed"]
+    # Ecos, as libcosim, passes initial outputs through first: a first-step impulse,
+    # halving with the step. (With the drive's and load's defaults instead of the
+    # set's, the torque loop ran away: -7.6e4 rad/s at 0.2 s.)
+    assert 1.9 < differences[1e-3] / differences[5e-4] < 2.1, differences
+
+
+def test_example_writes_the_ssp_both_csvs_and_the_plot(tmp_path):
+    run = subprocess.run(
+        [sys.executable, str(ROOT / "examples" / "driveline_ssp.py"), "--out", str(tmp_path)],
+        capture_output=True,
+        text=True,
+        cwd=ROOT,
+    )
+    assert run.returncode == 0, run.stderr
+    for name in (
+        "Driveline.ssp",
+        "driveline_ssp_fmpy.csv",
+        "driveline_ssp_libcosim.csv",
+        "driveline_ssp_ecos.csv",
+        "driveline_ssp.png",
+    ):
+        assert (tmp_path / name).stat().st_size > 0
+    check_ssp_for_every_host(tmp_path / "Driveline.ssp")
+    for host in ("libcosim", "ecos"):
+        rows = results.read_csv(tmp_path / f"driveline_ssp_{host}.csv")
+        assert list(rows.dtype.names[:2]) == ["time", "Motor.speed"] and len(rows) == 1001
+    assert "ratio 2, step 0.0001 s: DIVERGES" in run.stdout
+    assert "ratio 0.5, step 0.001 s: bounded" in run.stdout
+
+
+def test_each_host_is_exactly_a_jacobi_master_with_its_own_first_inputs(driveline_ssp):
+    h, stop_time = 1e-3, 0.1
+    fmpy_rows = system.run_fmpy(driveline_ssp, stop_time, h)
+    libcosim_rows = system.run_libcosim(driveline_ssp, stop_time, h)
+    zeros = {key: 0.0 for key in system.RECORDED}
+    initial = {key: libcosim_rows[key][0] for key in system.RECORDED}
+    for rows, first, offset in ((fmpy_rows, zeros, 0), (libcosim_rows, initial, 1)):
+        reference = jacobi_master(driveline_ssp, stop_time, h, first)
+        for key in system.RECORDED:
+            scale = max(1.0, np.max(np.abs(reference[key])))
+            assert np.max(np.abs(rows[key][offset:] - reference[key])) <= 1e-9 * scale, key
