@@ -35,16 +35,17 @@ _COMMON = (
     "python_start.c",
     "python_discovery.c",
     "runtime_record.c",
+    "record_check.c",
+    "slave_module.c",
 )
 SOURCES = {
-    2: ("loader.c", "fmi2_calls.c", "fmu_states.c", *_COMMON),
+    2: ("loader.c", "fmi2_calls.c", "fmi2_unsupported.c", "fmu_states.c", *_COMMON),
     3: (
         "fmi3_loader.c",
         "fmi3_calls.c",
         "fmi3_states.c",
         "fmi3_unsupported.c",
         "fmi3_variables.c",
-        "slave_module.c",
         *_COMMON,
     ),
 }

@@ -47,8 +47,8 @@ void fast_after(struct instance *in)
 }
 
 /* The flat indices of value reference vr (0 if none: FMI 3's time, an unknown one). */
-static long long flat_of(const struct fast_path *fast, unsigned vr, const long long **indices,
-                         long long *own)
+long long flat_of(const struct fast_path *fast, unsigned vr, const long long **indices,
+                  long long *own)
 {
     const long long *table = fast->table;
     if (!table) {
@@ -128,7 +128,6 @@ int fast_step(struct instance *in, double time, double step)
     long status = fast_call(in, FAST_STEP, time, step);
     /* pythonfmu: the step's end when taken, its start when not (NaN before any). */
     fast->last_successful_time = status == fmi2OK ? time + step : time;
-    fast->terminated |= status != fmi2OK; /* pythonfmu never clears it again */
     fast->inputs_written = 0;
     fast->stale = status != fmi2OK;
     return (int)status;
@@ -149,6 +148,6 @@ int fast_terminated(const struct instance *in, int *value)
 {
     if (!in->fast)
         return 0;
-    *value = in->fast->terminated;
+    *value = fmi2False;  /* a refused step is an error, not the model's end */
     return 1;
 }

@@ -148,17 +148,24 @@ int read_variable_record(const char *resources, int (*keep)(const struct record_
                  strerror(errno));
         return -1;
     }
-    int line_number = 0, ok = 1;
+    int line_number = 0, ok = 1, rows = 0;
     while (ok && fgets(line, sizeof line, file)) {
         line_number++;
         if (line[0] == '#' || line[0] == '\n')
             continue;
         struct record_row row;
-        ok = sscanf(line, "%u %15s %zu %d %63s", &row.vr, row.type, &row.size, &row.fixed,
-                    row.name) == 5 &&
+        char end = 0;
+        /* A whole line or none: a row cut short by a truncated file is refused. */
+        ok = sscanf(line, "%u %15s %zu %d %63s%c", &row.vr, row.type, &row.size, &row.fixed,
+                    row.name, &end) == 6 && end == '\n' && (row.fixed == 0 || row.fixed == 1) &&
              keep(&row, kept);
+        rows++;
     }
     fclose(file);
+    if (ok && rows == 0) {
+        snprintf(error, size, "%s names no variable: the FMU is incomplete, rebuild it", name);
+        return -1;
+    }
     if (!ok)
         snprintf(error, size, "%s, line %d: not 'valueReference type size fixed name' "
                               "(at most %d kept): rebuild the FMU", name, line_number, most);
