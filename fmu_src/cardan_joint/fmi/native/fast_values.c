@@ -135,19 +135,12 @@ int fast_step(struct instance *in, double time, double step)
 
 /* fmi2GetRealStatus(fmi2LastSuccessfulTime) and fmi2GetBooleanStatus(fmi2Terminated)
  * (FMPy's simulate_fmu asks both after a refused step): kept here, as pythonfmu
- * keeps them in its doStep, which the one-call step does not go through. */
+ * keeps them in its doStep, which the one-call step does not go through.
+ * fmi2Terminated is always false (fmi2_calls.c). */
 int fast_last_successful_time(const struct instance *in, double *value)
 {
     if (!in->fast)
         return 0;
     *value = in->fast->last_successful_time;
-    return 1;
-}
-
-int fast_terminated(const struct instance *in, int *value)
-{
-    if (!in->fast)
-        return 0;
-    *value = fmi2False;  /* a refused step is an error, not the model's end */
     return 1;
 }

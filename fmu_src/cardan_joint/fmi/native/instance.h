@@ -128,7 +128,6 @@ void fast_set(struct instance *in, const unsigned vr[], size_t n, const double v
 fmi2Status fast_get(struct instance *in, const unsigned vr[], size_t n, double value[]);
 int fast_step(struct instance *in, double time, double step);
 int fast_last_successful_time(const struct instance *in, double *value);
-int fast_terminated(const struct instance *in, int *value);
 int fast_initialized(struct instance *in);
 /* After a set FMU state: the mode the state was taken in (calls.c). */
 void restore_mode(struct instance *in, fmi2Status status);
