@@ -59,7 +59,7 @@ def test_parameters_are_fixed_after_initialization(joint3):
         joint3.set(max_bend_angle=0.1)
     assert refused.value.status == 3
     assert joint3.messages[-1][:2] == (3, "logStatusError")
-    assert "(max_bend_angle, Float64) is fixed" in joint3.messages[-1][2]
+    assert "parameter max_bend_angle is fixed" in joint3.messages[-1][2]
     assert joint3.get("max_bend_angle")["max_bend_angle"] == table.BY_NAME["max_bend_angle"].start
 
 

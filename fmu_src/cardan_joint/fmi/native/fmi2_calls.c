@@ -191,8 +191,8 @@ fmi2Status fmi2SetReal(fmi2Component c, const fmi2ValueReference vr[], size_t n,
         const char *fixed = fixed_parameter(in, vr[i]);
         if (fixed)
             reportf(in, fmi2Error, "parameter %s is fixed: it can be set only before "
-                    "fmi2ExitInitializationMode; %.17g was not set (the call's other %zu "
-                    "values were)", fixed, value[i], n - refused);
+                    "fmi2ExitInitializationMode; %.17g was not set%s", fixed, value[i],
+                    n > refused ? " (the call's other values were)" : "");
         else
             kept_vr[kept] = vr[i], kept_value[kept++] = value[i];
     }

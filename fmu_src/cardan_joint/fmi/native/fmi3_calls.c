@@ -64,7 +64,9 @@ static fmi3Status set_all_but_fixed(struct instance3 *in3, const char *function,
     struct instance *in = &in3->base;
     fmi3ValueReference *kept_vr = malloc(nvr * sizeof *kept_vr);
     char *kept_values = malloc(n_values * element ? n_values * element : 1);
-    size_t kept = 0, kept_n = 0, at = 0;
+    size_t kept = 0, kept_n = 0, at = 0, fixed = 0;
+    for (size_t i = 0; i < nvr; i++)
+        fixed += find_variable(in3->variables, vr[i])->fixed;
     if (!kept_vr || !kept_values) {
         free(kept_vr), free(kept_values);
         reportf(in, fmi2Error, "%s: out of memory; the call was ignored", function);
@@ -74,8 +76,8 @@ static fmi3Status set_all_but_fixed(struct instance3 *in3, const char *function,
         const struct variable *v = find_variable(in3->variables, vr[i]);
         if (v->fixed) {
             reportf(in, fmi2Error, "%s: parameter %s is fixed: it can be set only before "
-                    "fmi3ExitInitializationMode; its value was not set (the call's other "
-                    "values were)", function, v->name);
+                    "fmi3ExitInitializationMode; its value was not set%s", function, v->name,
+                    nvr > fixed ? " (the call's other values were)" : "");
         } else {
             kept_vr[kept++] = vr[i];
             memcpy(kept_values + kept_n * element, (const char *)values + at * element,
