@@ -105,9 +105,10 @@ static int check_version(const struct runtime_record *record, const char *whose,
     if (sscanf(version, "%d.%d", &major, &minor) == 2 && major == 3 &&
         minor >= record->minimum_minor)
         return 0;
-    snprintf(error, size, "this FMU needs CPython 3.%d or newer, but the Python %s is %.*s; "
-             "run it in a Python 3.%d to 3.%d process", record->minimum_minor, whose,
-             (int)strcspn(version, " "), version, record->minimum_minor, NEWEST_MINOR);
+    snprintf(error, size, "this FMU needs CPython 3.%d or newer, but the Python %s is %.*s "
+             "(the minimum is its resources/" RUNTIME_RECORD "'s); run it in a Python 3.%d "
+             "or newer process", record->minimum_minor, whose, (int)strcspn(version, " "),
+             version, record->minimum_minor);
     return -1;
 }
 

@@ -26,6 +26,9 @@ int resources_folder(const char *location, char *folder, size_t size)
 {
     if (!location)
         return -1;
+    /* Only a URI is percent-encoded: FMI 3.0's resourcePath is a plain path, in
+     * which a folder named x%41y is just that. */
+    int uri = strncmp(location, "file:", 5) == 0;
     if (strncmp(location, "file://", 7) == 0) {
         location += 7;
         if (strncmp(location, "localhost/", 10) == 0)
@@ -37,7 +40,8 @@ int resources_folder(const char *location, char *folder, size_t size)
     for (const char *c = location; *c; c++) {
         if (n + 1 >= size)
             return -1;
-        if (c[0] == '%' && isxdigit((unsigned char)c[1]) && isxdigit((unsigned char)c[2])) {
+        if (uri && c[0] == '%' && isxdigit((unsigned char)c[1]) &&
+            isxdigit((unsigned char)c[2])) {
             folder[n++] = (char)(hex((unsigned char)c[1]) * 16 + hex((unsigned char)c[2]));
             c += 2;
         } else {

@@ -85,8 +85,8 @@ int slave_module_imports(const char *resources, char *error, size_t size)
     const char *text = problem ? p_PyUnicode_AsUTF8(problem) : "the check itself failed";
     int failed = !text || *text;
     if (failed)
-        snprintf(error, size, "the slave's module %s does not import from %s (%s)", module,
-                 resources, text ? text : "unknown error");
+        snprintf(error, size, "the slave's module %s, named in %s/slavemodule.txt, does not "
+                 "import from there (%s)", module, resources, text ? text : "unknown error");
     p_PyErr_Clear();
     PyObject *owned[] = {result, name, path, globals};
     for (size_t i = 0; i < sizeof owned / sizeof *owned; i++)
