@@ -26,6 +26,8 @@ int main(void)
                  l->module_search_paths == offsetof(PyConfig, module_search_paths) &&
                  l->site_import == offsetof(PyConfig, site_import) &&
                  l->install_signal_handlers == offsetof(PyConfig, install_signal_handlers);
+        ok = ok && PRECONFIG_SIZE == sizeof(PyPreConfig) &&
+             PRECONFIG_UTF8_MODE == offsetof(PyPreConfig, utf8_mode);
         puts(ok ? "layout ok" : "layout differs");
         return 0;
     }

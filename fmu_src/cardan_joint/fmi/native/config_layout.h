@@ -24,5 +24,8 @@ static const struct config_layout CONFIG_LAYOUTS[] = {
 #define N_CONFIG_LAYOUTS (sizeof CONFIG_LAYOUTS / sizeof *CONFIG_LAYOUTS)
 /* Room for PyConfig of every minor above, debug builds included. */
 #define CONFIG_ROOM 2048
+/* PyPreConfig: the same in 3.10-3.13 (Linux). */
+#define PRECONFIG_SIZE 40
+#define PRECONFIG_UTF8_MODE 28
 
 #endif

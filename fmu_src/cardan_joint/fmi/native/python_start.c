@@ -30,6 +30,8 @@ typedef struct {
 } PyWideStringList;
 
 #define CONFIG_FUNCTIONS(X)                                                              \
+    X(void, PyPreConfig_InitIsolatedConfig, (void *))                                    \
+    X(PyStatus, Py_PreInitialize, (const void *))                                        \
     X(void, PyConfig_InitIsolatedConfig, (void *)) X(void, PyConfig_Clear, (void *))     \
     X(PyStatus, PyConfig_SetBytesString, (void *, wchar_t **, const char *))             \
     X(PyStatus, PyWideStringList_Append, (PyWideStringList *, const wchar_t *))          \
@@ -84,11 +86,22 @@ int start_interpreter(void *library, int minor, const struct python_location *py
     }
     CONFIG_FUNCTIONS(DECLARE)
 #undef DECLARE
+    /* UTF-8 mode: a C-locale host (no LANG) would otherwise give Python ASCII file
+     * names, and a resources path such as /opt/fmus/résumé could not be used. */
+    alignas(8) char preconfig[PRECONFIG_SIZE];
+    PyPreConfig_InitIsolatedConfig(preconfig);
+    *(int *)(preconfig + PRECONFIG_UTF8_MODE) = 1;
+    PyStatus status = Py_PreInitialize(preconfig);
+    if (status.type != 0) {
+        snprintf(error, size, "Python %s did not pre-initialize: %s", python->library,
+                 status.err_msg ? status.err_msg : "exit requested");
+        return -2;
+    }
     static alignas(64) char config[CONFIG_ROOM];  /* used once per process, under its lock */
     PyConfig_InitIsolatedConfig(config);
     *(int *)(config + layout->site_import) = 0;             /* the path is all */
     *(int *)(config + layout->install_signal_handlers) = 0; /* the host owns its signals */
-    PyStatus status = PyConfig_SetBytesString(
+    status = PyConfig_SetBytesString(
         config, (wchar_t **)(config + layout->home), python->home);
     char entries[sizeof python->path];
     snprintf(entries, sizeof entries, "%s", python->path);
