@@ -83,8 +83,7 @@ def machine(
     """A script that runs its arguments, with an empty environment, on a machine
     without the build's Python: Debian's own Python kept or removed, pyenv's
     CPythons 3.<distribution> laid out as a distribution's, and 3.<cached> in a
-    folder that only the linker's cache (/etc/ld.so.cache, remade) knows; 3.<empty>'s
-    library a 0-byte file (its standard library kept)."""
+    folder that only the linker's cache (/etc/ld.so.cache, remade) knows."""
     upper, work = tmp_path / "upper", tmp_path / "work"
     upper.mkdir(), work.mkdir()
     lines = [
@@ -99,9 +98,8 @@ def machine(
         ]
     for minor in distribution:
         lines += lay_out(minor, MULTIARCH, Path("/usr/lib"))
-    if empty is not None:
-        lines.append(f"rm -f {MULTIARCH}/libpython3.{empty}.so.1.0")
-        lines.append(f": > {MULTIARCH}/libpython3.{empty}.so.1.0")
+    if empty is not None:  # 3.<empty>'s library a 0-byte file, its standard library kept
+        lines.append(f"truncate -s 0 {MULTIARCH}/libpython3.{empty}.so.1.0")
     if cached is not None:
         prefix = tmp_path / "opt" / "lib"
         (tmp_path / "ld.so.conf").write_text(f"{prefix}\n")

@@ -53,7 +53,9 @@ def fmu_argument(folder) -> str:
 def test_different_fmus_started_at_once_thirty_of_thirty(
     concurrent_host, unzipped_fmu, propshaft_unzipped, fmi3_unzipped
 ):
-    arguments = [fmu_argument(folder) for folder in (unzipped_fmu, propshaft_unzipped, fmi3_unzipped)]
+    arguments = [
+        fmu_argument(folder) for folder in (unzipped_fmu, propshaft_unzipped, fmi3_unzipped)
+    ]
     environment = {"PATH": "/usr/bin:/bin"}
     serial = subprocess.run(
         [str(concurrent_host), "serial", *arguments],

@@ -8,7 +8,6 @@ import subprocess
 
 import pytest
 
-
 # FMI 2.0's fmuResourceLocation is a URI, in which %41 does mean A.
 CASES = [(2, "résumé_ü"), (3, "résumé_ü"), (3, "x%41y")]
 

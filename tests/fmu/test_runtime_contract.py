@@ -96,9 +96,7 @@ def test_a_step_mode_state_set_into_a_fresh_instance_steps_on(request, version):
 
 
 @pytest.mark.parametrize("version", [2, 3])
-def test_a_refused_step_fails_an_fmusim_style_loop_and_a_corrected_input_goes_on(
-    request, version
-):
+def test_a_refused_step_fails_an_fmusim_style_loop_and_a_corrected_input_goes_on(request, version):
     _, unzipped = opened(request, version)
     host = request.getfixturevalue(FIXTURES[version][2])
     run = subprocess.run(
@@ -120,8 +118,9 @@ def test_a_refused_step_fails_an_fmusim_style_loop_and_a_corrected_input_goes_on
 def test_fmpy_simulate_fmu_raises_on_a_refused_step(request, version):
     path = request.getfixturevalue(FIXTURES[version][0])
     with pytest.raises(Exception, match="Error|error|3"):
-        simulate_fmu(str(path), stop_time=0.01, output_interval=1e-3,
-                     start_values={"bend_angle": 2.0})
+        simulate_fmu(
+            str(path), stop_time=0.01, output_interval=1e-3, start_values={"bend_angle": 2.0}
+        )
 
 
 @pytest.mark.parametrize("version", [2, 3])

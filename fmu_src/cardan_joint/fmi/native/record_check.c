@@ -5,7 +5,8 @@
  * overrun or a guard fall silent.  The slave's layout is the one-call step's
  * (fast_path.c): every Real/Float64 row must hold exactly the flat indices the
  * slave gives its value reference, the rows together every flat index once,
- * and a fixed row only parameters.  An instance without the one-call step
+ * and a fixed row only parameters; every row is a real, as the slave's are.
+ * An instance without the one-call step
  * (the benchmarks' floor FMU) has no layout to check against. */
 #define _GNU_SOURCE
 #include "fast_path.h"
@@ -31,8 +32,10 @@ static int fail(struct check *check, const struct record_row *row, const char *w
 static int check_row(const struct record_row *row, void *data)
 {
     struct check *check = data;
+    /* The slave's layout holds reals only: a row of another type is not the slave's
+     * (a model with integer variables would extend the layout first). */
     if (strcmp(row->type, "Real") != 0 && strcmp(row->type, "Float64") != 0)
-        return 1;
+        return fail(check, row, "has a type the slave does not have");
     const long long *indices;
     long long mine;
     long long count = flat_of(check->fast, row->vr, &indices, &mine);
