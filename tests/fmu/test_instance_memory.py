@@ -25,11 +25,13 @@ def peak_kib(host, folder, cycles: int) -> int:
     return usage.ru_maxrss
 
 
+# Not strict: the peak-memory growth it leaves varies between runs (2.6 to 17 KB
+# per cycle measured), and once in a while stays below the bound.
 LEAKS = pytest.mark.xfail(
-    strict=True,
+    strict=False,
     reason="pythonfmu 0.7.0's binary re-runs the slave script at every fmi2Instantiate and "
     "the script's compensating Py_IncRef keeps each run's namespace (its model class) "
-    "alive: about 2.6 KB per cycle, gone once the runtime constructs the slave itself "
+    "alive, gone once the runtime constructs the slave itself "
     "(issue 24 item 1)",
 )
 
