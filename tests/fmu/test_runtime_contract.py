@@ -140,3 +140,10 @@ def test_a_batch_set_with_a_fixed_parameter_sets_the_other_values(request, versi
         assert "yoke_phase is fixed" in text and "other" in text, messages
     finally:
         joint.close()
+
+
+def test_libcosim_fails_a_refused_run(fmu_path):
+    from cardan_joint.host.cosim import run_libcosim
+
+    with pytest.raises(RuntimeError, match="stepping failed"):
+        run_libcosim(fmu_path, 0.01, 1e-3, {"bend_angle": 2.0}, ["output_angle"])
