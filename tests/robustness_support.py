@@ -1,6 +1,7 @@
 """Inputs and readers shared by the test_robustness*.py modules."""
 
-DISCARD = 2
+DISCARD = 2  # the status a refusal message is logged with
+REFUSED = 3  # what a refused step returns (fmi2Error/fmi3Error: docs/fmi-tools.md)
 GOOD = dict(
     input_speed=12.0,
     input_acceleration=3.0,

@@ -77,7 +77,7 @@ def test_c_host_equals_fmpy_over_ten_thousand_steps(c_host, fmu_path, unzipped_f
 
 def test_a_bad_input_with_logging_off_reaches_the_logger_once(c_host, unzipped_fmu):
     run = run_host(c_host, "bad", unzipped_fmu, "bend_angle", "2.0")
-    assert "set 0 step 2 logger_calls 1" in run.stdout  # fmi2Discard, one message
+    assert "set 0 step 3 logger_calls 1" in run.stdout  # a refused step: fmi2Error, one message
     assert "bend_angle = 2.0 rad" in run.stdout and "max_bend_angle" in run.stdout
     assert "[UniversalJoint" not in run.stderr  # nothing on stderr
 

@@ -140,7 +140,7 @@ def test_motor_fmu_refuses_a_nan_load_torque_and_says_why(motor_unzipped):
         motor.step(0.1)
         speed = motor.get("speed")
         motor.set(load_torque=math.nan)
-        assert motor.try_step(0.1) == 2  # fmi2Discard
+        assert motor.try_step(0.1) == 3  # a refused step: fmi2Error
         assert any(
             text.startswith(
                 "t = 0.1 s: input load_torque = nan N.m is not a finite "

@@ -53,7 +53,7 @@ def test_c_host_equals_fmpy_over_ten_thousand_steps(c_host3, fmi3_path, fmi3_unz
 
 def test_a_bad_input_with_logging_off_reaches_the_logger_once(c_host3, fmi3_unzipped):
     run = run_host(c_host3, "bad", fmi3_unzipped, "bend_angle", "2.0")
-    assert "set 0 step 2 logger_calls 1" in run.stdout  # fmi3Discard, one message
+    assert "set 0 step 3 logger_calls 1" in run.stdout  # a refused step: fmi3Error, one message
     assert "bend_angle = 2.0 rad" in run.stdout and "max_bend_angle" in run.stdout
     assert "t = 0.0 s" in run.stdout
     assert "[UniversalJoint" not in run.stderr  # nothing on stderr

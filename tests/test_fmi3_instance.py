@@ -34,7 +34,7 @@ def test_a_bad_input_is_refused_with_its_message_and_nothing_is_lost(joint3):
     before = _state_bytes(joint3)
     # Ends below the guard, crosses it mid-step (vertex of the bend parabola).
     joint3.set(bend_angle=1.3, bend_angle_rate=4.0, bend_angle_acceleration=-80.0)
-    assert joint3.try_step(0.1) == 2  # fmi3Discard
+    assert joint3.try_step(0.1) == 3  # a refused step: fmi3Error
     status, category, message = joint3.messages[-1]
     assert (status, category) == (2, "logStatusDiscard")
     for words in (
@@ -59,7 +59,7 @@ def test_parameters_are_fixed_after_initialization(joint3):
         joint3.set(max_bend_angle=0.1)
     assert refused.value.status == 3
     assert joint3.messages[-1][:2] == (3, "logStatusError")
-    assert "(max_bend_angle, Float64) is fixed" in joint3.messages[-1][2]
+    assert "parameter max_bend_angle is fixed" in joint3.messages[-1][2]
     assert joint3.get("max_bend_angle")["max_bend_angle"] == table.BY_NAME["max_bend_angle"].start
 
 

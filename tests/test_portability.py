@@ -73,7 +73,12 @@ def lay_out(minor: int, library_directory: Path, stdlib_directory: Path) -> list
 
 
 def machine(
-    tmp_path: Path, *, debian_python: bool, distribution: tuple = (), cached: int | None = None
+    tmp_path: Path,
+    *,
+    debian_python: bool,
+    distribution: tuple = (),
+    cached: int | None = None,
+    empty: int | None = None,
 ) -> Path:
     """A script that runs its arguments, with an empty environment, on a machine
     without the build's Python: Debian's own Python kept or removed, pyenv's
@@ -93,6 +98,8 @@ def machine(
         ]
     for minor in distribution:
         lines += lay_out(minor, MULTIARCH, Path("/usr/lib"))
+    if empty is not None:  # 3.<empty>'s library a 0-byte file, its standard library kept
+        lines.append(f"truncate -s 0 {MULTIARCH}/libpython3.{empty}.so.1.0")
     if cached is not None:
         prefix = tmp_path / "opt" / "lib"
         (tmp_path / "ld.so.conf").write_text(f"{prefix}\n")
@@ -174,6 +181,10 @@ CHOICES = {
     ),
     "3.12 before 3.10": (
         dict(debian_python=False, distribution=(10, 12)),
+        f"{MULTIARCH}/libpython3.12.so.1.0",
+    ),
+    "3.12 where Debian's 3.11 is a 0-byte file": (
+        dict(debian_python=True, distribution=(12,), empty=11),
         f"{MULTIARCH}/libpython3.12.so.1.0",
     ),
     "3.12 known only to the linker's cache": (

@@ -13,7 +13,7 @@ from tolerance import assert_close
 
 from cardan_joint.host.instance import FmuInstance
 
-DISCARD = 2
+REFUSED = 3  # a refused step: fmi2Error (docs/fmi-tools.md)
 D = math.radians
 STEPS = 25
 
@@ -177,7 +177,7 @@ def test_a_working_angle_at_the_limit_refuses_every_step_and_says_why(
         start_values=dict(shaft_1_side_angle=D(-20.0), max_working_angle=D(20.0)),
     )
     try:
-        assert shaft.try_step(0.01) == DISCARD
+        assert shaft.try_step(0.01) == REFUSED
         text = " ".join(m for _, _, m in messages)
         assert "joint_1_working_angle" in text and "max_working_angle" in text
         assert shaft.time == 0.0
@@ -194,7 +194,7 @@ def test_a_non_finite_input_is_refused_and_loses_nothing(description, propshaft_
         shaft.step(0.1)
         before = shaft.get("input_angle", "output_angle")
         shaft.set(load_torque=math.nan)
-        assert shaft.try_step(0.1) == DISCARD
+        assert shaft.try_step(0.1) == REFUSED
         assert any("load_torque = nan" in m for _, _, m in messages)
         shaft.set(load_torque=1.0)
         assert shaft.get("input_angle", "output_angle") == before

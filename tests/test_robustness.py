@@ -8,7 +8,7 @@ import zipfile
 
 import numpy as np
 import pytest
-from robustness_support import DISCARD, GOOD, all_reals
+from robustness_support import DISCARD, GOOD, REFUSED, all_reals
 
 from cardan_joint.host.instance import FmuInstance
 from cardan_joint.host.simulate import SimulationError, simulate
@@ -66,7 +66,7 @@ def test_bad_input_is_refused_named_and_loses_nothing(model_description, unzippe
                 j.step(0.01)
         before = all_reals(joint)
         joint.set(**bad)
-        assert joint.try_step(step) == DISCARD
+        assert joint.try_step(step) == REFUSED
         refusal = [m for m in messages if m[0] == DISCARD][-1][2]
         for word in expected_words + [f"t = {0.05!r} s"]:
             assert word in refusal, (word, refusal)
@@ -111,7 +111,7 @@ def test_bad_parameters_refuse_every_step_and_say_why(
         assert joint.init_status == 3  # fmi2Error
         assert any(all(w in m[2] for w in words) for m in messages if m[0] == 3)  # ... and why
         for _ in range(3):
-            assert joint.try_step(0.01) == DISCARD
+            assert joint.try_step(0.01) == REFUSED
         assert all(w in messages[-1][2] for w in words)
     finally:
         joint.close()  # terminate and free stay safe
@@ -183,9 +183,9 @@ def test_plain_simulate_fmu_shows_the_message_on_the_terminal(fmu_path):
     run = subprocess.run(
         [sys.executable, "-c", script], capture_output=True, text=True, timeout=120
     )
-    assert run.returncode == 0
-    assert "stopped at 0.5" in run.stdout  # FMPy stops early, silently
-    # ... but the FMU says why: on stderr, as FMPy's default logger cannot be trusted
+    # A refused step is an error: FMPy raises (it stopped silently on fmi2Discard) ...
+    assert run.returncode != 0 and "fmi2DoStep failed" in run.stderr
+    # ... and the FMU says why: on stderr, as FMPy's default logger cannot be trusted
     # with logging off (its proxy may still point at a freed logger of an earlier run)
     assert "Discard: t = 0.5 s: input bend_angle = 1.5 rad" in run.stderr
     assert "max_bend_angle" in run.stderr

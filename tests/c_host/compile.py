@@ -38,6 +38,11 @@ def compile_host3(output: Path) -> Path:
     return _compile(output, fmi3_headers(), FMI3_HOST)
 
 
+def compile_concurrent(output: Path) -> Path:
+    """concurrent/concurrent.c: several FMUs (FMI 2.0 and 3.0) started from threads at once."""
+    return _compile(output, NATIVE, [HERE / "concurrent" / "concurrent.c"])
+
+
 if __name__ == "__main__":
     import sys
 

@@ -27,10 +27,14 @@ static const double NASTY[] = {0.1, -0.2, 1e-3, 0.0, NAN, INFINITY, -INFINITY, 1
 static int n_calls, n_illegal;
 static fmi2FMUstate live[MAX_STATES], freed[MAX_STATES];
 static int n_live, n_freed;
+/* Whether the slave has left initialization; each live state carries it, and
+ * setting a state that has puts the instance in step mode (Reference-FMUs). */
+static int slave_initialized, live_initialized[MAX_STATES];
 
 /* A new state may come back at the address of a freed one. */
-static void keep_live(fmi2FMUstate state)
+static void keep_live(fmi2FMUstate state, int initialized)
 {
+    live_initialized[n_live] = initialized;
     live[n_live++] = state;
     for (int k = 0; k < n_freed; k++)
         if (freed[k] == state)
@@ -103,7 +107,7 @@ int fuzz(const char *dir, unsigned seed, int count)
             illegal = state != INITIALIZATION;
             status = fmu.ExitInitializationMode(c);
             if (!illegal)
-                state = STEP_COMPLETE;
+                state = STEP_COMPLETE, slave_initialized = 1;
             break;
         case 3: case 4: {
             call = "SetReal";
@@ -139,7 +143,7 @@ int fuzz(const char *dir, unsigned seed, int count)
         case 9:
             call = "Reset";
             status = fmu.Reset(c);
-            state = INSTANTIATED;
+            state = INSTANTIATED, slave_initialized = 0;
             time = 0.0;
             break;
         case 10:
@@ -149,7 +153,7 @@ int fuzz(const char *dir, unsigned seed, int count)
             fmi2FMUstate s = NULL;
             status = fmu.GetFMUstate(c, &s);
             if (s)
-                keep_live(s);
+                keep_live(s, slave_initialized);
             break;
         case 11: case 12: {
             int kind = pick(4);  /* live, freed, foreign, NULL */
@@ -161,6 +165,11 @@ int fuzz(const char *dir, unsigned seed, int count)
             if (which == 11) {
                 call = "SetFMUstate";
                 status = fmu.SetFMUstate(c, s);
+                if (!illegal && status <= fmi2Warning) {
+                    slave_initialized = live_initialized[index];
+                    if (slave_initialized)
+                        state = STEP_COMPLETE;
+                }
             } else {
                 call = "FreeFMUstate";
                 illegal &= s != NULL;              /* freeing NULL is a legal no-op */
@@ -168,6 +177,7 @@ int fuzz(const char *dir, unsigned seed, int count)
                 if (!illegal && kind == 0 && n_live) {
                     if (n_freed < MAX_STATES)
                         freed[n_freed++] = live[index];
+                    live_initialized[index] = live_initialized[n_live - 1];
                     live[index] = live[--n_live];
                 }
             }
@@ -181,7 +191,8 @@ int fuzz(const char *dir, unsigned seed, int count)
             static char bytes[1 << 16];
             status = fmu.SerializedFMUstateSize(c, live[pick(n_live)], &size);
             if (status == fmi2OK && size <= sizeof bytes) {
-                fmi2FMUstate s = live[pick(n_live)];
+                int from = (int)pick(n_live);
+                fmi2FMUstate s = live[from];
                 fmu.SerializedFMUstateSize(c, s, &size);
                 status = fmu.SerializeFMUstate(c, s, bytes, size);
                 if (pick(2))
@@ -189,7 +200,7 @@ int fuzz(const char *dir, unsigned seed, int count)
                 fmi2FMUstate copy = NULL;
                 if (status == fmi2OK && n_live < MAX_STATES &&
                     fmu.DeSerializeFMUstate(c, bytes, size, &copy) <= fmi2Warning)
-                    keep_live(copy);
+                    keep_live(copy, live_initialized[from]);
             }
             break;
         }

@@ -28,9 +28,14 @@ static int n_calls, n_illegal;
 static fmi3FMUState live[MAX_STATES], freed[MAX_STATES];
 static int n_live, n_freed;
 
+/* Whether the slave has left initialization; each live state carries it, and
+ * setting a state that has puts the instance in step mode (Reference-FMUs). */
+static int slave_initialized, live_initialized[MAX_STATES];
+
 /* A new state may come back at the address of a freed one. */
-static void keep_live(fmi3FMUState state)
+static void keep_live(fmi3FMUState state, int initialized)
 {
+    live_initialized[n_live] = initialized;
     live[n_live++] = state;
     for (int k = 0; k < n_freed; k++)
         if (freed[k] == state)
@@ -129,7 +134,7 @@ int fuzz3(unsigned seed, int count)
             illegal = state != INITIALIZATION;
             status = fmu.ExitInitializationMode(c);
             if (!illegal)
-                state = STEP_MODE;
+                state = STEP_MODE, slave_initialized = 1;
             break;
         case 2: case 3:
             call = "SetFloat64";
@@ -165,7 +170,7 @@ int fuzz3(unsigned seed, int count)
         case 8:
             call = "Reset";
             status = fmu.Reset(c);
-            state = INSTANTIATED;
+            state = INSTANTIATED, slave_initialized = 0;
             time = 0.0;
             break;
         case 9: {
@@ -175,7 +180,7 @@ int fuzz3(unsigned seed, int count)
             fmi3FMUState s = NULL;
             status = fmu.GetFMUState(c, &s);
             if (s)
-                keep_live(s);
+                keep_live(s, slave_initialized);
             break;
         }
         case 10: case 11: {
@@ -188,6 +193,11 @@ int fuzz3(unsigned seed, int count)
             if (which == 10) {
                 call = "SetFMUState";
                 status = fmu.SetFMUState(c, s);
+                if (!illegal && status <= fmi3Warning) {
+                    slave_initialized = live_initialized[index];
+                    if (slave_initialized)
+                        state = STEP_MODE;
+                }
             } else {
                 call = "FreeFMUState";
                 illegal &= s != NULL;  /* freeing NULL is a legal no-op */
@@ -195,6 +205,7 @@ int fuzz3(unsigned seed, int count)
                 if (!illegal && kind == 0 && n_live) {
                     if (n_freed < MAX_STATES)
                         freed[n_freed++] = live[index];
+                    live_initialized[index] = live_initialized[n_live - 1];
                     live[index] = live[--n_live];
                 }
             }
@@ -206,7 +217,8 @@ int fuzz3(unsigned seed, int count)
                 break;
             size_t size = 0;
             static char bytes[1 << 16];
-            fmi3FMUState s = live[pick(n_live)];
+            int from = (int)pick(n_live);
+            fmi3FMUState s = live[from];
             status = fmu.SerializedFMUStateSize(c, s, &size);
             if (status == fmi3OK && size <= sizeof bytes) {
                 status = fmu.SerializeFMUState(c, s, bytes, size);
@@ -215,7 +227,7 @@ int fuzz3(unsigned seed, int count)
                 fmi3FMUState copy = NULL;
                 if (status == fmi3OK && n_live < MAX_STATES &&
                     fmu.DeserializeFMUState(c, bytes, size, &copy) <= fmi3Warning && copy)
-                    keep_live(copy);
+                    keep_live(copy, live_initialized[from]);
             }
             break;
         }

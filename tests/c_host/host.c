@@ -239,6 +239,8 @@ int main(int argc, char **argv)
         return run(argv[2], atoi(argv[3]), atof(argv[4]), argc - 5, argv + 5);
     if (argc == 5 && strcmp(argv[1], "bad") == 0)
         return bad(argv[2], argv[3], strtod(argv[4], NULL));
+    if (argc == 5 && strcmp(argv[1], "refusal") == 0)
+        return refusal(argv[2], argv[3], strtod(argv[4], NULL));
     if (argc == 3 && strcmp(argv[1], "instantiate") == 0)
         return instantiate_only(argv[2]);
     if (argc == 4 && strcmp(argv[1], "threads") == 0)

@@ -74,5 +74,6 @@ fmi2Component start(const char *name, fmi2Boolean logging_on);
 void initialize(fmi2Component c);
 int threads(const char *dir, int steps);
 int fuzz(const char *dir, unsigned seed, int count);
+int refusal(const char *dir, const char *name, double value);
 
 #endif

@@ -261,6 +261,8 @@ int main(int argc, char **argv)
         return simulate(stdout, atoi(argv[3]), atof(argv[4]), argc - 5, argv + 5), 0;
     if (argc == 5 && strcmp(argv[1], "bad") == 0)
         return bad(argv[3], strtod(argv[4], NULL));
+    if (argc == 5 && strcmp(argv[1], "refusal") == 0)
+        return refusal3(argv[3], strtod(argv[4], NULL));
     if (argc == 3 && strcmp(argv[1], "instantiate") == 0)
         return instantiate_only();
     if (argc == 3 && strcmp(argv[1], "misuse") == 0)

@@ -51,5 +51,6 @@ fmi3Status step(fmi3Instance c, double time, double h);
 void simulate(FILE *out, int steps, double dt, int n_settings, char **settings);
 int threads3(int steps);
 int fuzz3(unsigned seed, int count);
+int refusal3(const char *name, double value);
 
 #endif

@@ -32,18 +32,20 @@ _COMMON = (
     "state_book.c",
     "slave_library.c",
     "python_runtime.c",
+    "python_start.c",
     "python_discovery.c",
     "runtime_record.c",
+    "record_check.c",
+    "slave_module.c",
 )
 SOURCES = {
-    2: ("loader.c", "fmi2_calls.c", "fmu_states.c", *_COMMON),
+    2: ("loader.c", "fmi2_calls.c", "fmi2_unsupported.c", "fmu_states.c", *_COMMON),
     3: (
         "fmi3_loader.c",
         "fmi3_calls.c",
         "fmi3_states.c",
         "fmi3_unsupported.c",
         "fmi3_variables.c",
-        "slave_module.c",
         *_COMMON,
     ),
 }
@@ -56,6 +58,9 @@ RECORD = "resources/python_runtime.txt"
 # hosts such as FMPy extract only resources/ and binaries/, not modelDescription.xml.
 VARIABLES = "resources/variables.txt"
 _HERE = Path(__file__).resolve().parent
+# The STB_GNU_UNIQUE object through which every copy of the runtime in a process
+# agrees on one interpreter start (python_runtime.c).
+PROCESS_OBJECT = "cardan_joint_fmu_process_python_v1"
 
 
 def fmi3_headers() -> Path:
@@ -124,8 +129,9 @@ def runtime_record() -> str:
 
 def compile_loader(model_identifier: str, output: Path, fmi_version: int = 2) -> Path:
     exports = output.parent / "exports.map"
-    # Only the fmi functions: nothing else of the loader may interpose in the host.
-    exports.write_text(f"{{ global: fmi{fmi_version}*; local: *; }};\n")
+    # Only the fmi functions, and the process-wide start object every copy of the
+    # runtime must find (python_runtime.c): nothing else may interpose in the host.
+    exports.write_text(f"{{ global: fmi{fmi_version}*; {PROCESS_OBJECT}; local: *; }};\n")
     headers = [f"-I{fmi3_headers()}"] if fmi_version == 3 else []
     command = [
         *compiler(),

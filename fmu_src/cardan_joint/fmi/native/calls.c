@@ -29,6 +29,28 @@ fmi2Status leave(struct instance *in, fmi2Status status)
     return status > in->worst ? status : in->worst;
 }
 
+/* Setting an FMU state taken in step mode puts the instance in step mode, as
+ * Reference-FMUs do: fmusim's --initial-fmu-state-file sets one into an
+ * instance it never initialized, then steps. */
+void restore_mode(struct instance *in, fmi2Status status)
+{
+    if (status <= fmi2Warning && in->state != STATE_FATAL && fast_initialized(in) == 1)
+        in->state = STATE_STEP_COMPLETE;
+}
+
+/* A refused step (the slave's Discard: it kept its state and logged variable,
+ * value, limit and time) is answered with Error in both FMI versions, so that
+ * every master ends the run as a failure: FMI 2.0 masters take Discard as
+ * "retry" or, with fmi2Terminated, as a normal end (fmusim, FMUComplianceChecker).
+ * The instance stays in step mode with its state: a master that corrects its
+ * inputs (or sets an earlier FMU state) steps on as if nothing happened
+ * (docs/fmi-tools.md, "Refused steps"). */
+fmi2Status step_status(struct instance *in, fmi2Status status)
+{
+    status = leave(in, status);
+    return status == fmi2Discard ? fmi2Error : status;
+}
+
 int arrays_given(struct instance *in, const char *function, size_t n,
                         const void *references, const void *values)
 {

@@ -16,8 +16,7 @@ struct fast_path {
     int stale;          /* the outputs array is not current */
     int inputs_written; /* the slave has not taken the host's latest inputs yet */
     double *known, *values;
-    double last_successful_time; /* what pythonfmu's doStep would have kept, */
-    int terminated;              /* for fmi2GetRealStatus and fmi2GetBooleanStatus */
+    double last_successful_time; /* what pythonfmu's doStep would have kept */
     char *resources;
     /* FMI 3 (NULL for FMI 2, whose value references are the flat indices):
      * {n, start[0..n], indices...}: value reference vr < n holds the flat
@@ -26,6 +25,9 @@ struct fast_path {
 };
 
 int fast_table(struct fast_path *fast, const char *bytes, size_t size);
+/* The flat indices of value reference vr, and how many (0: none). */
+long long flat_of(const struct fast_path *fast, unsigned vr, const long long **indices,
+                  long long *own);
 long fast_call(struct instance *in, enum fast_method method, double time, double step);
 
 #endif

@@ -47,8 +47,8 @@ void fast_after(struct instance *in)
 }
 
 /* The flat indices of value reference vr (0 if none: FMI 3's time, an unknown one). */
-static long long flat_of(const struct fast_path *fast, unsigned vr, const long long **indices,
-                         long long *own)
+long long flat_of(const struct fast_path *fast, unsigned vr, const long long **indices,
+                  long long *own)
 {
     const long long *table = fast->table;
     if (!table) {
@@ -128,7 +128,6 @@ int fast_step(struct instance *in, double time, double step)
     long status = fast_call(in, FAST_STEP, time, step);
     /* pythonfmu: the step's end when taken, its start when not (NaN before any). */
     fast->last_successful_time = status == fmi2OK ? time + step : time;
-    fast->terminated |= status != fmi2OK; /* pythonfmu never clears it again */
     fast->inputs_written = 0;
     fast->stale = status != fmi2OK;
     return (int)status;
@@ -136,19 +135,12 @@ int fast_step(struct instance *in, double time, double step)
 
 /* fmi2GetRealStatus(fmi2LastSuccessfulTime) and fmi2GetBooleanStatus(fmi2Terminated)
  * (FMPy's simulate_fmu asks both after a refused step): kept here, as pythonfmu
- * keeps them in its doStep, which the one-call step does not go through. */
+ * keeps them in its doStep, which the one-call step does not go through.
+ * fmi2Terminated is always false (fmi2_calls.c). */
 int fast_last_successful_time(const struct instance *in, double *value)
 {
     if (!in->fast)
         return 0;
     *value = in->fast->last_successful_time;
-    return 1;
-}
-
-int fast_terminated(const struct instance *in, int *value)
-{
-    if (!in->fast)
-        return 0;
-    *value = in->fast->terminated;
     return 1;
 }

@@ -145,28 +145,17 @@ VALUES(Set, String, set_string, SETTABLE, const)
 
 /* After initialization a fixed parameter stays as it is, even if a restored FMU
  * state makes the slave believe it is not initialized yet. */
-static const char *fixed_parameter_in(const struct instance *in, const fmi2ValueReference vr[],
-                                      size_t n)
+static const char *fixed_parameter(const struct instance *in, fmi2ValueReference vr)
 {
-    for (size_t i = 0; i < n; i++)
-        for (int k = 0; k < in->fixed->count; k++)
-            if (in->fixed->parameters[k].vr == vr[i])
-                return in->fixed->parameters[k].name;
+    for (int k = 0; k < in->fixed->count; k++)
+        if (in->fixed->parameters[k].vr == vr)
+            return in->fixed->parameters[k].name;
     return NULL;
 }
 
-fmi2Status fmi2SetReal(fmi2Component c, const fmi2ValueReference vr[], size_t n,
-                       const fmi2Real value[])
+static fmi2Status set_real(struct instance *in, const fmi2ValueReference vr[], size_t n,
+                           const fmi2Real value[])
 {
-    struct instance *in = enter(c, SETTABLE, "fmi2SetReal");
-    if (!in || !arrays_given(in, "fmi2SetReal", n, vr, value))
-        return fmi2Error;
-    const char *fixed = in->state == STATE_STEP_COMPLETE ? fixed_parameter_in(in, vr, n) : NULL;
-    if (fixed) {
-        reportf(in, fmi2Error, "parameter %s is fixed: it can be set only before "
-                "fmi2ExitInitializationMode; the call was ignored", fixed);
-        return fmi2Error;
-    }
     if (fast_serves(in, vr, n, 1)) {
         fast_set(in, vr, n, value);
         return leave(in, fmi2OK);
@@ -175,6 +164,41 @@ fmi2Status fmi2SetReal(fmi2Component c, const fmi2ValueReference vr[], size_t n,
     fmi2Status status = leave(in, slave.set_real(in->slave, vr, n, value));
     fast_after(in);
     return status;
+}
+
+/* A batch with fixed parameters after initialization: each fixed one is refused
+ * by name, every other value is set (as Reference-FMUs' setters go value by
+ * value), and the call answers fmi2Error (docs/fmi-tools.md, "Batch sets"). */
+fmi2Status fmi2SetReal(fmi2Component c, const fmi2ValueReference vr[], size_t n,
+                       const fmi2Real value[])
+{
+    struct instance *in = enter(c, SETTABLE, "fmi2SetReal");
+    if (!in || !arrays_given(in, "fmi2SetReal", n, vr, value))
+        return fmi2Error;
+    size_t kept = 0, refused = 0;
+    for (size_t i = 0; in->state == STATE_STEP_COMPLETE && i < n; i++)
+        refused += fixed_parameter(in, vr[i]) != NULL;
+    if (!refused)
+        return set_real(in, vr, n, value);
+    fmi2ValueReference *kept_vr = malloc(n * sizeof *kept_vr);
+    fmi2Real *kept_value = malloc(n * sizeof *kept_value);
+    if (!kept_vr || !kept_value) {
+        free(kept_vr), free(kept_value);
+        reportf(in, fmi2Error, "fmi2SetReal: out of memory; the call was ignored");
+        return fmi2Error;
+    }
+    for (size_t i = 0; i < n; i++) {
+        const char *fixed = fixed_parameter(in, vr[i]);
+        if (fixed)
+            reportf(in, fmi2Error, "parameter %s is fixed: it can be set only before "
+                    "fmi2ExitInitializationMode; %.17g was not set%s", fixed, value[i],
+                    n > refused ? " (the call's other values were)" : "");
+        else
+            kept_vr[kept] = vr[i], kept_value[kept++] = value[i];
+    }
+    fmi2Status status = kept ? set_real(in, kept_vr, kept, kept_value) : fmi2OK;
+    free(kept_vr), free(kept_value);
+    return status > fmi2Error ? status : fmi2Error;
 }
 
 fmi2Status fmi2GetReal(fmi2Component c, const fmi2ValueReference vr[], size_t n, fmi2Real value[])
@@ -198,8 +222,8 @@ fmi2Status fmi2DoStep(fmi2Component c, fmi2Real time, fmi2Real step, fmi2Boolean
     if (!in)
         return fmi2Error;
     int status = fast_step(in, time, step);
-    return leave(in, status >= 0 ? (fmi2Status)status
-                                 : slave.do_step(in->slave, time, step, no_set_prior));
+    return step_status(in, status >= 0 ? (fmi2Status)status
+                                       : slave.do_step(in->slave, time, step, no_set_prior));
 }
 
 fmi2Status fmi2GetRealStatus(fmi2Component c, fmi2StatusKind kind, fmi2Real *value)
@@ -220,65 +244,12 @@ fmi2Status fmi2GetBooleanStatus(fmi2Component c, fmi2StatusKind kind, fmi2Boolea
     struct instance *in = enter(c, READABLE, "fmi2GetBooleanStatus");
     if (!in || !arrays_given(in, "fmi2GetBooleanStatus", 1, value, value))
         return fmi2Error;
-    if (kind == fmi2Terminated && fast_terminated(in, value))
+    if (kind == fmi2Terminated) {
+        *value = fmi2False;  /* the model never ends a run; a refused step is an error */
         return leave(in, fmi2OK);
+    }
     fast_before(in);
     fmi2Status status = leave(in, slave.get_boolean_status(in->slave, kind, value));
     fast_after(in);
     return status;
-}
-
-static fmi2Status unsupported(fmi2Component c, const char *function, const char *why)
-{
-    struct instance *in = enter(c, ANY, function);
-    if (in)
-        reportf(in, fmi2Error, "%s is not supported: %s", function, why);
-    return fmi2Error;
-}
-
-fmi2Status fmi2GetStatus(fmi2Component c, const fmi2StatusKind kind, fmi2Status *value)
-{
-    (void)kind, (void)value;
-    return unsupported(c, "fmi2GetStatus", "fmi2DoStep never returns fmi2Pending");
-}
-
-fmi2Status fmi2GetIntegerStatus(fmi2Component c, const fmi2StatusKind kind, fmi2Integer *value)
-{
-    (void)kind, (void)value;
-    return unsupported(c, "fmi2GetIntegerStatus", "the FMU has no integer status");
-}
-
-fmi2Status fmi2GetStringStatus(fmi2Component c, const fmi2StatusKind kind, fmi2String *value)
-{
-    (void)kind, (void)value;
-    return unsupported(c, "fmi2GetStringStatus", "fmi2DoStep never returns fmi2Pending");
-}
-
-fmi2Status fmi2CancelStep(fmi2Component c)
-{
-    return unsupported(c, "fmi2CancelStep", "fmi2DoStep always completes before it returns");
-}
-
-fmi2Status fmi2GetDirectionalDerivative(fmi2Component c, const fmi2ValueReference u[], size_t nu,
-                                        const fmi2ValueReference z[], size_t nz,
-                                        const fmi2Real du[], fmi2Real dz[])
-{
-    (void)u, (void)nu, (void)z, (void)nz, (void)du, (void)dz;
-    return unsupported(c, "fmi2GetDirectionalDerivative",
-                       "providesDirectionalDerivative is false");
-}
-
-fmi2Status fmi2SetRealInputDerivatives(fmi2Component c, const fmi2ValueReference vr[], size_t n,
-                                       const fmi2Integer order[], const fmi2Real value[])
-{
-    (void)vr, (void)n, (void)order, (void)value;
-    return unsupported(c, "fmi2SetRealInputDerivatives",
-                       "canInterpolateInputs is false: set the inputs at each step instead");
-}
-
-fmi2Status fmi2GetRealOutputDerivatives(fmi2Component c, const fmi2ValueReference vr[], size_t n,
-                                        const fmi2Integer order[], fmi2Real value[])
-{
-    (void)vr, (void)n, (void)order, (void)value;
-    return unsupported(c, "fmi2GetRealOutputDerivatives", "maxOutputDerivativeOrder is 0");
 }

@@ -9,6 +9,8 @@
 #include "fmi3_instance.h"
 
 #include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
 
 /* Reading before initialization is harmless: start values. */
 #define READABLE ALIVE
@@ -22,16 +24,16 @@ int values_fit(struct instance3 *in3, const char *function, enum value_type type
     if (!arrays_given(in, function, nvr, vr, values))
         return 0;
     size_t expected = 0;
+    int fixed = 0;
     for (size_t i = 0; i < nvr; i++) {
         const struct variable *v = find_variable(in3->variables, vr[i]);
         const char *refusal = !v                  ? "is not a variable of this FMU"
                               : v->type != type   ? "is of another type"
                               : v->size == 0      ? "has a structural size, not supported"
-                              /* even if a restored FMU state makes the slave think otherwise */
-                              : setting && v->fixed && in->state == STATE_STEP_COMPLETE
-                                  ? "is fixed: it can be set only before "
-                                    "fmi3ExitInitializationMode"
-                                  : NULL;
+                              : v->size > (size_t)-1 - expected ? "makes the count wrap around"
+                                                                 : NULL;
+        /* even if a restored FMU state makes the slave think otherwise */
+        fixed |= setting && !refusal && v->fixed && in->state == STATE_STEP_COMPLETE;
         if (refusal) {
             reportf(in, fmi2Error, "%s: value reference %u%s%s%s%s%s %s; the call was ignored",
                     function, vr[i], v ? " (" : "", v ? v->name : "", v ? ", " : "",
@@ -45,30 +47,86 @@ int values_fit(struct instance3 *in3, const char *function, enum value_type type
                 "the call was ignored", function, n_values, nvr, expected);
         return 0;
     }
-    return 1;
+    return fixed ? 2 : 1;
+}
+
+typedef fmi3Status setter(struct instance *, const fmi3ValueReference[], size_t, const void *,
+                          size_t);
+
+/* A batch with fixed parameters in step mode: each fixed one is refused by
+ * name, every other value is set (as Reference-FMUs' setters go value by
+ * value), and the call answers fmi3Error (docs/fmi-tools.md, "Batch sets").
+ * values_fit has checked the references and the count. */
+static fmi3Status set_all_but_fixed(struct instance3 *in3, const char *function,
+                                    const fmi3ValueReference vr[], size_t nvr, const void *values,
+                                    size_t n_values, size_t element, setter *set)
+{
+    struct instance *in = &in3->base;
+    fmi3ValueReference *kept_vr = malloc(nvr * sizeof *kept_vr);
+    char *kept_values = malloc(n_values * element ? n_values * element : 1);
+    size_t kept = 0, kept_n = 0, at = 0, fixed = 0;
+    for (size_t i = 0; i < nvr; i++)
+        fixed += find_variable(in3->variables, vr[i])->fixed;
+    if (!kept_vr || !kept_values) {
+        free(kept_vr), free(kept_values);
+        reportf(in, fmi2Error, "%s: out of memory; the call was ignored", function);
+        return fmi3Error;
+    }
+    for (size_t i = 0; i < nvr; i++) {
+        const struct variable *v = find_variable(in3->variables, vr[i]);
+        if (v->fixed) {
+            reportf(in, fmi2Error, "%s: parameter %s is fixed: it can be set only before "
+                    "fmi3ExitInitializationMode; its value was not set%s", function, v->name,
+                    nvr > fixed ? " (the call's other values were)" : "");
+        } else {
+            kept_vr[kept++] = vr[i];
+            memcpy(kept_values + kept_n * element, (const char *)values + at * element,
+                   v->size * element);
+            kept_n += v->size;
+        }
+        at += v->size;
+    }
+    fmi3Status status = kept ? set(in, kept_vr, kept, kept_values, kept_n) : fmi3OK;
+    free(kept_vr), free(kept_values);
+    return status > fmi3Error ? status : fmi3Error;
 }
 
 /* pythonfmu3 implements the accessors with a member in slave3; the others it
  * would abort on, and no variable of this FMU has their type: values_fit
  * refuses any reference, and an empty call succeeds. */
 #define VALUES3(get_or_set, Type, member, allowed, constness, setting)                      \
+    static fmi3Status forward_##get_or_set##Type(struct instance *in,                        \
+                                                 const fmi3ValueReference vr[], size_t nvr,  \
+                                                 constness void *values, size_t n_values)    \
+    {                                                                                        \
+        fast_before(in);                                                                     \
+        fmi2Status status = leave(in, (fmi2Status)member(in->slave, vr, nvr,                 \
+                                                         (constness fmi3##Type *)values,     \
+                                                         n_values));                         \
+        fast_after(in);                                                                      \
+        return (fmi3Status)status;                                                           \
+    }                                                                                        \
     fmi3Status fmi3##get_or_set##Type(fmi3Instance c, const fmi3ValueReference vr[],         \
                                       size_t nvr, constness fmi3##Type values[],             \
                                       size_t n_values)                                       \
     {                                                                                        \
         const char *function = "fmi3" #get_or_set #Type;                                     \
         struct instance *in = enter(c, allowed, function);                                   \
-        if (!in || !values_fit((struct instance3 *)in, function, T_##Type##_ID, vr, nvr,     \
-                               values, n_values, setting))                                   \
+        int fit = in ? values_fit((struct instance3 *)in, function, T_##Type##_ID, vr, nvr,  \
+                                  values, n_values, setting)                                 \
+                     : 0;                                                                    \
+        if (!fit)                                                                            \
             return fmi3Error;                                                                \
         if (nvr == 0)                                                                        \
             return fmi3OK;                                                                   \
-        fast_before(in);                                                                     \
-        fmi2Status status = leave(in, (fmi2Status)member(in->slave, vr, nvr, values,         \
-                                                         n_values));                         \
-        fast_after(in);                                                                      \
-        return (fmi3Status)status;                                                           \
+        SET_ALL_BUT_FIXED_##setting(Type)                                                    \
+        return forward_##get_or_set##Type(in, vr, nvr, values, n_values);                    \
     }
+#define SET_ALL_BUT_FIXED_0(Type)
+#define SET_ALL_BUT_FIXED_1(Type)                                                            \
+    if (fit == 2)                                                                            \
+        return set_all_but_fixed((struct instance3 *)in, function, vr, nvr, values,          \
+                                 n_values, sizeof(fmi3##Type), forward_Set##Type);
 #define ACCESSORS(Type, get, set)                                                            \
     VALUES3(Get, Type, get, READABLE, , 0) VALUES3(Set, Type, set, SETTABLE, const, 1)
 #define T_Float32_ID T_FLOAT32
@@ -105,15 +163,10 @@ fmi3Status fmi3GetFloat64(fmi3Instance c, const fmi3ValueReference vr[], size_t 
     return (fmi3Status)status;
 }
 
-fmi3Status fmi3SetFloat64(fmi3Instance c, const fmi3ValueReference vr[], size_t nvr,
-                          const fmi3Float64 values[], size_t n_values)
+static fmi3Status set_float64(struct instance *in, const fmi3ValueReference vr[], size_t nvr,
+                              const void *any_values, size_t n_values)
 {
-    struct instance *in = enter(c, SETTABLE, "fmi3SetFloat64");
-    if (!in || !values_fit((struct instance3 *)in, "fmi3SetFloat64", T_FLOAT64, vr, nvr, values,
-                           n_values, 1))
-        return fmi3Error;
-    if (nvr == 0)
-        return fmi3OK;
+    const fmi3Float64 *values = any_values;
     if (fast_serves(in, vr, nvr, 1)) {
         fast_set(in, vr, nvr, values);
         return (fmi3Status)leave(in, fmi2OK);
@@ -123,6 +176,23 @@ fmi3Status fmi3SetFloat64(fmi3Instance c, const fmi3ValueReference vr[], size_t 
         leave(in, (fmi2Status)slave3.set_float64(in->slave, vr, nvr, values, n_values));
     fast_after(in);
     return (fmi3Status)status;
+}
+
+fmi3Status fmi3SetFloat64(fmi3Instance c, const fmi3ValueReference vr[], size_t nvr,
+                          const fmi3Float64 values[], size_t n_values)
+{
+    struct instance *in = enter(c, SETTABLE, "fmi3SetFloat64");
+    int fit = in ? values_fit((struct instance3 *)in, "fmi3SetFloat64", T_FLOAT64, vr, nvr,
+                              values, n_values, 1)
+                 : 0;
+    if (!fit)
+        return fmi3Error;
+    if (nvr == 0)
+        return fmi3OK;
+    if (fit == 2)
+        return set_all_but_fixed((struct instance3 *)in, "fmi3SetFloat64", vr, nvr, values,
+                                 n_values, sizeof *values, set_float64);
+    return set_float64(in, vr, nvr, values, n_values);
 }
 ACCESSORS(Int32, slave3.get_int32, slave3.set_int32)
 ACCESSORS(Int64, slave3.get_int64, slave3.set_int64)
@@ -216,9 +286,9 @@ fmi3Status fmi3DoStep(fmi3Instance c, fmi3Float64 time, fmi3Float64 step,
     if (status >= 0) {
         /* As pythonfmu3 answers: the step's end when taken, its start when not. */
         *last_successful_time = status == fmi2OK ? time + step : time;
-        return (fmi3Status)leave(in, (fmi2Status)status);
+        return (fmi3Status)step_status(in, (fmi2Status)status);
     }
-    return (fmi3Status)leave(in, (fmi2Status)slave3.do_step(in->slave, time, step, no_set_prior,
+    return (fmi3Status)step_status(in, (fmi2Status)slave3.do_step(in->slave, time, step, no_set_prior,
                                                             event_handling_needed, terminate,
                                                             early_return, last_successful_time));
 }

@@ -57,9 +57,6 @@ struct slave3_api {
 };
 extern struct slave3_api slave3;
 
-/* The script module pythonfmu imports (resources/slavemodule.txt) imports in
- * this process's Python; else -1 and the Python error. */
-int slave_module_imports(const char *resources, char *error, size_t size);
 
 /* Values of `type` for `vr`: known references of that type, as many values as
  * they hold, arrays given; else fmi3Error logged and 0. */

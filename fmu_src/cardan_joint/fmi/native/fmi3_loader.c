@@ -144,6 +144,11 @@ fmi3Instance fmi3InstantiateCoSimulation(
         return NULL;
     }
     fast_attach(in, resources);
+    if (record_matches_slave(in, resources, error, sizeof error)) {
+        report(in, fmi2Error, NULL, error);
+        free_instance3(in);
+        return NULL;
+    }
     return in;
 }
 

@@ -30,6 +30,7 @@ fmi3Status fmi3SetFMUState(fmi3Instance c, fmi3FMUState state)
     fast_before(in);
     fmi2Status status = leave(in, (fmi2Status)slave3.set_fmu_state(in->slave, state));
     fast_after(in);
+    restore_mode(in, status);
     return (fmi3Status)status;
 }
 

@@ -31,6 +31,7 @@ fmi2Status fmi2SetFMUstate(fmi2Component c, fmi2FMUstate state)
     fast_before(in);
     fmi2Status status = leave(in, slave.set_fmu_state(in->slave, state));
     fast_after(in);
+    restore_mode(in, status);
     return status;
 }
 

@@ -102,6 +102,7 @@ int is_shared_proxy(void *logger);
  * (NULL: answer fmi2Error), leave() returns the worst status logged. */
 struct instance *enter(fmi2Component c, unsigned allowed, const char *function);
 fmi2Status leave(struct instance *in, fmi2Status status);
+fmi2Status step_status(struct instance *in, fmi2Status status);
 int arrays_given(struct instance *in, const char *function, size_t n, const void *references,
                  const void *values);
 fmi2Status set_debug_logging(struct instance *in, const char *function, int on, size_t n,
@@ -127,8 +128,16 @@ void fast_set(struct instance *in, const unsigned vr[], size_t n, const double v
 fmi2Status fast_get(struct instance *in, const unsigned vr[], size_t n, double value[]);
 int fast_step(struct instance *in, double time, double step);
 int fast_last_successful_time(const struct instance *in, double *value);
-int fast_terminated(const struct instance *in, int *value);
+int fast_initialized(struct instance *in);
+/* After a set FMU state: the mode the state was taken in (calls.c). */
+void restore_mode(struct instance *in, fmi2Status status);
 char *copy_of(const char *text);  /* strdup, "" for NULL */
+/* The script module pythonfmu imports (resources/slavemodule.txt) imports in
+ * this process's Python; else -1 and the Python error. */
+int slave_module_imports(const char *resources, char *error, size_t size);
+/* resources/VARIABLES_RECORD agrees with the slave's own layout (the one-call
+ * step's): else -1 and a message naming the file (record_check.c). */
+int record_matches_slave(struct instance *in, const char *resources, char *error, size_t size);
 void free_instance(struct instance *in);
 void release_instance(struct instance *in, void (*free_slave)(void *));
 void report(struct instance *in, fmi2Status status, const char *category, const char *text);

@@ -83,6 +83,7 @@ fmi2Component fmi2Instantiate(fmi2String name, fmi2Type type, fmi2String guid,
     }
     if (read_runtime_record(resources, &record, error, sizeof error) ||
         start_python(&record, error, sizeof error) ||
+        slave_module_imports(resources, error, sizeof error) ||
         load_slave_library("_pythonfmu.so", resolve_slave_api, error, sizeof error)) {
         early_message(functions, name, error);
         return NULL;
@@ -128,5 +129,10 @@ fmi2Component fmi2Instantiate(fmi2String name, fmi2Type type, fmi2String guid,
         return NULL;
     }
     fast_attach(in, resources);
+    if (record_matches_slave(in, resources, error, sizeof error)) {
+        report(in, fmi2Error, NULL, error);
+        free_instance(in);
+        return NULL;
+    }
     return in;
 }

@@ -70,6 +70,10 @@ int find_python(const struct runtime_record *record, struct python_location *fou
 /* FMI-version-neutral: find or start the Python, enter it on this thread. */
 int start_python(const struct runtime_record *record, char *error, size_t size);
 void enter_python_thread(void);
+/* Py_InitializeFromConfig with that home and path (python_start.c): 0, -1 when it
+ * was not tried (the process can try another Python), -2 when it failed. */
+int start_interpreter(void *library, int minor, const struct python_location *python,
+                      char *error, size_t size);
 const char *python_in_use(void);  /* "Python 3.12.1 from <library>", for messages */
 
 #endif

@@ -11,6 +11,7 @@
 #define _GNU_SOURCE
 #include "loader.h"
 
+#include <dlfcn.h>
 #include <limits.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -88,28 +89,55 @@ static int beside_library(struct python_location *python)
     return -1;
 }
 
+/* A candidate counts only if it loads and is a CPython: a damaged or foreign
+ * libpython3.X (a 0-byte file) must not hide a working one further down. */
+static int loads(const char *library)
+{
+    void *handle = dlopen(library, RTLD_LAZY | RTLD_LOCAL);
+    int python = handle && dlsym(handle, "Py_IsInitialized") != NULL;
+    if (handle)
+        dlclose(handle);
+    return python;
+}
+
 static int usable(struct python_location *python, const char *library)
 {
     memset(python, 0, sizeof *python);
     snprintf(python->library, sizeof python->library, "%s", library);
-    return access(library, R_OK) == 0 && beside_library(python) == 0;
+    return access(library, R_OK) == 0 && beside_library(python) == 0 && loads(library);
+}
+
+/* ld.so.cache, read once per search and only up to a size no real cache nears. */
+#define MOST_CACHE (16L << 20)
+struct linker_cache {
+    char *text;
+    long size;
+};
+
+static void read_linker_cache(struct linker_cache *cache)
+{
+    cache->text = NULL, cache->size = 0;
+    FILE *file = fopen(LINKER_CACHE, "rb");
+    if (!file)
+        return;
+    long n = fseek(file, 0, SEEK_END) == 0 ? ftell(file) : -1;
+    if (n > 0 && n <= MOST_CACHE && fseek(file, 0, SEEK_SET) == 0 &&
+        (cache->text = malloc((size_t)n + 1))) {
+        cache->size = (long)fread(cache->text, 1, (size_t)n, file);
+        cache->text[cache->size] = '\0';
+    }
+    fclose(file);
 }
 
 /* Whatever its format version, ld.so.cache keeps each library's full path as a
  * NUL-terminated string: scanning for those needs none of its layout. */
-static int in_linker_cache(const char *name, struct python_location *found)
+static int in_linker_cache(const char *name, const struct linker_cache *linker,
+                           struct python_location *found)
 {
-    FILE *file = fopen(LINKER_CACHE, "rb");
-    if (!file)
-        return -1;
-    char *cache = NULL;
-    long n = fseek(file, 0, SEEK_END) == 0 ? ftell(file) : -1;
-    if (n > 0 && fseek(file, 0, SEEK_SET) == 0 && (cache = malloc((size_t)n + 1)))
-        n = (long)fread(cache, 1, (size_t)n, file);
-    fclose(file);
+    const char *cache = linker->text;
+    long n = linker->size;
     if (!cache)
         return -1;
-    cache[n] = '\0';
     int result = -1;
     size_t length = strlen(name);
     for (long i = 0; i < n && result; i += (long)strlen(cache + i) + 1) {
@@ -119,11 +147,11 @@ static int in_linker_cache(const char *name, struct python_location *found)
             strcmp(entry + size - length, name) == 0 && usable(found, entry))
             result = 0;
     }
-    free(cache);
     return result;
 }
 
-static int on_machine(int minor, struct python_location *found)
+static int on_machine(int minor, const struct linker_cache *linker,
+                      struct python_location *found)
 {
     char name[32], library[PATH_MAX];
     snprintf(name, sizeof name, "libpython3.%d.so.1.0", minor);
@@ -132,7 +160,7 @@ static int on_machine(int minor, struct python_location *found)
         if (usable(found, library))
             return 0;
     }
-    return in_linker_cache(name, found);
+    return in_linker_cache(name, linker, found);
 }
 
 static int find(const struct runtime_record *record, struct python_location *found,
@@ -151,11 +179,15 @@ static int find(const struct runtime_record *record, struct python_location *fou
     if (found->library[0] && access(found->library, R_OK) == 0 &&
         ((found->home[0] && found->path[0]) || beside_library(found) == 0))
         return 0;
-    if (on_machine(record->build_minor, found) == 0)
+    struct linker_cache linker;
+    read_linker_cache(&linker);
+    int result = on_machine(record->build_minor, &linker, found);
+    for (int minor = NEWEST_MINOR; result && minor >= record->minimum_minor; minor--)
+        if (minor != record->build_minor)
+            result = on_machine(minor, &linker, found);
+    free(linker.text);
+    if (result == 0)
         return 0;
-    for (int minor = NEWEST_MINOR; minor >= record->minimum_minor; minor--)
-        if (minor != record->build_minor && on_machine(minor, found) == 0)
-            return 0;
     char directories[1024] = "";
     for (size_t i = 0; i < N_DIRECTORIES; i++) {
         size_t used = strlen(directories);

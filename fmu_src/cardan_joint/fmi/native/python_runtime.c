@@ -1,16 +1,26 @@
-/* Starting and entering the Python that runs the FMU's slave.
+/* Starting (or joining) and entering the Python that runs the FMU's slave.
  *
  * A Python host (FMPy, libcosimpy, a statically linked python3) already has
  * one: use it, whatever its 3.x from the record's minimum, never a second
  * interpreter.  A C host has none: load the one find_python names RTLD_GLOBAL
  * (extension modules resolve their symbols in the global scope) and start it
- * isolated from the environment with that home and search path.
+ * isolated from the environment with that home and search path
+ * (python_start.c).
+ *
+ * Every copy of this runtime in a process (several FMUs, FMI 2.0 and 3.0,
+ * each its own .so loaded RTLD_LOCAL, first instantiated from threads at the
+ * same moment) must agree on one start.  Separate copies share no statics, so
+ * the lock and the outcome live in one object the dynamic linker unifies:
+ * a symbol of binding STB_GNU_UNIQUE (the mechanism that gives C++ inline
+ * statics one instance across RTLD_LOCAL libraries) resolves, in every copy
+ * that references it through its GOT, to the first loaded definition.  Its
+ * name carries the layout's version: a build with another layout gets another
+ * object.  (flock would need a file; scanning loaded objects with
+ * dl_iterate_phdr races with a concurrent dlopen.)
  *
  * No Python headers: every function is looked up with dlsym and declared here,
- * so that one loader binary starts CPython 3.10 to 3.13 and any machine with
- * a C compiler builds it.  PyConfig's layout differs between those versions;
- * the legacy Py_SetPythonHome/Py_SetPath/Py_InitializeEx and the Py_*Flag
- * globals, deprecated but exported by all of them, have one ABI.
+ * so that one binary starts CPython 3.10 to 3.13 and any machine with a C
+ * compiler builds it.
  */
 #define _GNU_SOURCE
 #include "loader.h"
@@ -22,7 +32,6 @@
 #include <stdlib.h>
 #include <string.h>
 #include <unistd.h>
-#include <wchar.h>
 
 typedef struct _ts PyThreadState;
 typedef int PyGILState_STATE;  /* an enum in Python.h */
@@ -35,30 +44,44 @@ typedef int PyGILState_STATE;  /* an enum in Python.h */
     X(PyThreadState *, PyEval_SaveThread, (void))                                        \
     X(void, PyEval_RestoreThread, (PyThreadState *))                                     \
     X(void, PyThreadState_Clear, (PyThreadState *)) X(void, PyThreadState_DeleteCurrent, (void))
-#define PY_INIT_FUNCTIONS(X)                                                             \
-    X(void, Py_SetPythonHome, (const wchar_t *)) X(void, Py_SetPath, (const wchar_t *))  \
-    X(wchar_t *, Py_DecodeLocale, (const char *, size_t *)) X(void, Py_InitializeEx, (int))
-static const char *const INIT_FLAGS[] = {
-    "Py_IsolatedFlag", "Py_IgnoreEnvironmentFlag", "Py_NoUserSiteDirectory", "Py_NoSiteFlag"};
 
 #define DECLARE(result, name, parameters) static result(*p_##name) parameters;
 PY_FUNCTIONS(DECLARE)
-PY_INIT_FUNCTIONS(DECLARE)
 
-static pthread_mutex_t start_lock = PTHREAD_MUTEX_INITIALIZER;
-static int python_ready;               /* set once, under start_lock */
+/* The process's one start, shared by every copy of the runtime (see above). */
+struct process_python {
+    pthread_mutex_t lock;
+    int state;            /* 0: not started by any copy; 1: running; -1: its start failed */
+    char failure[2048];   /* why it failed, for every later instance */
+    char in_use[1600];    /* for messages: which Python runs the slaves */
+};
+#define PROCESS_PYTHON "cardan_joint_fmu_process_python_v1"
+#define PROCESS_PYTHON_SIZE 4096
+__asm__(".globl " PROCESS_PYTHON "\n"
+        ".pushsection .bss." PROCESS_PYTHON ",\"aw\",@nobits\n"
+        ".balign 64\n"
+        ".type " PROCESS_PYTHON ", @gnu_unique_object\n"
+        ".size " PROCESS_PYTHON ", 4096\n" PROCESS_PYTHON ":\n"
+        ".zero 4096\n"
+        ".popsection\n");
+extern struct process_python cardan_joint_fmu_process_python_v1;
+_Static_assert(sizeof(struct process_python) <= PROCESS_PYTHON_SIZE, "the unique object's size");
+/* All zero bytes are an unlocked mutex (glibc's PTHREAD_MUTEX_INITIALIZER) and state 0. */
+#define process (&cardan_joint_fmu_process_python_v1)
+
+static int python_ready;   /* this copy has resolved its functions; under process->lock */
 static pthread_key_t thread_state_key;
-static char in_use[4200] = "no Python";   /* for messages: which Python runs the slave */
 
 const char *python_in_use(void)
 {
-    return in_use;
+    return process->in_use[0] ? process->in_use : "no Python";
 }
 
 static void describe(const char *where)
 {
     const char *version = p_Py_GetVersion();
-    snprintf(in_use, sizeof in_use, "Python %.*s %s", (int)strcspn(version, " "), version, where);
+    snprintf(process->in_use, sizeof process->in_use, "Python %.*s %s",
+             (int)strcspn(version, " "), version, where);
 }
 
 #define RESOLVE(result, name, parameters)                                                \
@@ -73,12 +96,6 @@ static int resolve(void *library, const char *where, char *error, size_t size)
     return 0;
 }
 
-static int resolve_init(void *library, const char *where, char *error, size_t size)
-{
-    PY_INIT_FUNCTIONS(RESOLVE)
-    return 0;
-}
-
 /* "3.12.1 (main, ...)": usable from the record's minimum on. */
 static int check_version(const struct runtime_record *record, const char *whose,
                          char *error, size_t size)
@@ -88,64 +105,11 @@ static int check_version(const struct runtime_record *record, const char *whose,
     if (sscanf(version, "%d.%d", &major, &minor) == 2 && major == 3 &&
         minor >= record->minimum_minor)
         return 0;
-    snprintf(error, size, "this FMU needs CPython 3.%d or newer, but the Python %s is %.*s; "
-             "run it in a Python 3.%d to 3.%d process", record->minimum_minor, whose,
-             (int)strcspn(version, " "), version, record->minimum_minor, NEWEST_MINOR);
+    snprintf(error, size, "this FMU needs CPython 3.%d or newer, but the Python %s is %.*s "
+             "(the minimum is its resources/" RUNTIME_RECORD "'s); run it in a Python 3.%d "
+             "or newer process", record->minimum_minor, whose, (int)strcspn(version, " "),
+             version, record->minimum_minor);
     return -1;
-}
-
-/* Py_InitializeEx aborts the process when it cannot import encodings: refuse
- * a search path without it. */
-static int has_standard_library(const char *path)
-{
-    char entries[sizeof ((struct python_location *)0)->path], probe[PATH_MAX];
-    snprintf(entries, sizeof entries, "%s", path);
-    for (char *save, *entry = strtok_r(entries, ":", &save); entry;
-         entry = strtok_r(NULL, ":", &save)) {
-        snprintf(probe, sizeof probe, "%s/encodings/__init__.py", entry);
-        size_t n = strlen(entry);
-        if (access(probe, R_OK) == 0 || (n > 4 && strcmp(entry + n - 4, ".zip") == 0 &&
-                                         access(entry, R_OK) == 0))
-            return 1;
-    }
-    return 0;
-}
-
-static int start_interpreter(void *library, const struct python_location *python,
-                             char *error, size_t size)
-{
-    if (!has_standard_library(python->path)) {
-        snprintf(error, size, "the search path '%s' for Python %s has no standard library "
-                 "(encodings/__init__.py); " FIX_HINT, python->path, python->library);
-        return -1;
-    }
-    for (size_t i = 0; i < sizeof INIT_FLAGS / sizeof *INIT_FLAGS; i++) {
-        int *flag = dlsym(library, INIT_FLAGS[i]);
-        if (!flag) {
-            snprintf(error, size, "%s has no %s: not a CPython 3.10 to 3.13", python->library,
-                     INIT_FLAGS[i]);
-            return -1;
-        }
-        *flag = 1;  /* isolated: no environment, no user site, no site: the path is all */
-    }
-    /* The legacy API keeps these pointers: they live as long as the process. */
-    wchar_t *home = p_Py_DecodeLocale(python->home, NULL);
-    wchar_t *path = p_Py_DecodeLocale(python->path, NULL);
-    if (!home || !path) {
-        snprintf(error, size, "cannot decode Python's home '%s' or path '%s'", python->home,
-                 python->path);
-        return -1;
-    }
-    p_Py_SetPythonHome(home);
-    p_Py_SetPath(path);
-    p_Py_InitializeEx(0);  /* 0: the host owns its signals */
-    if (!p_Py_IsInitialized()) {
-        snprintf(error, size, "Python %s did not start with home '%s' and path '%s'; " FIX_HINT,
-                 python->library, python->home, python->path);
-        return -1;
-    }
-    p_PyEval_SaveThread();  /* the GIL is free; this thread keeps its main thread state */
-    return 0;
 }
 
 static int load_and_start(const struct runtime_record *record, char *error, size_t size)
@@ -159,13 +123,17 @@ static int load_and_start(const struct runtime_record *record, char *error, size
                  python.library, dlerror());
         return -1;
     }
+    int minor = -1, started = -1;
     if (resolve(library, python.library, error, size) ||
         check_version(record, python.library, error, size) ||
-        resolve_init(library, python.library, error, size) ||
-        start_interpreter(library, &python, error, size)) {
+        sscanf(p_Py_GetVersion(), "3.%d", &minor) != 1 ||
+        (started = start_interpreter(library, minor, &python, error, size)) != 0) {
+        if (started == -2)
+            return -2;  /* tried: the library stays, its runtime half-started */
         dlclose(library);
         return -1;
     }
+    p_PyEval_SaveThread();  /* the GIL is free; this thread keeps its main thread state */
     char where[sizeof python.library + 8];
     snprintf(where, sizeof where, "from %s", python.library);
     describe(where);
@@ -202,19 +170,32 @@ void enter_python_thread(void)
 int start_python(const struct runtime_record *record, char *error, size_t size)
 {
     int result = 0;
-    pthread_mutex_lock(&start_lock);
+    pthread_mutex_lock(&process->lock);
     if (python_ready) {
         result = check_version(record, "already running in this process", error, size);
+    } else if (process->state < 0) {
+        /* A failed Py_InitializeFromConfig is not tried again: the runtime is half set up. */
+        snprintf(error, size, "%s", process->failure);
+        result = -1;
     } else {
-        void *library = RTLD_DEFAULT;
-        int (*running)(void) = (int (*)(void))dlsym(library, "Py_IsInitialized");
-        if (running && running()) {
-            result = resolve(library, "this process's Python", error, size) ||
+        int (*running)(void) = (int (*)(void))dlsym(RTLD_DEFAULT, "Py_IsInitialized");
+        if (running && running()) {  /* the host's, or one another copy started */
+            result = resolve(RTLD_DEFAULT, "this process's Python", error, size) ||
                      check_version(record, "of this process", error, size);
-            if (result == 0)
+            if (result == 0 && !process->in_use[0])
                 describe("(the host's)");
-        } else
+        } else if (process->state == 1) {
+            snprintf(error, size, "the Python another FMU started in this process is not "
+                     "running any more");
+            result = -1;
+        } else {
             result = load_and_start(record, error, size);
+            if (result == -2) {
+                process->state = -1;
+                snprintf(process->failure, sizeof process->failure, "%s", error);
+            } else if (result == 0)
+                process->state = 1;
+        }
         if (result == 0) {
             pthread_key_create(&thread_state_key, release_thread_state);
             python_ready = 1;
@@ -222,6 +203,6 @@ int start_python(const struct runtime_record *record, char *error, size_t size)
     }
     if (result == 0)
         enter_python_thread();
-    pthread_mutex_unlock(&start_lock);
-    return result;
+    pthread_mutex_unlock(&process->lock);
+    return result ? -1 : 0;
 }

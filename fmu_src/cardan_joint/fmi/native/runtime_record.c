@@ -26,6 +26,9 @@ int resources_folder(const char *location, char *folder, size_t size)
 {
     if (!location)
         return -1;
+    /* Only a URI is percent-encoded: FMI 3.0's resourcePath is a plain path, in
+     * which a folder named x%41y is just that. */
+    int uri = strncmp(location, "file:", 5) == 0;
     if (strncmp(location, "file://", 7) == 0) {
         location += 7;
         if (strncmp(location, "localhost/", 10) == 0)
@@ -37,7 +40,8 @@ int resources_folder(const char *location, char *folder, size_t size)
     for (const char *c = location; *c; c++) {
         if (n + 1 >= size)
             return -1;
-        if (c[0] == '%' && isxdigit((unsigned char)c[1]) && isxdigit((unsigned char)c[2])) {
+        if (uri && c[0] == '%' && isxdigit((unsigned char)c[1]) &&
+            isxdigit((unsigned char)c[2])) {
             folder[n++] = (char)(hex((unsigned char)c[1]) * 16 + hex((unsigned char)c[2]));
             c += 2;
         } else {
@@ -148,17 +152,24 @@ int read_variable_record(const char *resources, int (*keep)(const struct record_
                  strerror(errno));
         return -1;
     }
-    int line_number = 0, ok = 1;
+    int line_number = 0, ok = 1, rows = 0;
     while (ok && fgets(line, sizeof line, file)) {
         line_number++;
         if (line[0] == '#' || line[0] == '\n')
             continue;
         struct record_row row;
-        ok = sscanf(line, "%u %15s %zu %d %63s", &row.vr, row.type, &row.size, &row.fixed,
-                    row.name) == 5 &&
+        char end = 0;
+        /* A whole line or none: a row cut short by a truncated file is refused. */
+        ok = sscanf(line, "%u %15s %zu %d %63s%c", &row.vr, row.type, &row.size, &row.fixed,
+                    row.name, &end) == 6 && end == '\n' && (row.fixed == 0 || row.fixed == 1) &&
              keep(&row, kept);
+        rows++;
     }
     fclose(file);
+    if (ok && rows == 0) {
+        snprintf(error, size, "%s names no variable: the FMU is incomplete, rebuild it", name);
+        return -1;
+    }
     if (!ok)
         snprintf(error, size, "%s, line %d: not 'valueReference type size fixed name' "
                               "(at most %d kept): rebuild the FMU", name, line_number, most);

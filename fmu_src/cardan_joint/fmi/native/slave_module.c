@@ -1,11 +1,12 @@
-/* Import the slave's script module before pythonfmu does: pythonfmu3 0.3.4
- * dereferences NULL in its instance constructor when the import fails, which
+/* Import the slave's script module before pythonfmu does: pythonfmu 0.7.0 and
+ * pythonfmu3 0.3.4 dereference NULL in their instance constructor when the
+ * import fails (slavemodule.txt empty, missing or naming another module), which
  * kills the host.  The import runs in the process's Python (started or found
  * by python_runtime.c) with the resources folder first on sys.path, as
  * pythonfmu puts it; sys.path is left as it was, and the imported module stays
  * in sys.modules, where pythonfmu's own import finds it. */
 #define _GNU_SOURCE
-#include "fmi3_instance.h"
+#include "fast_path.h"
 
 #include <dlfcn.h>
 #include <stdio.h>
@@ -13,7 +14,6 @@
 
 /* No Python.h (see python_runtime.c): the few types and prototypes used here,
  * one ABI for CPython 3.10-3.13. */
-typedef struct _object PyObject;
 typedef int PyGILState_STATE; /* an enum in Python.h */
 #define PY_FILE_INPUT 257    /* PY_FILE_INPUT, the same in every CPython 3 */
 
@@ -85,8 +85,8 @@ int slave_module_imports(const char *resources, char *error, size_t size)
     const char *text = problem ? p_PyUnicode_AsUTF8(problem) : "the check itself failed";
     int failed = !text || *text;
     if (failed)
-        snprintf(error, size, "the slave's module %s does not import from %s (%s)", module,
-                 resources, text ? text : "unknown error");
+        snprintf(error, size, "the slave's module %s, named in %s/slavemodule.txt, does not "
+                 "import from there (%s)", module, resources, text ? text : "unknown error");
     p_PyErr_Clear();
     PyObject *owned[] = {result, name, path, globals};
     for (size_t i = 0; i < sizeof owned / sizeof *owned; i++)
@@ -94,4 +94,32 @@ int slave_module_imports(const char *resources, char *error, size_t size)
             p_Py_DecRef(owned[i]);
     p_PyGILState_Release(gil);
     return failed ? -1 : 0;
+}
+
+/* Whether the slave has left initialization (its `_initialized`, which its FMU
+ * state carries): 1, 0, or -1 when it cannot tell. */
+int fast_initialized(struct instance *in)
+{
+#define FLAG_FUNCTIONS(X)                                                                 \
+    X(PyGILState_STATE, PyGILState_Ensure, (void))                                       \
+    X(void, PyGILState_Release, (PyGILState_STATE))                                      \
+    X(PyObject *, PyObject_GetAttrString, (PyObject *, const char *))                    \
+    X(int, PyObject_IsTrue, (PyObject *)) X(void, Py_DecRef, (PyObject *))               \
+    X(void, PyErr_Clear, (void))
+#define DECLARE(result, name, parameters)                                                 \
+    result(*p_##name) parameters = (result(*) parameters)dlsym(RTLD_DEFAULT, #name);
+    FLAG_FUNCTIONS(DECLARE)
+#undef DECLARE
+#define MISSING(result, name, parameters) !p_##name ||
+    if (!in->fast || FLAG_FUNCTIONS(MISSING) 0)
+        return -1;
+#undef MISSING
+    PyGILState_STATE gil = p_PyGILState_Ensure();
+    PyObject *flag = p_PyObject_GetAttrString(in->fast->slave, "_initialized");
+    int initialized = flag ? p_PyObject_IsTrue(flag) : -1;
+    if (flag)
+        p_Py_DecRef(flag);
+    p_PyErr_Clear();
+    p_PyGILState_Release(gil);
+    return initialized;
 }

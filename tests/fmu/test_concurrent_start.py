@@ -1,0 +1,83 @@
+"""Issue 24 item 2: different FMUs (different binaries, each loaded RTLD_LOCAL, FMI 2.0
+and 3.0 mixed) first instantiated at the same moment from threads of a C host without
+Python: every run completes and equals the serial run (one interpreter start for the
+whole process, agreed on by every copy of the runtime)."""
+
+import subprocess
+from pathlib import Path
+
+import pytest
+from c_host.compile import compile_concurrent
+
+RUNS = 30
+INPUTS = {"input_speed": 12.0, "load_torque": 3.0}
+
+
+@pytest.fixture(scope="session")
+def concurrent_host(tmp_path_factory) -> Path:
+    return compile_concurrent(tmp_path_factory.mktemp("concurrent") / "concurrent")
+
+
+def fmu_argument(folder) -> str:
+    """concurrent.c's description of one extracted FMU: version, binary, resources,
+    token, inputs and scalar Float64/Real outputs, from its modelDescription."""
+    from fmpy import read_model_description
+
+    folder = Path(folder)
+    description = read_model_description(str(folder))
+    version = int(description.fmiVersion[0])
+    platform = "linux64" if version == 2 else "x86_64-linux"
+    identifier = description.coSimulation.modelIdentifier
+    inputs = [
+        f"{v.valueReference}={INPUTS[v.name]!r}"
+        for v in description.modelVariables
+        if v.name in INPUTS and v.causality == "input"
+    ]
+    outputs = [
+        str(v.valueReference)
+        for v in description.modelVariables
+        if v.causality == "output" and v.type in ("Real", "Float64") and not v.dimensions
+    ]
+    return "|".join(
+        [
+            str(version),
+            str(folder / "binaries" / platform / f"{identifier}.so"),
+            (folder / "resources").as_uri(),
+            description.guid if version == 2 else description.instantiationToken,
+            ",".join(inputs),
+            ",".join(outputs),
+        ]
+    )
+
+
+def test_different_fmus_started_at_once_thirty_of_thirty(
+    concurrent_host, unzipped_fmu, propshaft_unzipped, fmi3_unzipped
+):
+    arguments = [
+        fmu_argument(folder) for folder in (unzipped_fmu, propshaft_unzipped, fmi3_unzipped)
+    ]
+    environment = {"PATH": "/usr/bin:/bin"}
+    serial = subprocess.run(
+        [str(concurrent_host), "serial", *arguments],
+        env=environment,
+        capture_output=True,
+        text=True,
+        timeout=120,
+    )
+    assert serial.returncode == 0, serial.stdout + serial.stderr
+    assert serial.stdout.count("fmu ") == 3 and "failed" not in serial.stdout
+    outcomes = []
+    for _ in range(RUNS):
+        try:
+            run = subprocess.run(
+                [str(concurrent_host), "together", *arguments],
+                env=environment,
+                capture_output=True,
+                text=True,
+                timeout=60,
+            )
+            outcomes.append((run.returncode, run.stdout, run.stderr[-500:]))
+        except subprocess.TimeoutExpired:
+            outcomes.append(("hang", "", ""))
+    bad = [outcome for outcome in outcomes if outcome[:2] != (0, serial.stdout)]
+    assert not bad, f"{len(bad)} of {RUNS} runs failed; first: {bad[0]}"

@@ -1,0 +1,133 @@
+"""Issue 24 item 2: any one resources file of an FMU emptied, truncated, missing or
+contradicting the others: instantiate returns NULL, a logger message names the file,
+the C host exits normally; under valgrind, no invalid read or write in the FMU's
+code. FMI 2.0 and 3.0."""
+
+import re
+import shutil
+import subprocess
+from pathlib import Path
+
+import pytest
+
+ENVIRONMENT = {"PATH": "/usr/bin:/bin"}
+
+
+def empty(path: Path) -> None:
+    path.write_bytes(b"")
+
+
+def truncated(path: Path) -> None:
+    data = path.read_bytes()
+    path.write_bytes(data[: len(data) // 2])
+
+
+def missing(path: Path) -> None:
+    path.unlink()
+
+
+def another_module(path: Path) -> None:
+    path.write_text("no_such_slave_module\n")
+
+
+def another_size(path: Path) -> None:
+    """The first multi-value variable (FMI 3.0's quaternion) said to hold one value,
+    or (FMI 2.0) an output said to be a fixed parameter: the record contradicts the
+    slave."""
+    lines = path.read_text().splitlines()
+    for k, line in enumerate(lines):
+        fields = line.split()
+        if line.startswith("#"):
+            continue
+        if fields[2] != "1":
+            fields[2] = "1"
+            lines[k] = " ".join(fields)
+            break
+    else:
+        fields = lines[-1].split()
+        fields[3] = "1"
+        lines[-1] = " ".join(fields)
+    path.write_text("\n".join(lines) + "\n")
+
+
+def newer_python(path: Path) -> None:
+    path.write_text(path.read_text().replace("minimum = 3.10", "minimum = 3.99"))
+
+
+CASES = {
+    "slavemodule.txt": [empty, missing, another_module],
+    "variables.txt": [empty, truncated, missing, another_size],
+    "python_runtime.txt": [empty, truncated, missing, newer_python],
+}
+PARAMETERS = [
+    (version, name, damage)
+    for version in (2, 3)
+    for name, damages in CASES.items()
+    for damage in damages
+]
+
+
+def damaged_copy(request, tmp_path, version, name, damage) -> tuple:
+    host = request.getfixturevalue("c_host3" if version == 3 else "c_host")
+    unzipped = request.getfixturevalue("fmi3_unzipped" if version == 3 else "unzipped_fmu")
+    copy = tmp_path / "fmu"
+    shutil.copytree(unzipped, copy)
+    damage(copy / "resources" / name)
+    return host, copy
+
+
+@pytest.mark.parametrize(
+    "version, name, damage",
+    PARAMETERS,
+    ids=[f"fmi{v}-{n}-{d.__name__}" for v, n, d in PARAMETERS],
+)
+def test_a_damaged_resources_file_is_a_null_instance_naming_it(
+    request, tmp_path, version, name, damage
+):
+    host, copy = damaged_copy(request, tmp_path, version, name, damage)
+    run = subprocess.run(
+        [str(host), "instantiate", str(copy)],
+        env=ENVIRONMENT,
+        capture_output=True,
+        text=True,
+        timeout=120,
+    )
+    assert run.returncode == 0, run.stdout + run.stderr
+    assert "instance NULL" in run.stdout, run.stdout + run.stderr
+    assert name in run.stderr and "LOG 3" in run.stderr, run.stderr
+
+
+VALGRIND = [
+    (2, "slavemodule.txt", empty),
+    (2, "variables.txt", truncated),
+    (3, "slavemodule.txt", another_module),
+    (3, "variables.txt", another_size),
+]
+
+
+@pytest.mark.skipif(not shutil.which("valgrind"), reason="needs valgrind")
+@pytest.mark.parametrize(
+    "version, name, damage", VALGRIND, ids=[f"fmi{v}-{n}-{d.__name__}" for v, n, d in VALGRIND]
+)
+def test_under_valgrind_no_invalid_access_in_the_fmus_code(
+    request, tmp_path, version, name, damage
+):
+    host, copy = damaged_copy(request, tmp_path, version, name, damage)
+    run = subprocess.run(
+        ["valgrind", "--error-limit=no", str(host), "instantiate", str(copy)],
+        env=ENVIRONMENT,
+        capture_output=True,
+        text=True,
+        timeout=600,
+    )
+    assert run.returncode == 0 and "instance NULL" in run.stdout, run.stdout + run.stderr
+    # Each error block: "Invalid read/write ..." then its stack; CPython's own
+    # (unsuppressed) reports are not the FMU's.
+    blocks = re.split(r"==\d+== \n", run.stderr)
+    ours = [
+        block
+        for block in blocks
+        if re.search(r"Invalid (read|write)", block) and "UniversalJoint" in block
+    ]
+    assert not ours, ours[0]
+    assert "ERROR SUMMARY" in run.stderr

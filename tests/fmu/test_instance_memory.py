@@ -1,0 +1,45 @@
+"""Issue 24 item 2: no per-instance memory left behind after free: 2,000 more
+instantiate/free cycles (each initialized and stepped) grow a C host's peak memory
+by less than 1 KB per cycle, FMI 2.0 and 3.0."""
+
+import os
+import subprocess
+
+import pytest
+
+FEW, MANY = 200, 2200
+
+
+def peak_kib(host, folder, cycles: int) -> int:
+    """The host's peak resident memory (KiB) after `cycles` cycles."""
+    process = subprocess.Popen(
+        [str(host), "cycles", str(folder), str(cycles)],
+        env={"PATH": "/usr/bin:/bin"},
+        stdout=subprocess.PIPE,
+        stderr=subprocess.PIPE,
+    )
+    _, status, usage = os.wait4(process.pid, 0)
+    out = process.stdout.read().decode()
+    process.stdout.close(), process.stderr.close()
+    assert os.waitstatus_to_exitcode(status) == 0 and f"cycles {cycles} ok" in out, out
+    return usage.ru_maxrss
+
+
+# Not strict: the peak-memory growth it leaves varies between runs (2.6 to 17 KB
+# per cycle measured), and once in a while stays below the bound.
+LEAKS = pytest.mark.xfail(
+    strict=False,
+    reason="pythonfmu 0.7.0's binary re-runs the slave script at every fmi2Instantiate and "
+    "the script's compensating Py_IncRef keeps each run's namespace (its model class) "
+    "alive, gone once the runtime constructs the slave itself "
+    "(issue 24 item 1)",
+)
+
+
+@pytest.mark.parametrize("version", [pytest.param(2, marks=LEAKS), 3])
+def test_two_thousand_cycles_leave_less_than_a_kilobyte_each(request, version):
+    host = request.getfixturevalue("c_host3" if version == 3 else "c_host")
+    folder = request.getfixturevalue("fmi3_unzipped" if version == 3 else "unzipped_fmu")
+    growth = peak_kib(host, folder, MANY) - peak_kib(host, folder, FEW)
+    per_cycle = growth * 1024 / (MANY - FEW)
+    assert per_cycle < 1024, f"{per_cycle:.0f} bytes per cycle"
