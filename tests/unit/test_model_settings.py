@@ -46,7 +46,7 @@ def with_gearbox(monkeypatch):
 def test_the_build_offers_a_setting_a_spec_declares(with_gearbox, monkeypatch, capsys):
     built = {}
 
-    def build(dest, name, start_values, model, settings, fmi_version):
+    def build(dest, name, start_values, model, settings, fmi_version, fmi3_arrays=False):
         built.update(model=model, settings=settings)
         return "dist/Gearbox2.fmu"
 

@@ -45,8 +45,8 @@ def main(argv=None, prog=None) -> int:
     parser.add_argument(
         "--fmi3-arrays",
         action="store_true",
-        help="FMI 3 only: vectors (the UniversalJoint's quaternion, angular velocity, "
-        "torque) as Float64 arrays, for hosts that read whole arrays; the default, "
+        help="FMI 3 only: a model's vectors (a table's array rows, e.g. a quaternion) "
+        "as Float64 arrays, for hosts that read whole arrays; the default, "
         "scalars named as in FMI 2.0, every FMI 3 host reads (docs/fmi3.md)",
     )
     parser.add_argument("--dest", default="dist", help="output folder (default: dist)")
