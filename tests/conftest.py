@@ -171,3 +171,17 @@ def compliant_joint_fmu_path(tmp_path_factory) -> Path:
 def motor_fmu_path(tmp_path_factory) -> Path:
     """dist/Motor.fmu as `build_fmu.py --model Motor` writes it."""
     return build_fmu(tmp_path_factory.mktemp("motor"), "--model", "Motor")
+
+
+LAYERS = {"unit": "unit", "fmu": "fmu", "system": "slow"}
+
+
+def pytest_collection_modifyitems(items):
+    """Mark every test by its layer's folder, so `-m unit` and `-m "not slow"`
+    select by where a test lives; a test outside the layers is an error."""
+    tests = Path(__file__).resolve().parent
+    for item in items:
+        folder = Path(item.fspath).resolve().relative_to(tests).parts[0]
+        if folder not in LAYERS:
+            raise pytest.UsageError(f"{item.nodeid}: a test module lives in tests/<layer>/")
+        item.add_marker(LAYERS[folder])

@@ -15,12 +15,12 @@ VALUES = "fmu_src/cardan_joint/physics/values.py"
 SLAVE = "fmu_src/cardan_joint/fmi/slave.py"
 CORE = "fmu_src/cardan_joint/fmi/core.py"
 FAST_STEP = "fmu_src/cardan_joint/fmi/fast_step.py"
-GUARDS = "tests/test_guards.py"
-SLAVE_GUARDS = "tests/test_slave_guards.py"
-ROBUSTNESS_CALLS = "tests/test_robustness_calls.py"
+GUARDS = "tests/unit/test_guards.py"
+SLAVE_GUARDS = "tests/fmu/test_slave_guards.py"
+ROBUSTNESS_CALLS = "tests/fmu/test_robustness_calls.py"
 COMPLIANT = "fmu_src/cardan_joint/models/compliant_joint/model.py"
-COMPLIANT_TESTS = "tests/test_compliant_joint.py"
-FAST_STEP_TESTS = "tests/test_fast_step.py"
+COMPLIANT_TESTS = "tests/fmu/test_compliant_joint.py"
+FAST_STEP_TESTS = "tests/unit/test_fast_step.py"
 
 
 @dataclass(frozen=True)

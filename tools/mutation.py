@@ -8,7 +8,7 @@ report whether at least one failed (the mutant is "killed").
     .venv/bin/python tools/mutation.py --only bend # guards whose name contains "bend"
     .venv/bin/python tools/mutation.py --list      # the guards, no run
 
-Exits non-zero if a mutant survives. tests/test_mutation_list.py checks that
+Exits non-zero if a mutant survives. tests/unit/test_mutation_list.py checks that
 each target text still occurs exactly once, so a refactor cannot orphan a guard.
 """
 

@@ -181,7 +181,7 @@ def test_fmpy_and_libcosim_in_a_python_that_links_libpython_statically(fmu_path)
     if not python.exists() or sys.version_info[:2] != (3, 11):
         pytest.skip("needs /usr/bin/python3.11 and a 3.11 build")
     site = next(p for p in sys.path if p.endswith("site-packages"))
-    source = str(Path(__file__).resolve().parents[1] / "fmu_src")
+    source = str(Path(__file__).resolve().parents[2] / "fmu_src")
     script = (
         "from fmpy import simulate_fmu\n"
         "from cardan_joint.host.cosim import run_libcosim\n"

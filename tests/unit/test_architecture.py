@@ -14,7 +14,7 @@ from pathlib import Path
 
 import pytest
 
-PACKAGE = Path(__file__).resolve().parents[1] / "fmu_src" / "cardan_joint"
+PACKAGE = Path(__file__).resolve().parents[2] / "fmu_src" / "cardan_joint"
 LAYERS = {"shared": 0, "models": 1, "fmi": 2, "build": 3, "host": 4, "commands": 5}
 TOP = {"physics": "shared", "models": "models", "fmi": "fmi", "build": "build", "host": "host"}
 SHARED_MODULES = {"__init__", "units", "variable_schema", "names", "extras", "results"}

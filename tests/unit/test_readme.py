@@ -8,7 +8,7 @@ import pytest
 from cardan_joint.models import MODELS
 from cardan_joint.models.universal_joint.variables import fmi3_array_table, markdown_table
 
-ROOT = Path(__file__).resolve().parents[1]
+ROOT = Path(__file__).resolve().parents[2]
 README = (ROOT / "README.md").read_text()
 DOCS = ROOT / "docs"
 TEST_COMMAND = (

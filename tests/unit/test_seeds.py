@@ -1,5 +1,5 @@
 """The seeds' reference numbers (docs/UniversalJoint/README.md) reproduced by the physics package.
-tests/test_fmu_seeds.py reproduces the same numbers through the FMU."""
+tests/fmu/test_fmu_seeds.py reproduces the same numbers through the FMU."""
 
 import math
 

@@ -10,7 +10,7 @@
 The reference is computed by the physics package (`CardanJoint` stepped as a
 co-simulation master steps the FMU), not by the FMU: a tool that reproduces it
 through the FMU checks the FMI plumbing against the equations. The same three
-files are kept in docs/UniversalJoint/ (tests/test_cross_check.py checks that
+files are kept in docs/UniversalJoint/ (tests/fmu/test_cross_check.py checks that
 they are current; `python -m cardan_joint.build.cross_check docs/UniversalJoint`
 rewrites them). The CompliantJoint and the InertiaLoad have reference files of
 their own in docs/<model>/ (`CASES`; `python -m cardan_joint.build.cross_check
