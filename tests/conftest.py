@@ -98,8 +98,26 @@ def c_host3(tmp_path_factory) -> Path:
 
 
 @pytest.fixture(scope="session")
-def fmu_path(tmp_path_factory) -> Path:
-    return build_fmu(tmp_path_factory.mktemp("fmu"))
+def built(tmp_path_factory):
+    """built(model, fmi_version) -> the FMU `build_fmu.py [--model <model>]
+    [--fmi-version=3]` writes, built at most once per test session: every FMU
+    test shares it (a module's own build of a default model is a defect)."""
+    fmus: dict = {}
+
+    def fmu(model: str = "UniversalJoint", fmi_version: int = 2) -> Path:
+        if (model, fmi_version) not in fmus:
+            options = ["--model", model] if model != "UniversalJoint" else []
+            options += ["--fmi-version=3"] if fmi_version == 3 else []
+            dest = tmp_path_factory.mktemp(f"{model}{fmi_version}")
+            fmus[model, fmi_version] = build_fmu(dest, *options)
+        return fmus[model, fmi_version]
+
+    return fmu
+
+
+@pytest.fixture(scope="session")
+def fmu_path(built) -> Path:
+    return built()
 
 
 @pytest.fixture(scope="session")
@@ -119,9 +137,9 @@ def model_description(fmu_path):
 
 
 @pytest.fixture(scope="session")
-def propshaft_fmu_path(tmp_path_factory) -> Path:
+def propshaft_fmu_path(built) -> Path:
     """dist/Propshaft.fmu as `build_fmu.py --model Propshaft` writes it."""
-    return build_fmu(tmp_path_factory.mktemp("propshaft"), "--model", "Propshaft")
+    return built("Propshaft")
 
 
 @pytest.fixture(scope="session")
@@ -136,8 +154,8 @@ def propshaft_unzipped(propshaft_fmu_path, tmp_path_factory):
 
 
 @pytest.fixture(scope="session")
-def fmi3_path(tmp_path_factory) -> Path:
-    return build_fmu(tmp_path_factory.mktemp("fmu3"), "--fmi-version=3")
+def fmi3_path(built) -> Path:
+    return built(fmi_version=3)
 
 
 @pytest.fixture(scope="session")
@@ -156,21 +174,21 @@ def fmi3_description(fmi3_unzipped):
 
 
 @pytest.fixture(scope="session")
-def inertia_load_fmu_path(tmp_path_factory) -> Path:
+def inertia_load_fmu_path(built) -> Path:
     """dist/InertiaLoad.fmu as `build_fmu.py --model InertiaLoad` writes it."""
-    return build_fmu(tmp_path_factory.mktemp("inertia_load"), "--model", "InertiaLoad")
+    return built("InertiaLoad")
 
 
 @pytest.fixture(scope="session")
-def compliant_joint_fmu_path(tmp_path_factory) -> Path:
+def compliant_joint_fmu_path(built) -> Path:
     """dist/CompliantJoint.fmu as `build_fmu.py --model CompliantJoint` writes it."""
-    return build_fmu(tmp_path_factory.mktemp("compliant_joint"), "--model", "CompliantJoint")
+    return built("CompliantJoint")
 
 
 @pytest.fixture(scope="session")
-def motor_fmu_path(tmp_path_factory) -> Path:
+def motor_fmu_path(built) -> Path:
     """dist/Motor.fmu as `build_fmu.py --model Motor` writes it."""
-    return build_fmu(tmp_path_factory.mktemp("motor"), "--model", "Motor")
+    return built("Motor")
 
 
 LAYERS = {"unit": "unit", "fmu": "fmu", "system": "slow"}

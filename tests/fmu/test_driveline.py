@@ -7,7 +7,7 @@ import zipfile
 
 import numpy as np
 import pytest
-from conftest import ROOT, build_fmu, refused_keeping_state
+from conftest import ROOT, refused_keeping_state
 from jacobi import jacobi_master
 
 from cardan_joint import results
@@ -20,9 +20,8 @@ from cardan_joint.physics import Reason
 
 
 @pytest.fixture(scope="module")
-def component_fmus(tmp_path_factory):
-    dest = tmp_path_factory.mktemp("components")
-    return {name: build_fmu(dest, "--model", name) for name in ("Motor", "Load")}
+def component_fmus(built):
+    return {name: built(name) for name in ("Motor", "Load")}
 
 
 @pytest.fixture(scope="module")
