@@ -192,14 +192,19 @@ def motor_fmu_path(built) -> Path:
 
 
 LAYERS = {"unit": "unit", "fmu": "fmu", "system": "slow"}
+# The fixtures that build an FMU or a C host: the unit layer uses none of them.
+BUILDING = {"built", "c_host", "c_host3"}
 
 
 def pytest_collection_modifyitems(items):
     """Mark every test by its layer's folder, so `-m unit` and `-m "not slow"`
-    select by where a test lives; a test outside the layers is an error."""
+    select by where a test lives; a test outside the layers, or a unit test that
+    builds an FMU through the session fixtures, is an error."""
     tests = Path(__file__).resolve().parent
     for item in items:
         folder = Path(item.fspath).resolve().relative_to(tests).parts[0]
         if folder not in LAYERS:
             raise pytest.UsageError(f"{item.nodeid}: a test module lives in tests/<layer>/")
+        if folder == "unit" and BUILDING & set(getattr(item, "fixturenames", ())):
+            raise pytest.UsageError(f"{item.nodeid} builds an FMU: it belongs in tests/fmu")
         item.add_marker(LAYERS[folder])
