@@ -13,7 +13,9 @@ SHELL_FENCES = ("", "sh", "bash", "console", "shell")
 
 
 def pages() -> list:
-    return [ROOT / "README.md", *sorted((ROOT / "docs").rglob("*.md"))]
+    """The README, the docs and the model folders' readmes."""
+    models = sorted((ROOT / "fmu_src" / "cardan_joint" / "models").glob("*/README.md"))
+    return [ROOT / "README.md", *sorted((ROOT / "docs").rglob("*.md")), *models]
 
 
 def _program(line: str) -> str:
