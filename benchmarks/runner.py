@@ -13,7 +13,7 @@ Measures, each in its module, and writes benchmarks/results.md:
 6. `one_call`: the joint against the plain floor in each host (issue 21's
    goals) and the joint's Python alone (physics, slave, one-call step).
 
-Not part of the test run: tests/test_benchmarks_smoke.py only checks that
+Not part of the test run: tests/system/test_benchmarks_smoke.py only checks that
 `--quick` writes the tables.
 """
 

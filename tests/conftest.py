@@ -98,25 +98,37 @@ def c_host3(tmp_path_factory) -> Path:
 
 
 @pytest.fixture(scope="session")
-def model_fmu(tmp_path_factory):
-    """`model_fmu(key)`: dist/<key>.fmu as `build_fmu.py --model <key>` writes it,
-    built once per session for every test that asks for that model."""
-    built: dict[str, Path] = {}
+def built(tmp_path_factory):
+    """built(model, fmi_version, arrays) -> the FMU `build_fmu.py --model <model>
+    [--fmi-version=3 [--fmi3-arrays]]` writes, built at most once per test session:
+    every FMU test shares it (a module's own build of a model is a defect)."""
+    from cardan_joint import DEFAULT_MODEL
 
-    def fmu(key: str) -> Path:
-        if key not in built:
-            built[key] = build_fmu(tmp_path_factory.mktemp(key), "--model", key)
-        return built[key]
+    fmus: dict = {}
+
+    def fmu(model: str = DEFAULT_MODEL, fmi_version: int = 2, arrays: bool = False) -> Path:
+        key = model, fmi_version, arrays
+        if key not in fmus:
+            options = ["--model", model]
+            options += ["--fmi-version=3"] if fmi_version == 3 else []
+            options += ["--fmi3-arrays"] if arrays else []
+            dest = tmp_path_factory.mktemp(f"{model}{fmi_version}{'a' if arrays else ''}")
+            fmus[key] = build_fmu(dest, *options)
+        return fmus[key]
 
     return fmu
 
 
 @pytest.fixture(scope="session")
-def fmu_path(model_fmu) -> Path:
-    """The default model's FMU (`build_fmu.py` with no --model)."""
-    from cardan_joint import DEFAULT_MODEL
+def model_fmu(built):
+    """`model_fmu(key)`: dist/<key>.fmu as `build_fmu.py --model <key>` writes it."""
+    return built
 
-    return model_fmu(DEFAULT_MODEL)
+
+@pytest.fixture(scope="session")
+def fmu_path(built) -> Path:
+    """The default model's FMU (`build_fmu.py` with no --model)."""
+    return built()
 
 
 @pytest.fixture(scope="session")
@@ -136,9 +148,9 @@ def model_description(fmu_path):
 
 
 @pytest.fixture(scope="session")
-def propshaft_fmu_path(model_fmu) -> Path:
+def propshaft_fmu_path(built) -> Path:
     """dist/Propshaft.fmu as `build_fmu.py --model Propshaft` writes it."""
-    return model_fmu("Propshaft")
+    return built("Propshaft")
 
 
 @pytest.fixture(scope="session")
@@ -153,15 +165,15 @@ def propshaft_unzipped(propshaft_fmu_path, tmp_path_factory):
 
 
 @pytest.fixture(scope="session")
-def fmi3_path(tmp_path_factory) -> Path:
-    """The FMI 3.0 UniversalJoint with its vectors as arrays (`--fmi3-arrays`)."""
-    return build_fmu(tmp_path_factory.mktemp("fmu3"), "--fmi-version=3", "--fmi3-arrays")
+def fmi3_path(built) -> Path:
+    """The FMI 3.0 default model with its vectors as arrays (`--fmi3-arrays`)."""
+    return built(fmi_version=3, arrays=True)
 
 
 @pytest.fixture(scope="session")
-def fmi3_scalar_path(tmp_path_factory) -> Path:
-    """The FMI 3.0 UniversalJoint as built by default: its vectors as scalars."""
-    return build_fmu(tmp_path_factory.mktemp("fmu3_scalars"), "--fmi-version=3")
+def fmi3_scalar_path(built) -> Path:
+    """The FMI 3.0 default model as built by default: its vectors as scalars."""
+    return built(fmi_version=3)
 
 
 @pytest.fixture(scope="session")
@@ -180,24 +192,43 @@ def fmi3_description(fmi3_unzipped):
 
 
 @pytest.fixture(scope="session")
-def inertia_load_fmu_path(model_fmu) -> Path:
+def inertia_load_fmu_path(built) -> Path:
     """dist/InertiaLoad.fmu as `build_fmu.py --model InertiaLoad` writes it."""
-    return model_fmu("InertiaLoad")
+    return built("InertiaLoad")
 
 
 @pytest.fixture(scope="session")
-def compliant_joint_fmu_path(model_fmu) -> Path:
+def compliant_joint_fmu_path(built) -> Path:
     """dist/CompliantJoint.fmu as `build_fmu.py --model CompliantJoint` writes it."""
-    return model_fmu("CompliantJoint")
+    return built("CompliantJoint")
 
 
 @pytest.fixture(scope="session")
-def motor_fmu_path(model_fmu) -> Path:
+def motor_fmu_path(built) -> Path:
     """dist/Motor.fmu as `build_fmu.py --model Motor` writes it."""
-    return model_fmu("Motor")
+    return built("Motor")
 
 
 @pytest.fixture(scope="session")
-def load_fmu_path(model_fmu) -> Path:
+def load_fmu_path(built) -> Path:
     """dist/Load.fmu as `build_fmu.py --model Load` writes it."""
-    return model_fmu("Load")
+    return built("Load")
+
+
+LAYERS = {"unit": "unit", "fmu": "fmu", "system": "slow"}
+# The fixtures that build an FMU or a C host: the unit layer uses none of them.
+BUILDING = {"built", "model_fmu", "c_host", "c_host3"}
+
+
+def pytest_collection_modifyitems(items):
+    """Mark every test by its layer's folder, so `-m unit` and `-m "not slow"`
+    select by where a test lives; a test outside the layers, or a unit test that
+    builds an FMU through the session fixtures, is an error."""
+    tests = Path(__file__).resolve().parent
+    for item in items:
+        folder = Path(item.fspath).resolve().relative_to(tests).parts[0]
+        if folder not in LAYERS:
+            raise pytest.UsageError(f"{item.nodeid}: a test module lives in tests/<layer>/")
+        if folder == "unit" and BUILDING & set(getattr(item, "fixturenames", ())):
+            raise pytest.UsageError(f"{item.nodeid} builds an FMU: it belongs in tests/fmu")
+        item.add_marker(LAYERS[folder])

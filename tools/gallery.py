@@ -7,7 +7,7 @@ Builds the FMUs the examples need into a scratch folder, runs each example
 there (its --out a scratch folder too, so results/ is left alone), copies the
 images it writes into docs/img and records them in docs/img/gallery.json: for
 each image, the example that drew it, a digest of the sources that decide what
-it draws and a digest of the image. tests/test_gallery.py recomputes both, so
+it draws and a digest of the image. tests/unit/test_gallery.py recomputes both, so
 an example changed without rerunning this script, or an image replaced by hand,
 fails the suite. About 70 s on a 2-core machine (the seeds run their full
 horizons, the design sweep its 336 cases serially, the SSP example both hosts).

@@ -1,6 +1,6 @@
 """The guards the mutation run disables (tools/mutation.py): for each, the
 text that is the guard in its file, what replaces it, and the tests that must
-notice. tests/test_mutation_list.py checks that each target text occurs exactly
+notice. tests/unit/test_mutation_list.py checks that each target text occurs exactly
 once, so a refactor cannot orphan a guard."""
 
 # The parts are top-level modules of tools/, as this one is (tools/mutation.py

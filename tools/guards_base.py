@@ -2,6 +2,7 @@
 `Mutation` record and the files the guards live in and are tested by."""
 
 import difflib
+import re
 import sys
 from dataclasses import dataclass
 from pathlib import Path
@@ -15,19 +16,19 @@ VALUES = "fmu_src/cardan_joint/physics/values.py"
 SLAVE = "fmu_src/cardan_joint/fmi/slave.py"
 CORE = "fmu_src/cardan_joint/fmi/core.py"
 FAST_STEP = "fmu_src/cardan_joint/fmi/fast_step.py"
-GUARDS = "tests/test_guards.py"
-SLAVE_GUARDS = "tests/test_slave_guards.py"
-ROBUSTNESS_CALLS = "tests/test_robustness_calls.py"
+GUARDS = "tests/unit/test_guards.py"
+SLAVE_GUARDS = "tests/fmu/test_slave_guards.py"
+ROBUSTNESS_CALLS = "tests/fmu/test_robustness_calls.py"
 COMPLIANT = "fmu_src/cardan_joint/models/compliant_joint/model.py"
-COMPLIANT_TESTS = "tests/test_compliant_joint.py"
-FAST_STEP_TESTS = "tests/test_fast_step.py"
+COMPLIANT_TESTS = "tests/fmu/test_compliant_joint.py"
+FAST_STEP_TESTS = "tests/unit/test_fast_step.py"
 
 
 @dataclass(frozen=True)
 class Mutation:
     guard: str
     path: str
-    target: str  # must occur exactly once in `path`
+    target: str  # must occur exactly once in `path`, however it is laid out
     replacement: str
     tests: tuple  # pytest arguments: the tests expected to catch it
 
@@ -38,3 +39,28 @@ class Mutation:
         removed = " ".join(line[2:].strip() for line in diff if line.startswith("- "))
         added = " ".join(line[2:].strip() for line in diff if line.startswith("+ "))
         return f"`{removed}` -> `{added}`" if removed else f"insert `{added}`"
+
+    @property
+    def pattern(self) -> re.Pattern:
+        """The target wherever a formatter may have laid it out otherwise: any
+        whitespace between its characters, and the trailing comma a formatter adds
+        before a closing bracket when it wraps a call."""
+        tokens = []
+        for char in self.target:
+            if char.isspace():
+                continue
+            if char in ")]}":
+                tokens.append(r"(?:,\s*)?")
+            tokens.append(re.escape(char))
+        return re.compile(r"\s*".join(tokens))
+
+    def apply(self, source: str) -> str:
+        """`source` with the target replaced; ValueError unless it occurs exactly once."""
+        found = list(self.pattern.finditer(source))
+        if len(found) != 1:
+            raise ValueError(f"{self.guard}: target found {len(found)} times in {self.path}")
+        lead = self.target[: len(self.target) - len(self.target.lstrip())]
+        trail = self.target[len(self.target.rstrip()) :]
+        new = self.replacement.removeprefix(lead)
+        new = new[: len(new) - len(trail)] if trail and new.endswith(trail) else new
+        return source[: found[0].start()] + new + source[found[0].end() :]

@@ -15,7 +15,7 @@ PLUMBING_MUTATIONS = (
         "fmu_src/cardan_joint/build/builder.py",
         "n.split(\".\")[0] in (package_dir.name,",
         "n.split(\".\")[0] in (package_dir.name + \"_\",",
-        ("tests/test_build.py",),
+        ("tests/fmu/test_build.py",),
     ),
     # Plumbing that keeps a user's result and messages clean.
     Mutation(
@@ -23,24 +23,26 @@ PLUMBING_MUTATIONS = (
         "fmu_src/cardan_joint/host/simulate.py",
         "            result = _without_repeated_end(result)\n",
         "            pass\n",
-        ("tests/test_refusal.py", "-k", "simulate_raises"),
+        ("tests/fmu/test_refusal.py", "-k", "simulate_raises"),
     ),
     Mutation(
         "sweep: Dask missing names its extra",
         "fmu_src/cardan_joint/sweep/command.py",
         "    if not args.serial:\n        try:\n            require(",
         "    if False:\n        try:\n            require(",
-        ("tests/test_extras.py", "-k", "sweep"),
+        ("tests/fmu/test_extras.py", "-k", "sweep"),
     ),
     Mutation(
         "cosim: libcosimpy missing names its extra",
         "fmu_src/cardan_joint/host/cosim.py",
         '    require("libcosimpy", "cosim", "running in libcosim")\n'
         "    from libcosimpy.CosimExecution import CosimExecution\n"
-        "    from libcosimpy.CosimLogging import CosimLogLevel, log_output_level\n\n",
+        "    from libcosimpy.CosimLogging import CosimLogLevel, log_output_level\n\n"
+        "    step_ns, n_steps = _steps(",
         "    from libcosimpy.CosimExecution import CosimExecution\n"
-        "    from libcosimpy.CosimLogging import CosimLogLevel, log_output_level\n\n",
-        ("tests/test_extras.py", "-k", "libcosim_runs"),
+        "    from libcosimpy.CosimLogging import CosimLogLevel, log_output_level\n\n"
+        "    step_ns, n_steps = _steps(",
+        ("tests/fmu/test_extras.py", "-k", "libcosim_runs"),
     ),
     # The compliant driveline (issue 20).
     Mutation(
@@ -70,13 +72,28 @@ PLUMBING_MUTATIONS = (
         "fmu_src/cardan_joint/physics/stepped.py",
         "    if abs(z) > 0.05:\n",
         "    if True:\n",
-        ("tests/test_inertia_load.py",),
+        ("tests/fmu/test_inertia_load.py",),
     ),
     Mutation(
         "ssp: a missing file is named",
         "fmu_src/cardan_joint/host/ssp.py",
         "    if not path.is_file():\n",
         "    if False:\n",
-        ("tests/test_compliant_system.py", "-k", "broken"),
+        ("tests/fmu/test_compliant_system.py", "-k", "broken"),
+    ),
+    # A host's environment: the loader honours the user's Python; no stderr is fatal.
+    Mutation(
+        "loader: the user's Python before the build's and the machine's",
+        "fmu_src/cardan_joint/fmi/native/python_discovery.c",
+        "    if (record->user.library[0]) {\n        *found = record->user;\n",
+        "    if (0) {\n        *found = record->user;\n",
+        ("tests/fmu/test_c_host.py", "-k", "users_python"),
+    ),
+    Mutation(
+        "fmi3: a host without a usable stderr",
+        "fmu_src/cardan_joint/fmi/slave3.py",
+        "                sys.stderr.flush()\n            except Exception:\n                pass\n",
+        "                sys.stderr.flush()\n            finally:\n                pass\n",
+        ("tests/fmu/test_robustness_calls.py", "-k", "without_stderr"),
     ),
 )

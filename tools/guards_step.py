@@ -68,9 +68,9 @@ STEP_MUTATIONS = (
         "        if not abs(speed) <= limit:\n",
         "        if False:\n",
         (
-            "tests/test_driveline.py",
-            "tests/test_inertia_load.py",
-            "tests/test_refusal.py",
+            "tests/fmu/test_driveline.py",
+            "tests/fmu/test_inertia_load.py",
+            "tests/fmu/test_refusal.py",
             "-k",
             "unusable_inputs or reads_back or refuses",
         ),

@@ -1,7 +1,7 @@
 """Regenerate what the docs say about the models from the models themselves.
 
 Each generated block sits between `<!-- key:begin -->` and `<!-- key:end -->`:
-- `models` in README.md and docs/README.md: the index of every model discovery
+- `models` in README.md: the index of every model discovery
   finds (its page, FMI versions and description, from its spec);
 - `variables` on each model's page (models/<name>/README.md): its variable table;
 - `fmi3-arrays` on the page of a model with FMI 3 arrays: the arrays' table.
@@ -24,7 +24,7 @@ from cardan_joint.models import Model, discover
 from cardan_joint.variable_schema import array_table
 
 ROOT = Path(__file__).resolve().parents[1]
-INDEXES = (ROOT / "README.md", ROOT / "docs" / "README.md")
+INDEXES = (ROOT / "README.md",)
 
 
 def model_index(page: Path) -> str:

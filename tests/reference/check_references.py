@@ -3,7 +3,7 @@
 Checks only the references against themselves, against physical identities
 and against the contract's own statements in models/universal_joint/README.md
 (section E). It never touches the production code. Collected by pytest through
-tests/test_reference_checks.py (section D on a shorter horizon); the full run,
+tests/unit/test_reference_checks.py (section D on a shorter horizon); the full run,
 with the worst error of every check, from any directory and interpreter that
 has the test dependencies:
 

@@ -10,7 +10,7 @@ share code in one process.
 pythonfmu3 0.3.4's loader imports this module once per process (an ordinary
 import, new references released once) instead of re-running it at every
 instantiation: it has no counterpart of pythonfmu 0.7.0's findClass reference
-bug, so this script needs no compensating Py_IncRef (tests/test_fmi3.py
+bug, so this script needs no compensating Py_IncRef (tests/fmu/test_fmi3.py
 instantiates it many times in one process).
 """
 

@@ -2,7 +2,7 @@
 
 from dataclasses import asdict, dataclass
 
-# Inertia distributions of Mityushov & Misyura (PHYSICS.md), as (I1, I2, I3) / I0.
+# Mityushov & Misyura's inertia distributions (UniversalJoint model page), as (I1, I2, I3) / I0.
 INERTIA_DISTRIBUTIONS = {
     "T1": (2 / 3, 2 / 3, 2 / 3),
     "T2": (1 / 3, 4 / 3, 1 / 3),

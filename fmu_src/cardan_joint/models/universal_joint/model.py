@@ -30,7 +30,7 @@ def _ranges(names, *excluded):
 _INPUT_RANGES = _ranges(table.INPUTS, "bend_angle")
 _PARAMETER_RANGES = _ranges(table.PARAMETERS, "max_bend_angle")
 # The fast path of `input_problem` checks |x| <= max, so the ranges must be symmetric.
-# (A ranged input it does not name fails tests/test_guards.py, which takes every
+# (A ranged input it does not name fails tests/unit/test_guards.py, which takes every
 # ranged input from the table.)
 assert all(low == -high for _, low, high, _ in _INPUT_RANGES), "input ranges must be symmetric"
 _SPEED_LIMIT = bounds(table.BY_NAME["input_speed"])[1]

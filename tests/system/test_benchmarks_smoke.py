@@ -8,7 +8,7 @@ import subprocess
 import sys
 from pathlib import Path
 
-ROOT = Path(__file__).resolve().parents[1]
+ROOT = Path(__file__).resolve().parents[2]
 
 SUMMARY_ROWS = (
     "| 1. FMU2Slave loop (set 6, doStep, get 20) vs plain floor,",

@@ -11,7 +11,7 @@ from reference.multibody import simulate_multibody
 
 from cardan_joint import results
 
-ROOT = Path(__file__).resolve().parents[1]
+ROOT = Path(__file__).resolve().parents[2]
 COSIMULATION = (ROOT / "docs" / "cosimulation.md").read_text()
 sys.path.insert(0, str(ROOT / "examples"))
 from motor_load import DEFAULTS, run  # noqa: E402

@@ -28,7 +28,7 @@ from test_c_host import (
 
 PYENV = Path("/root/.pyenv")
 MULTIARCH = Path("/usr/lib/x86_64-linux-gnu")
-STDLIB_HOST = Path(__file__).resolve().parent / "c_host" / "stdlib_host.py"
+STDLIB_HOST = Path(__file__).resolve().parents[1] / "c_host" / "stdlib_host.py"
 
 
 def pyenv_cpython(minor: int) -> Path:
@@ -108,7 +108,7 @@ def machine(
             f"ldconfig -X -C {tmp_path}/ld.so.cache -f {tmp_path}/ld.so.conf",
             f"mount --bind {tmp_path}/ld.so.cache /etc/ld.so.cache",
         ]
-    hidden = {PYENV, Path(sys.prefix), Path(sys.base_prefix), Path(__file__).parents[1] / ".venv"}
+    hidden = {PYENV, Path(sys.prefix), Path(sys.base_prefix), Path(__file__).parents[2] / ".venv"}
     outermost = [p for p in hidden if p.is_dir() and not any(o in p.parents for o in hidden)]
     lines += [f"mount -t tmpfs tmpfs {path}" for path in sorted(outermost)]
     lines.append('exec env -i PATH=/usr/bin:/bin "$@"')
@@ -158,7 +158,7 @@ def test_the_fmi3_fmu_on_the_3_12_machine_equals_its_run_here(
     namespaces, c_host3, fmi3_unzipped, tmp_path
 ):
     """The FMI 3.0 loader finds the machine's Python as the FMI 2.0 one does; its run
-    here equals FMPy's to 1e-12 (tests/test_fmi3_c_host.py)."""
+    here equals FMPy's to 1e-12 (tests/fmu/test_fmi3_c_host.py)."""
     script = machine(tmp_path, **MACHINES["only a distribution's CPython 3.12"])
     there = run_on(script, c_host3, HOST_RUN[0], fmi3_unzipped, *HOST_RUN[1:])
     assert there.returncode == 0 and "instance NULL" not in there.stdout, there.stderr[-2000:]

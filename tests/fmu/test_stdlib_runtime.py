@@ -15,7 +15,7 @@ from runtime_driver import INPUTS, STEP_SIZE, STEPS
 
 from cardan_joint.host.instance import FmuInstance
 
-DRIVER = Path(__file__).with_name("runtime_driver.py")
+DRIVER = Path(__file__).resolve().parents[1] / "runtime_driver.py"
 
 
 def driver_run(*args: str) -> dict:

@@ -8,7 +8,7 @@ import pytest
 
 from cardan_joint.extras import MissingExtra, require
 
-ROOT = Path(__file__).resolve().parents[1]
+ROOT = Path(__file__).resolve().parents[2]
 
 
 def test_require_names_the_module_and_the_extra(monkeypatch):

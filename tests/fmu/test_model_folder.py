@@ -22,7 +22,7 @@ from pathlib import Path
 
 import pytest
 
-ROOT = Path(__file__).resolve().parents[1]
+ROOT = Path(__file__).resolve().parents[2]
 PACKAGE = Path("fmu_src") / "cardan_joint"
 # The copy holds the whole checkout but what is built, cached or installed
 # (.gitignore's entries but /build/, a name the package uses too; git, caches).

@@ -185,7 +185,7 @@ def test_a_working_angle_at_the_limit_refuses_every_step_and_says_why(
         shaft.close()
 
 
-# Same open/step/close shape as tests/test_robustness.py's refusal tests: each
+# Same open/step/close shape as tests/fmu/test_robustness.py's refusal tests: each
 # drives its own FMU, and the shared part is FmuInstance already.
 def test_a_non_finite_input_is_refused_and_loses_nothing(description, propshaft_unzipped):
     messages = []

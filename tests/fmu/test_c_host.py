@@ -147,18 +147,23 @@ def test_an_unusable_python_gives_null_and_says_what_to_fix(c_host, unzipped_fmu
 
 
 def test_the_users_python_is_used_where_the_builds_is_gone(c_host, unzipped_fmu, tmp_path):
-    """The build's Python gone, the user's variables name this
-    process's Python (the build's, whose site-packages has what the FMU imports)."""
-    moved = fmu_copy_with_record(
-        unzipped_fmu, tmp_path, lambda text: text.replace("library = ", "library = /nowhere")
-    )
+    """The record's hint at the build's Python points nowhere (the build machine's
+    Python gone); the user's variables name this process's Python through a link of
+    their own, and the dynamic linker's log shows that link is the library loaded."""
+    gone = "library = /nowhere/libpython3.11.so.1.0\nhome = /nowhere\npath = /nowhere/lib\n"
+    moved = fmu_copy_with_record(unzipped_fmu, tmp_path, lambda text: text + gone)
+    users = tmp_path / "users_python" / Path(shared_libpython()).name
+    users.parent.mkdir()
+    users.symlink_to(shared_libpython())
     variables = {
-        "CARDAN_JOINT_FMU_PYTHON_LIBRARY": shared_libpython(),
+        "CARDAN_JOINT_FMU_PYTHON_LIBRARY": str(users),
         "CARDAN_JOINT_FMU_PYTHON_HOME": sys.base_prefix,
         "CARDAN_JOINT_FMU_PYTHON_PATH": ":".join(search_path()),
+        "LD_DEBUG": "files",
     }
     run = run_host(c_host, "instantiate", moved, environment=variables)
     assert "instance ok" in run.stdout, run.stderr
+    assert f"file={users} " in run.stderr, "the user's library was not the one loaded"
 
 
 def test_threads_each_with_an_instance_and_one_instance_on_two_threads(c_host, unzipped_fmu):
@@ -181,7 +186,7 @@ def test_fmpy_and_libcosim_in_a_python_that_links_libpython_statically(fmu_path)
     if not python.exists() or sys.version_info[:2] != (3, 11):
         pytest.skip("needs /usr/bin/python3.11 and a 3.11 build")
     site = next(p for p in sys.path if p.endswith("site-packages"))
-    source = str(Path(__file__).resolve().parents[1] / "fmu_src")
+    source = str(Path(__file__).resolve().parents[2] / "fmu_src")
     script = (
         "from fmpy import simulate_fmu\n"
         "from cardan_joint.host.cosim import run_libcosim\n"

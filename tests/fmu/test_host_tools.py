@@ -6,7 +6,7 @@ import sys
 
 import numpy as np
 import pytest
-from conftest import ROOT, build_fmu, cardan_joint, run_build
+from conftest import ROOT, cardan_joint, run_build
 
 from cardan_joint import results
 from cardan_joint.host.fmu_info import FmuInfo, build_command
@@ -14,20 +14,6 @@ from cardan_joint.models import MODELS
 
 # Every model the build offers, for every FMI version it offers.
 BUILDS = [(key, version) for key, spec in MODELS.items() for version in spec.fmi_versions]
-
-
-@pytest.fixture(scope="module")
-def built(tmp_path_factory):
-    """(model, FMI version) -> the FMU the user's build command writes, built once."""
-    fmus: dict = {}
-
-    def fmu(key, version=2):
-        if (key, version) not in fmus:
-            dest = tmp_path_factory.mktemp(f"{key}{version}")
-            fmus[key, version] = build_fmu(dest, "--model", key, f"--fmi-version={version}")
-        return fmus[key, version]
-
-    return fmu
 
 
 @pytest.mark.parametrize("key, version", BUILDS)

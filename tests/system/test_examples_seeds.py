@@ -16,7 +16,7 @@ import pytest
 
 from cardan_joint import results
 
-ROOT = Path(__file__).resolve().parents[1]
+ROOT = Path(__file__).resolve().parents[2]
 FIGURES = {
     "seed_wikipedia": [
         "seed_wikipedia_output_speed",

@@ -1,6 +1,6 @@
 """The seeds' reference numbers (models/universal_joint/README.md) reproduced by the physics
 package.
-tests/test_fmu_seeds.py reproduces the same numbers through the FMU."""
+tests/fmu/test_fmu_seeds.py reproduces the same numbers through the FMU."""
 
 import math
 
