@@ -55,6 +55,10 @@ def main(argv=None, prog=None) -> int:
         "reference run (fmi-cross-check layout; default model only)",
     )
     args = parser.parse_args(argv)
+    dest = Path(args.dest)
+    blocking = next((p for p in (dest, *dest.parents) if p.exists() and not p.is_dir()), None)
+    if blocking is not None:
+        parser.error(f"--dest {args.dest}: {blocking} is a file, not a folder")
     settings = {}
     if args.joints is not None:
         if "joints" not in discover()[args.model].default_settings:
@@ -86,6 +90,11 @@ def main(argv=None, prog=None) -> int:
         )
     except BuildError as error:
         print(f"build_fmu: {error}", file=sys.stderr)
+        return 1
+    except OSError as error:  # a folder that cannot be written: named, no traceback
+        print(
+            f"build_fmu: {error.filename or args.dest}: {error.strerror or error}", file=sys.stderr
+        )
         return 1
     print(f"built and validated {fmu}")
     if args.cross_check:

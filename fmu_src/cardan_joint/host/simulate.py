@@ -239,7 +239,8 @@ def simulate(
             "\n  ".join(f"{status}: {text}" for status, _, text in problems)
             or "(the FMU gave no reason)"
         )
-        text = f"the FMU stopped at t = {reached!r} s of {stop_time!r} s:\n  {detail}"
+        where = f"t = {reached!r} s of {stop_time!r} s" if len(result) else "its start (t = 0 s)"
+        text = f"the FMU stopped at {where}:\n  {detail}"
         if not info.fmi3:  # FMI 3.0 in event mode records two rows at an event
             result = _without_repeated_end(result)
         refusal = first_refusal(text for _, _, text in problems)
