@@ -54,7 +54,8 @@ def test_simulate_from_constant_inputs(built_fmu, tmp_path):
 def test_simulate_from_an_input_csv(built_fmu, tmp_path):
     inputs = tmp_path / "inputs.csv"
     inputs.write_text(
-        "time,input_speed,input_acceleration,bend_angle\n0,10,10,0.1\n0.5,15,10,0.3\n"
+        "time,input_speed,input_acceleration,bend_angle,bend_angle_rate\n"
+        "0,10,10,0.1,0.4\n0.5,15,10,0.3,0.4\n"
     )
     out, plot = tmp_path / "csv_run.csv", tmp_path / "plots" / "csv_run.png"
     run = cardan_joint(
@@ -206,13 +207,14 @@ def test_the_command_leaves_argv_and_stderr_alone(built_fmu, tmp_path, monkeypat
     argv0, stderr = sys.argv[0], sys.stderr
     seen = []
 
-    def fake_simulate(fmu, stop_time, output_interval, inputs, **options):
+    def fake_simulate(fmu, stop_time, output_interval, inputs, rows_to=None, **options):
         seen.append((sys.argv[0], sys.stderr))
         result = np.zeros(
             2, dtype=[("time", float)] + [(n, float) for n in table.INPUTS + table.OUTPUTS]
         )
         result["time"] = (0.0, stop_time)
-        return result
+        rows_to(result)  # the command streams the run to its CSV
+        return result[:0]
 
     def fake_build(argv, prog=None):
         seen.append((sys.argv[0], sys.stderr))

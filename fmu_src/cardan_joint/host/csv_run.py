@@ -93,7 +93,16 @@ def simulate_to_csv(
     if run is None:
         run = StreamedRun(Path(path), stride=max(1, math.ceil(length.rows / plot_rows)))
     try:
-        simulate(info, stop_time, output_interval, inputs, start_values, output, run, **options)
+        simulate(
+            info,
+            stop_time=stop_time,
+            output_interval=output_interval,
+            inputs=inputs,
+            start_values=start_values,
+            output=output,
+            rows_to=run,
+            **options,
+        )
     except SimulationError:
         if run.rows > 1:  # a step was taken: what it computed is a result
             run.commit()
