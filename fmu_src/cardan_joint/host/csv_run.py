@@ -93,24 +93,23 @@ def simulate_to_csv(
     if run is None:
         run = StreamedRun(Path(path), stride=max(1, math.ceil(length.rows / plot_rows)))
     try:
-        simulate(
-            info,
-            stop_time=stop_time,
-            output_interval=output_interval,
-            inputs=inputs,
-            start_values=start_values,
-            output=output,
-            rows_to=run,
-            **options,
-        )
-    except SimulationError:
-        if run.rows > 1:  # a step was taken: what it computed is a result
-            run.commit()
-        else:
-            run.discard()
+        try:
+            simulate(
+                info,
+                stop_time=stop_time,
+                output_interval=output_interval,
+                inputs=inputs,
+                start_values=start_values,
+                output=output,
+                rows_to=run,
+                **options,
+            )
+        except SimulationError:
+            if run.rows > 1:  # a step was taken: what it computed is a result
+                run.commit()
+            raise
+        run.commit()
+    except BaseException:  # refused at the start, Ctrl-C (even while committing), any error
+        run.discard()  # after a commit: nothing left to remove
         raise
-    except BaseException:
-        run.discard()
-        raise
-    run.commit()
     return run

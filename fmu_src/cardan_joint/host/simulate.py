@@ -206,9 +206,9 @@ def simulate(
         recorders[:1] = [recorder]
         if rows_to is not None and len(recorder.rows) >= CHUNK_ROWS + KEPT_ROWS:
             _hand_over(recorder, rows_to, KEPT_ROWS)
-        if interrupt.requested:
-            return False  # FMPy ends the run (and terminates the FMU) after this step
-        return step_finished is None or step_finished(time, recorder)
+        if step_finished is not None and not step_finished(time, recorder):
+            return False
+        return not interrupt.requested  # False: FMPy ends the run and terminates the FMU
 
     with interrupt_between_steps() as interrupt:
         try:
