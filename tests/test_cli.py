@@ -117,6 +117,26 @@ def test_bad_input_csv_column_is_named(built_fmu, tmp_path):
     assert "Traceback" not in run.stderr
 
 
+@pytest.mark.parametrize(
+    "where, said",
+    [
+        ({"--output": "plain/run.csv"}, "cannot write {tmp}/plain/run.csv: {tmp}/plain is a file"),
+        ({"--plot": "plain/run.png"}, "cannot write {tmp}/plain/run.png: {tmp}/plain is a file"),
+        ({"--output": "."}, "cannot write {tmp}: it is a folder"),
+        ({"--input": "missing.csv"}, "input file {tmp}/missing.csv does not exist"),
+    ],
+)
+def test_a_bad_path_is_named_before_the_run(built_fmu, tmp_path, where, said):
+    (tmp_path / "plain").write_text("x")
+    paths = {option: str(tmp_path / name) for option, name in where.items()}
+    options = {"--output": str(tmp_path / "run.csv"), **paths}
+    args = [item for option, value in options.items() for item in (option, value)]
+    run = cardan_joint("simulate", "--fmu", built_fmu, "--stop-time", "0.01", *args)
+    assert run.returncode == 2 and "Traceback" not in run.stderr
+    assert said.format(tmp=tmp_path) in run.stderr
+    assert sorted(p.name for p in tmp_path.iterdir()) == ["plain"]  # nothing written
+
+
 def test_missing_fmu_is_a_message_not_a_traceback(tmp_path):
     run = cardan_joint("simulate", "--fmu", tmp_path / "none.fmu")
     assert run.returncode != 0 and "does not exist" in run.stderr

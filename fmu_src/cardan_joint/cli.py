@@ -20,6 +20,7 @@ import sys
 import textwrap
 from pathlib import Path
 
+from . import results
 from .host.fmu_info import FmuInfo, MissingFMUError
 from .host.run_inputs import read_input_csv, split_assignments, with_constants
 from .names import UsageError
@@ -117,7 +118,7 @@ def simulate_command(args):
     show = not args.no_progress and (args.progress or length.steps >= PROGRESS_MIN_STEPS)
     output = Path(args.output)
     plot = Path(args.plot) if args.plot else output.with_suffix(".png")
-    existed = {p: p.exists() for p in (output, plot)}
+    existed = {results.check_writable(p): p.exists() for p in (output, plot)}
     run = StreamedRun(output, stride=max(1, -(-length.rows // PLOT_ROWS)))
     step_finished, bars = _progress_callback(length, show)
     refused = None
@@ -290,12 +291,16 @@ def main(argv=None) -> int:
         if rest:
             parser.error(f"unrecognized arguments: {' '.join(rest)}")
         return simulate_command(args)
-    except (UsageError, MissingFMUError) as error:
+    except (UsageError, MissingFMUError, results.ResultFileError) as error:
         print(f"{PROG} {args.command}: {error}", file=sys.stderr)
         return 2
-    except KeyboardInterrupt:
-        print(f"{PROG} {args.command}: interrupted", file=sys.stderr)
+    except KeyboardInterrupt:  # before any run (reading the FMU, checking arguments)
+        print(f"{PROG} {args.command}: interrupted: nothing written", file=sys.stderr)
         return 130
+    except OSError as error:  # a path that cannot be read or written: named
+        where = error.filename or ""
+        print(f"{PROG} {args.command}: {where}: {error.strerror or error}", file=sys.stderr)
+        return 1
     except Exception as error:  # noqa: BLE001 - the user gets a message, not a traceback
         print(f"{PROG} {args.command}: {type(error).__name__}: {error}", file=sys.stderr)
         return 1

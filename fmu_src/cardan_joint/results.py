@@ -33,11 +33,23 @@ PathType = str | PathLike
 
 
 class ResultFileError(ValueError):
-    """A results file that cannot be read: the message names the file and the problem."""
+    """A results file that cannot be read or written: the message names the file
+    and the problem."""
+
+
+def check_writable(path: PathType) -> Path:
+    """`path` as a Path; ResultFileError if a file stands where a folder of it must be."""
+    path = Path(path)
+    blocking = next((p for p in path.parents if p.exists() and not p.is_dir()), None)
+    if blocking is not None:
+        raise ResultFileError(f"cannot write {path}: {blocking} is a file, not a folder")
+    if path.is_dir():
+        raise ResultFileError(f"cannot write {path}: it is a folder")
+    return path
 
 
 def _parent_made(path: PathType) -> Path:
-    path = Path(path)
+    path = check_writable(path)
     path.parent.mkdir(parents=True, exist_ok=True)
     return path
 
