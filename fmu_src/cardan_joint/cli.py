@@ -45,7 +45,7 @@ def _written(path: Path, existed: bool, detail: str = "") -> str:
 def _progress_callback(length, show):
     """(step_finished, bars): a progress bar made at the first step (none for a
     run refused before it starts)."""
-    bars: list = []
+    bars = []
     if not show:
         return None, bars
 

@@ -22,7 +22,9 @@ from .plotting import pyplot, save_figure
 MAGNITUDE_RATIO = 30.0
 # A change below this fraction of a variable's size (SI, at least 1) is rounding.
 ROUNDING = 1e-9
-TITLE_WIDTH = 110  # characters per title line
+# Characters of the 9-point title per inch of figure width (measured: about
+# 8 px a character at 100 dpi, with a margin).
+TITLE_CHARACTERS_PER_INCH = 11.5
 
 
 def is_constant(values: np.ndarray) -> bool:
@@ -72,13 +74,11 @@ def run_title(
     length_text: str,
     refusal: str | None = None,
 ) -> str:
-    """'<model> (FMI x), <length>; inputs: ...' wrapped, and the refusal on its own line."""
+    """'<model> (FMI x), <length>. Inputs: ...', and the refusal on a line of its own
+    (`plot_run` wraps the lines to the figure's width)."""
     given = "; ".join(f"{name} {how}" for name, how in inputs.items()) or "start values"
     text = f"{model} (FMI {fmi_version}), {length_text}. Inputs: {given}"
-    lines = textwrap.wrap(text, TITLE_WIDTH)
-    if refusal:
-        lines += textwrap.wrap(refusal, TITLE_WIDTH)
-    return "\n".join(lines)
+    return f"{text}\n{refusal}" if refusal else text
 
 
 def plot_run(
@@ -94,10 +94,16 @@ def plot_run(
     groups = panels(result, names, lambda name: display(name)[1])
     columns = 2 if len(groups) > 4 else 1
     rows = math.ceil(len(groups) / columns)
+    width = 7.2 * columns
+    title = "\n".join(
+        wrapped
+        for line in title.splitlines()
+        for wrapped in textwrap.wrap(line, int(width * TITLE_CHARACTERS_PER_INCH))
+    )
     fig, axes = plt.subplots(
         rows,
         columns,
-        figsize=(7.2 * columns, 1.0 + 0.35 * title.count("\n") + 2.1 * rows),
+        figsize=(width, 1.0 + 0.18 * title.count("\n") + 2.1 * rows),
         sharex=True,
         squeeze=False,
     )
