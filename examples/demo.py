@@ -56,7 +56,7 @@ def plot(result, inputs, path):
         label = f"M{k}: {components[k - 1]}"
         axes[2].plot(t, result[f"crosspiece_torque_{k}"], lw=0.8, color=color, label=label)
     axes[2].set_ylabel("crosspiece torque [N.m]")
-    axes[2].legend(loc="upper left", ncol=3)
+    axes[2].legend(loc="upper left")  # one column: clear of the peaks
     axes[3].plot(t, result["input_torque"], lw=0.8, label="input torque T1")
     axes[3].plot(t, result["input_yoke_moment"], lw=0.8, label="input yoke secondary couple")
     axes[3].plot(t, result["output_yoke_moment"], lw=0.8, label="output yoke secondary couple")

@@ -86,7 +86,7 @@ def _title(info, length, args, csv_signal, given, refusal=None, rows=0, stride=1
         length_text = f"refused after {rows - 1} of {steps} (t = {refusal[0]:.6g} s)"
     if stride > 1:
         length_text += f", 1 row in {stride} drawn"
-    reason = None if refusal is None else f"Refused: {textwrap.shorten(refusal[1], 220)}"
+    reason = None if refusal is None else f"Refused: {textwrap.shorten(refusal[1], 320)}"
     return run_title(
         info.model_name, info.model_description.fmiVersion, inputs, length_text, reason
     )
@@ -294,8 +294,8 @@ def main(argv=None) -> int:
     except (UsageError, MissingFMUError, results.ResultFileError) as error:
         print(f"{PROG} {args.command}: {error}", file=sys.stderr)
         return 2
-    except KeyboardInterrupt:  # before any run (reading the FMU, checking arguments)
-        print(f"{PROG} {args.command}: interrupted: nothing written", file=sys.stderr)
+    except KeyboardInterrupt:  # outside a run (reading the FMU, building, a Dask start-up)
+        print(f"{PROG} {args.command}: interrupted", file=sys.stderr)
         return 130
     except OSError as error:  # a path that cannot be read or written: named
         where = error.filename or ""

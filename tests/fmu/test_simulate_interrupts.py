@@ -133,3 +133,31 @@ def test_simulate_raises_an_interrupt_at_a_step_boundary_not_a_refusal(fmu_path)
     rows = interrupted.value.result
     assert rows["time"][-1] == pytest.approx(0.05) and np.all(np.diff(rows["time"]) > 0)
     assert signal.getsignal(signal.SIGINT) is signal.default_int_handler
+
+
+def test_ctrl_c_during_a_sweep_keeps_the_finished_cases(fmu_path, tmp_path):
+    command = [
+        sys.executable,
+        "-m",
+        "cardan_joint.cli",
+        "sweep",
+        "--serial",
+        "--fmu",
+        str(fmu_path),
+    ]
+    grid = ["--bend-angles", "5", "10", "15", "20", "--speeds", "1000", "2000", "3000"]
+    process = subprocess.Popen([*command, *grid, "--out", str(tmp_path)], stderr=subprocess.PIPE)
+    try:
+        seen = b""
+        while b"serial:" not in seen or b"case/s" not in seen.split(b"serial:")[-1]:
+            byte = process.stderr.read(1)
+            assert byte, seen.decode()
+            seen += byte  # the progress bar after the first task: cases are stored
+        process.send_signal(signal.SIGINT)
+        rest = process.communicate(timeout=60)[1].decode()
+    finally:
+        process.kill()
+    assert process.returncode == 130 and "Traceback" not in rest
+    assert "interrupted: " in rest and "run it again (without --fresh)" in rest
+    kept = list((tmp_path / "sweep.cases").glob("*deg_*rpm_*.json"))
+    assert 0 < len(kept) < 48 and not (tmp_path / "sweep.csv").exists()

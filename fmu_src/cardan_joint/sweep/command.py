@@ -258,7 +258,15 @@ def main(argv=None, prog=None, default_name="design_sweep") -> int:
         except SettingsMismatch as error:
             print(f"{name}: {error}", file=sys.stderr)
             return 2
-        table = _run(args, fmu, spec, store, progress)
+        try:
+            table = _run(args, fmu, spec, store, progress)
+        except KeyboardInterrupt:
+            print(
+                f"{name}: interrupted: {store.written} cases computed in this run are kept in "
+                f"{store.folder}; run it again (without --fresh) to compute only the missing ones",
+                file=sys.stderr,
+            )
+            return 130
     stem, figure = out / args.name, out / f"{args.name}.png"
     existed = {
         p for p in (stem.with_suffix(".csv"), stem.with_suffix(".parquet"), figure) if p.exists()
