@@ -222,7 +222,7 @@ def _actions(parser):
 def test_the_command_leaves_argv_and_stderr_alone(built_fmu, tmp_path, monkeypatch):
     """Run in-process, as a host would: no redirection or argv rewrite while it works."""
     import cardan_joint.build
-    import cardan_joint.simulate
+    import cardan_joint.host.csv_run
 
     argv0, stderr = sys.argv[0], sys.stderr
     seen = []
@@ -240,7 +240,7 @@ def test_the_command_leaves_argv_and_stderr_alone(built_fmu, tmp_path, monkeypat
         seen.append((sys.argv[0], sys.stderr))
         return 0
 
-    monkeypatch.setattr(cardan_joint.host.simulate, "simulate", fake_simulate)
+    monkeypatch.setattr(cardan_joint.host.csv_run, "simulate", fake_simulate)
     monkeypatch.setattr(cardan_joint.build, "main", fake_build)
     assert (
         cli.main(
