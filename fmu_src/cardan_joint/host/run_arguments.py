@@ -6,6 +6,7 @@ streamed by `simulate_to_csv`), before the first step. Each mistake is a
 """
 
 import math
+import numbers
 import os
 import shutil
 from dataclasses import dataclass
@@ -49,9 +50,9 @@ class RunLength:
 
 def run_length(stop_time: float, step: float) -> RunLength:
     """The run's length; UsageError unless 0 < step <= stop time, both finite."""
-    if not (isinstance(stop_time, (int, float)) and math.isfinite(stop_time) and stop_time > 0):
+    if not (isinstance(stop_time, numbers.Real) and math.isfinite(stop_time) and stop_time > 0):
         raise UsageError(f"stop time {stop_time!r} s must be a finite number > 0")
-    if not (isinstance(step, (int, float)) and math.isfinite(step) and 0 < step <= stop_time):
+    if not (isinstance(step, numbers.Real) and math.isfinite(step) and 0 < step <= stop_time):
         raise UsageError(
             f"output interval (communication step) {step!r} s must be a number > 0 "
             f"and at most the stop time {stop_time!r} s"
