@@ -186,3 +186,11 @@ def test_a_sweep_refuses_an_fmu_without_its_variables(propshaft_fmu_path, tmp_pa
     assert run.returncode == 2 and "Traceback" not in run.stderr
     assert "(Propshaft) lacks what the sweep sets and reads: inputs bend_angle" in run.stderr
     assert list(tmp_path.iterdir()) == []
+
+
+def test_the_python_sweep_refuses_an_fmu_without_its_variables(propshaft_fmu_path):
+    from cardan_joint import sweep
+
+    spec = sweep.SweepSpec(bend_angles_deg=(5.0,), input_speeds_rpm=(1000.0,))
+    with pytest.raises(UsageError, match=r"\(Propshaft\) lacks what the sweep sets and reads"):
+        sweep.run_serial(propshaft_fmu_path, spec, progress=False)
