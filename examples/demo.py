@@ -49,10 +49,14 @@ def plot(result, inputs, path):
     axes[0].set_title("Run-up through a Cardan joint bending 0 -> 30 -> 0 deg, 200 N.m load")
     axes[1].plot(t, result["cardan_error"] * RAD_TO_DEG, lw=0.8, color="tab:purple")
     axes[1].set_ylabel("cardan error [deg]")
-    for k, color in zip((1, 2, 3), ("tab:blue", "tab:orange", "tab:green")):
-        axes[2].plot(t, result[f"crosspiece_torque_{k}"], lw=0.8, color=color, label=f"M{k}")
+    # The Euler torque on the crosspiece, in its own frame: along the input yoke's
+    # pin, along the output yoke's pin, and normal to both.
+    components = ("input pin", "output pin", "normal to the pins")
+    for k, color in enumerate(("tab:blue", "tab:orange", "tab:green"), 1):
+        label = f"M{k}: {components[k - 1]}"
+        axes[2].plot(t, result[f"crosspiece_torque_{k}"], lw=0.8, color=color, label=label)
     axes[2].set_ylabel("crosspiece torque [N.m]")
-    axes[2].legend(loc="upper left", ncol=3)
+    axes[2].legend(loc="upper left")  # one column: clear of the peaks
     axes[3].plot(t, result["input_torque"], lw=0.8, label="input torque T1")
     axes[3].plot(t, result["input_yoke_moment"], lw=0.8, label="input yoke secondary couple")
     axes[3].plot(t, result["output_yoke_moment"], lw=0.8, label="output yoke secondary couple")

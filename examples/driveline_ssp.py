@@ -72,7 +72,7 @@ def loop_stability(fmus, drive, folder, ratios=(0.5, 0.9, 2.0), steps=(1e-3, 1e-
 
 def plot(fmpy_rows, libcosim_rows, path, drive):
     plt = pyplot()
-    fig, axes = plt.subplots(3, 1, figsize=(9, 8), sharex=True)
+    fig, axes = plt.subplots(3, 1, figsize=(11, 8), sharex=True)
     rpm = RAD_PER_S_TO_RPM
     for rows, style, host in ((libcosim_rows, "-", "libcosim"), (fmpy_rows, "--", "FMPy")):
         axes[0].plot(rows["time"], rows["Motor.speed"] * rpm, style, label=f"motor ({host})")
@@ -100,9 +100,9 @@ def plot(fmpy_rows, libcosim_rows, path, drive):
     axes[2].set_ylabel("motor speed\nFMPy - libcosim [rpm]")
     axes[2].set_xlabel("time [s]")
     axes[0].set_title(f"SSP system Motor -> {drive} -> Load, step {STEP:g} s")
-    for ax in axes:
+    for ax in axes:  # beside the panel: a legend on the data hid the torque minima
         if ax.get_legend_handles_labels()[0]:
-            ax.legend(loc="lower right", fontsize=7)
+            ax.legend(loc="upper left", bbox_to_anchor=(1.01, 1.0), fontsize=7, borderaxespad=0)
     save_figure(fig, path)
 
 

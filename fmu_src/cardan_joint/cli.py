@@ -11,137 +11,25 @@ told otherwise. Every failure a user can cause (an unknown variable, a
 malformed CSV, a step the FMU refuses, a missing FMU) ends in a one-paragraph
 message on stderr and a non-zero exit status, never a traceback; a refused run
 still writes what it computed up to the refusal (nothing if refused at the
-start). The command changes no process-wide state (no stderr redirection,
-sys.argv as it found it): main() can run inside a host.
+start); Ctrl-C exits 130 saying where the run was, and every file is written
+whole or not at all. The command leaves process-wide state as it found it (no
+stderr redirection, sys.argv untouched; during a run, in the main thread, it
+holds Ctrl-C to the step boundary and restores the SIGINT handler after):
+main() can run inside a host.
 """
 
 import argparse
-import math
 import sys
-from pathlib import Path
 
 from . import results
-from .host.fmu_info import FmuInfo, MissingFMUError
-from .host.run_inputs import read_input_csv, split_assignments, with_constants
+from .host.fmu_info import MissingFMUError
 from .names import UsageError
+from .simulate_command import PROG, PROGRESS_MIN_STEPS, simulate_command
 
-PROG = "cardan-joint"
-# Runs with fewer steps finish before a progress bar would help.
-PROGRESS_MIN_STEPS = 20_000
 # Each command writes under its own name: a command never overwrites the files
 # of another command or of an example (results/demo.csv, results/design_sweep.*).
 DEFAULT_OUTPUT = "results/simulate.csv"
 SWEEP_NAME = "sweep"
-
-
-# --- simulate: output -------------------------------------------------------
-
-
-def _written(path: Path, existed: bool, detail: str = "") -> str:
-    notes = ", ".join(note for note in (detail, "replaced" if existed else "") if note)
-    return f"{path} ({notes})" if notes else str(path)
-
-
-def write_outputs(result, output: Path, plot: Path, names, title, display) -> str:
-    """Write the result CSV and its plot; say which files existed before."""
-    existed = {p: p.exists() for p in (output, plot)}
-    results.write_csv(result, output)
-    if len(result):
-        from .host.plotting import plot_time_series
-
-        plot_time_series(result, names, plot, title, display)
-        return (
-            f"{_written(output, existed[output], f'{len(result)} rows')} and "
-            f"{_written(plot, existed[plot])}"
-        )
-    return _written(output, existed[output], "no rows: no plot")
-
-
-def _progress_callback(stop_time, step, show):
-    if not show:
-        return None, None
-    from tqdm import tqdm
-
-    bar = tqdm(total=max(1, round(stop_time / step)), desc="simulate", unit="step")
-
-    def step_finished(time, recorder):
-        bar.update(round(time / step) - bar.n)
-        return True
-
-    return step_finished, bar
-
-
-def _refusal(error, start: bool, stop_time) -> str:
-    """Where a refused run stopped, rounded, and the FMU's reasons."""
-    reached = float(error.result["time"][-1]) if len(error.result) else 0.0
-    reasons = [
-        text for status, _, text in error.messages if status in ("discard", "error", "fatal")
-    ] or ["(the FMU gave no reason)"]
-    where = (
-        "the FMU refused the run at its start (t = 0 s): nothing computed, no CSV or plot written"
-        if start
-        else f"the FMU refused a step: stopped at t = {reached:.6g} s of {stop_time:.6g} s"
-    )
-    return where + "\n  " + "\n  ".join(reasons)
-
-
-def simulate_command(args):
-    from .host.simulate import SimulationError, flat_columns, simulate
-
-    info = FmuInfo.read(args.fmu)  # read once: names, units, start values
-    constants, parameters = split_assignments(args.set, info)
-    csv_signal = read_input_csv(args.input, info) if args.input else None
-    experiment = info.model_description.defaultExperiment
-    stop_time = (
-        args.stop_time
-        if args.stop_time is not None
-        else float(csv_signal["time"][-1])
-        if csv_signal is not None
-        else float(experiment.stopTime)
-    )
-    step = args.step
-    if not (math.isfinite(stop_time) and stop_time > 0):
-        raise UsageError(f"--stop-time {stop_time!r} must be a number > 0")
-    if not (math.isfinite(step) and 0 < step <= stop_time):
-        raise UsageError(f"--step {step!r} must be > 0 and at most the stop time {stop_time!r}")
-    recorded = info.names("input", "output")
-    plot_variables = args.plot_variables or info.columns("output")
-    info.check(plot_variables, ("input", "output"), "--plot-variables variable")
-    inputs = with_constants(csv_signal, constants) if csv_signal is not None else constants
-    steps = round(stop_time / step)
-    show = not args.no_progress and (args.progress or steps >= PROGRESS_MIN_STEPS)
-    step_finished, bar = _progress_callback(stop_time, step, show)
-    output = Path(args.output)
-    plot = Path(args.plot) if args.plot else output.with_suffix(".png")
-    title = f"{info.path.name}: {steps} steps of {step:.6g} s"
-    try:
-        result = simulate(
-            info,
-            stop_time=stop_time,
-            output_interval=step,
-            inputs=inputs,
-            start_values=parameters,
-            output=recorded,
-            step_finished=step_finished,
-        )
-    except SimulationError as error:
-        partial = flat_columns(error.result)
-        at_start = len(partial) <= 1  # at most the initial row: no step was taken
-        message = f"{PROG} simulate: {_refusal(error, at_start, stop_time)}"
-        if not at_start:
-            written = write_outputs(
-                partial, output, plot, plot_variables, f"{title} (refused)", info.display
-            )
-            message += f"\nwrote the run up to the refusal: {written}"
-        print(message, file=sys.stderr)
-        return 1
-    finally:
-        if bar:
-            bar.close()
-    result = flat_columns(result)  # an FMI 3 FMU's arrays, as FMI 2 columns
-    written = write_outputs(result, output, plot, plot_variables, title, info.display)
-    print(f"wrote {written}")
-    return 0
 
 
 # --- the command ------------------------------------------------------------
@@ -241,12 +129,16 @@ def main(argv=None) -> int:
         if rest:
             parser.error(f"unrecognized arguments: {' '.join(rest)}")
         return simulate_command(args)
-    except (UsageError, MissingFMUError) as error:
+    except (UsageError, MissingFMUError, results.ResultFileError) as error:
         print(f"{PROG} {args.command}: {error}", file=sys.stderr)
         return 2
-    except KeyboardInterrupt:
+    except KeyboardInterrupt:  # outside a run (reading the FMU, building, a Dask start-up)
         print(f"{PROG} {args.command}: interrupted", file=sys.stderr)
         return 130
+    except OSError as error:  # a path that cannot be read or written: named
+        where = error.filename or ""
+        print(f"{PROG} {args.command}: {where}: {error.strerror or error}", file=sys.stderr)
+        return 1
     except Exception as error:  # noqa: BLE001 - the user gets a message, not a traceback
         print(f"{PROG} {args.command}: {type(error).__name__}: {error}", file=sys.stderr)
         return 1

@@ -1,16 +1,25 @@
 """Reading and writing results: the one place that knows file formats.
 
 Time series (FMPy's structured result arrays, and any table of numbers) go to
-CSV in FMPy's column format through `fmpy.util.write_csv`: a quoted header, one
-column per variable, values printed as the shortest text that reads back to the
-same double. They are read back through pandas (FMPy's reader takes a space
-after a comma for a vector column, which hand-written input files often have).
+CSV in FMPy's column format (the bytes `fmpy.util.write_csv` writes): a quoted
+header, one column per variable, values printed as the shortest text that
+reads back to the same double. `CsvStream` writes one chunk of rows at a time,
+so a long run never has to be held whole. They are read back through pandas
+(FMPy's reader takes a space after a comma for a vector column, which
+hand-written input files often have).
+
+Every file is written under a temporary name beside its place and renamed into
+it when whole: a file is there complete, or not at all (an interrupt, a full
+disk or an error while writing leaves the earlier file, if any, untouched).
 Tables with text columns (the design sweep's status
 and message) go through pandas, also round-trip exact, and to Parquet when a
 Parquet engine (pyarrow) is installed.
 """
 
-from collections.abc import Iterable, Mapping, Sequence
+import os
+import uuid
+from collections.abc import Iterable, Iterator, Mapping, Sequence
+from contextlib import contextmanager
 from os import PathLike
 from pathlib import Path
 from typing import TYPE_CHECKING
@@ -24,13 +33,43 @@ PathType = str | PathLike
 
 
 class ResultFileError(ValueError):
-    """A results file that cannot be read: the message names the file and the problem."""
+    """A results file that cannot be read or written: the message names the file
+    and the problem."""
+
+
+def check_writable(path: PathType) -> Path:
+    """`path` as a Path; ResultFileError if a file stands where a folder of it must be."""
+    path = Path(path)
+    blocking = next((p for p in path.parents if p.exists() and not p.is_dir()), None)
+    if blocking is not None:
+        raise ResultFileError(f"cannot write {path}: {blocking} is a file, not a folder")
+    if path.is_dir():
+        raise ResultFileError(f"cannot write {path}: it is a folder")
+    return path
 
 
 def _parent_made(path: PathType) -> Path:
-    path = Path(path)
+    path = check_writable(path)
     path.parent.mkdir(parents=True, exist_ok=True)
     return path
+
+
+def temporary_beside(path: PathType) -> tuple[Path, Path]:
+    """(path, a fresh temporary name in its folder), the folder made."""
+    path = _parent_made(path)
+    return path, path.with_name(f".{path.name}.{uuid.uuid4().hex[:12]}.tmp")
+
+
+@contextmanager
+def replaced_whole(path: PathType) -> Iterator[Path]:
+    """A temporary path beside `path` for the block to write; renamed onto
+    `path` when the block ends normally, removed otherwise."""
+    path, temporary = temporary_beside(path)
+    try:
+        yield temporary
+        os.replace(temporary, path)
+    finally:
+        temporary.unlink(missing_ok=True)
 
 
 def structured(columns: Mapping[str, Iterable[float]]) -> np.ndarray:
@@ -55,11 +94,52 @@ def write_csv(
     `columns`: the variables to write besides `time` (FMPy's convention; None: all)."""
     if not isinstance(data, np.ndarray):
         data = structured(data)
-    from fmpy.util import write_csv as fmpy_write_csv
+    if columns is not None:
+        data = data[["time", *columns]]
+    with CsvStream(path, data.dtype.names or ()) as stream:
+        stream.write(data)
+    return Path(path)
 
-    path = _parent_made(path)
-    fmpy_write_csv(str(path), data, columns=list(columns) if columns is not None else None)
-    return path
+
+class CsvStream:
+    """A CSV in FMPy's format written chunk by chunk under a temporary name:
+    `commit` (or leaving `with` normally) renames it into place, `discard` (or
+    leaving `with` on an exception) removes it. `rows`: the rows written."""
+
+    def __init__(self, path: PathType, names: Sequence[str]) -> None:
+        self.path, self._temporary = temporary_beside(path)
+        self.names = tuple(names)
+        self.rows = 0
+        self._stream = open(self._temporary, "w")
+        self._stream.write(",".join(f'"{name}"' for name in self.names) + "\n")
+
+    def write(self, data: np.ndarray) -> None:
+        """Append rows (a structured array holding at least `names`)."""
+        columns = [data[name].astype(float, copy=False).tolist() for name in self.names]
+        # A float's repr is the shortest text that reads back to it, as FMPy's str(np.float64).
+        self._stream.writelines(",".join(map(repr, row)) + "\n" for row in zip(*columns))
+        self.rows += len(data)
+
+    def commit(self) -> Path:
+        try:
+            self._stream.close()
+            os.replace(self._temporary, self.path)
+        finally:
+            self.discard()
+        return self.path
+
+    def discard(self) -> None:
+        self._stream.close()
+        self._temporary.unlink(missing_ok=True)
+
+    def __enter__(self) -> "CsvStream":
+        return self
+
+    def __exit__(self, kind, *_) -> None:
+        if kind is None:
+            self.commit()
+        else:
+            self.discard()
 
 
 def read_csv(path: PathType) -> np.ndarray:
@@ -101,20 +181,22 @@ def write_rows(rows: Sequence[Mapping[str, object]], path: PathType) -> Path:
     """Write a list of row dicts (numbers and text; missing keys left empty) as CSV."""
     import pandas as pd
 
-    path = _parent_made(path)
-    pd.DataFrame(list(rows)).to_csv(path, index=False)
-    return path
+    with replaced_whole(path) as temporary:
+        pd.DataFrame(list(rows)).to_csv(temporary, index=False)
+    return Path(path)
 
 
 def write_table(table: "pd.DataFrame", stem: PathType, parquet: bool = True) -> list[Path]:
     """Write a pandas table to <stem>.csv, and <stem>.parquet when `parquet` and
     a Parquet engine is installed; returns the paths written."""
-    stem = _parent_made(stem)
+    stem = Path(stem)
     written = [stem.with_suffix(".csv")]
-    table.to_csv(written[0], index=False)
+    with replaced_whole(written[0]) as temporary:
+        table.to_csv(temporary, index=False)
     if parquet:
         try:
-            table.to_parquet(stem.with_suffix(".parquet"), index=False)
+            with replaced_whole(stem.with_suffix(".parquet")) as temporary:
+                table.to_parquet(temporary, index=False)
             written.append(stem.with_suffix(".parquet"))
         except ImportError:
             pass  # no pyarrow/fastparquet: CSV only, as documented

@@ -54,7 +54,8 @@ def test_simulate_from_constant_inputs(built_fmu, tmp_path):
 def test_simulate_from_an_input_csv(built_fmu, tmp_path):
     inputs = tmp_path / "inputs.csv"
     inputs.write_text(
-        "time,input_speed,input_acceleration,bend_angle\n0,10,10,0.1\n0.5,15,10,0.3\n"
+        "time,input_speed,input_acceleration,bend_angle,bend_angle_rate\n"
+        "0,10,10,0.1,0.4\n0.5,15,10,0.3,0.4\n"
     )
     out, plot = tmp_path / "csv_run.csv", tmp_path / "plots" / "csv_run.png"
     run = cardan_joint(
@@ -114,6 +115,26 @@ def test_bad_input_csv_column_is_named(built_fmu, tmp_path):
     )
     assert run.returncode != 0 and "input_sped" in run.stderr
     assert "Traceback" not in run.stderr
+
+
+@pytest.mark.parametrize(
+    "where, said",
+    [
+        ({"--output": "plain/run.csv"}, "cannot write {tmp}/plain/run.csv: {tmp}/plain is a file"),
+        ({"--plot": "plain/run.png"}, "cannot write {tmp}/plain/run.png: {tmp}/plain is a file"),
+        ({"--output": "."}, "cannot write {tmp}: it is a folder"),
+        ({"--input": "missing.csv"}, "input file {tmp}/missing.csv does not exist"),
+    ],
+)
+def test_a_bad_path_is_named_before_the_run(built_fmu, tmp_path, where, said):
+    (tmp_path / "plain").write_text("x")
+    paths = {option: str(tmp_path / name) for option, name in where.items()}
+    options = {"--output": str(tmp_path / "run.csv"), **paths}
+    args = [item for option, value in options.items() for item in (option, value)]
+    run = cardan_joint("simulate", "--fmu", built_fmu, "--stop-time", "0.01", *args)
+    assert run.returncode == 2 and "Traceback" not in run.stderr
+    assert said.format(tmp=tmp_path) in run.stderr
+    assert sorted(p.name for p in tmp_path.iterdir()) == ["plain"]  # nothing written
 
 
 def test_missing_fmu_is_a_message_not_a_traceback(tmp_path):
@@ -201,24 +222,25 @@ def _actions(parser):
 def test_the_command_leaves_argv_and_stderr_alone(built_fmu, tmp_path, monkeypatch):
     """Run in-process, as a host would: no redirection or argv rewrite while it works."""
     import cardan_joint.build
-    import cardan_joint.simulate
+    import cardan_joint.host.csv_run
 
     argv0, stderr = sys.argv[0], sys.stderr
     seen = []
 
-    def fake_simulate(fmu, stop_time, output_interval, inputs, **options):
+    def fake_simulate(fmu, stop_time, output_interval, inputs, rows_to=None, **options):
         seen.append((sys.argv[0], sys.stderr))
         result = np.zeros(
             2, dtype=[("time", float)] + [(n, float) for n in table.INPUTS + table.OUTPUTS]
         )
         result["time"] = (0.0, stop_time)
-        return result
+        rows_to(result)  # the command streams the run to its CSV
+        return result[:0]
 
     def fake_build(argv, prog=None):
         seen.append((sys.argv[0], sys.stderr))
         return 0
 
-    monkeypatch.setattr(cardan_joint.host.simulate, "simulate", fake_simulate)
+    monkeypatch.setattr(cardan_joint.host.csv_run, "simulate", fake_simulate)
     monkeypatch.setattr(cardan_joint.build, "main", fake_build)
     assert (
         cli.main(

@@ -14,11 +14,16 @@ from cardan_joint.models.universal_joint import variables as table
 def test_simulate_with_input_signals_matches_fmi2(fmu_path, fmi3_path):
     from fmpy import simulate_fmu
 
-    signal = np.zeros(3, dtype=[("time", float), ("input_speed", float), ("bend_angle", float)])
-    signal["time"], signal["input_speed"], signal["bend_angle"] = (
-        (0, 0.1, 0.2),
-        (10, 50, 20),
-        (0.1, 0.5, 0.3),
+    # Two ramps, each with its rate (a ramp without one is refused as contradictory).
+    names = ("time", "input_speed", "input_acceleration", "bend_angle", "bend_angle_rate")
+    signal = np.array(
+        [
+            (0, 10, 400, 0.1, 4),
+            (0.1, 50, 400, 0.5, 4),
+            (0.1, 50, -300, 0.5, -2),
+            (0.2, 20, -300, 0.3, -2),
+        ],
+        dtype=[(name, float) for name in names],
     )
     runs = [
         simulate(

@@ -115,3 +115,24 @@ def test_the_heatmap_spaces_an_uneven_bend_axis_truthfully(monkeypatch, tmp_path
     sweep.plot_heatmaps(table, uneven, tmp_path / "uneven.png")
     mesh = next(c for c in figures[0].axes[0].collections if isinstance(c, QuadMesh))
     assert mesh.get_coordinates()[0, :, 0].tolist() == [0.5, 1.5, 6.0, 14.0]
+
+
+def _legend_texts(table, spec, monkeypatch, tmp_path):
+    figures = []
+    monkeypatch.setattr(sweep.heatmap, "save_figure", lambda fig, path, dpi: figures.append(fig))
+    sweep.plot_heatmaps(table, spec, tmp_path / "legend.png")
+    fig = figures[0]
+    legends = [ax.get_legend() for ax in fig.axes if ax.get_legend()] + fig.legends
+    return [text.get_text() for legend in legends for text in legend.get_texts()]
+
+
+def test_the_heatmap_legend_lists_only_what_is_drawn(serial, monkeypatch, tmp_path):
+    both = _legend_texts(serial, TINY, monkeypatch, tmp_path)  # 85 deg failed
+    assert any(text.startswith("failed run") for text in both)
+    one = sweep.SweepSpec(
+        bend_angles_deg=(10.0,), input_speeds_rpm=(1000.0,), distributions=("T1", "T2")
+    )
+    clean = serial[(serial["bend_angle_deg"] == 10.0) & (serial["input_speed_rpm"] == 1000.0)]
+    assert (clean["status"] == sweep.OK).all()
+    texts = _legend_texts(clean, one, monkeypatch, tmp_path)
+    assert not any(text.startswith("failed run") for text in texts)

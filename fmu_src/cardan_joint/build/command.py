@@ -73,6 +73,10 @@ def main(argv=None, prog=None) -> int:
         "reference run (fmi-cross-check layout; a model whose spec declares one)",
     )
     args = parser.parse_args(argv)
+    dest = Path(args.dest)
+    blocking = next((p for p in (dest, *dest.parents) if p.exists() and not p.is_dir()), None)
+    if blocking is not None:
+        parser.error(f"--dest {args.dest}: {blocking} is a file, not a folder")
     if args.fmi3_arrays and args.fmi_version != 3:
         parser.error("--fmi3-arrays needs --fmi-version 3")
     spec = models[args.model]
@@ -113,6 +117,11 @@ def main(argv=None, prog=None) -> int:
         )
     except BuildError as error:
         print(f"build_fmu: {error}", file=sys.stderr)
+        return 1
+    except OSError as error:  # a folder that cannot be written: named, no traceback
+        print(
+            f"build_fmu: {error.filename or args.dest}: {error.strerror or error}", file=sys.stderr
+        )
         return 1
     print(f"built and validated {fmu}")
     if args.cross_check:

@@ -19,6 +19,31 @@ class MissingFMUError(FileNotFoundError):
     """The FMU file does not exist; the message names the command that builds it."""
 
 
+class BadFMUError(UsageError):
+    """A file that is not a readable FMU; the message names it and what is wrong."""
+
+
+def read_model_description(fmu: str | Path) -> Any:
+    """FMPy's model description of an FMU file or unzipped folder; MissingFMUError
+    naming the build command, BadFMUError naming the file and the problem."""
+    import zipfile
+
+    from fmpy import read_model_description as fmpy_read
+
+    path = require_fmu(fmu)
+    try:
+        return fmpy_read(str(path))
+    except zipfile.BadZipFile as error:
+        problem = f"not a zip archive ({error})"
+    except KeyError:  # a zip archive without modelDescription.xml
+        problem = "a zip archive without modelDescription.xml"
+    except OSError as error:
+        problem = error.strerror or str(error)
+    except Exception as error:  # noqa: BLE001 - lxml's and FMPy's own errors, named
+        problem = f"{type(error).__name__}: {' '.join(str(error).split())}"
+    raise BadFMUError(f"{path} is not a readable FMU: {problem}")
+
+
 def build_command(fmu: str | Path) -> str:
     """The `build_fmu.py` command that writes `fmu` (its model, FMI version,
     settings and folder from the file name and place)."""
@@ -105,10 +130,7 @@ class FmuInfo:
 
     @classmethod
     def read(cls, fmu: str | Path) -> FmuInfo:
-        from fmpy import read_model_description
-
-        path = require_fmu(fmu)
-        return cls(read_model_description(str(path)), path)
+        return cls(read_model_description(fmu), fmu)
 
     def names(self, *causalities: str) -> list[str]:
         """The variables of these causalities, in the FMU's order."""

@@ -22,7 +22,7 @@ from pathlib import Path
 from typing import Any
 
 from ..names import check_known
-from .fmu_info import FmuInfo, require_fmu
+from .fmu_info import FmuInfo, read_model_description
 
 Message = tuple[int, str, str]  # (FMI status, category, text)
 # FMPy's opaque handle of a saved FMU state (fmi2FMUstate / fmi3FMUState pointer).
@@ -278,9 +278,9 @@ class ExtractedFMU:
     """An FMU unzipped once, for any number of instances; a directory is used as is."""
 
     def __init__(self, fmu: str | Path) -> None:
-        from fmpy import extract, read_model_description
+        from fmpy import extract
 
-        self.model_description = read_model_description(str(require_fmu(fmu)))
+        self.model_description = read_model_description(fmu)
         self._owned = not Path(fmu).is_dir()
         self.directory = extract(str(fmu)) if self._owned else str(fmu)
 

@@ -4,7 +4,6 @@ Variables are plotted in their display units (the FMU's displayUnit: deg, rpm,
 rpm/s, ...), so a figure from `cardan-joint simulate` reads like the examples'.
 """
 
-from collections.abc import Callable, Sequence
 from pathlib import Path
 
 
@@ -22,30 +21,17 @@ def pyplot():
 
 
 def save_figure(fig, path, dpi=110) -> Path:
-    """Lay out, write and close a figure (its folder created); returns the path."""
+    """Lay out, write and close a figure (its folder created); returns the path.
+    The image is written whole or not at all (a temporary file, renamed)."""
     import matplotlib.pyplot as plt
 
+    from ..results import replaced_whole
+
     path = Path(path)
-    path.parent.mkdir(parents=True, exist_ok=True)
-    fig.tight_layout()
-    fig.savefig(path, dpi=dpi)
-    plt.close(fig)
+    try:
+        fig.tight_layout()
+        with replaced_whole(path) as temporary:
+            fig.savefig(temporary, dpi=dpi, format=path.suffix[1:] or "png")
+    finally:
+        plt.close(fig)
     return path
-
-
-def plot_time_series(
-    result, names: Sequence[str], path, title: str, display: Callable[[str], tuple[float, str]]
-) -> Path:
-    """One panel per variable over time, in display units; `display(name)` gives
-    (factor, unit), e.g. `FmuInfo.display`: SI value * factor is the plotted value."""
-    plt = pyplot()
-    fig, axes = plt.subplots(
-        len(names), 1, figsize=(9, 1.2 + 1.4 * len(names)), sharex=True, squeeze=False
-    )
-    for ax, name in zip(axes[:, 0], names):
-        factor, unit = display(name)
-        ax.plot(result["time"], result[name] * factor, lw=0.9)
-        ax.set_ylabel(f"{name}\n[{unit}]", fontsize=8)
-    axes[0, 0].set_title(title, fontsize=9)
-    axes[-1, 0].set_xlabel("time [s]")
-    return save_figure(fig, path, dpi=100)

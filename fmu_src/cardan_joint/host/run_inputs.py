@@ -95,6 +95,32 @@ def _refuse_contradictions(inputs, rates: dict, starts: dict) -> None:
             )
 
 
+def _refuse_unrated_ramps(signal: np.ndarray, rates: dict, starts: dict) -> None:
+    """A column that ramps while its rate is left at a value the ramp does not
+    have (no rate column): the FMU would carry it along that rate within each
+    step and jump back at the next, so its outputs (the acceleration) would
+    contradict the value. `--set` refuses the same contradiction for constants."""
+    given = set(signal.dtype.names or ())
+    times = signal["time"]
+    for name, (rate, *_) in rates.items():
+        if name not in given or rate in given or len(times) < 2:
+            continue
+        spans = np.diff(times)
+        moving = spans > 0
+        slopes = np.diff(signal[name])[moving] / spans[moving]
+        held = float(starts[rate])
+        wrong = np.abs(slopes - held) > 1e-9 * np.maximum(np.abs(slopes), 1.0)
+        if np.any(wrong):
+            k = int(np.argmax(wrong))
+            start, end = times[:-1][moving][k], times[1:][moving][k]
+            raise UsageError(
+                f"{name} ramps at {slopes[k]:g} per s from t = {start:g} s to {end:g} s "
+                f"while {rate} is held at {held:g} (no {rate} column): contradictory; "
+                f"give a {rate} column that follows the ramp (or --set {rate}=VALUE "
+                f"for a single ramp)"
+            )
+
+
 def complete_inputs(inputs, starts: dict, stop_time: float, step: float) -> np.ndarray:
     """`inputs` (dict of constants or structured array) with a signal for every
     input of the FMU (`starts`: input name -> start value), each missing one
@@ -103,6 +129,8 @@ def complete_inputs(inputs, starts: dict, stop_time: float, step: float) -> np.n
     # Only the carried inputs this FMU has (not every model has a bend angle).
     rates = {n: r for n, r in RATES.items() if n in starts and set(r) <= set(starts)}
     _refuse_contradictions(inputs, rates, starts)
+    if not isinstance(inputs, dict):
+        _refuse_unrated_ramps(inputs, rates, starts)
     names = tuple(name for name in starts if name not in rates) + tuple(rates)
     if not isinstance(inputs, dict):
         given = set(inputs.dtype.names)

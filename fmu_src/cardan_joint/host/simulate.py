@@ -10,11 +10,16 @@ up to there still go into the SimulationError), output names may be given in
 either form, and the result holds the arrays (`flat_columns` splits them into
 the FMI 2 columns). Names are checked against the FMU's own modelDescription:
 a misspelt input, start value or output is refused naming the nearest valid ones.
+The stop time and output interval are checked (`run_arguments`) before the
+first step, the recorded rows against the memory available, or, given
+`rows_to`, handed over in chunks as the run goes (`simulate_to_csv` streams a
+long run to a file). Ctrl-C ends the run between two steps and raises
+`SimulationInterrupted` (a KeyboardInterrupt) naming the time reached.
 """
 
 import warnings
 from collections import Counter
-from collections.abc import Iterable, Mapping, Sequence
+from collections.abc import Callable, Iterable, Mapping, Sequence
 from pathlib import Path
 from typing import TYPE_CHECKING, Any
 
@@ -22,6 +27,8 @@ import numpy as np
 
 from .. import DEFAULT_MODEL
 from .fmu_info import FmuInfo, array_columns
+from .interrupts import SimulationInterrupted, interrupt_between_steps
+from .run_arguments import RunLength, check_memory, run_length
 
 if TYPE_CHECKING:  # imported in first_refusal at run time, where it is needed
     from ..physics.refusal import Refusal
@@ -30,6 +37,9 @@ DEFAULT_FMU = Path("dist") / f"{DEFAULT_MODEL}.fmu"
 # (status name, category, text) of one FMU log message.
 Message = tuple[str, str, str]
 _STATUS = {0: "ok", 1: "warning", 2: "discard", 3: "error", 4: "fatal", 5: "pending"}
+# With `rows_to`, rows are handed over in chunks of this many; the last rows stay
+# with the recorder (a refused FMI 2.0 run's repeated end row is dropped from them).
+CHUNK_ROWS, KEPT_ROWS = 4096, 2
 
 
 class SimulationError(RuntimeError):
@@ -103,6 +113,27 @@ def _without_repeated_end(result: np.ndarray) -> np.ndarray:
     return result[:end]
 
 
+def run_times(info: FmuInfo, stop_time: float | None, output_interval: float | None) -> RunLength:
+    """The run's stop time and output interval (defaults: the FMU's default
+    experiment), checked: UsageError unless finite, > 0, the interval at most
+    the stop time."""
+    experiment = info.model_description.defaultExperiment
+    return run_length(
+        float(experiment.stopTime) if stop_time is None else stop_time,
+        float(experiment.stepSize) if output_interval is None else output_interval,
+    )
+
+
+def recorded_variables(info: FmuInfo, output: Sequence[str] | None) -> list[str]:
+    """The FMU variables a run records: those holding `output` (default: the outputs)."""
+    return info.fmu_names(output) if output is not None else info.outputs
+
+
+def recorded_values(info: FmuInfo, recorded: Sequence[str]) -> int:
+    """Values in a recorded row: the time and every element of each variable."""
+    return 1 + sum(info.variables[name].size for name in recorded)
+
+
 def simulate(
     fmu: str | Path | FmuInfo = DEFAULT_FMU,
     stop_time: float | None = None,
@@ -110,6 +141,7 @@ def simulate(
     inputs: np.ndarray | Mapping[str, float] | None = None,
     start_values: Mapping[str, float] | None = None,
     output: Sequence[str] | None = None,
+    rows_to: Callable[[np.ndarray], None] | None = None,
     **fmpy_options: Any,
 ) -> np.ndarray:
     """Co-simulate the FMU; return FMPy's structured result array.
@@ -121,6 +153,13 @@ def simulate(
     the FMU does not have raises UnknownNameError (a KeyError) naming the
     nearest valid ones; a missing FMU, MissingFMUError naming its build command.
     `fmu` may be an `FmuInfo` already read (its description is not read again).
+    A stop time or output interval that is not a finite number > 0 (the interval
+    at most the stop time) raises UsageError, a result that would not fit in the
+    memory available RunTooLargeError naming its size, before the first step.
+    `rows_to(rows)`: every recorded row is handed to it in order, in chunks
+    (FMPy's structured rows), the last ones when the run ends (refused too); the
+    result returned, or the error's `result`, then holds no rows. Ctrl-C (main
+    thread) ends the run after the step in progress: SimulationInterrupted.
     """
     from fmpy import simulate_fmu
     from fmpy.fmi1 import FMICallException
@@ -129,14 +168,15 @@ def simulate(
 
     info = fmu if isinstance(fmu, FmuInfo) else FmuInfo.read(fmu)
     description = info.model_description
-    fmu = str(info.path)
     start_values = dict(start_values or {})
     info.check(start_values, ("input", "parameter"), "start value (an input or parameter)")
     if output is not None:
         info.check(output, ("input", "output", "parameter", "local"), "output")
-    experiment = description.defaultExperiment
-    stop_time = float(experiment.stopTime) if stop_time is None else stop_time
-    output_interval = float(experiment.stepSize) if output_interval is None else output_interval
+    length = run_times(info, stop_time, output_interval)
+    stop_time, output_interval = length.stop_time, length.step
+    recorded = recorded_variables(info, output)
+    if rows_to is None:
+        check_memory(length, recorded_values(info, recorded))
     if inputs is not None:
         inputs = dict(inputs) if isinstance(inputs, Mapping) else inputs
         given = list(inputs) if isinstance(inputs, dict) else list(inputs.dtype.names or ())
@@ -158,9 +198,6 @@ def simulate(
             )
         )
 
-    fmi3 = info.fmi3
-    if output is not None:
-        output = info.fmu_names(output)
     # FMPy raises on an FMI 3 refusal and on a refused initialization (either version),
     # losing its recorder: keep it for the partial result.
     recorders: list[Any] = []  # FMPy's Recorder (its class is private)
@@ -168,43 +205,69 @@ def simulate(
 
     def keep_recorder(time, recorder):
         recorders[:1] = [recorder]
-        return step_finished is None or step_finished(time, recorder)
+        if rows_to is not None and len(recorder.rows) >= CHUNK_ROWS + KEPT_ROWS:
+            _hand_over(recorder, rows_to, KEPT_ROWS)
+        if step_finished is not None and not step_finished(time, recorder):
+            return False
+        return not interrupt.requested  # False: FMPy ends the run and terminates the FMU
 
-    try:
-        result = simulate_fmu(
-            fmu,
-            stop_time=stop_time,
-            output_interval=output_interval,
-            input=inputs,
-            start_values=start_values,
-            output=output,
-            model_description=description,
-            debug_logging=True,
-            logger=collect,
-            step_finished=keep_recorder,
-            **fmpy_options,
-        )
-    except FMICallException:
-        if not messages:  # no reason to report: FMPy's own error is all there is
-            raise
-        result = recorders[0].result() if recorders else np.zeros(0, dtype=[("time", float)])
-    problems = [m for m in messages if m[0] in ("discard", "error", "fatal")]
+    with interrupt_between_steps() as interrupt:
+        try:
+            result = simulate_fmu(
+                str(info.path),
+                stop_time=stop_time,
+                output_interval=output_interval,
+                input=inputs,
+                start_values=start_values,
+                output=recorded if output is not None else None,
+                model_description=description,
+                debug_logging=True,
+                logger=collect,
+                step_finished=keep_recorder,
+                **fmpy_options,
+            )
+        except FMICallException:
+            # A second Ctrl-C inside the FMU's step surfaces as a failed call.
+            if not (messages or interrupt.requested):  # no reason: FMPy's error is all there is
+                raise
+            result = recorders[0].result() if recorders else np.zeros(0, dtype=[("time", float)])
     reached = float(result["time"][-1]) if len(result) else float("nan")
+    if interrupt.requested:
+        raise SimulationInterrupted(reached if len(result) else 0.0, _rest(result, rows_to))
+    problems = [m for m in messages if m[0] in ("discard", "error", "fatal")]
     if problems or not reached >= stop_time - 1e-9 * max(1.0, abs(stop_time)):
         detail = (
             "\n  ".join(f"{status}: {text}" for status, _, text in problems)
             or "(the FMU gave no reason)"
         )
-        text = f"the FMU stopped at t = {reached!r} s of {stop_time!r} s:\n  {detail}"
-        if not fmi3:  # FMI 3.0 in event mode records two rows at an event
+        where = f"t = {reached!r} s of {stop_time!r} s" if len(result) else "its start (t = 0 s)"
+        text = f"the FMU stopped at {where}:\n  {detail}"
+        if not info.fmi3:  # FMI 3.0 in event mode records two rows at an event
             result = _without_repeated_end(result)
         refusal = first_refusal(text for _, _, text in problems)
         if refusal is None:
-            raise SimulationError(text, messages, result)
-        raise RefusalError(text, messages, result, refusal)
+            raise SimulationError(text, messages, _rest(result, rows_to))
+        raise RefusalError(text, messages, _rest(result, rows_to), refusal)
     # One warning per distinct message, however often and in whatever order it came.
     repeats = Counter(text for status, _, text in messages if status == "warning")
     for text, count in repeats.items():
         suffix = f" ({count} times)" if count > 1 else ""
         warnings.warn(f"{info.model_name}: {text}{suffix}", RuntimeWarning, stacklevel=2)
-    return result
+    return _rest(result, rows_to)
+
+
+def _hand_over(recorder: Any, rows_to: Callable[[np.ndarray], None], keep: int) -> None:
+    """Hand FMPy's recorded rows but the last `keep` to `rows_to`, and drop them."""
+    count = len(recorder.rows) - keep
+    rows = recorder.rows[:count]
+    del recorder.rows[:count]
+    rows_to(np.array(rows, dtype=np.dtype(recorder.cols)))
+
+
+def _rest(result: np.ndarray, rows_to: Callable[[np.ndarray], None] | None) -> np.ndarray:
+    """The result, or with `rows_to` its rows handed over and none kept."""
+    if rows_to is None:
+        return result
+    if len(result):
+        rows_to(result)
+    return result[:0]

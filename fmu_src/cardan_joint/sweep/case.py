@@ -25,6 +25,41 @@ _RECORDED = (
 )
 
 
+_DRIVEN = (
+    "input_speed",
+    "input_acceleration",
+    "bend_angle",
+    "bend_angle_rate",
+    "bend_angle_acceleration",
+    "load_torque",
+)
+
+
+def check_fmu(fmu, spec: SweepSpec) -> None:
+    """UsageError (before any case) unless the FMU has every variable the sweep
+    sets and reads; MissingFMUError or BadFMUError for a missing or unreadable file."""
+    from ..host.fmu_info import FmuInfo
+    from ..names import UsageError
+
+    info = FmuInfo.read(fmu)
+    wanted = {
+        "input": _DRIVEN,
+        "parameter": tuple(f"crosspiece_inertia_{k}" for k in (1, 2, 3))
+        + (("max_bend_angle",) if spec.max_bend_angle_deg is not None else ()),
+        "output": _RECORDED,
+    }
+    missing = {
+        causality: [n for n in names if n not in info.names(causality)]
+        for causality, names in wanted.items()
+    }
+    lacking = "; ".join(f"{kind}s {', '.join(names)}" for kind, names in missing.items() if names)
+    if lacking:
+        raise UsageError(
+            f"{fmu} ({info.model_name}) lacks what the sweep sets and reads: {lacking}; "
+            "the sweep takes a UniversalJoint FMU (python build_fmu.py)"
+        )
+
+
 def _failure_message(error):
     from ..host.simulate import SimulationError
 
@@ -57,8 +92,6 @@ def run_case(fmu_dir, spec: SweepSpec, case: Case) -> dict:
     row = {**asdict(case), **inertias, "load_torque": spec.load_torque, "status": OK, "message": ""}
     speed = case.input_speed_rpm * RPM_TO_RAD_PER_S
     try:
-        if speed <= 0.0:
-            raise ValueError(f"input speed {case.input_speed_rpm!r} rpm must be > 0")
         step = 2 * math.pi / speed / spec.steps_per_revolution
         start_values = dict(inertias)
         if spec.max_bend_angle_deg is not None:

@@ -2,16 +2,18 @@
 
 import argparse
 import os
+import re
 import shutil
 import sys
 from pathlib import Path
 
 from ..extras import MissingExtra, require
+from ..names import UsageError
 from ..results import write_table
 from .execution import connect, run_dask, run_serial
 from .heatmap import plot_heatmaps
 from .spec import ACCELERATION_LIMIT, FAILED, INERTIA_DISTRIBUTIONS, OK, SweepSpec
-from .store import SETTINGS_FILE, CaseStore
+from .store import SETTINGS_FILE, CaseStore, SettingsMismatch
 from .timing import compare, timed
 
 
@@ -168,17 +170,55 @@ def _run(args, fmu, spec, store, progress):
     return table
 
 
-def _summary(table):
+def _cause(message: str) -> str:
+    """A failure's message with its numbers blanked: the cause shared by cases
+    that failed alike at other values."""
+    return re.sub(r"[-+]?(\d+\.?\d*|\.\d+)([eE][-+]?\d+)?|\bnan\b", "#", message)
+
+
+def _case(row) -> str:
+    return (
+        f"{row['bend_angle_deg']:g} deg, {row['input_speed_rpm']:g} rpm, "
+        f"{row['inertia_distribution']}"
+    )
+
+
+def _summary(table) -> list[str]:
+    """Counts, then each cause of failure once: how many cases, which (the first
+    few), and the first case's whole message."""
     failed, ok = table[table["status"] == FAILED], table[table["status"] == OK]
-    print(
+    lines = [
         f"{len(ok)} ok, {len(failed)} failed; "
         f"{int(ok['beyond_acceleration_limit'].sum())} beyond {ACCELERATION_LIMIT:g} rad/s2"
-    )
-    for _, row in failed.drop_duplicates("message").head(5).iterrows():
-        print(
-            f"  failed at {row['bend_angle_deg']:g} deg, {row['input_speed_rpm']:g} rpm: "
-            f"{row['message']}"
+    ]
+    causes: dict[str, list] = {}
+    for _, row in failed.iterrows():
+        causes.setdefault(_cause(str(row["message"])), []).append(row)
+    for rows in causes.values():
+        named = "; ".join(_case(row) for row in rows[:3])
+        more = f" and {len(rows) - 3} more" if len(rows) > 3 else ""
+        lines.append(
+            f"  {len(rows)} failed ({named}{more}), e.g. {_case(rows[0])}: {rows[0]['message']}"
         )
+    return lines
+
+
+def _checked(args):
+    """The sweep's settings, every argument checked before the first case."""
+    from ..host.fmu_info import MissingFMUError
+    from .case import check_fmu
+
+    spec = spec_from_arguments(args)
+    local = not (args.serial or args.scheduler)
+    if local and args.workers < 1:
+        raise UsageError(f"--workers {args.workers}: a LocalCluster needs at least 1 worker")
+    if args.compare and args.repeat < 1:
+        raise UsageError(f"--repeat {args.repeat}: give at least 1 timing repetition")
+    try:
+        check_fmu(Path(args.fmu), spec)
+    except MissingFMUError as error:
+        raise UsageError(str(error)) from None
+    return spec
 
 
 def main(argv=None, prog=None, default_name="design_sweep") -> int:
@@ -189,16 +229,18 @@ def main(argv=None, prog=None, default_name="design_sweep") -> int:
     )
     add_arguments(parser, default_name)
     args = parser.parse_args(argv)
-    spec = spec_from_arguments(args)
+    name = parser.prog
+    try:
+        spec = _checked(args)
+    except UsageError as error:
+        print(f"{name}: {error}", file=sys.stderr)
+        return 2
     fmu, out = Path(args.fmu), Path(args.out)
-    if not fmu.is_file():
-        print(f"sweep: {fmu} does not exist: build it with `python build_fmu.py`", file=sys.stderr)
-        return 1
     if not args.serial:
         try:
             require("distributed", "sweep", "a sweep on Dask (--serial runs without it)")
         except MissingExtra as error:
-            print(f"sweep: {error}", file=sys.stderr)
+            print(f"{name}: {error}", file=sys.stderr)
             return 1
     progress = not args.no_progress
     print(
@@ -211,18 +253,29 @@ def main(argv=None, prog=None, default_name="design_sweep") -> int:
             timings, args.scheduler or f"LocalCluster of {args.workers} worker processes"
         )
     else:
-        table = _run(
-            args,
-            fmu,
-            spec,
-            _open_store(out / f"{args.name}.cases", spec, fmu, args.fresh),
-            progress,
-        )
+        try:
+            store = _open_store(out / f"{args.name}.cases", spec, fmu, args.fresh)
+        except SettingsMismatch as error:
+            print(f"{name}: {error}", file=sys.stderr)
+            return 2
+        try:
+            table = _run(args, fmu, spec, store, progress)
+        except KeyboardInterrupt:
+            print(
+                f"{name}: interrupted: {store.written} cases computed in this run are kept in "
+                f"{store.folder}; run it again (without --fresh) to compute only the missing ones",
+                file=sys.stderr,
+            )
+            return 130
     stem, figure = out / args.name, out / f"{args.name}.png"
     existed = {
         p for p in (stem.with_suffix(".csv"), stem.with_suffix(".parquet"), figure) if p.exists()
     }
     written = write_table(table, stem) + [plot_heatmaps(table, spec, figure)]
-    _summary(table)
+    summary = _summary(table)
+    print("\n".join(summary))
     print("wrote " + ", ".join(f"{p}{' (replaced)' if p in existed else ''}" for p in written))
+    if len(table) and (table["status"] == FAILED).all():
+        print(f"{name}: every case failed: {summary[1].strip()}", file=sys.stderr)
+        return 1
     return 0

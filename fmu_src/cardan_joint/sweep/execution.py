@@ -12,7 +12,7 @@ from os import PathLike
 from pathlib import Path
 from typing import TYPE_CHECKING
 
-from .case import run_task
+from .case import check_fmu, run_task
 from .spec import SweepSpec
 from .store import CaseStore, to_table
 
@@ -65,7 +65,9 @@ def run_serial(
     on_rows: Callable[[list], None] | None = None,
 ) -> "pandas.DataFrame":
     """Every task (every missing one, with a store) in this process, in order;
-    returns the table (a DataFrame). `on_rows(rows)` is called after each task."""
+    returns the table (a DataFrame). `on_rows(rows)` is called after each task.
+    An FMU without the variables the sweep drives is refused before any case."""
+    check_fmu(fmu, spec)
     path = str(Path(fmu).resolve())
     collector = _Collector(spec, store, progress, "serial", on_rows)
     try:
@@ -86,9 +88,11 @@ def run_dask(
 ) -> "pandas.DataFrame":
     """Every task (every missing one, with a store) on the client's cluster;
     returns the table (a DataFrame). Rows are stored here as tasks finish; a
-    task lost with its worker is rerun by the scheduler and arrives once."""
+    task lost with its worker is rerun by the scheduler and arrives once. An FMU
+    without the variables the sweep drives is refused before any case."""
     from dask.distributed import as_completed
 
+    check_fmu(fmu, spec)
     path = str(Path(fmu).resolve())
     collector = _Collector(spec, store, progress, "dask", on_rows)
     tasks = collector.pending

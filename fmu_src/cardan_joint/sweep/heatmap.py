@@ -107,22 +107,26 @@ def plot_heatmaps(table, spec: SweepSpec, path) -> Path:
         ax.set_ylabel("input speed [rpm]")
         ax.set_title(title, fontsize=9)
         ax.grid(False)
-    handles = [
-        Patch(
-            facecolor="none",
-            edgecolor=HATCH_COLOR,
-            hatch="///",
-            label=f"output acceleration > {ACCELERATION_LIMIT:g} rad/s$^2$\n"
-            "(beyond the usual driveline limit)",
-        ),
-        Patch(color=FAILED_COLOR, label="failed run (see the table's message)"),
-    ]
+    # The legend explains what is drawn, and nothing that is not.
+    handles = []
+    if (acceleration > ACCELERATION_LIMIT).any():
+        handles.append(
+            Patch(
+                facecolor="none",
+                edgecolor=HATCH_COLOR,
+                hatch="///",
+                label=f"output acceleration > {ACCELERATION_LIMIT:g} rad/s$^2$\n"
+                "(beyond the usual driveline limit)",
+            )
+        )
+    if np.isnan(acceleration).any():
+        handles.append(Patch(color=FAILED_COLOR, label="failed run (see the table's message)"))
     spare = list(axes.flat[len(panels) :])
     for ax in spare:
         ax.axis("off")
-    if spare:
+    if spare and handles:
         spare[0].legend(handles=handles, loc="center", fontsize=9, frameon=False)
-    else:
+    elif handles:
         fig.legend(handles=handles, loc="lower center", ncol=2, fontsize=8)
     fig.suptitle(
         f"Cardan joint design sweep: I0 = {spec.total_inertia:g} kg.m$^2$, "
