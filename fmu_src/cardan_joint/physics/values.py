@@ -9,7 +9,7 @@ from typing import Protocol
 from ..names import unknown
 from ..variable_schema import Variable
 from .refusal import Reason, Refusal, crossed_limit
-from .revolutions import RevolutionAngle, advance
+from .revolutions import RevolutionAngle, Turns
 
 # Beyond 1e15 rad a float has no fractional digits left: the pin's position
 # after such a step is undefined, and the exact turn arithmetic would overflow.
@@ -141,27 +141,15 @@ def angle_limit_problem(reason, name: str, value: float, time: float) -> Refusal
     return Refusal(reason, name, value, limit, time, "rad", kind="parameter")
 
 
-def advance_input(
-    angle: RevolutionAngle,
-    speed: float,
-    acceleration: float,
-    h: float,
-    speed_limit: float,
-    time: float,
-) -> tuple[RevolutionAngle, float] | Refusal:
-    """(new angle, new speed) after `h` s at constant acceleration, or the
-    Refusal of a step that would overflow."""
-    increment = h * (speed + 0.5 * acceleration * h)
-    end_speed = speed + acceleration * h
-    if abs(increment) <= MAX_INCREMENT and abs(end_speed) <= speed_limit:  # once per step
-        return advance(angle, increment), end_speed
-    overflow = {"input_speed": speed, "input_acceleration": acceleration, "step_size": h}
+def overflow(speed, acceleration, h, increment, end_speed, speed_limit, time) -> Refusal:
+    """The Refusal of a step whose angle `increment` or `end_speed` overflows."""
+    details = {"input_speed": speed, "input_acceleration": acceleration, "step_size": h}
     if not abs(increment) <= MAX_INCREMENT:
         return Refusal(
-            Reason.ANGLE_OVERFLOW, "input_angle", increment, MAX_INCREMENT, time, "rad", overflow
+            Reason.ANGLE_OVERFLOW, "input_angle", increment, MAX_INCREMENT, time, "rad", details
         )
     return Refusal(
-        Reason.SPEED_OVERFLOW, "input_speed", end_speed, speed_limit, time, "rad/s", overflow
+        Reason.SPEED_OVERFLOW, "input_speed", end_speed, speed_limit, time, "rad/s", details
     )
 
 
@@ -174,7 +162,7 @@ class SavedState:
 
     table: Table
     time: float
-    _angle: RevolutionAngle
+    _angle: Turns
     _STATE: tuple[str, ...] = ()
     _SHAFT = False
 
@@ -189,8 +177,8 @@ class SavedState:
         values = {name: getattr(self, name) for name in self._saved_names()}
         values["time"] = self.time
         if self._SHAFT:
-            a = self._angle
-            values.update(turns=a.turns, fraction=a.fraction, fraction_error=a.fraction_error)
+            turns, fraction, fraction_error = self._angle
+            values.update(turns=turns, fraction=fraction, fraction_error=fraction_error)
         return values
 
     def restore(self, state: dict) -> None:

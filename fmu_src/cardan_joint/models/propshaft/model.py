@@ -10,7 +10,7 @@ fixed at `start`; the fluctuation search runs once, at the first output read.
 import math
 
 from ...physics.refusal import Reason, Refusal
-from ...physics.revolutions import split_angle
+from ...physics.revolutions import angle_value, split_angle
 from ...physics.stepped import ShaftModel
 from ...physics.values import angle_limit_problem, set_start_values, value_ranges
 from .chain import chain
@@ -72,9 +72,8 @@ class Propshaft(ShaftModel):
         if self.parameter_fault:
             return
         # Shaft angles start on the branch nearest the input angle (the contract).
-        offsets = chain(
-            self.layout, self._angle.fraction, 0.0, 0.0, angle_error=self._angle.fraction_error
-        ).offsets
+        _, fraction, error = self._angle
+        offsets = chain(self.layout, fraction, 0.0, 0.0, angle_error=error).offsets
         self._shifts = tuple(TWO_PI * round(o / TWO_PI) for o in offsets)
 
     def _angle_problem(self):
@@ -137,8 +136,8 @@ class Propshaft(ShaftModel):
     def kinematics(self) -> tuple[float, float]:
         """(output angle - input angle, output speed) now: what a compliant layer
         winds its spring by, without the rounding of two large angles."""
-        angle = self._angle
-        state = self._chain(angle.fraction, angle.fraction_error)
+        _, fraction, error = self._angle
+        state = self._chain(fraction, error)
         return state.offsets[-1] - self._shifts[-1], state.speeds[-1]
 
     def _chain(self, fraction, error):
@@ -162,9 +161,9 @@ class Propshaft(ShaftModel):
 
     def outputs(self) -> tuple:
         """Values of the table's outputs, in order; raises nothing for valid inputs."""
-        angle = self._angle
-        state = self._chain(angle.fraction, angle.fraction_error)
-        gamma0 = float(angle)
+        _, fraction, error = self._angle
+        state = self._chain(fraction, error)
+        gamma0 = angle_value(self._angle)
         angles = [gamma0 + (o - shift) for o, shift in zip(state.offsets, self._shifts)]
         values = [gamma0]
         for k in range(self.joints - 1):
