@@ -55,6 +55,7 @@ import weakref
 from collections.abc import Callable
 from typing import Any
 
+from ..physics.api import Stepped
 from .references import References
 
 # The slave each thread constructed last: pythonfmu keeps its Python object to
@@ -71,7 +72,7 @@ class FastStep:
     _refs: References
     table: Any
     _STATUS: Any
-    _model: Any
+    _model: Stepped
     _outputs: tuple | None
     _inputs_checked: bool
     _inputs_held: tuple

@@ -15,7 +15,10 @@ from collections.abc import Callable, Mapping
 from dataclasses import dataclass, field, replace
 from functools import cache
 from pathlib import Path
-from typing import Any
+from typing import TYPE_CHECKING, Any
+
+if TYPE_CHECKING:
+    from ..physics.api import Stepped
 
 MODELS_DIR = Path(__file__).resolve().parent
 
@@ -37,7 +40,7 @@ class Model:
     key: str
     description: str
     table_for: Callable[[Mapping], Any]
-    make: Callable[..., Any]
+    make: "Callable[..., Stepped]"
     live_outputs: tuple[str, ...] = ()
     owner: str = "model"
     fmi_versions: tuple[int, ...] = (2, 3)
@@ -72,7 +75,7 @@ class Model:
             raise StartValueError(f"invalid start values: {problem.text}")
 
 
-def stepped(model_class) -> Callable[..., Any]:
+def stepped(model_class: "Callable[..., Stepped]") -> "Callable[..., Stepped]":
     """`Model.make` of a model whose physics takes start values only."""
     return lambda settings, **values: model_class(**values)
 

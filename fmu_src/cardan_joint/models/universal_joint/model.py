@@ -148,7 +148,8 @@ class CardanJoint(ShaftModel):
         # Fast path for the common case, once per FMU step: every range at once and
         # the bend angle at both ends of the step. NaN fails every comparison, so
         # it always takes the slow path, which names the first problem.
-        if _fits(*self.inputs(), self.max_bend_angle, step_size):
+        speed, acceleration, beta, rate, acc, load = self.inputs()
+        if _fits(speed, acceleration, beta, rate, acc, load, self.max_bend_angle, step_size):
             return None
         return self._explain_input_problem(step_size)
 
