@@ -18,10 +18,11 @@ inertia and bend-rate terms included). Same protocol as every stepped model.
 
 from operator import attrgetter
 
-from ...physics.refusal import Reason, Refusal
+from ...physics.refusal import Refusal
 from ...physics.stepped import SteppedModel
 from ...physics.values import MAX_INCREMENT, ValueChecks, set_start_values, value_ranges
 from ..universal_joint.model import CardanJoint
+from .refusals import CompliantReason
 from .variables import COMPLIANT_JOINT
 
 # The rigid drive's outputs the compliant one replaces with its own.
@@ -127,7 +128,7 @@ class CompliantDrive(ValueChecks):
         if not abs(change) <= MAX_INCREMENT:
             details = {"step_size": h}
             return Refusal(
-                Reason.TWIST_OVERFLOW,
+                CompliantReason.TWIST_OVERFLOW,
                 "twist_angle",
                 change,
                 MAX_INCREMENT,

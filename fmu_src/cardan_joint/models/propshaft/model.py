@@ -9,7 +9,7 @@ fixed at `start`; the fluctuation search runs once, at the first output read.
 
 import math
 
-from ...physics.refusal import Reason, Refusal
+from ...physics.refusal import Refusal
 from ...physics.revolutions import angle_value, split_angle
 from ...physics.stepped import ShaftModel
 from ...physics.values import angle_limit_problem, set_start_values, value_ranges
@@ -17,6 +17,7 @@ from .chain import chain
 from .checks import angle_warnings
 from .fluctuation import equivalent_angle, speed_ratio_fluctuation
 from .geometry import HALF_PI, TWO_PI, Layout, layout
+from .refusals import PropshaftReason
 from .variables import propshaft_table
 
 
@@ -85,7 +86,7 @@ class Propshaft(ShaftModel):
             value = getattr(self, name)
             if not abs(value) < HALF_PI:
                 return Refusal(
-                    Reason.SHAFT_ANGLE,
+                    PropshaftReason.SHAFT_ANGLE,
                     name,
                     value,
                     math.copysign(HALF_PI, value),
@@ -94,7 +95,10 @@ class Propshaft(ShaftModel):
                     kind="parameter",
                 )
         return angle_limit_problem(
-            Reason.WORKING_ANGLE_GUARD, "max_working_angle", self.max_working_angle, self.time
+            PropshaftReason.WORKING_ANGLE_GUARD,
+            "max_working_angle",
+            self.max_working_angle,
+            self.time,
         )
 
     def _geometry(self):
@@ -109,7 +113,7 @@ class Propshaft(ShaftModel):
         for k, beta in enumerate(geometry.working_angles, start=1):
             if not beta < guard:
                 return Refusal(
-                    Reason.WORKING_ANGLE,
+                    PropshaftReason.WORKING_ANGLE,
                     f"joint_{k}_working_angle",
                     beta,
                     guard,
