@@ -11,12 +11,13 @@ and step-size checks are the joint's (`values.ValueChecks`).
 """
 
 import math
+from collections.abc import Callable
 from functools import cache
 from operator import attrgetter
 from typing import Any
 
 from .refusal import Refusal
-from .revolutions import advanced, angle_value
+from .revolutions import Turns, advanced, angle_value
 from .values import (
     MAX_INCREMENT,
     SavedState,
@@ -147,8 +148,8 @@ class ShaftModel(SteppedModel):
     shaft's angle kept as exact revolutions, advanced exactly at constant
     acceleration over a step."""
 
-    _SHAFT = True
     _speed_limit: float
+    _angle: Turns
     input_speed: float
     input_acceleration: float
 
@@ -166,13 +167,24 @@ class ShaftModel(SteppedModel):
     def input_angle(self) -> float:
         return angle_value(self._angle)
 
+    def own_state(self) -> dict:
+        turns, fraction, fraction_error = self._angle
+        return {"turns": turns, "fraction": fraction, "fraction_error": fraction_error}
+
+    def own_state_from(self, state: dict) -> Callable[[], None]:
+        angle = (int(state["turns"]), float(state["fraction"]), float(state["fraction_error"]))
+
+        def put() -> None:
+            self._angle = angle
+
+        return put
+
 
 class RotorModel(SteppedModel):
     """A stepped model whose state is one rotor (the motor, the inertia load):
     speed and angle from their start parameters, advanced by the exact rotor
     step, a speed beyond `speed_start`'s range refused with `_SPEED_REASON`."""
 
-    _STATE = ("speed", "angle")
     _SPEED_REASON: Any
     _TORQUE_INPUT: str  # the input named in the speed refusal
     speed_start: float
@@ -185,6 +197,17 @@ class RotorModel(SteppedModel):
         valid = not self.parameter_fault
         self.speed = self.speed_start if valid else 0.0
         self.angle = self.angle_start if valid else 0.0
+
+    def own_state(self) -> dict:
+        return {"speed": self.speed, "angle": self.angle}
+
+    def own_state_from(self, state: dict) -> Callable[[], None]:
+        speed, angle = float(state["speed"]), float(state["angle"])
+
+        def put() -> None:
+            self.speed, self.angle = speed, angle
+
+        return put
 
     def _rotor(self) -> tuple[float, float, float]:
         """(inertia, damping, torque held over the step) of the rotor now."""
