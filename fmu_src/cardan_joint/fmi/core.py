@@ -1,9 +1,8 @@
 """What every slave of this project shares, whatever the model and the FMI version.
 
 No equation lives here: a slave maps its variables onto a physics object
-(`_new_model()`: whatever the model folder's spec makes, see `binding`) that offers
-start, step, outputs, parameter_fault, input_problem, invalid_inputs, state and
-restore, the problems as `Refusal`s. This mixin keeps the behaviour around it:
+(`_new_model()`: whatever the model folder's spec makes, see `binding`) with the
+model API of `physics.api.Stepped`. This mixin keeps the behaviour around it:
 the output cache, the outputs held while an input is invalid, the refused step
 that leaves the model untouched, the parameters fixed after initialization and
 the complete FMU state. It addresses variables by *flat index*, the position

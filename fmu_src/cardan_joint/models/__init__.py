@@ -31,8 +31,8 @@ class StartValueError(ValueError):
 class Model:
     """How to build one model and what its FMU slave maps onto.
 
-    `make(settings, **start_values)` returns the physics object (start, step,
-    outputs, ...); `table_for(settings)` its variable table. `live_outputs` are
+    `make(settings, **start_values)` returns the physics object (the model API,
+    `physics.api.Stepped`); `table_for(settings)` its variable table. `live_outputs` are
     the leading outputs that follow the state while an input is invalid;
     `owner` is what "stays put" in the slave's messages.
     """

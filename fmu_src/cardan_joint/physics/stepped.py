@@ -4,10 +4,8 @@ checks, the step and the saved state), `ShaftModel` (a model driven at an
 input shaft kept as exact revolutions) and `RotorModel` (one rotor advanced by
 `exact_rotor_step`, the exact step of a driven inertia).
 
-Every stepped model follows this protocol (start, step returning a
-`Refusal` or None, outputs in table order, parameter_fault, input_problem,
-invalid_inputs, state/restore), which the FMU slaves' core relies on; the value
-and step-size checks are the joint's (`values.ValueChecks`).
+Every stepped model gives the model API (`api.Stepped`) the FMU slaves' core
+relies on; the value and step-size checks are the joint's (`values.ValueChecks`).
 """
 
 import math
