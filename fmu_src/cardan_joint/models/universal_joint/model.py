@@ -123,7 +123,7 @@ class CardanJoint(ShaftModel):
 
     # --- stepping ----------------------------------------------------------
 
-    def inputs(self) -> tuple[float, ...]:
+    def inputs(self) -> tuple[float, ...]:  # the generic one costs 3 k instructions a step
         return (
             self.input_speed,
             self.input_acceleration,
@@ -132,16 +132,6 @@ class CardanJoint(ShaftModel):
             self.bend_angle_acceleration,
             self.load_torque,
         )
-
-    def set_inputs(self, values) -> None:
-        (
-            self.input_speed,
-            self.input_acceleration,
-            self.bend_angle,
-            self.bend_angle_rate,
-            self.bend_angle_acceleration,
-            self.load_torque,
-        ) = values
 
     def input_problem(self, step_size: float = 0.0) -> Refusal | None:
         """The Refusal of the inputs over [time, time + step_size], or None."""
