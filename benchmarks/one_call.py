@@ -16,18 +16,27 @@ every output) and the slave's one-call step (`fast_step` on buffers of doubles,
 as the loader will call it).
 """
 
+import json
+import re
+import shutil
 import statistics
+import subprocess
+import sys
 import time
 from array import array
 
 from cardan_joint.models.universal_joint import variables as table
 
 from .step_cost import STEP_SIZE, TIMING_INPUTS
-from .timing import against, chunks, in_fresh_process, met, us
+from .timing import ROOT, against, chunks, in_fresh_process, met, us
 
 C_HOST_GOAL = 0.5  # joint / plain floor, both in the C host
 FMPY_GOAL = 0.8  # joint / plain floor, both in FMPy's low-level loop
 CHUNK = 2_000
+# Issue 24: the joint's whole step in a C host <= 0.6 x the plain floor's 67.9 k
+# instructions, of which the runtime adds <= 10 % over the Python step.
+PYTHON_STEP_GOAL = 35_000  # instructions per fast_step (step and every output)
+COUNTED_STEPS = (2_000, 12_000)  # two run lengths: start-up cancels in the difference
 PYTHON_PATHS = ("physics", "slave set/do_step/get", "slave fast_step")
 
 
@@ -109,15 +118,50 @@ def worker_python_step(steps, chunk):
     return {name: {"wall": wall[name] / steps, "cpu": cpu[name] / steps} for name in runners}
 
 
+def worker_python_steps(path, steps):
+    """`steps` steps of one Python path, nothing timed: what callgrind counts."""
+    runner = dict(zip(PYTHON_PATHS, (_physics_stepper, _normal_stepper, _fast_stepper)))[path]()
+    runner(0, steps)
+    return {}
+
+
+def _instructions(path, steps):
+    """Instructions callgrind counts for a worker process making `steps` steps."""
+    request = json.dumps({"kind": "python_steps", "path": path, "steps": steps})
+    run = subprocess.run(
+        ["valgrind", "--tool=callgrind", "--callgrind-out-file=/dev/null", sys.executable]
+        + ["-m", "benchmarks", "--worker", request],
+        capture_output=True,
+        text=True,
+        cwd=ROOT,
+        check=True,
+    )
+    return int(re.search(r"Collected : (\d+)", run.stderr).group(1))
+
+
+def python_step_instructions():
+    """Instructions per step of each Python path (callgrind, CPython as run here):
+    the difference of two run lengths, so that start-up cancels; None without
+    valgrind."""
+    if shutil.which("valgrind") is None:
+        return None
+    short, long = COUNTED_STEPS
+    return {
+        path: (_instructions(path, long) - _instructions(path, short)) / (long - short)
+        for path in PYTHON_PATHS
+    }
+
+
 def python_step(sizes):
     runs = [
         in_fresh_process("python_step", steps=sizes.steps, chunk=min(CHUNK, sizes.steps))
         for _ in range(sizes.runs)
     ]
-    return {
+    times = {
         clock: {name: statistics.median(run[name][clock] for run in runs) for name in PYTHON_PATHS}
         for clock in ("wall", "cpu")
     }
+    return {**times, "instructions": python_step_instructions()}
 
 
 def one_call_rows(python, cost, c_host, sizes):
@@ -138,4 +182,18 @@ def one_call_rows(python, cost, c_host, sizes):
         f"{us(physics)}, {us(normal)}, {us(fast)}: ÷ set/do_step/get ×{physics / normal:.2f}, "
         f"×{fast / normal:.2f} (CPU time {', '.join(us(cpu[name]) for name in PYTHON_PATHS)}) "
         "| (context) | |",
+        *instruction_rows(python.get("instructions")),
+    ]
+
+
+def instruction_rows(counts):
+    if not counts:
+        return ["| 6. the joint's Python per step in instructions | valgrind not found | | |"]
+    physics, normal, fast = (counts[name] for name in PYTHON_PATHS)
+    return [
+        f"| 6. the joint's Python per step in instructions (callgrind, {COUNTED_STEPS[1]:,} − "
+        f"{COUNTED_STEPS[0]:,} steps): physics (step and {len(table.OUTPUTS)} outputs), slave "
+        f"set/do_step/get, slave `fast_step` | {physics / 1e3:.1f} k, {normal / 1e3:.1f} k, "
+        f"**{fast / 1e3:.1f} k** | `fast_step` ≤ {PYTHON_STEP_GOAL / 1e3:.0f} k | "
+        f"{met(fast <= PYTHON_STEP_GOAL)} |"
     ]

@@ -31,7 +31,7 @@ from .accuracy import accuracy, accuracy_rows, accuracy_table, worker_accuracy
 from .c_host import c_host_cost, c_host_rows
 from .floor import FLOORS, build_floor_fmu, build_joint_fmu, unzip
 from .growth import growth, growth_rows, growth_table, worker_tracemalloc
-from .one_call import one_call_rows, python_step, worker_python_step
+from .one_call import one_call_rows, python_step, worker_python_step, worker_python_steps
 from .step_cost import (
     LOOP_CHUNK,
     SIMULATE_CHUNK,
@@ -89,6 +89,7 @@ WORKERS = {
     "scalar": worker_scalar,
     "trigonometry": worker_trigonometry,
     "python_step": worker_python_step,
+    "python_steps": worker_python_steps,
 }
 
 

@@ -25,11 +25,11 @@ RANGED_PARAMETERS = tuple(n for n in table.PARAMETERS if n != "max_bend_angle")
 ALL_INPUTS = table.INPUTS
 PARAMETERS = table.PARAMETERS
 FAST_PATH = {
-    "input_speed": "abs(self.input_speed) <= _SPEED_LIMIT",
-    "input_acceleration": "abs(self.input_acceleration) <= _ACCELERATION_LIMIT",
+    "input_speed": "abs(speed) <= _SPEED_LIMIT",
+    "input_acceleration": "abs(acceleration) <= _ACCELERATION_LIMIT",
     "bend_angle_rate": "abs(rate) <= _RATE_LIMIT",
     "bend_angle_acceleration": "abs(acc) <= _BEND_ACCELERATION_LIMIT",
-    "load_torque": "abs(self.load_torque) <= _LOAD_LIMIT",
+    "load_torque": "abs(load) <= _LOAD_LIMIT",
 }
 PEAK_TESTS = (GUARDS, SLAVE_GUARDS, "-k", "peak")
 

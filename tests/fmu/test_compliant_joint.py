@@ -10,6 +10,7 @@ from reference.geometry import geometric_reference
 
 from cardan_joint.host.instance import FmuInstance
 from cardan_joint.models.compliant_joint.model import CompliantDrive, CompliantJoint
+from cardan_joint.models.compliant_joint.refusals import CompliantReason
 from cardan_joint.models.compliant_joint.variables import COMPLIANT_JOINT
 from cardan_joint.models.inertia_load.model import InertiaLoad
 from cardan_joint.models.universal_joint.model import CardanJoint
@@ -141,7 +142,10 @@ def test_a_copy_steps_as_the_original():
 def test_a_twist_beyond_the_angle_limit_is_refused():
     joint = CompliantJoint(input_speed=0.0, output_speed=1e5)
     problem = joint.step(1e11)
-    assert problem.code is Reason.TWIST_OVERFLOW and "twist_angle by -1e+16 rad" in problem.message
+    assert (
+        problem.code is CompliantReason.TWIST_OVERFLOW
+        and "twist_angle by -1e+16 rad" in problem.message
+    )
     assert joint.time == 0.0 and joint.output_angle == 0.0
 
 

@@ -11,7 +11,7 @@ from reference.propshaft import PropshaftReference
 from cardan_joint.host.instance import FmuInstance
 from cardan_joint.models.compliant_propshaft.model import CompliantPropshaft
 from cardan_joint.models.compliant_propshaft.variables import compliant_propshaft_table
-from cardan_joint.physics import Reason
+from cardan_joint.models.propshaft.refusals import PropshaftReason
 
 D = math.radians
 SIDE, TOP, PHASES = [D(2), D(-9), D(4), D(0)], [D(0), D(3), D(-5), D(1)], [0.4, -0.2]
@@ -76,7 +76,7 @@ def test_spring_damper_on_the_3d_construction_at_every_step():
 
 def test_layout_and_spring_parameters_are_checked():
     steep = CompliantPropshaft(2, shaft_1_side_angle=D(20), max_working_angle=D(15))
-    assert steep.step(0.1).code is Reason.WORKING_ANGLE
+    assert steep.step(0.1).code is PropshaftReason.WORKING_ANGLE
     loose = CompliantPropshaft(2, torsional_damping=-1.0)
     assert loose.step(0.1).variable == "torsional_damping"
     assert CompliantPropshaft(4).table is compliant_propshaft_table(4)

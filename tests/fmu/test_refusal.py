@@ -8,11 +8,13 @@ import pytest
 
 from cardan_joint.host.simulate import RefusalError, SimulationError, simulate
 from cardan_joint.models.compliant_joint.model import CompliantJoint
+from cardan_joint.models.compliant_joint.refusals import CompliantReason
 from cardan_joint.models.inertia_load.model import InertiaLoad
 from cardan_joint.models.inertia_load.refusals import InertiaLoadReason
 from cardan_joint.models.motor.model import Motor
 from cardan_joint.models.motor.refusals import MotorReason
 from cardan_joint.models.propshaft import Propshaft
+from cardan_joint.models.propshaft.refusals import PropshaftReason
 from cardan_joint.models.universal_joint import variables as table
 from cardan_joint.models.universal_joint.model import CardanJoint
 from cardan_joint.physics import Reason, Refusal
@@ -41,9 +43,9 @@ CAUSES = {
     Reason.ANGLE_OVERFLOW: [(dict(input_speed=-0.1), 1e17)],
     Reason.SPEED_OVERFLOW: [(dict(input_speed=0.1 + 0.2, input_acceleration=1e8), 0.7)],
     # The propshaft's own parameters.
-    Reason.SHAFT_ANGLE: [(dict(shaft_1_top_angle=-math.pi / 2), 0.1)],
-    Reason.WORKING_ANGLE_GUARD: [(dict(max_working_angle=2.0), 0.1)],
-    Reason.WORKING_ANGLE: [(dict(shaft_1_side_angle=0.6, max_working_angle=0.5), 0.1)],
+    PropshaftReason.SHAFT_ANGLE: [(dict(shaft_1_top_angle=-math.pi / 2), 0.1)],
+    PropshaftReason.WORKING_ANGLE_GUARD: [(dict(max_working_angle=2.0), 0.1)],
+    PropshaftReason.WORKING_ANGLE: [(dict(shaft_1_side_angle=0.6, max_working_angle=0.5), 0.1)],
     # The motor's.
     MotorReason.ROTOR_SPEED: [
         (dict(load_torque=9e8, stall_torque=60.0, no_load_speed=100.0, rotor_inertia=0.3), 0.1)
@@ -51,9 +53,13 @@ CAUSES = {
     # The inertia load's.
     InertiaLoadReason.LOAD_SPEED: [(dict(drive_torque=9e8, inertia=0.3, drag=0.0), 0.1)],
     # The compliant drive's.
-    Reason.TWIST_OVERFLOW: [(dict(input_speed=0.0, output_speed=-1e5), 1e11)],
+    CompliantReason.TWIST_OVERFLOW: [(dict(input_speed=0.0, output_speed=-1e5), 1e11)],
 }
-PROPSHAFT_REASONS = {Reason.SHAFT_ANGLE, Reason.WORKING_ANGLE_GUARD, Reason.WORKING_ANGLE}
+PROPSHAFT_REASONS = {
+    PropshaftReason.SHAFT_ANGLE,
+    PropshaftReason.WORKING_ANGLE_GUARD,
+    PropshaftReason.WORKING_ANGLE,
+}
 MOTOR_REASONS = {MotorReason.ROTOR_SPEED}
 
 
@@ -62,7 +68,7 @@ def _model(reason, start):
         return Motor(**start)
     if reason is InertiaLoadReason.LOAD_SPEED:
         return InertiaLoad(**start)
-    if reason is Reason.TWIST_OVERFLOW:
+    if reason is CompliantReason.TWIST_OVERFLOW:
         return CompliantJoint(**start)
     return Propshaft(**start) if reason in PROPSHAFT_REASONS else CardanJoint(**start)
 

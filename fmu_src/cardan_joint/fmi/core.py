@@ -1,9 +1,8 @@
 """What every slave of this project shares, whatever the model and the FMI version.
 
 No equation lives here: a slave maps its variables onto a physics object
-(`_new_model()`: whatever the model folder's spec makes, see `binding`) that offers
-start, step, outputs, parameter_fault, input_problem, invalid_inputs, state and
-restore, the problems as `Refusal`s. This mixin keeps the behaviour around it:
+(`_new_model()`: whatever the model folder's spec makes, see `binding`) with the
+model API of `physics.api.Stepped`. This mixin keeps the behaviour around it:
 the output cache, the outputs held while an input is invalid, the refused step
 that leaves the model untouched, the parameters fixed after initialization and
 the complete FMU state. It addresses variables by *flat index*, the position
@@ -77,7 +76,7 @@ class SlaveCore(FastStep):
         self._initialized = False
         self._outputs = None  # cached outputs; None = recompute on next read
         self._inputs_checked = False
-        self._outputs_held, self._inputs_held = refs.nan_outputs, refs.inputs_of(self._model)
+        self._outputs_held, self._inputs_held = refs.nan_outputs, self._model.inputs()
         if not (self._model.parameter_fault or self._model.input_problem()):
             self._outputs_held = self._model.outputs()
 
@@ -122,18 +121,22 @@ class SlaveCore(FastStep):
             problem = model.step(step_size)
             if problem:
                 model.time = time
-                self._report(
-                    f"{problem.message}; step of {_readable(step_size)} s refused, the "
-                    f"{self.owner} stays at t = {_readable(current_time)} s",
-                    self._STATUS.discard,
-                )
-                return self._STATUS.discard
+                return self._refused(problem, current_time, step_size)
             self._outputs = None
             self._inputs_checked = True
             return self._STATUS.ok
         except Exception as error:
             self._fault("do_step", error)
             return self._STATUS.error
+
+    def _refused(self, problem, current_time, step_size):
+        """Report a refused step (the model as it was); the status to return."""
+        self._report(
+            f"{problem.message}; step of {_readable(step_size)} s refused, the "
+            f"{self.owner} stays at t = {_readable(current_time)} s",
+            self._STATUS.discard,
+        )
+        return self._STATUS.discard
 
     # --- values --------------------------------------------------------------
 
@@ -150,7 +153,7 @@ class SlaveCore(FastStep):
                 return self._held_outputs(model)
             self._inputs_checked = True
         self._outputs = self._outputs_held = model.outputs()
-        self._inputs_held = self._refs.inputs_of(model)
+        self._inputs_held = model.inputs()
         return self._outputs
 
     def _held_outputs(self, model):
@@ -164,16 +167,17 @@ class SlaveCore(FastStep):
         if model.parameter_fault:
             return live
         invalid = model.invalid_inputs()
-        inputs = self.table.INPUTS
-        current = self._refs.inputs_of(model)
+        current = model.inputs()
         try:
-            for name, held in zip(inputs, self._inputs_held):
-                if name in invalid:
-                    setattr(model, name, held)
+            model.set_inputs(
+                tuple(
+                    held if name in invalid else value
+                    for name, held, value in zip(self.table.INPUTS, self._inputs_held, current)
+                )
+            )
             fresh = model.outputs()
         finally:
-            for name, value in zip(inputs, current):
-                setattr(model, name, value)
+            model.set_inputs(current)
         return tuple(
             live[i] if dependencies & invalid else fresh[i]
             for i, dependencies in enumerate(self._refs.output_dependencies)
@@ -197,8 +201,7 @@ class SlaveCore(FastStep):
             model, refs = self._model, self._refs
             known = refs.known
             if indices == refs.all_inputs:
-                for name, value in zip(self.table.INPUTS, values):
-                    setattr(model, name, float(value))
+                model.set_inputs(tuple(map(float, values)))
                 self._outputs = None
                 self._inputs_checked = False
                 return

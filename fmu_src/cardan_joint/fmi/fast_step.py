@@ -55,6 +55,7 @@ import weakref
 from collections.abc import Callable
 from typing import Any
 
+from ..physics.api import Stepped
 from .references import References
 
 # The slave each thread constructed last: pythonfmu keeps its Python object to
@@ -71,11 +72,12 @@ class FastStep:
     _refs: References
     table: Any
     _STATUS: Any
-    _model: Any
+    _model: Stepped
     _outputs: tuple | None
     _inputs_checked: bool
     _inputs_held: tuple
     _step: Callable[[float, float], Any]
+    _refused: Callable[[Any, float, float], Any]
     _current_outputs: Callable[[], tuple]
     _fault: Callable[[str, BaseException], None]
 
@@ -105,9 +107,7 @@ class FastStep:
             return self._STATUS.error
 
     def _take_inputs(self, known) -> None:
-        model = self._model
-        for name, value in zip(self.table.INPUTS, self._refs.unpack_inputs(known)):
-            setattr(model, name, value)
+        self._model.set_inputs(self._refs.unpack_inputs(known))
         self._outputs = None
         self._inputs_checked = False
 
@@ -126,22 +126,22 @@ class FastStep:
         """Inputs from `known`, one step, every output into `outputs` when the step
         is taken (status ok); otherwise the status of the refusal or fault."""
         try:
-            self._take_inputs(known)
-        except Exception as error:
-            self._fault("fast_step", error)
-            return self._STATUS.error
-        status = self._step(current_time, step_size)
-        if status:  # refused or faulted (ok is 0 in both FMI versions' statuses)
-            return status
-        try:
-            # Inputs checked by the step: the outputs are evaluated and cached.
-            refs = self._refs
-            refs.pack_outputs(outputs, 0, *self._current_outputs())
+            model, refs = self._model, self._refs
+            # The model's step takes the inputs, steps and evaluates its outputs once.
+            result = model.run(current_time, step_size, refs.unpack_inputs(known))
+            if result.__class__ is not tuple:
+                self._outputs = None
+                self._inputs_checked = False
+                return self._refused(result, current_time, step_size)
+            self._outputs = self._outputs_held = result
+            self._inputs_checked = True
             # A taken step moves the inputs that are polynomial over it (the speed,
             # the bend angle and rate): getReal of an input reads the moved value,
-            # and the next step starts from it. The evaluation has just read them.
-            refs.pack_inputs(known, 0, *self._inputs_held)
-            return status
+            # and the next step starts from it.
+            inputs = self._inputs_held = model.inputs()
+            refs.pack_outputs(outputs, 0, *result)
+            refs.pack_inputs(known, 0, *inputs)
+            return self._STATUS.ok
         except Exception as error:
             self._fault("fast_step", error)
             return self._STATUS.error

@@ -41,7 +41,6 @@ class References:
         self.output_dependencies = tuple(
             frozenset(table.BY_NAME[n].depends_on) for n in table.OUTPUTS
         )
-        self.inputs_of = _values_of(table.INPUTS)
         # What FMPy and most masters pass every step: all inputs, all outputs, in order.
         self.all_inputs = list(self.inputs)
         self.all_outputs = list(range(self.first_output, len(self.names)))

@@ -19,7 +19,10 @@ from collections.abc import Callable, Mapping
 from dataclasses import dataclass, field, replace
 from functools import cache
 from pathlib import Path
-from typing import Any
+from typing import TYPE_CHECKING, Any
+
+if TYPE_CHECKING:
+    from ..physics.api import Stepped
 
 MODELS_DIR = Path(__file__).resolve().parent
 
@@ -49,8 +52,8 @@ class ReferenceRun:
 class Model:
     """How to build one model and what its FMU slave maps onto.
 
-    `make(settings, **start_values)` returns the physics object (start, step,
-    outputs, ...); `table_for(settings)` its variable table. `live_outputs` are
+    `make(settings, **start_values)` returns the physics object (the model API,
+    `physics.api.Stepped`); `table_for(settings)` its variable table. `live_outputs` are
     the leading outputs that follow the state while an input is invalid;
     `owner` is what "stays put" in the slave's messages.
     """
@@ -58,7 +61,7 @@ class Model:
     key: str
     description: str
     table_for: Callable[[Mapping], Any]
-    make: Callable[..., Any]
+    make: "Callable[..., Stepped]"
     live_outputs: tuple[str, ...] = ()
     owner: str = "model"
     fmi_versions: tuple[int, ...] = (2, 3)
@@ -120,7 +123,7 @@ class Model:
             raise StartValueError(f"invalid start values: {problem.text}")
 
 
-def stepped(model_class) -> Callable[..., Any]:
+def stepped(model_class: "Callable[..., Stepped]") -> "Callable[..., Stepped]":
     """`Model.make` of a model whose physics takes start values only."""
     return lambda settings, **values: model_class(**values)
 

@@ -16,6 +16,9 @@ from ..units import RAD_TO_DEG
 
 
 class Reason(str, Enum):
+    """The reasons every stepped model shares; a model's own live in its folder's
+    `refusals.py` (`register_reasons`)."""
+
     NOT_FINITE = "not_finite"  # NaN or infinite input or parameter
     OUT_OF_RANGE = "out_of_range"  # outside the variable's physical range
     BEND_ANGLE = "bend_angle"  # |bend angle| >= max_bend_angle now
@@ -25,10 +28,6 @@ class Reason(str, Enum):
     STEP_SIZE = "step_size"  # step size not finite and > 0
     ANGLE_OVERFLOW = "angle_overflow"  # input angle advancing by > 1e15 rad
     SPEED_OVERFLOW = "speed_overflow"  # input speed beyond its range at step end
-    SHAFT_ANGLE = "shaft_angle_invalid"  # a propshaft shaft angle not in (-pi/2, pi/2)
-    WORKING_ANGLE_GUARD = "max_working_angle_invalid"  # max_working_angle not in (0, pi/2)
-    WORKING_ANGLE = "working_angle"  # a joint's working angle >= the limit
-    TWIST_OVERFLOW = "twist_overflow"  # a compliant drive's twist changing by > 1e15 rad
 
 
 _LIMIT = "max_bend_angle = {limit} rad ({limit:deg} deg)"
@@ -59,16 +58,6 @@ _TEMPLATES: dict[Enum, str] = {
     "the limit {limit} rad per step",
     Reason.SPEED_OVERFLOW: _OVERFLOW + "the speed would reach {value} rad/s at the step's end, "
     "beyond the limit {limit} rad/s",
-    Reason.SHAFT_ANGLE: "parameter {variable} = {value} rad ({value:deg} deg) must lie strictly "
-    "between -pi/2 and pi/2 (a shaft cannot point across the driveline; "
-    "limit {limit} rad)",
-    Reason.WORKING_ANGLE_GUARD: "parameter max_working_angle = {value} rad ({value:deg} deg) must "
-    "lie strictly between 0 and pi/2 (90 deg, where a joint locks; "
-    "limit {limit} rad)",
-    Reason.WORKING_ANGLE: "{variable} = {value} rad ({value:deg} deg) is not below the limit "
-    "max_working_angle = {limit} rad ({limit:deg} deg)",
-    Reason.TWIST_OVERFLOW: "the shaft speeds over a step of {step_size} s would change the "
-    "twist_angle by {value} rad, beyond the limit {limit} rad per step",
 }
 # Fixed by the reason, so not written in the message.
 _IMPLIED: dict[Enum, tuple] = {
@@ -79,10 +68,6 @@ _IMPLIED: dict[Enum, tuple] = {
     Reason.STEP_SIZE: ("step_size", "s", ""),
     Reason.ANGLE_OVERFLOW: ("input_angle", "rad", "output"),
     Reason.SPEED_OVERFLOW: ("input_speed", "rad/s", "input"),
-    Reason.SHAFT_ANGLE: (None, "rad", ""),
-    Reason.WORKING_ANGLE_GUARD: ("max_working_angle", "rad", ""),
-    Reason.WORKING_ANGLE: (None, "rad", ""),
-    Reason.TWIST_OVERFLOW: ("twist_angle", "rad", ""),
 }
 _PREFIX = "t = {time} s: "
 _FLOAT = r"-?(?:inf|nan|[0-9][0-9.e+-]*)"

@@ -29,17 +29,17 @@ from typing import Any, NamedTuple
 
 from ._backend import Real, namespace
 
-_new_tuple = tuple.__new__  # skips NamedTuple's Python-level __new__ (once per FMU step)
+_new_tuple = tuple.__new__  # skips NamedTuple's Python-level __new__
 
 
 class JointResponse(NamedTuple):
-    """Field names are the FMU's output names (models/universal_joint/README.md),
-    plus three extras."""
+    """Field names are the FMU's output names (models/universal_joint/README.md), in its
+    order after the two angles, plus four extras."""
 
-    cardan_error: Any
-    speed_ratio: Any
     output_speed: Any
     output_acceleration: Any
+    cardan_error: Any
+    speed_ratio: Any
     crosspiece_angular_velocity_1: Any
     crosspiece_angular_velocity_2: Any
     crosspiece_angular_velocity_3: Any
@@ -96,7 +96,7 @@ def joint_response(
     xp = namespace(*args)
     if xp is not math and xp.broadcast(*args).size > 2 * _BLOCK:
         return _in_blocks(args)
-    return _response(*args)
+    return _new_tuple(JointResponse, kernel(namespace(psi, bend_angle), *args))
 
 
 def _in_blocks(args) -> JointResponse:
@@ -110,11 +110,12 @@ def _in_blocks(args) -> JointResponse:
     out = np.empty((len(JointResponse._fields), n))
     for start in range(0, n, _BLOCK):
         block = slice(start, start + _BLOCK)
-        out[:, block] = _response(*(a[block] for a in arrays))
+        out[:, block] = kernel(np, *(a[block] for a in arrays))
     return JointResponse(*(row.reshape(shape) for row in out))
 
 
-def _response(
+def kernel(
+    xp,
     psi,
     bend_angle,
     input_speed,
@@ -127,7 +128,8 @@ def _response(
     load_torque,
     quaternion_sign,
 ):
-    xp = namespace(psi, bend_angle)
+    """`joint_response`'s fields, in its order, as a plain tuple; `xp` is `math`
+    for floats (the FMU, once per step), numpy for arrays."""
     w1, a1 = input_speed, input_acceleration
     rb, ab = bend_angle_rate, bend_angle_acceleration
 
@@ -195,30 +197,27 @@ def _response(
     output_moment = abs(Dd * sbc - M1 * rD)
     hinge_torque = M1 * s - Dd * sb * sc / rD
 
-    return _new_tuple(
-        JointResponse,
-        (
-            cardan_error,
-            speed_ratio,
-            w2,
-            a2,
-            W1,
-            W2,
-            W3,
-            M1,
-            M2,
-            M3,
-            energy,
-            qc * cos_half_rho,
-            qc * sin_half_rho,
-            qs * sin_half_rho,
-            qs * cos_half_rho,
-            input_torque,
-            input_moment,
-            output_moment,
-            hinge_torque,
-            dW1,
-            dW2,
-            dW3,
-        ),
+    return (
+        w2,
+        a2,
+        cardan_error,
+        speed_ratio,
+        W1,
+        W2,
+        W3,
+        M1,
+        M2,
+        M3,
+        energy,
+        qc * cos_half_rho,
+        qc * sin_half_rho,
+        qs * sin_half_rho,
+        qs * cos_half_rho,
+        input_torque,
+        input_moment,
+        output_moment,
+        hinge_torque,
+        dW1,
+        dW2,
+        dW3,
     )

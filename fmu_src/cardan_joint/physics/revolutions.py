@@ -17,19 +17,30 @@ TWO_PI_LO = 2.4492935982947064e-16  # 2 pi - TWO_PI_HI
 _SPLITTER = 134217729.0  # 2**27 + 1, Dekker's split
 
 
+# What a stepped model keeps: (turns, fraction, fraction_error) as a plain tuple,
+# which `RevolutionAngle` names for everyone else (a NamedTuple costs a
+# Python-level construction at every step).
+Turns = tuple[int, float, float]
+
+
 class RevolutionAngle(NamedTuple):
     turns: int
     fraction: float
     fraction_error: float = 0.0
 
     def __float__(self) -> float:
-        product, product_error, low = _whole_turns(self.turns)
-        # _two_sum(product, fraction), inlined: this runs once per step.
-        fraction = self.fraction
-        total = product + fraction
-        bb = total - product
-        sum_error = (product - (total - bb)) + (fraction - bb)
-        return total + (sum_error + product_error + self.fraction_error + low)
+        return angle_value(self)
+
+
+def angle_value(angle: Turns) -> float:
+    """The angle as the float nearest to it (two roundings at most)."""
+    turns, fraction, fraction_error = angle
+    product, product_error, low = _whole_turns(turns)
+    # _two_sum(product, fraction), inlined: this runs once per step.
+    total = product + fraction
+    bb = total - product
+    sum_error = (product - (total - bb)) + (fraction - bb)
+    return total + (sum_error + product_error + fraction_error + low)
 
 
 @lru_cache(maxsize=8)
@@ -66,7 +77,7 @@ def _shift(turns, fraction, error, whole):
     return turns + whole, fraction, error + sum_error - product_error - whole * TWO_PI_LO
 
 
-def _normalized(turns: int, fraction: float, error: float) -> RevolutionAngle:
+def _normalized(turns: int, fraction: float, error: float) -> Turns:
     # Invariant: 0 <= fraction <= TWO_PI_HI, the error term carrying the rest
     # (a true value just below 2 pi may round its leading part up to TWO_PI_HI).
     # _two_sum(fraction, error), inlined: this runs once per step.
@@ -79,18 +90,20 @@ def _normalized(turns: int, fraction: float, error: float) -> RevolutionAngle:
         if fraction < 0.0 or fraction > TWO_PI_HI:  # the floor landed one off
             turns, fraction, error = _shift(turns, fraction, error, -1 if fraction < 0.0 else 1)
             fraction, error = _two_sum(fraction, error)
-    return _new_tuple(RevolutionAngle, (turns, fraction, error))
-
-
-_new_tuple = tuple.__new__
+    return turns, fraction, error
 
 
 def split_angle(angle: float) -> RevolutionAngle:
-    return _normalized(0, float(angle), 0.0)
+    return RevolutionAngle(*_normalized(0, float(angle), 0.0))
 
 
-def advance(angle: RevolutionAngle, increment: float) -> RevolutionAngle:
-    # _two_sum(angle.fraction, increment), inlined: this runs once per step.
+def advance(angle: Turns, increment: float) -> RevolutionAngle:
+    return RevolutionAngle(*advanced(angle, increment))
+
+
+def advanced(angle: Turns, increment: float) -> Turns:
+    """`advance` on a stepped model's plain tuple (once per step)."""
+    # _two_sum(fraction, increment), inlined: this runs once per step.
     turns, fraction, fraction_error = angle
     total = fraction + increment
     bb = total - fraction

@@ -4,25 +4,35 @@ checks, the step and the saved state), `ShaftModel` (a model driven at an
 input shaft kept as exact revolutions) and `RotorModel` (one rotor advanced by
 `exact_rotor_step`, the exact step of a driven inertia).
 
-Every stepped model follows this protocol (start, step returning a
-`Refusal` or None, outputs in table order, parameter_fault, input_problem,
-invalid_inputs, state/restore), which the FMU slaves' core relies on; the value
-and step-size checks are the joint's (`values.ValueChecks`).
+Every stepped model gives the model API (`api.Stepped`) the FMU slaves' core
+relies on; the value and step-size checks are the joint's (`values.ValueChecks`).
 """
 
 import math
+from collections.abc import Callable
+from functools import cache
+from operator import attrgetter
 from typing import Any
 
 from .refusal import Refusal
+from .revolutions import Turns, advanced, angle_value
 from .values import (
+    MAX_INCREMENT,
     SavedState,
     Table,
     ValueChecks,
-    advance_input,
     bounds,
+    overflow,
     set_start_values,
     value_ranges,
 )
+
+
+@cache
+def _getter(names: tuple[str, ...]):
+    """A getter of the tuple of `names`' values (attrgetter gives one name's bare value)."""
+    getter = attrgetter(*names)
+    return getter if len(names) > 1 else lambda model: (getter(model),)
 
 
 def _phi2(z: float) -> float:
@@ -83,10 +93,39 @@ class SteppedModel(ValueChecks, SavedState):
         """Names of the inputs unusable at this instant (non-finite, out of range)."""
         return {r.variable for r in self._bad_values(self.table.INPUTS, self._input_ranges)}
 
+    def inputs(self) -> tuple[float, ...]:
+        """The inputs' values, in the table's order."""
+        return _getter(self.table.INPUTS)(self)
+
+    def set_inputs(self, values) -> None:
+        """Set every input, `values` in the table's order."""
+        for name, value in zip(self.table.INPUTS, values, strict=True):
+            setattr(self, name, value)
+
     def step(self, step_size: float) -> Refusal | None:
         """Advance by `step_size`; return None, or the Refusal of the step (then
         nothing has changed, the clock neither)."""
-        return self.step_problem(step_size) or self.advance(step_size)
+        # `advance` inlined: this runs once per FMU step.
+        problem = self.step_problem(step_size) or self._advance(step_size)
+        if problem:
+            return problem
+        self.time += step_size
+        return None
+
+    def run(self, time: float, step_size: float, inputs) -> "tuple | Refusal":
+        """The FMU's step: take `inputs` (the table's order), advance `step_size` s
+        from `time` and return the outputs after it, or the Refusal of the step
+        (then only the inputs have changed, the clock neither)."""
+        self.set_inputs(inputs)
+        before, self.time = self.time, time
+        problem = self.step(step_size)
+        if problem:
+            self.time = before
+            return problem
+        return self.outputs()
+
+    def outputs(self) -> tuple:
+        raise NotImplementedError(f"{type(self).__name__} must give its outputs")
 
     def advance(self, step_size: float) -> Refusal | None:
         """`step` once `step_problem` has passed: a layer over this model (the
@@ -105,25 +144,38 @@ class SteppedModel(ValueChecks, SavedState):
 class ShaftModel(SteppedModel):
     """A stepped model driven at an input shaft (the joint, the propshaft): the
     shaft's angle kept as exact revolutions, advanced exactly at constant
-    acceleration over a step (`values.advance_input`)."""
+    acceleration over a step."""
 
-    _SHAFT = True
     _speed_limit: float
+    _angle: Turns
     input_speed: float
     input_acceleration: float
 
     def _advance(self, h: float) -> Refusal | None:
-        advanced = advance_input(
-            self._angle, self.input_speed, self.input_acceleration, h, self._speed_limit, self.time
-        )
-        if isinstance(advanced, Refusal):
-            return advanced
-        self._angle, self.input_speed = advanced
-        return None
+        speed, acceleration = self.input_speed, self.input_acceleration
+        increment = h * (speed + 0.5 * acceleration * h)
+        end_speed = speed + acceleration * h
+        if abs(increment) <= MAX_INCREMENT and abs(end_speed) <= self._speed_limit:
+            self._angle = advanced(self._angle, increment)
+            self.input_speed = end_speed
+            return None
+        return overflow(speed, acceleration, h, increment, end_speed, self._speed_limit, self.time)
 
     @property
     def input_angle(self) -> float:
-        return float(self._angle)
+        return angle_value(self._angle)
+
+    def own_state(self) -> dict:
+        turns, fraction, fraction_error = self._angle
+        return {"turns": turns, "fraction": fraction, "fraction_error": fraction_error}
+
+    def own_state_from(self, state: dict) -> Callable[[], None]:
+        angle = (int(state["turns"]), float(state["fraction"]), float(state["fraction_error"]))
+
+        def put() -> None:
+            self._angle = angle
+
+        return put
 
 
 class RotorModel(SteppedModel):
@@ -131,7 +183,6 @@ class RotorModel(SteppedModel):
     speed and angle from their start parameters, advanced by the exact rotor
     step, a speed beyond `speed_start`'s range refused with `_SPEED_REASON`."""
 
-    _STATE = ("speed", "angle")
     _SPEED_REASON: Any
     _TORQUE_INPUT: str  # the input named in the speed refusal
     speed_start: float
@@ -144,6 +195,17 @@ class RotorModel(SteppedModel):
         valid = not self.parameter_fault
         self.speed = self.speed_start if valid else 0.0
         self.angle = self.angle_start if valid else 0.0
+
+    def own_state(self) -> dict:
+        return {"speed": self.speed, "angle": self.angle}
+
+    def own_state_from(self, state: dict) -> Callable[[], None]:
+        speed, angle = float(state["speed"]), float(state["angle"])
+
+        def put() -> None:
+            self.speed, self.angle = speed, angle
+
+        return put
 
     def _rotor(self) -> tuple[float, float, float]:
         """(inertia, damping, torque held over the step) of the rotor now."""

@@ -3,13 +3,12 @@ state, shared by every stepped model (physics/stepped.py): one Refusal
 per bad value, one state format."""
 
 import math
-from collections.abc import Iterator, Mapping
+from collections.abc import Callable, Iterator, Mapping
 from typing import Protocol
 
 from ..names import unknown
 from ..variable_schema import Variable
 from .refusal import Reason, Refusal, crossed_limit
-from .revolutions import RevolutionAngle, advance
 
 # Beyond 1e15 rad a float has no fractional digits left: the pin's position
 # after such a step is undefined, and the exact turn arithmetic would overflow.
@@ -141,73 +140,55 @@ def angle_limit_problem(reason, name: str, value: float, time: float) -> Refusal
     return Refusal(reason, name, value, limit, time, "rad", kind="parameter")
 
 
-def advance_input(
-    angle: RevolutionAngle,
-    speed: float,
-    acceleration: float,
-    h: float,
-    speed_limit: float,
-    time: float,
-) -> tuple[RevolutionAngle, float] | Refusal:
-    """(new angle, new speed) after `h` s at constant acceleration, or the
-    Refusal of a step that would overflow."""
-    increment = h * (speed + 0.5 * acceleration * h)
-    end_speed = speed + acceleration * h
-    if abs(increment) <= MAX_INCREMENT and abs(end_speed) <= speed_limit:  # once per step
-        return advance(angle, increment), end_speed
-    overflow = {"input_speed": speed, "input_acceleration": acceleration, "step_size": h}
+def overflow(speed, acceleration, h, increment, end_speed, speed_limit, time) -> Refusal:
+    """The Refusal of a step whose angle `increment` or `end_speed` overflows."""
+    details = {"input_speed": speed, "input_acceleration": acceleration, "step_size": h}
     if not abs(increment) <= MAX_INCREMENT:
         return Refusal(
-            Reason.ANGLE_OVERFLOW, "input_angle", increment, MAX_INCREMENT, time, "rad", overflow
+            Reason.ANGLE_OVERFLOW, "input_angle", increment, MAX_INCREMENT, time, "rad", details
         )
     return Refusal(
-        Reason.SPEED_OVERFLOW, "input_speed", end_speed, speed_limit, time, "rad/s", overflow
+        Reason.SPEED_OVERFLOW, "input_speed", end_speed, speed_limit, time, "rad/s", details
     )
 
 
 class SavedState:
     """state()/restore() of every stepped model, in one format: the table's inputs
-    and parameters, the clock, the float attributes named in `_STATE` (the
-    model's own state, e.g. a rotor's speed and angle) and, for a model with
-    an input shaft (`_SHAFT`), its angle as exact revolutions. `start(time)`
+    and parameters, the model's own state (`own_state`: e.g. a rotor's speed and
+    angle, an input shaft's exact revolutions) and the clock. `start(time)`
     re-derives everything else."""
 
     table: Table
     time: float
-    _angle: RevolutionAngle
-    _STATE: tuple[str, ...] = ()
-    _SHAFT = False
 
     def start(self, time: float) -> None:
         raise NotImplementedError(f"{type(self).__name__} must define its start")
 
+    def own_state(self) -> dict:
+        """The model's state beyond its inputs, parameters and clock (none here)."""
+        return {}
+
+    def own_state_from(self, state: dict) -> Callable[[], None]:
+        """Read `own_state`'s values from `state` (raising if they are malformed) and
+        return what puts them in place once the model has started."""
+        return lambda: None
+
     def _saved_names(self) -> tuple[str, ...]:
-        return self.table.INPUTS + self.table.PARAMETERS + self._STATE
+        return self.table.INPUTS + self.table.PARAMETERS
 
     def state(self) -> dict:
         """Everything that defines the model, as JSON-serialisable values."""
         values = {name: getattr(self, name) for name in self._saved_names()}
+        values.update(self.own_state())
         values["time"] = self.time
-        if self._SHAFT:
-            a = self._angle
-            values.update(turns=a.turns, fraction=a.fraction, fraction_error=a.fraction_error)
         return values
 
     def restore(self, state: dict) -> None:
         """Take a `state()`; all or nothing (a malformed state raises and changes nothing)."""
         values = {name: float(state[name]) for name in self._saved_names()}
         time = float(state["time"])
-        angle = (
-            RevolutionAngle(
-                int(state["turns"]), float(state["fraction"]), float(state["fraction_error"])
-            )
-            if self._SHAFT
-            else None
-        )
+        put_own_state = self.own_state_from(state)
         for name in self.table.INPUTS + self.table.PARAMETERS:
             setattr(self, name, values[name])
         self.start(time)
-        for name in self._STATE:
-            setattr(self, name, values[name])
-        if angle is not None:
-            self._angle = angle
+        put_own_state()

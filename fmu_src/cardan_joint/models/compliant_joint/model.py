@@ -18,9 +18,11 @@ inertia and bend-rate terms included). Same protocol as every stepped model.
 
 from operator import attrgetter
 
-from ...physics.refusal import Reason, Refusal
+from ...physics.refusal import Refusal
+from ...physics.stepped import SteppedModel
 from ...physics.values import MAX_INCREMENT, ValueChecks, set_start_values, value_ranges
 from ..universal_joint.model import CardanJoint
+from .refusals import CompliantReason
 from .variables import COMPLIANT_JOINT
 
 # The rigid drive's outputs the compliant one replaces with its own.
@@ -97,11 +99,20 @@ class CompliantDrive(ValueChecks):
             self._own_inputs, self._input_ranges
         )
 
+    def inputs(self) -> tuple[float, ...]:
+        return tuple(getattr(self, name) for name in self.table.INPUTS)
+
+    def set_inputs(self, values) -> None:
+        for name, value in zip(self.table.INPUTS, values, strict=True):
+            setattr(self, name, value)
+
     def invalid_inputs(self) -> set:
         own = {r.variable for r in self._bad_values(self._own_inputs, self._input_ranges)}
         return self.rigid.invalid_inputs() | own
 
     # --- stepping ------------------------------------------------------------
+
+    run = SteppedModel.run  # the FMU's step: inputs, step, outputs
 
     def step(self, step_size: float) -> Refusal | None:
         """Advance by `step_size`; None, or the Refusal (then nothing has changed)."""
@@ -117,7 +128,7 @@ class CompliantDrive(ValueChecks):
         if not abs(change) <= MAX_INCREMENT:
             details = {"step_size": h}
             return Refusal(
-                Reason.TWIST_OVERFLOW,
+                CompliantReason.TWIST_OVERFLOW,
                 "twist_angle",
                 change,
                 MAX_INCREMENT,

@@ -17,10 +17,11 @@ is exact: the power balance T_1 omega_0 = T_L omega_N + dE/dt holds term by term
 Scalars (the FMU, once per step) or numpy arrays (the fluctuation search).
 """
 
+import math
 from typing import Any, NamedTuple
 
-from ...physics.response import JointResponse
-from ...physics.response import _response as joint_kernel
+from ...physics._backend import namespace
+from ...physics.response import JointResponse, kernel
 from .geometry import HALF_PI, Layout
 
 _CARDAN_ERROR = JointResponse._fields.index("cardan_error")
@@ -59,9 +60,9 @@ def chain(
     w, a = speed, acceleration
     for k, joint in enumerate(geometry.joints):
         base = offset + k * HALF_PI + phases[k] - joint.pin_offset
-        r = joint_kernel(
-            angle + (angle_error + base), joint.working_angle, w, a, 0.0, 0.0, I1, I2, I3, 0.0, 1.0
-        )
+        psi, beta = angle + (angle_error + base), joint.working_angle
+        xp = math if psi.__class__ is float and beta.__class__ is float else namespace(psi, beta)
+        r = kernel(xp, psi, beta, w, a, 0.0, 0.0, I1, I2, I3, 0.0, 1.0)
         offset = offset + phases[k] + joint.twist + r[_CARDAN_ERROR]
         w, a = r[_SPEED], r[_ACCELERATION]
         offsets.append(offset)

@@ -9,14 +9,15 @@ fixed at `start`; the fluctuation search runs once, at the first output read.
 
 import math
 
-from ...physics.refusal import Reason, Refusal
-from ...physics.revolutions import split_angle
+from ...physics.refusal import Refusal
+from ...physics.revolutions import angle_value, split_angle
 from ...physics.stepped import ShaftModel
 from ...physics.values import angle_limit_problem, set_start_values, value_ranges
 from .chain import chain
 from .checks import angle_warnings
 from .fluctuation import equivalent_angle, speed_ratio_fluctuation
 from .geometry import HALF_PI, TWO_PI, Layout, layout
+from .refusals import PropshaftReason
 from .variables import propshaft_table
 
 
@@ -72,9 +73,8 @@ class Propshaft(ShaftModel):
         if self.parameter_fault:
             return
         # Shaft angles start on the branch nearest the input angle (the contract).
-        offsets = chain(
-            self.layout, self._angle.fraction, 0.0, 0.0, angle_error=self._angle.fraction_error
-        ).offsets
+        _, fraction, error = self._angle
+        offsets = chain(self.layout, fraction, 0.0, 0.0, angle_error=error).offsets
         self._shifts = tuple(TWO_PI * round(o / TWO_PI) for o in offsets)
 
     def _angle_problem(self):
@@ -86,7 +86,7 @@ class Propshaft(ShaftModel):
             value = getattr(self, name)
             if not abs(value) < HALF_PI:
                 return Refusal(
-                    Reason.SHAFT_ANGLE,
+                    PropshaftReason.SHAFT_ANGLE,
                     name,
                     value,
                     math.copysign(HALF_PI, value),
@@ -95,7 +95,10 @@ class Propshaft(ShaftModel):
                     kind="parameter",
                 )
         return angle_limit_problem(
-            Reason.WORKING_ANGLE_GUARD, "max_working_angle", self.max_working_angle, self.time
+            PropshaftReason.WORKING_ANGLE_GUARD,
+            "max_working_angle",
+            self.max_working_angle,
+            self.time,
         )
 
     def _geometry(self):
@@ -110,7 +113,7 @@ class Propshaft(ShaftModel):
         for k, beta in enumerate(geometry.working_angles, start=1):
             if not beta < guard:
                 return Refusal(
-                    Reason.WORKING_ANGLE,
+                    PropshaftReason.WORKING_ANGLE,
                     f"joint_{k}_working_angle",
                     beta,
                     guard,
@@ -137,8 +140,8 @@ class Propshaft(ShaftModel):
     def kinematics(self) -> tuple[float, float]:
         """(output angle - input angle, output speed) now: what a compliant layer
         winds its spring by, without the rounding of two large angles."""
-        angle = self._angle
-        state = self._chain(angle.fraction, angle.fraction_error)
+        _, fraction, error = self._angle
+        state = self._chain(fraction, error)
         return state.offsets[-1] - self._shifts[-1], state.speeds[-1]
 
     def _chain(self, fraction, error):
@@ -162,9 +165,9 @@ class Propshaft(ShaftModel):
 
     def outputs(self) -> tuple:
         """Values of the table's outputs, in order; raises nothing for valid inputs."""
-        angle = self._angle
-        state = self._chain(angle.fraction, angle.fraction_error)
-        gamma0 = float(angle)
+        _, fraction, error = self._angle
+        state = self._chain(fraction, error)
+        gamma0 = angle_value(self._angle)
         angles = [gamma0 + (o - shift) for o, shift in zip(state.offsets, self._shifts)]
         values = [gamma0]
         for k in range(self.joints - 1):

@@ -8,16 +8,21 @@ nothing, returning a `Refusal` (variable, value, limit, time, reason code);
 FMU maps its variables onto this object.
 """
 
-from operator import itemgetter
+import math
 
 from ...physics.refusal import Reason, Refusal
 
 # The kernel itself: the FMU's once-per-step call on floats skips the array dispatch.
-from ...physics.response import JointResponse
-from ...physics.response import _response as joint_response_kernel
-from ...physics.revolutions import split_angle
+from ...physics.response import JointResponse, kernel
+from ...physics.revolutions import advanced, angle_value, split_angle
 from ...physics.stepped import ShaftModel
-from ...physics.values import angle_limit_problem, bounds, set_start_values, value_ranges
+from ...physics.values import (
+    MAX_INCREMENT,
+    angle_limit_problem,
+    bounds,
+    set_start_values,
+    value_ranges,
+)
 from ...variable_schema import Variable
 from . import variables as table
 
@@ -38,7 +43,26 @@ _ACCELERATION_LIMIT = bounds(table.BY_NAME["input_acceleration"])[1]
 _RATE_LIMIT = bounds(table.BY_NAME["bend_angle_rate"])[1]
 _BEND_ACCELERATION_LIMIT = bounds(table.BY_NAME["bend_angle_acceleration"])[1]
 _LOAD_LIMIT = bounds(table.BY_NAME["load_torque"])[1]
-_FROM_RESPONSE = itemgetter(*(JointResponse._fields.index(name) for name in table.OUTPUTS[2:]))
+# After the two angles, the outputs are the kernel's leading fields, in order.
+_KINEMATIC_OUTPUTS = len(table.OUTPUTS) - 2
+assert JointResponse._fields[:_KINEMATIC_OUTPUTS] == table.OUTPUTS[2:], "kernel's field order"
+_CARDAN_ERROR = JointResponse._fields.index("cardan_error")
+
+
+def _fits(speed, acceleration, beta, rate, acc, load, guard, step_size) -> bool:
+    """The common case, once per FMU step: every input in its range and the bend
+    angle below `guard` at both ends of the step, not peaking inside it. NaN fails
+    every comparison, so it never fits."""
+    return (
+        abs(speed) <= _SPEED_LIMIT
+        and abs(acceleration) <= _ACCELERATION_LIMIT
+        and abs(rate) <= _RATE_LIMIT
+        and abs(acc) <= _BEND_ACCELERATION_LIMIT
+        and abs(load) <= _LOAD_LIMIT
+        and abs(beta) < guard
+        and abs(beta + step_size * (rate + 0.5 * acc * step_size)) < guard
+        and (rate * acc >= 0.0 or -rate / acc >= step_size)
+    )
 
 
 class CardanJoint(ShaftModel):
@@ -99,23 +123,23 @@ class CardanJoint(ShaftModel):
 
     # --- stepping ----------------------------------------------------------
 
+    def inputs(self) -> tuple[float, ...]:  # the generic one costs 3 k instructions a step
+        return (
+            self.input_speed,
+            self.input_acceleration,
+            self.bend_angle,
+            self.bend_angle_rate,
+            self.bend_angle_acceleration,
+            self.load_torque,
+        )
+
     def input_problem(self, step_size: float = 0.0) -> Refusal | None:
         """The Refusal of the inputs over [time, time + step_size], or None."""
         # Fast path for the common case, once per FMU step: every range at once and
         # the bend angle at both ends of the step. NaN fails every comparison, so
         # it always takes the slow path, which names the first problem.
-        beta, rate, acc = self.bend_angle, self.bend_angle_rate, self.bend_angle_acceleration
-        guard = self.max_bend_angle
-        if (
-            abs(self.input_speed) <= _SPEED_LIMIT
-            and abs(self.input_acceleration) <= _ACCELERATION_LIMIT
-            and abs(rate) <= _RATE_LIMIT
-            and abs(acc) <= _BEND_ACCELERATION_LIMIT
-            and abs(self.load_torque) <= _LOAD_LIMIT
-            and abs(beta) < guard
-            and abs(beta + step_size * (rate + 0.5 * acc * step_size)) < guard
-            and (rate * acc >= 0.0 or -rate / acc >= step_size)
-        ):
+        speed, acceleration, beta, rate, acc, load = self.inputs()
+        if _fits(speed, acceleration, beta, rate, acc, load, self.max_bend_angle, step_size):
             return None
         return self._explain_input_problem(step_size)
 
@@ -168,7 +192,7 @@ class CardanJoint(ShaftModel):
     def _advance(self, h: float) -> Refusal | None:
         """The input shaft (`ShaftModel`), then the bend angle, exact for its constant
         acceleration over the step; a refusal changes nothing."""
-        problem = super()._advance(h)
+        problem = ShaftModel._advance(self, h)  # not super(): once per step
         if problem:
             return problem
         rate, bend_acceleration = self.bend_angle_rate, self.bend_angle_acceleration
@@ -176,29 +200,99 @@ class CardanJoint(ShaftModel):
         self.bend_angle_rate = rate + bend_acceleration * h
         return None
 
+    # --- the FMU's step ------------------------------------------------------
+
+    def run(self, time: float, h: float, inputs) -> "tuple | Refusal":
+        """The FMU's step, top to bottom: take `inputs` (the table's order), advance
+        `h` s from `time` and return the outputs after it (the table's order), or
+        the Refusal of the step (then only the inputs have changed).
+
+        The common case inline, once per FMU step: the checks of `step_problem`
+        and `_advance` at once (the inputs' through `_fits`, as `input_problem`),
+        the same arithmetic as theirs, so that state and outputs are theirs to the
+        bit; anything else (a refusal to name) takes the generic `run`."""
+        speed, acceleration, beta, rate, bend_acceleration, load = inputs
+        (
+            self.input_speed,
+            self.input_acceleration,
+            self.bend_angle,
+            self.bend_angle_rate,
+            self.bend_angle_acceleration,
+            self.load_torque,
+        ) = inputs
+        increment = h * (speed + 0.5 * acceleration * h)
+        end_speed = speed + acceleration * h
+        if not (
+            0.0 < h < math.inf
+            and self.parameter_fault is None
+            and _fits(
+                speed, acceleration, beta, rate, bend_acceleration, load, self.max_bend_angle, h
+            )
+            and abs(increment) <= MAX_INCREMENT
+            and abs(end_speed) <= _SPEED_LIMIT
+        ):
+            return ShaftModel.run(self, time, h, inputs)
+        self._angle = angle = advanced(self._angle, increment)
+        self.input_speed = end_speed
+        self.bend_angle = end_beta = beta + h * (rate + 0.5 * bend_acceleration * h)
+        self.bend_angle_rate = end_rate = rate + bend_acceleration * h
+        self.time = time + h
+        return self._outputs(
+            angle, end_beta, end_speed, acceleration, end_rate, bend_acceleration, load
+        )
+
     # --- outputs -----------------------------------------------------------
 
     def response(self) -> JointResponse:
-        angle, phase = self._angle, self._phase
-        psi = angle.fraction + (phase.fraction + (angle.fraction_error + phase.fraction_error))
-        sign = -1.0 if (angle.turns + phase.turns) & 1 else 1.0
-        return joint_response_kernel(
-            psi,
+        """Every closed form at the current state (the one evaluation of a step)."""
+        turns, fraction, error = self._angle
+        phase_turns, phase_fraction, phase_error = self._phase
+        return JointResponse._make(
+            kernel(
+                math,
+                fraction + (phase_fraction + (error + phase_error)),
+                self.bend_angle,
+                self.input_speed,
+                self.input_acceleration,
+                self.bend_angle_rate,
+                self.bend_angle_acceleration,
+                self.crosspiece_inertia_1,
+                self.crosspiece_inertia_2,
+                self.crosspiece_inertia_3,
+                self.load_torque,
+                -1.0 if (turns + phase_turns) & 1 else 1.0,
+            )
+        )
+
+    def outputs(self) -> tuple:
+        """Values of `variables.OUTPUTS`, in order; raises nothing for valid inputs."""
+        return self._outputs(
+            self._angle,
             self.bend_angle,
             self.input_speed,
             self.input_acceleration,
             self.bend_angle_rate,
             self.bend_angle_acceleration,
+            self.load_torque,
+        )
+
+    def _outputs(self, angle, beta, speed, acceleration, rate, bend_acceleration, load) -> tuple:
+        turns, fraction, error = angle
+        phase_turns, phase_fraction, phase_error = self._phase
+        r = kernel(
+            math,
+            fraction + (phase_fraction + (error + phase_error)),
+            beta,
+            speed,
+            acceleration,
+            rate,
+            bend_acceleration,
             self.crosspiece_inertia_1,
             self.crosspiece_inertia_2,
             self.crosspiece_inertia_3,
-            self.load_torque,
-            sign,
+            load,
+            -1.0 if (turns + phase_turns) & 1 else 1.0,
         )
-
-    def outputs(self) -> tuple:
-        """Values of `variables.OUTPUTS`, in order; raises nothing for valid inputs."""
-        r = self.response()
-        input_angle = float(self._angle)
+        input_angle = angle_value(angle)
         # Two roundings at most: within one ulp of gamma2 however many turns.
-        return (input_angle, input_angle + r[0]) + _FROM_RESPONSE(r)
+        return (input_angle, input_angle + r[_CARDAN_ERROR]) + r[:_KINEMATIC_OUTPUTS]
