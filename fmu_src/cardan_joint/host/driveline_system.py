@@ -17,7 +17,7 @@ The compliant system (`COMPLIANT_CONNECTIONS`) couples Motor -> CompliantJoint
 (or CompliantPropshaft) -> InertiaLoad: each inertia is a state of its own FMU,
 the drive takes both shaft motions and returns both torques, so the load's
 inertia may exceed the motor's by any factor. Its step follows
-`torsional_step` (docs/CompliantJoint/README.md derives the rule).
+`torsional_step` (models/compliant_joint/README.md derives the rule).
 """
 
 import math
