@@ -79,9 +79,7 @@ def test_the_runtime_needs_nothing_above_glibc_2_17(tmp_path, fmi_version):
 
 
 @pytest.mark.parametrize("fmu", ["fmu_path", "fmi3_path"])
-def test_every_binary_of_both_fmus_needs_nothing_above_glibc_2_17(
-    request, tmp_path, fmu
-):
+def test_every_binary_of_both_fmus_needs_nothing_above_glibc_2_17(request, tmp_path, fmu):
     archive = zipfile.ZipFile(request.getfixturevalue(fmu))
     binaries = [name for name in archive.namelist() if name.endswith(".so")]
     assert binaries

@@ -92,8 +92,9 @@ def _check_machine() -> None:
 
 def _step(what: str, run: subprocess.CompletedProcess) -> None:
     if run.returncode != 0:
-        raise RootUnavailable(f"{what} failed ({run.returncode}):\n{run.stdout[-3000:]}"
-                              f"{run.stderr[-3000:]}")
+        raise RootUnavailable(
+            f"{what} failed ({run.returncode}):\n{run.stdout[-3000:]}{run.stderr[-3000:]}"
+        )
 
 
 def prepare(cache: Path = CACHE, log=print) -> Path:
