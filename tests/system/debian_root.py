@@ -47,12 +47,14 @@ def root_path(cache: Path = CACHE) -> Path:
     return cache / f"{SUITE}-{recipe_key()}"
 
 
-def in_root(root: Path, script: str, *, timeout: float = 1800, env=None):
+def in_root(root: Path, script: str, *, hide=(), timeout: float = 1800, env=None):
     """`sh -c script` chrooted into root, with /proc and /dev mounted in a private
-    mount namespace (nothing stays mounted after it)."""
+    mount namespace (nothing stays mounted after it); the root's folders `hide`
+    (e.g. "/usr/local") are empty there."""
     mounts = (
         f"mount --make-rprivate / && mount -t proc proc {root}/proc && "
         f"mount --rbind /dev {root}/dev && "
+        + "".join(f"mount -t tmpfs tmpfs {root}/{folder.lstrip('/')} && " for folder in hide)
     )
     command = ["unshare", "-m", "sh", "-c", mounts + 'exec chroot "$0" /bin/sh -c "$1"']
     return subprocess.run(
@@ -73,7 +75,7 @@ def _build_script() -> str:
             "apt-get -q update >/dev/null",
             "mkdir -p /build && cd /build",
             f"apt-get -q source --download-only {package} >/dev/null",
-            "tar xf *.orig.tar.xz && cd Python-*/",
+            "tar xf *.orig.tar.* && cd Python-*/",
             f"./configure -q {' '.join(CONFIGURE)} >/dev/null",
             "make -s -j$(nproc) >/dev/null 2>&1",
             "make -s altinstall >/dev/null 2>&1",
@@ -103,8 +105,8 @@ def prepare(cache: Path = CACHE, log=print) -> Path:
     if (root / DONE).exists():
         return root
     _check_machine()
-    if root.exists():
-        shutil.rmtree(root)  # an unfinished set-up
+    if root.exists():  # an unfinished set-up; never into what an interrupted one mounted
+        subprocess.run(["rm", "-rf", "--one-file-system", str(root)], check=True)
     root.parent.mkdir(parents=True, exist_ok=True)
     started = time.monotonic()
     run = subprocess.run(
