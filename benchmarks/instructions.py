@@ -5,7 +5,8 @@ Per step = (instructions of a run of LONG steps - those of SHORT steps) / (LONG 
 SHORT): start-up (interpreter, imports, instantiate) cancels. The floor is the plain
 floor FMU (`floor`) as pythonfmu builds it, its own C++ binary and no project code,
 at its best: libpython preloaded into the host (that binary starts Python from the
-global symbols), the slave's pythonfmu from the CPython's venv. Three ratios:
+global symbols; PYTHONHOME, as its prefix cannot be found from the host's path).
+Three ratios:
 
 (a) C host (tests/c_host `bench`: set 6, doStep, get 20): the joint / the floor;
 (b) the joint in the C host / the same model's step and outputs called from Python
@@ -65,8 +66,16 @@ def callgrind(command: list, environment: dict) -> int:
 
 
 def per_step(command, environment, lengths) -> float:
-    """Instructions per step: `command(steps)` at two lengths, start-up cancelled."""
+    """Instructions per step: `command(steps)` at two lengths, start-up cancelled.
+    A first run, not counted, writes the bytecode caches both counted runs then read."""
     short, long = lengths
+    warm_up = subprocess.run(
+        list(map(str, command(short))),
+        capture_output=True,
+        env={"PATH": "/usr/bin:/bin", **environment},
+    )
+    if warm_up.returncode != 0:
+        raise RuntimeError(f"{command(short)} failed:\n{warm_up.stdout}{warm_up.stderr}")
     counts = [callgrind(command(steps), environment) for steps in (short, long)]
     return (counts[1] - counts[0]) / (long - short)
 
@@ -98,7 +107,6 @@ def count_minor(minor, host, joint, floor, lengths) -> dict | None:
     if prefix is None:
         return None
     python, library = venv(prefix), prefix / "lib" / f"libpython3.{minor}.so.1.0"
-    site = next((python.parent.parent / "lib").glob("python3.*/site-packages"))
     path = {"PYTHONPATH": f"{ROOT}:{ROOT / 'fmu_src'}", "PYTHONHASHSEED": "0"}
 
     def in_host(fmu):
@@ -109,7 +117,7 @@ def count_minor(minor, host, joint, floor, lengths) -> dict | None:
             in_host(joint), {"CARDAN_JOINT_FMU_PYTHON_LIBRARY": str(library)}, lengths
         ),
         "c_host floor": per_step(
-            in_host(floor), {"LD_PRELOAD": str(library), "PYTHONPATH": str(site)}, lengths
+            in_host(floor), {"LD_PRELOAD": str(library), "PYTHONHOME": str(prefix)}, lengths
         ),
         "physics": per_step(python_worker(python, "physics"), path, lengths),
         "fmpy joint": per_step(python_worker(python, "loop", joint), path, lengths),
