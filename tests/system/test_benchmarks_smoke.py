@@ -26,6 +26,9 @@ SUMMARY_ROWS = (
     "| 6. C host: joint vs plain floor in the same host",
     "| 6. FMPy loop: joint vs plain floor",
     "| 6. the joint's Python per step, no host,",
+    "| 7a. instructions per step (callgrind,",
+    "| 7b. instructions per step (callgrind,",
+    "| 7c. instructions per step (callgrind,",
 )
 
 

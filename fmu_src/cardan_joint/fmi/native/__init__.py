@@ -75,6 +75,15 @@ def fmi3_headers() -> Path:
 MINIMUM_PYTHON = (3, 10)  # the oldest CPython the FMU's code and the loader support
 
 
+# The manylinux2014 floor: the binary loads on glibc 2.17 and newer, wherever it is
+# built. The header binds the functions glibc 2.34 moved into libc.so.6 to their old
+# versions; an older glibc has them in libdl.so.2 and libpthread.so.0, needed here
+# (no --as-needed: nothing of a new glibc's stubs is used, they must stay needed).
+GLIBC_FLOOR = (2, 17)
+GLIBC_FLOOR_COMPILE = ("-include", str(_HERE / "glibc_compat.h"))
+GLIBC_FLOOR_LINK = ("-Wl,--no-as-needed", "-l:libdl.so.2", "-l:libpthread.so.0")
+
+
 class NativeBuildError(RuntimeError):
     pass
 
@@ -141,12 +150,13 @@ def compile_loader(model_identifier: str, output: Path, fmi_version: int = 2) ->
         "-shared",
         "-pthread",
         "-Wall",
+        *GLIBC_FLOOR_COMPILE,
         f"-DMODEL_IDENTIFIER=\"{model_identifier}\"",
         *headers,
         *(str(_HERE / source) for source in SOURCES[fmi_version]),
         "-Wl,-z,nodelete",
         f"-Wl,--version-script={exports}",
-        "-ldl",
+        *GLIBC_FLOOR_LINK,
         "-o",
         str(output),
     ]
