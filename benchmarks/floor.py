@@ -58,7 +58,7 @@ def build_floor_fmu(dest, kind: str, loader: bool = True) -> Path:
         ],
         cwd=staging,
     )
-    # The joint's build puts the native loader in front of pythonfmu's binary:
+    # The joint's build replaces pythonfmu's binary by the project's runtime:
     # the floor gets the same, so that the ratio measures the joint alone.
     fmu = folder / "Floor.fmu"
     if loader:
