@@ -195,27 +195,3 @@ def test_plain_calls_when_the_slave_has_no_fast_step_give_the_same_bits(extracte
     assert fast_messages == plain_messages
     assert any(status == 1 and "held" in text for status, _, text in fast_messages)
     assert any(status == 2 for status, _, _ in fast_messages)  # the refused step
-
-
-def test_the_loader_claims_only_the_slave_its_thread_just_made_for_that_instance():
-    import gc
-    import threading
-
-    from cardan_joint.fmi.slave import ModelSlave
-
-    class CardanJointSlave(ModelSlave):
-        model_folder = "universal_joint"
-
-    slave = CardanJointSlave(instance_name="mine")
-    assert CardanJointSlave.fast_claim("other") is None  # another instance's name
-    slave = CardanJointSlave(instance_name="mine")
-    claimed = []
-    elsewhere = threading.Thread(target=lambda: claimed.append(slave.fast_claim("mine")))
-    elsewhere.start()
-    elsewhere.join()
-    assert claimed == [None]  # another thread made no slave
-    assert CardanJointSlave.fast_claim("mine") is slave
-    assert CardanJointSlave.fast_claim("mine") is None  # claimed once
-    CardanJointSlave(instance_name="gone")  # not kept alive by the registry
-    gc.collect()  # its variables' accessors refer back to it
-    assert CardanJointSlave.fast_claim("gone") is None

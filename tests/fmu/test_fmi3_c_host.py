@@ -186,11 +186,13 @@ def test_fmpy_in_a_python_that_links_libpython_statically(fmi3_path):
     assert runs[0].stdout == runs[1].stdout and runs[0].stdout  # bit for bit
 
 
-def test_the_fmu_ships_the_loader_and_pythonfmu3s_binary(fmi3_path):
+def test_the_fmu_ships_the_runtime_as_its_only_binary(fmi3_path):
     names = set(zipfile.ZipFile(fmi3_path).namelist())
     assert {
         "binaries/x86_64-linux/UniversalJoint.so",
-        "binaries/x86_64-linux/UniversalJoint_pythonfmu3.so",
         "resources/python_runtime.txt",
         "resources/variables.txt",
     } <= names
+    assert [name for name in names if name.startswith("binaries/")] == [
+        "binaries/x86_64-linux/UniversalJoint.so"
+    ]

@@ -88,9 +88,4 @@ def test_every_binary_of_both_fmus_needs_nothing_above_glibc_2_17(request, tmp_p
         found = above_the_floor(Path(archive.extract(name, tmp_path)))
         if found:
             problems[name] = found
-    pythonfmus = {name for name in binaries if re.search(r"_pythonfmu3?\.so$", name)}
-    if problems and set(problems) <= pythonfmus:
-        # Until the runtime no longer loads pythonfmu's C++ export library (item 1),
-        # the FMU still ships it; the runtime in front of it is checked all the same.
-        pytest.xfail(f"pythonfmu's C++ binary is still shipped: {problems}")
     assert problems == {}

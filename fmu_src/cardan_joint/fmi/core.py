@@ -70,7 +70,6 @@ class SlaveCore(FastStep):
 
     def _init_model(self):
         refs = self._refs
-        self._fast_register()  # every constructor runs this: pythonfmu's reset too
         self._model = self._new_model()
         self._start_time = 0.0
         self._initialized = False

@@ -36,11 +36,8 @@ loader forwards the log queue after it as after pythonfmu's calls):
   the slave has warned; getReal warns again at every read, so the loader keeps
   them stale (and answers fmi2OK, as getReal does); error: a fault, logged.
 
-Claim. The FMI 2.0 runtime constructs the slave itself and uses it. pythonfmu3
-(FMI 3.0) does not hand its Python object out: each slave registers itself at
-construction, per thread (`_fast_register`), and the FMI 3.0 loader calls the
-class's `fast_claim(instance_name)` right after instantiate and reset on the
-same thread. A slave without these methods keeps plain calls.
+Slave. The runtime constructs the slave itself (both FMI versions) and uses
+that object; a slave without these methods keeps plain calls.
 
 In C. setReal of inputs only: write known, mark outputs stale. Any other
 setReal: fast_load if needed, forward to Python, fast_store. getReal: if the
@@ -51,20 +48,11 @@ forwarded (the slave reports it). doStep: fast_step; outputs fresh on ok,
 stale otherwise.
 """
 
-import threading
-import weakref
 from collections.abc import Callable
 from typing import Any
 
 from ..physics.api import Stepped
 from .references import References
-
-# The slave each thread constructed last: pythonfmu keeps its Python object to
-# itself, so the loader claims it (`fast_claim`) right after pythonfmu's
-# instantiate or reset returned on the same thread. Keyed by thread, so
-# instances made at once on several threads never mix; weak, so a slave made
-# outside the loader is not kept alive.
-_constructed: dict = {}
 
 
 class FastStep:
@@ -81,16 +69,6 @@ class FastStep:
     _refused: Callable[[Any, float, float], Any]
     _current_outputs: Callable[[], tuple]
     _fault: Callable[[str, BaseException], None]
-
-    def _fast_register(self) -> None:
-        _constructed[threading.get_ident()] = weakref.ref(self)
-
-    @staticmethod
-    def fast_claim(instance_name: str):
-        """The slave this thread constructed last if it is `instance_name`'s, else None."""
-        entry = _constructed.pop(threading.get_ident(), None)
-        slave = entry() if entry else None
-        return slave if slave is not None and slave.instance_name == instance_name else None
 
     @classmethod
     def fast_layout(cls) -> dict:

@@ -7,11 +7,9 @@ folder, build settings and start values written in), and rewrites the import
 below to the copy of `cardan_joint` it ships, so two FMUs of this project never
 share code in one process.
 
-pythonfmu3 0.3.4's loader imports this module once per process (an ordinary
-import, new references released once) instead of re-running it at every
-instantiation: it has no counterpart of pythonfmu 0.7.0's findClass reference
-bug, so this script needs no compensating Py_IncRef (tests/fmu/test_fmi3.py
-instantiates it many times in one process).
+The FMU's runtime imports this module once per process (an ordinary import)
+and constructs the one class below at every instantiation and reset
+(tests/fmu/test_fmi3.py instantiates it many times in one process).
 """
 
 from pythonfmu3 import Fmi3Slave
@@ -19,8 +17,8 @@ from pythonfmu3 import Fmi3Slave
 from cardan_joint.fmi.slave3 import ModelSlave3
 
 
-# pythonfmu3's builder and C loader find the slave class by a regular expression
-# that wants `Fmi3Slave` itself among the bases named on this line.
+# pythonfmu3's builder finds the slave class by a regular expression that wants
+# `Fmi3Slave` itself among the bases named on this line.
 class ModelFmu(ModelSlave3, Fmi3Slave):
     model_folder = ""  # the model's folder under models/
     build_settings = {}

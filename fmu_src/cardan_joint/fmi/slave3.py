@@ -5,19 +5,18 @@ No equation and no joint logic live here: this maps FMI 3 value references
 scalar per row of the model's table, the FMI 2.0 variables; with `fmi3_arrays`
 (`--fmi3-arrays`) the table's `fmi3_variables()`, vectors as Float64 arrays)
 onto the flat indices
-`core` works with. pythonfmu3 0.3.4's C layer shares pythonfmu's traps:
-any Python exception becomes fmi3Fatal (so every entry point catches
-everything), and it copies exactly `nValues` values out of a getter's list
-without checking its length (so a getter always returns enough, NaN-padded
-when a value reference is unknown). Unlike pythonfmu 0.7.0 it forwards log
-messages whether or not debug logging is on, and `do_step` can return any
-status; but it calls the host's logger without checking for NULL, which FMI
-3.0 allows, so messages go to stderr instead when the host gave no logger.
+`core` works with. The FMU's runtime (`cardan_joint.fmi.native`) constructs
+this slave and calls its methods as pythonfmu3 0.3.4's C layer did: any Python
+exception becomes fmi3Fatal (so every entry point catches everything), a
+getter's list must hold exactly `nValues` values (so a getter always returns
+enough, NaN-padded when a value reference is unknown: the runtime refuses any
+other length), `do_step` returns a step result with any status, and every
+message goes to the runtime, which hands it to the host's logger (or stderr
+when the host gave none). The runtime checks value references and types first
+and serves Float64 variables only, which are all this FMU has.
 """
 
-import ctypes
 import math
-import sys
 
 from pythonfmu3 import Float64, Fmi3Causality, Fmi3Slave, Fmi3Variability
 from pythonfmu3.default_experiment import DefaultExperiment
@@ -33,14 +32,6 @@ from .references import log_categories
 
 TIME_REFERENCE = 0
 _STEP_RESULTS = {status: Fmi3StepResult(status=status) for status in Fmi3Status}
-# cppfmu::Logger (pythonfmu3 0.3.4, pinned): { void* environment; callback logMessage; ... }.
-_LOGGER_CALLBACK_OFFSET = ctypes.sizeof(ctypes.c_void_p)
-
-
-def _host_has_logger(logger_address) -> bool:
-    if not isinstance(logger_address, int) or logger_address == 0:
-        return False
-    return bool(ctypes.c_void_p.from_address(logger_address + _LOGGER_CALLBACK_OFFSET).value)
 
 
 class ModelSlave3(ModelBinding, SlaveCore, Fmi3Slave):
@@ -89,9 +80,6 @@ class ModelSlave3(ModelBinding, SlaveCore, Fmi3Slave):
         self.author, self.license, self.version = cls.author, cls.license, cls.version
         self.description = cls.description
         self.default_experiment = DefaultExperiment(**cls.experiment)
-        self._last_message = None
-        # The builder instantiates without a logger (no C layer, nothing to crash).
-        self._log_to_host = "logger" not in kwargs or _host_has_logger(kwargs["logger"])
         self._init_model()
         self.register_variable(
             Float64(
@@ -129,19 +117,8 @@ class ModelSlave3(ModelBinding, SlaveCore, Fmi3Slave):
     # --- messages ------------------------------------------------------------
 
     def _report(self, message: str, status: Fmi3Status) -> None:
-        if self._log_to_host:
-            self.log(message, status)
-            return
-        # Once per distinct message; a host without a usable stderr must not make it fatal.
-        if message != self._last_message:
-            self._last_message = message
-            try:
-                sys.stderr.write(
-                    f"[{self.modelName} {self.instance_name}] {status.name.upper()}: {message}\n"
-                )
-                sys.stderr.flush()
-            except Exception:
-                pass
+        # The runtime hands every message to the host's logger, or to stderr.
+        self.log(message, status)
 
     # --- life cycle ----------------------------------------------------------
 
@@ -222,41 +199,3 @@ class ModelSlave3(ModelBinding, SlaveCore, Fmi3Slave):
 
     def _fmi3_name(self, vr):
         return "time" if vr == TIME_REFERENCE else self.GROUPS[vr - 1].name
-
-    # The FMU has Float64 variables only; pythonfmu3's typed accessors would raise
-    # (fmi3Fatal) on any other call, so these refuse politely instead.
-    def _no_such_variables(self, kind, vrs, fill):
-        self._report(
-            f"the FMU has no {kind} variables (value references {list(vrs)})", Fmi3Status.error
-        )
-        return [fill] * (self._LONGEST * len(vrs))
-
-    def get_int32(self, vrs):
-        return self._no_such_variables("Int32", vrs, 0)
-
-    def get_int64(self, vrs):
-        return self._no_such_variables("Int64", vrs, 0)
-
-    def get_uint64(self, vrs):
-        return self._no_such_variables("UInt64", vrs, ctypes.c_uint64(0))  # read via .value
-
-    def get_boolean(self, vrs):
-        return self._no_such_variables("Boolean", vrs, False)
-
-    def get_string(self, vrs):
-        return self._no_such_variables("String", vrs, "")
-
-    def set_int32(self, vrs, values):
-        self._no_such_variables("Int32", vrs, 0)
-
-    def set_int64(self, vrs, values):
-        self._no_such_variables("Int64", vrs, 0)
-
-    def set_uint64(self, vrs, values):
-        self._no_such_variables("UInt64", vrs, 0)
-
-    def set_boolean(self, vrs, values):
-        self._no_such_variables("Boolean", vrs, False)
-
-    def set_string(self, vrs, values):
-        self._no_such_variables("String", vrs, "")

@@ -1,11 +1,11 @@
 """Put the native loader into a built FMU, so that C and C++ FMI hosts can run it.
 
-pythonfmu's (and pythonfmu3's) binary needs a Python already in the process.
-`install_loader` compiles `loader.c` (FMI 2.0) or `fmi3_loader.c` (FMI 3.0) and
-friends with the machine's C compiler ($CC, else `cc`; no Python headers
-needed) and puts it at `binaries/<platform>/<id>.so`. FMI 2.0: it replaces
-pythonfmu's binary (the runtime constructs and calls the slave itself); FMI 3.0:
-pythonfmu3's binary moves to `binaries/<platform>/<id>_pythonfmu3.so`. It records
+pythonfmu's (and pythonfmu3's) binary needs a Python already in the process and
+a C++ runtime. `install_loader` compiles the project's runtime instead, `loader.c`
+(FMI 2.0) or `fmi3_loader.c` (FMI 3.0) and friends, with the machine's C
+compiler ($CC, else `cc`; no Python headers needed) and puts it at
+`binaries/<platform>/<id>.so`, in place of pythonfmu's binary: the runtime
+constructs the slave and calls its Python methods itself. It records
 in `resources/python_runtime.txt` what the FMU needs of a Python (a minimum
 version, the build's minor as the preferred one), no machine paths, and in
 `resources/variables.txt` each variable's reference, type, size and fixedness
@@ -33,6 +33,7 @@ _COMMON = (
     "state_book.c",
     "slave_object.c",
     "slave_values.c",
+    "python_api.c",
     "python_runtime.c",
     "python_start.c",
     "python_discovery.c",
@@ -50,7 +51,6 @@ SOURCES = {
     ),
     3: (
         "fmi3_loader.c",
-        "slave_library.c",
         "fmi3_calls.c",
         "fmi3_states.c",
         "fmi3_unsupported.c",
@@ -58,11 +58,8 @@ SOURCES = {
         *_COMMON,
     ),
 }
-# Where pythonfmu / pythonfmu3 put their Linux binary, and where the loader moves it.
+# Where pythonfmu / pythonfmu3 put their Linux binary, which the runtime replaces.
 BINARY_FOLDER = {2: "binaries/linux64", 3: "binaries/x86_64-linux"}
-# FMI 3.0's runtime still forwards to pythonfmu3's binary, shipped under this name;
-# the FMI 2.0 runtime calls the slave itself and ships no pythonfmu binary.
-SLAVE_SUFFIX = {3: "_pythonfmu3.so"}
 RECORD = "resources/python_runtime.txt"
 # Each variable's value reference, type, size and fixedness, for both loaders
 # (FMI 3.0: value count checks; both: the fixed-parameter guard). In resources/:
@@ -206,8 +203,7 @@ def variables_record(model_description: bytes) -> str:
 
 
 def install_loader(fmu_path, model_identifier: str, fmi_version: int = 2) -> None:
-    """Rewrite the .fmu in place: the runtime as the FMU's binary (FMI 3.0: in front
-    of pythonfmu3's), the records."""
+    """Rewrite the .fmu in place: the runtime as the FMU's one binary, the records."""
     fmu_path = Path(fmu_path)
     folder = BINARY_FOLDER[fmi_version]
     binary = f"{folder}/{model_identifier}.so"
@@ -219,18 +215,11 @@ def install_loader(fmu_path, model_identifier: str, fmi_version: int = 2) -> Non
             zipfile.ZipFile(rewritten, "w", zipfile.ZIP_DEFLATED) as target,
         ):
             if binary not in source.namelist():
-                raise NativeBuildError(f"{fmu_path} has no {binary} to put the loader in front of")
+                raise NativeBuildError(f"{fmu_path} has no {binary} to replace with the runtime")
             for item in source.infolist():
-                if item.filename in (RECORD, VARIABLES):
+                if item.filename in (RECORD, VARIABLES, binary):
                     continue
-                if item.filename == binary and fmi_version not in SLAVE_SUFFIX:
-                    continue
-                name = (
-                    f"{folder}/{model_identifier}{SLAVE_SUFFIX[fmi_version]}"
-                    if item.filename == binary
-                    else item.filename
-                )
-                info = zipfile.ZipInfo(name, item.date_time)
+                info = zipfile.ZipInfo(item.filename, item.date_time)
                 info.external_attr, info.compress_type = item.external_attr, zipfile.ZIP_DEFLATED
                 target.writestr(info, source.read(item))
             target.write(loader, binary)

@@ -5,6 +5,7 @@
 #define _GNU_SOURCE
 #include "instance.h"
 
+#include <math.h>
 #include <stdlib.h>
 #include <string.h>
 
@@ -35,7 +36,7 @@ fmi2Status leave(struct instance *in, fmi2Status status)
  * instance it never initialized, then steps. */
 void restore_mode(struct instance *in, fmi2Status status)
 {
-    if (status <= fmi2Warning && in->state != STATE_FATAL && fast_initialized(in) == 1)
+    if (status <= fmi2Warning && in->state != STATE_FATAL && slave_initialized(in) == 1)
         in->state = STATE_STEP_COMPLETE;
 }
 
@@ -81,8 +82,36 @@ fmi2Status set_debug_logging(struct instance *in, const char *function, int on, 
     return fmi2OK;
 }
 
-/* Both FMI versions free an instance alike; only the slave's own free differs. */
-void release_instance(struct instance *in, void (*free_slave)(void *))
+/* Reset: a fresh slave object (its constructor, run again), as pythonfmu's and
+ * pythonfmu3's reset did; Error (the old slave kept) when it cannot be made. */
+fmi2Status reset_slave(struct instance *in)
+{
+    fmi2Status status = slave_construct(in, in->resources) ? fmi2Error : fmi2OK;
+    in->last_successful_time = NAN;
+    fast_reset(in);
+    return status;
+}
+
+/* A change of mode through the slave's `method` (NULL: reset), after `first`
+ * (may be NULL); the instance enters `next` unless the call failed fatally. */
+fmi2Status transition(void *c, unsigned allowed, const char *function,
+                      fmi2Status (*first)(struct instance *), const char *method, enum state next)
+{
+    struct instance *in = enter(c, allowed, function);
+    if (!in)
+        return fmi2Error;
+    fast_before(in);
+    fmi2Status status = first ? first(in) : fmi2OK;
+    if (status == fmi2OK)
+        status = method ? slave_call(in, method) : reset_slave(in);
+    status = leave(in, status);
+    fast_after(in);
+    if (status <= fmi2Error && in->state != STATE_FATAL)
+        in->state = next;
+    return status;
+}
+
+void free_instance(struct instance *in)
 {
     fast_detach(in);
     /* drop_state moves the book's last entry into the freed slot and clears the
@@ -91,8 +120,7 @@ void release_instance(struct instance *in, void (*free_slave)(void *))
         fmi2FMUstate state = in->fmu_states[0];
         drop_state(in, &state);
     }
-    if (in->slave && free_slave)
-        free_slave(in->slave);
+    slave_release(in);
     for (size_t i = 0; i < in->n_categories; i++)
         free(in->categories[i]);
     in->magic = 0;

@@ -1,68 +1,23 @@
-/* The one-call step (issue 21), for FMI 2.0 and 3.0: the loader keeps an
+/* The one-call step (issue 21), for FMI 2.0 and 3.0: the runtime keeps an
  * instance's inputs, parameters and outputs in C arrays, serves Real value
  * reads and input writes from them, and enters Python once per doStep (the
  * slave's fast_step on memoryviews over the arrays).  The protocol, which this
  * file follows, is the docstring of fmi/fast_step.py.  An instance whose
- * slave has no fast_step (or, FMI 3.0, cannot be claimed) keeps plain calls
- * (in->fast stays NULL): the benchmarks' plain floor FMU does.
- *
- * Python is reached as in slave_module.c: no headers, functions looked up in
- * the process's global scope, one ABI for CPython 3.10-3.13; the GIL is taken
- * per call, as pythonfmu does, on the host thread's own thread state. */
-#define _GNU_SOURCE
+ * slave has no fast_step keeps plain calls (in->fast stays NULL): the
+ * benchmarks' plain floor FMU does.  The GIL is taken per call, as pythonfmu
+ * does, on the host thread's own thread state. */
 #include "fast_path.h"
+#include "python_api.h"
 
-#include <dlfcn.h>
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>
-#include <sys/types.h>
 
-typedef ssize_t Py_ssize_t;
-typedef int PyGILState_STATE; /* an enum in Python.h */
-#define PY_FILE_INPUT 257
-#define PYBUF_WRITE 0x200
-
-#define FAST_FUNCTIONS(X)                                                                 \
-    X(PyGILState_STATE, PyGILState_Ensure, (void))                                        \
-    X(void, PyGILState_Release, (PyGILState_STATE))                                       \
-    X(PyObject *, PyMemoryView_FromMemory, (char *, Py_ssize_t, int))                     \
-    X(PyObject *, PyObject_GetAttrString, (PyObject *, const char *))                     \
-    X(PyObject *, PyObject_CallFunctionObjArgs, (PyObject *, ...))                        \
-    X(PyObject *, PyFloat_FromDouble, (double)) X(long, PyLong_AsLong, (PyObject *))      \
-    X(PyObject *, PyDict_New, (void)) X(PyObject *, PyEval_GetBuiltins, (void))           \
-    X(int, PyDict_SetItemString, (PyObject *, const char *, PyObject *))                  \
-    X(PyObject *, PyDict_GetItemString, (PyObject *, const char *))                       \
-    X(PyObject *, PyUnicode_FromString, (const char *))                                   \
-    X(PyObject *, PyUnicode_DecodeFSDefault, (const char *))                              \
-    X(PyObject *, PyRun_String, (const char *, int, PyObject *, PyObject *))              \
-    X(const char *, PyUnicode_AsUTF8, (PyObject *))                                       \
-    X(Py_ssize_t, PyList_Size, (PyObject *))                                              \
-    X(PyObject *, PyList_GetItem, (PyObject *, Py_ssize_t))                               \
-    X(int, PyList_SetSlice, (PyObject *, Py_ssize_t, Py_ssize_t, PyObject *))             \
-    X(void, Py_IncRef, (PyObject *)) X(void, Py_DecRef, (PyObject *))                     \
-    X(PyObject *, PyErr_Occurred, (void)) X(void, PyErr_Clear, (void))                    \
-    X(int, PyBytes_AsStringAndSize, (PyObject *, char **, Py_ssize_t *))
-
-#define DECLARE(result, name, parameters) static result(*p_##name) parameters;
-FAST_FUNCTIONS(DECLARE)
-#undef DECLARE
-static PyObject *none;
-
-/* The slave's layout: FMI 2.0 passes the runtime's own slave object; FMI 3.0
- * (slave None) claims the one pythonfmu3 just constructed on this thread
- * (fmi/fast_step.py fast_claim), through the script module. */
+/* The slave's layout: the runtime's own slave object, if it has the one-call step. */
 static const char CLAIM[] =
-    "import sys\n"
-    "with open(resources + '/slavemodule.txt') as file:\n"
-    "    script = sys.modules.get(file.readline().strip())\n"
     "sizes = ()\n"
-    "for value in list(vars(script).values()) if script and slave is None else ():\n"
-    "    if isinstance(value, type) and hasattr(value, 'fast_claim'):\n"
-    "        slave = value.fast_claim(name)\n"
-    "        break\n"
     "methods = ('fast_step', 'fast_outputs', 'fast_load', 'fast_store', 'fast_layout')\n"
-    "if slave is not None and all(hasattr(slave, m) for m in methods):\n"
+    "if all(hasattr(slave, m) for m in methods):\n"
     "    layout = slave.fast_layout()\n"
     "    sizes = tuple(int(layout[k]) for k in ('inputs', 'known_size', 'first_output', "
     "'outputs'))\n"
@@ -81,20 +36,6 @@ static const char CLAIM[] =
 
 /* In the order of enum fast_method. */
 static const char *const METHODS[] = {"fast_step", "fast_outputs", "fast_load", "fast_store"};
-
-static int resolve(void)
-{
-    static int resolved = -1;
-    if (resolved >= 0)
-        return resolved;
-#define RESOLVE(result, name, parameters)                                                 \
-    if (!(*(void **)&p_##name = dlsym(RTLD_DEFAULT, #name)))                              \
-        return resolved = 0;
-    FAST_FUNCTIONS(RESOLVE)
-#undef RESOLVE
-    none = dlsym(RTLD_DEFAULT, "_Py_NoneStruct");
-    return resolved = none != NULL;
-}
 
 /* One call into the slave with the GIL held; its status (an FMI status number). */
 static long call(struct instance *in, enum fast_method method, PyObject *a, PyObject *b,
@@ -126,14 +67,6 @@ static void forget(struct fast_path *fast)
     }
 }
 
-static int set_global(PyObject *globals, const char *name, PyObject *value)
-{
-    int ok = value && !p_PyDict_SetItemString(globals, name, value);
-    if (value)
-        p_Py_DecRef(value);
-    return ok;
-}
-
 static long global_long(PyObject *globals, const char *name)
 {
     PyObject *value = p_PyDict_GetItemString(globals, name);
@@ -153,12 +86,8 @@ static int read_flat_table(struct fast_path *fast, PyObject *table)
 static int claim(struct instance *in, struct fast_path *fast)
 {
     PyObject *globals = p_PyDict_New(), *result = NULL;
-    if (globals &&
-        set_global(globals, "resources", p_PyUnicode_DecodeFSDefault(fast->resources)) &&
-        set_global(globals, "name", p_PyUnicode_FromString(in->name)) &&
-        !p_PyDict_SetItemString(globals, "slave", in->object ? in->object : none) &&
-        !p_PyDict_SetItemString(globals, "__builtins__", p_PyEval_GetBuiltins()))
-        result = p_PyRun_String(CLAIM, PY_FILE_INPUT, globals, globals);
+    if (globals && in->object && !p_PyDict_SetItemString(globals, "slave", in->object))
+        result = run_with(CLAIM, globals);
     int found = result && global_long(globals, "found") == 1;
     if (found) {
         fast->slave = p_PyDict_GetItemString(globals, "slave");
@@ -213,16 +142,14 @@ static void drop(struct instance *in)
     free(fast->known);
     free(fast->values);
     free(fast->table);
-    free(fast->resources);
     free(fast);
     in->fast = NULL;
 }
 
-void fast_attach(struct instance *in, const char *resources)
+void fast_attach(struct instance *in)
 {
-    if (!resolve() || !(in->fast = calloc(1, sizeof *in->fast)))
+    if (!python_api() || !(in->fast = calloc(1, sizeof *in->fast)))
         return;
-    in->fast->resources = copy_of(resources);
     PyGILState_STATE gil = p_PyGILState_Ensure();
     if (!set_up(in, in->fast))
         drop(in);

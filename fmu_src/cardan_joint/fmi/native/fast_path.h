@@ -14,7 +14,6 @@ struct fast_path {
     int stale;          /* the outputs array is not current */
     int inputs_written; /* the slave has not taken the host's latest inputs yet */
     double *known, *values;
-    char *resources;
     /* FMI 3 (NULL for FMI 2, whose value references are the flat indices):
      * {n, start[0..n], indices...}: value reference vr < n holds the flat
      * indices indices[start[vr]] to indices[start[vr + 1] - 1]. */

@@ -8,7 +8,6 @@
 #define _GNU_SOURCE
 #include "instance.h"
 
-#include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -35,13 +34,6 @@ const char *where(enum state state)
 }
 
 /* --- life cycle --------------------------------------------------------------- */
-
-void free_instance(struct instance *in)
-{
-    fast_detach(in);
-    slave_release(in);
-    release_instance(in, NULL);
-}
 
 const char *fmi2GetTypesPlatform(void) { return "default"; }
 const char *fmi2GetVersion(void) { return "2.0"; }
@@ -72,49 +64,29 @@ fmi2Status fmi2SetupExperiment(fmi2Component c, fmi2Boolean tolerance_defined, f
     return leave(in, fmi2OK);
 }
 
-static fmi2Status transition(fmi2Component c, unsigned allowed, const char *function,
-                             const char *method, enum state next)
-{
-    struct instance *in = enter(c, allowed, function);
-    if (!in)
-        return fmi2Error;
-    fast_before(in);
-    fmi2Status status;
-    if (method) {
-        status = leave(in, slave_call(in, method));
-    } else {  /* reset: a fresh slave object (its constructor, run again) */
-        status = leave(in, slave_construct(in, in->resources) ? fmi2Error : fmi2OK);
-        in->last_successful_time = NAN;
-        fast_reset(in);
-    }
-    fast_after(in);
-    if (status <= fmi2Error && in->state != STATE_FATAL)
-        in->state = next;
-    return status;
-}
-
 fmi2Status fmi2EnterInitializationMode(fmi2Component c)
 {
+    /* pythonfmu 0.7.0 sets the experiment up first, with fmi2SetupExperiment's values */
     return transition(c, STATE_INSTANTIATED, "fmi2EnterInitializationMode",
-                      "enter_initialization_mode", STATE_INITIALIZATION);
+                      slave_setup_experiment, "enter_initialization_mode", STATE_INITIALIZATION);
 }
 
 fmi2Status fmi2ExitInitializationMode(fmi2Component c)
 {
-    return transition(c, STATE_INITIALIZATION, "fmi2ExitInitializationMode",
+    return transition(c, STATE_INITIALIZATION, "fmi2ExitInitializationMode", NULL,
                       "exit_initialization_mode", STATE_STEP_COMPLETE);
 }
 
 fmi2Status fmi2Terminate(fmi2Component c)
 {
-    return transition(c, STATE_STEP_COMPLETE, "fmi2Terminate", "terminate",
+    return transition(c, STATE_STEP_COMPLETE, "fmi2Terminate", NULL, "terminate",
                       STATE_TERMINATED);
 }
 
-/* Reset makes a fresh Python slave, as pythonfmu's did. */
+/* Reset makes a fresh Python slave (reset_slave), as pythonfmu's did. */
 fmi2Status fmi2Reset(fmi2Component c)
 {
-    return transition(c, ALIVE, "fmi2Reset", NULL, STATE_INSTANTIATED);
+    return transition(c, ALIVE, "fmi2Reset", NULL, NULL, STATE_INSTANTIATED);
 }
 
 /* --- values ------------------------------------------------------------------- */
@@ -128,7 +100,7 @@ fmi2Status fmi2Reset(fmi2Component c)
         if (!in || !arrays_given(in, function, n, vr, value))                            \
             return fmi2Error;                                                            \
         fast_before(in);                                                                 \
-        fmi2Status status = leave(in, slave_##get_or_set(in, #member, kind, vr, n, value)); \
+        fmi2Status status = leave(in, slave_##get_or_set(in, #member, kind, vr, n, value, n)); \
         fast_after(in);                                                                  \
         return status;                                                                   \
     }
@@ -159,7 +131,7 @@ static fmi2Status set_real(struct instance *in, const fmi2ValueReference vr[], s
         return leave(in, fmi2OK);
     }
     fast_before(in);
-    fmi2Status status = leave(in, slave_set(in, "set_real", 'd', vr, n, value));
+    fmi2Status status = leave(in, slave_set(in, "set_real", 'd', vr, n, value, n));
     fast_after(in);
     return status;
 }
@@ -207,7 +179,7 @@ fmi2Status fmi2GetReal(fmi2Component c, const fmi2ValueReference vr[], size_t n,
     if (fast_serves(in, vr, n, 0))
         return leave(in, fast_get(in, vr, n, value));
     fast_before(in);
-    fmi2Status status = leave(in, slave_get(in, "get_real", 'd', vr, n, value));
+    fmi2Status status = leave(in, slave_get(in, "get_real", 'd', vr, n, value, n));
     fast_after(in);
     return status;
 }
@@ -222,7 +194,7 @@ fmi2Status fmi2DoStep(fmi2Component c, fmi2Real time, fmi2Real step, fmi2Boolean
     (void)no_set_prior;
     int status = fast_step(in, time, step);
     return step_status(in, status >= 0 ? (fmi2Status)status
-                                       : slave_do_step(in, time, step));
+                                       : slave_do_step(in, time, step, NULL));
 }
 
 fmi2Status fmi2GetRealStatus(fmi2Component c, fmi2StatusKind kind, fmi2Real *value)

@@ -1,9 +1,11 @@
-/* The fmi3 functions pythonfmu3 answers, behind the checks the FMI 2.0 loader
- * makes (fmi2_calls.c): the instance, the co-simulation state machine (no
- * event mode: Instantiated -> Initialization -> Step -> Terminated), arrays
- * given, and value references and value counts that match modelDescription.xml
- * and fixed parameters after initialization (the rest of what may be set when
- * stays the slave's check, in Python).
+/* The fmi3 functions after instantiate, through the slave's Python methods
+ * (slave_object.c, slave_values.c) as pythonfmu3 0.3.4 called them, behind the
+ * checks the FMI 2.0 calls make (fmi2_calls.c): the instance, the
+ * co-simulation state machine (no event mode: Instantiated -> Initialization
+ * -> Step -> Terminated), arrays given, and value references and value counts
+ * that match the variable record (resources/variables.txt, checked against the
+ * slave at instantiate) and fixed parameters after initialization (the rest of
+ * what may be set when stays the slave's check, in Python).
  * A call that fails a check is answered with fmi3Error and a message without
  * reaching Python, and changes nothing. */
 #include "fmi3_instance.h"
@@ -91,46 +93,28 @@ static fmi3Status set_all_but_fixed(struct instance3 *in3, const char *function,
     return status > fmi3Error ? status : fmi3Error;
 }
 
-/* pythonfmu3 implements the accessors with a member in slave3; the others it
- * would abort on, and no variable of this FMU has their type: values_fit
- * refuses any reference, and an empty call succeeds. */
-#define VALUES3(get_or_set, Type, member, allowed, constness, setting)                      \
-    static fmi3Status forward_##get_or_set##Type(struct instance *in,                        \
-                                                 const fmi3ValueReference vr[], size_t nvr,  \
-                                                 constness void *values, size_t n_values)    \
-    {                                                                                        \
-        fast_before(in);                                                                     \
-        fmi2Status status = leave(in, (fmi2Status)member(in->slave, vr, nvr,                 \
-                                                         (constness fmi3##Type *)values,     \
-                                                         n_values));                         \
-        fast_after(in);                                                                      \
-        return (fmi3Status)status;                                                           \
-    }                                                                                        \
+/* The slave's variables are Float64 (record_check.c holds the record to that):
+ * an accessor of another type checks its arguments as every accessor does, so
+ * any value reference is refused by name and an empty call succeeds. */
+#define NO_VALUES3(get_or_set, Type, allowed, constness)                                     \
     fmi3Status fmi3##get_or_set##Type(fmi3Instance c, const fmi3ValueReference vr[],         \
                                       size_t nvr, constness fmi3##Type values[],             \
                                       size_t n_values)                                       \
     {                                                                                        \
         const char *function = "fmi3" #get_or_set #Type;                                     \
         struct instance *in = enter(c, allowed, function);                                   \
-        int fit = in ? values_fit((struct instance3 *)in, function, T_##Type##_ID, vr, nvr,  \
-                                  values, n_values, setting)                                 \
-                     : 0;                                                                    \
-        if (!fit)                                                                            \
+        if (!in || !values_fit((struct instance3 *)in, function, T_##Type##_ID, vr, nvr,     \
+                               values, n_values, 0))                                         \
             return fmi3Error;                                                                \
         if (nvr == 0)                                                                        \
             return fmi3OK;                                                                   \
-        SET_ALL_BUT_FIXED_##setting(Type)                                                    \
-        return forward_##get_or_set##Type(in, vr, nvr, values, n_values);                    \
+        reportf(in, fmi2Error, "%s: the slave has Float64 variables only; the call was "     \
+                "ignored", function);                                                        \
+        return fmi3Error;                                                                    \
     }
-#define SET_ALL_BUT_FIXED_0(Type)
-#define SET_ALL_BUT_FIXED_1(Type)                                                            \
-    if (fit == 2)                                                                            \
-        return set_all_but_fixed((struct instance3 *)in, function, vr, nvr, values,          \
-                                 n_values, sizeof(fmi3##Type), forward_Set##Type);
-#define ACCESSORS(Type, get, set)                                                            \
-    VALUES3(Get, Type, get, READABLE, , 0) VALUES3(Set, Type, set, SETTABLE, const, 1)
+#define NO_ACCESSORS(Type)                                                                   \
+    NO_VALUES3(Get, Type, READABLE, ) NO_VALUES3(Set, Type, SETTABLE, const)
 #define T_Float32_ID T_FLOAT32
-#define T_Float64_ID T_FLOAT64
 #define T_Int8_ID T_INT8
 #define T_UInt8_ID T_UINT8
 #define T_Int16_ID T_INT16
@@ -141,7 +125,18 @@ static fmi3Status set_all_but_fixed(struct instance3 *in3, const char *function,
 #define T_UInt64_ID T_UINT64
 #define T_Boolean_ID T_BOOLEAN
 #define T_String_ID T_STRING
-#define NOT_IN_PYTHONFMU3(...) fmi3Error
+NO_ACCESSORS(Float32)
+NO_ACCESSORS(Int8)
+NO_ACCESSORS(UInt8)
+NO_ACCESSORS(Int16)
+NO_ACCESSORS(UInt16)
+NO_ACCESSORS(Int32)
+NO_ACCESSORS(UInt32)
+NO_ACCESSORS(Int64)
+NO_ACCESSORS(UInt64)
+NO_ACCESSORS(Boolean)
+NO_ACCESSORS(String)
+
 /* Float64 values of inputs, parameters and outputs come from the one-call
  * step's arrays when the instance has them (fast_path.c); time and the rest
  * go to the slave, as every value does without them. */
@@ -157,8 +152,7 @@ fmi3Status fmi3GetFloat64(fmi3Instance c, const fmi3ValueReference vr[], size_t 
     if (fast_serves(in, vr, nvr, 0))
         return (fmi3Status)leave(in, fast_get(in, vr, nvr, values));
     fast_before(in);
-    fmi2Status status =
-        leave(in, (fmi2Status)slave3.get_float64(in->slave, vr, nvr, values, n_values));
+    fmi2Status status = leave(in, slave_get(in, "get_float64", 'd', vr, nvr, values, n_values));
     fast_after(in);
     return (fmi3Status)status;
 }
@@ -172,8 +166,7 @@ static fmi3Status set_float64(struct instance *in, const fmi3ValueReference vr[]
         return (fmi3Status)leave(in, fmi2OK);
     }
     fast_before(in);
-    fmi2Status status =
-        leave(in, (fmi2Status)slave3.set_float64(in->slave, vr, nvr, values, n_values));
+    fmi2Status status = leave(in, slave_set(in, "set_float64", 'd', vr, nvr, values, n_values));
     fast_after(in);
     return (fmi3Status)status;
 }
@@ -194,17 +187,6 @@ fmi3Status fmi3SetFloat64(fmi3Instance c, const fmi3ValueReference vr[], size_t 
                                  n_values, sizeof *values, set_float64);
     return set_float64(in, vr, nvr, values, n_values);
 }
-ACCESSORS(Int32, slave3.get_int32, slave3.set_int32)
-ACCESSORS(Int64, slave3.get_int64, slave3.set_int64)
-ACCESSORS(UInt64, slave3.get_uint64, slave3.set_uint64)
-ACCESSORS(Boolean, slave3.get_boolean, slave3.set_boolean)
-ACCESSORS(String, slave3.get_string, slave3.set_string)
-ACCESSORS(Float32, NOT_IN_PYTHONFMU3, NOT_IN_PYTHONFMU3)
-ACCESSORS(Int8, NOT_IN_PYTHONFMU3, NOT_IN_PYTHONFMU3)
-ACCESSORS(UInt8, NOT_IN_PYTHONFMU3, NOT_IN_PYTHONFMU3)
-ACCESSORS(Int16, NOT_IN_PYTHONFMU3, NOT_IN_PYTHONFMU3)
-ACCESSORS(UInt16, NOT_IN_PYTHONFMU3, NOT_IN_PYTHONFMU3)
-ACCESSORS(UInt32, NOT_IN_PYTHONFMU3, NOT_IN_PYTHONFMU3)
 
 /* --- life cycle --------------------------------------------------------------- */
 
@@ -216,54 +198,31 @@ fmi3Status fmi3SetDebugLogging(fmi3Instance c, fmi3Boolean on, size_t n,
               : fmi3Error;
 }
 
-static fmi3Status transition(fmi3Instance c, unsigned allowed, const char *function,
-                             fmi3Status (*call)(fmi3Instance), enum state next)
-{
-    struct instance *in = enter(c, allowed, function);
-    if (!in)
-        return fmi3Error;
-    fast_before(in);
-    fmi2Status status = leave(in, (fmi2Status)call(in->slave));
-    if (call == slave3.reset)
-        fast_reset(in);
-    fast_after(in);
-    if (status <= fmi2Error && in->state != STATE_FATAL)
-        in->state = next;
-    return (fmi3Status)status;
-}
-
 fmi3Status fmi3EnterInitializationMode(fmi3Instance c, fmi3Boolean tolerance_defined,
                                        fmi3Float64 tolerance, fmi3Float64 start,
                                        fmi3Boolean stop_defined, fmi3Float64 stop)
 {
-    struct instance *in = enter(c, STATE_INSTANTIATED, "fmi3EnterInitializationMode");
-    if (!in)
-        return fmi3Error;
-    fast_before(in);
-    fmi2Status status = leave(in, (fmi2Status)slave3.enter_initialization(
-                                      in->slave, tolerance_defined, tolerance, start,
-                                      stop_defined, stop));
-    fast_after(in);
-    if (status <= fmi2Error && in->state != STATE_FATAL)
-        in->state = STATE_INITIALIZATION;
-    return (fmi3Status)status;
+    /* pythonfmu3 0.3.4 passes none of these on: the slave's clock starts at 0 */
+    (void)tolerance_defined, (void)tolerance, (void)start, (void)stop_defined, (void)stop;
+    return (fmi3Status)transition(c, STATE_INSTANTIATED, "fmi3EnterInitializationMode", NULL,
+                                  "enter_initialization_mode", STATE_INITIALIZATION);
 }
 
 fmi3Status fmi3ExitInitializationMode(fmi3Instance c)
 {
-    return transition(c, STATE_INITIALIZATION, "fmi3ExitInitializationMode",
-                      slave3.exit_initialization, STATE_STEP_COMPLETE);
+    return (fmi3Status)transition(c, STATE_INITIALIZATION, "fmi3ExitInitializationMode", NULL,
+                                  "exit_initialization_mode", STATE_STEP_COMPLETE);
 }
 
 fmi3Status fmi3Terminate(fmi3Instance c)
 {
-    return transition(c, STATE_STEP_COMPLETE, "fmi3Terminate", slave3.terminate,
-                      STATE_TERMINATED);
+    return (fmi3Status)transition(c, STATE_STEP_COMPLETE, "fmi3Terminate", NULL, "terminate",
+                                  STATE_TERMINATED);
 }
 
 fmi3Status fmi3Reset(fmi3Instance c)
 {
-    return transition(c, ALIVE, "fmi3Reset", slave3.reset, STATE_INSTANTIATED);
+    return (fmi3Status)transition(c, ALIVE, "fmi3Reset", NULL, NULL, STATE_INSTANTIATED);
 }
 
 /* --- stepping ------------------------------------------------------------------- */
@@ -281,14 +240,13 @@ fmi3Status fmi3DoStep(fmi3Instance c, fmi3Float64 time, fmi3Float64 step,
                                     "results; the call was ignored");
         return fmi3Error;
     }
+    (void)no_set_prior;
     *event_handling_needed = *terminate = *early_return = fmi3False;
-    int status = fast_step(in, time, step);
-    if (status >= 0) {
-        /* As pythonfmu3 answers: the step's end when taken, its start when not. */
-        *last_successful_time = status == fmi2OK ? time + step : time;
-        return (fmi3Status)step_status(in, (fmi2Status)status);
-    }
-    return (fmi3Status)step_status(in, (fmi2Status)slave3.do_step(in->slave, time, step, no_set_prior,
-                                                            event_handling_needed, terminate,
-                                                            early_return, last_successful_time));
+    int status = fast_step(in, time, step), ends = 0;
+    if (status < 0)
+        status = slave_do_step(in, time, step, &ends);
+    *terminate = ends != 0;
+    /* As pythonfmu3 answers: the step's end when taken, its start when not. */
+    *last_successful_time = in->last_successful_time;
+    return (fmi3Status)step_status(in, (fmi2Status)status);
 }

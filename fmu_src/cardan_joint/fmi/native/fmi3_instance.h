@@ -1,6 +1,6 @@
-/* One FMI 3.0 instance as the loader sees it, and pythonfmu3's fmi3 entry points.
- * The FMI 3.0 types and prototypes come from the standard's headers, which
- * pythonfmu3 ships (the build adds their folder to the include path). */
+/* One FMI 3.0 instance as the runtime sees it.  The FMI 3.0 types and
+ * prototypes come from the standard's headers, which pythonfmu3 ships (the
+ * build adds their folder to the include path). */
 #ifndef CARDAN_JOINT_FMI3_INSTANCE_H
 #define CARDAN_JOINT_FMI3_INSTANCE_H
 
@@ -36,34 +36,11 @@ struct instance3 {
     const struct variables *variables;
 };
 
-#define SLAVE3_FUNCTIONS(X)                                                                \
-    X(instantiate, fmi3InstantiateCoSimulation) X(free_instance, fmi3FreeInstance)         \
-    X(enter_initialization, fmi3EnterInitializationMode)                                   \
-    X(exit_initialization, fmi3ExitInitializationMode) X(terminate, fmi3Terminate)         \
-    X(reset, fmi3Reset) X(get_float64, fmi3GetFloat64) X(get_int32, fmi3GetInt32)          \
-    X(get_int64, fmi3GetInt64) X(get_uint64, fmi3GetUInt64) X(get_boolean, fmi3GetBoolean) \
-    X(get_string, fmi3GetString) X(set_float64, fmi3SetFloat64) X(set_int32, fmi3SetInt32) \
-    X(set_int64, fmi3SetInt64) X(set_uint64, fmi3SetUInt64) X(set_boolean, fmi3SetBoolean) \
-    X(set_string, fmi3SetString) X(do_step, fmi3DoStep)                                    \
-    X(get_fmu_state, fmi3GetFMUState) X(set_fmu_state, fmi3SetFMUState)                    \
-    X(free_fmu_state, fmi3FreeFMUState)                                                    \
-    X(serialized_size, fmi3SerializedFMUStateSize)                                         \
-    X(serialize, fmi3SerializeFMUState) X(deserialize, fmi3DeserializeFMUState)
-
-struct slave3_api {
-#define MEMBER3(member, symbol) symbol##TYPE *member;
-    SLAVE3_FUNCTIONS(MEMBER3)
-#undef MEMBER3
-};
-extern struct slave3_api slave3;
-
-
 /* Values of `type` for `vr`: known references of that type, as many values as
  * they hold, arrays given; else fmi3Error logged and 0. */
 int values_fit(struct instance3 *in, const char *function, enum value_type type,
                const fmi3ValueReference vr[], size_t nvr, const void *values, size_t n_values,
                int setting);
-void free_instance3(struct instance *in);
 fmi3Status unsupported3(fmi3Instance instance, const char *function, const char *why);
 
 #endif

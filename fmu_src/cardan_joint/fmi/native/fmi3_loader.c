@@ -1,32 +1,21 @@
-/* The FMI 3.0 FMU's binaries/x86_64-linux/<modelIdentifier>.so: makes
- * pythonfmu3's binary, shipped beside it as <modelIdentifier>_pythonfmu3.so,
- * run in any FMI 3.0 host, with the guarantees of the FMI 2.0 loader
- * (loader.c): the Python is found or started at instantiate, the slave always
- * logs to report() (report.c), and every call passes the co-simulation state
- * machine (calls.c, fmi3_calls.c).  Every fmi3 function is defined here or in
- * fmi3_calls.c / fmi3_unsupported.c: none reaches pythonfmu3's aborting stubs. */
+/* The FMI 3.0 FMU's binaries/x86_64-linux/<modelIdentifier>.so, its only
+ * binary: the runtime of the FMI 2.0 FMU (loader.c) for FMI 3.0, which needs no
+ * pythonfmu3 binary.  At instantiate it finds or starts the Python, imports the
+ * slave's script module and constructs the slave (slave_object.c); every call
+ * passes the co-simulation state machine (calls.c, fmi3_calls.c,
+ * fmi3_states.c) and every message the slave logs goes to report() (report.c).
+ * Every fmi3 function is defined here, in fmi3_calls.c, fmi3_states.c or
+ * fmi3_unsupported.c. */
 #define _GNU_SOURCE
 #include "fmi3_instance.h"
 
-#include <dlfcn.h>
+#include <math.h>
 #include <pthread.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
 
-struct slave3_api slave3;
-
-static int resolve_slave3(void *handle, char *error, size_t size)
-{
-#define RESOLVE3(member, symbol)                                                         \
-    if (!(slave3.member = (symbol##TYPE *)dlsym(handle, #symbol))) {                     \
-        snprintf(error, size, "pythonfmu3's binary has no %s", #symbol);                 \
-        return -1;                                                                       \
-    }
-    SLAVE3_FUNCTIONS(RESOLVE3)
-#undef RESOLVE3
-    return 0;
-}
+const char SLAVE_BASE[] = "Fmi3SlaveBase";
 
 /* FMI 3.0 loggers take the message as it is (no printf format). */
 int to_host(const struct instance *in, fmi2Status status, const char *category, const char *text)
@@ -36,12 +25,6 @@ int to_host(const struct instance *in, fmi2Status status, const char *category, 
         return 0;
     in3->log_message(in3->environment, (fmi3Status)status, category, text);
     return 1;
-}
-
-static void from_slave(fmi3InstanceEnvironment environment, fmi3Status status,
-                       fmi3String category, fmi3String message)
-{
-    report(environment, (fmi2Status)status, category, message ? message : "");
 }
 
 const char *where(enum state state)
@@ -112,7 +95,6 @@ fmi3Instance fmi3InstantiateCoSimulation(
     if (read_runtime_record(resources, &record, error, sizeof error) ||
         !(variables = variables_of(resources, error, sizeof error)) ||
         start_python(&record, error, sizeof error) ||
-        load_slave_library("_pythonfmu3.so", resolve_slave3, error, sizeof error) ||
         slave_module_imports(resources, error, sizeof error)) {
         early_message(name, environment, log_message, error);
         return NULL;
@@ -129,39 +111,34 @@ fmi3Instance fmi3InstantiateCoSimulation(
     in->name = copy_of(name);
     in->guid = copy_of(token);
     in->resources_uri = copy_of(location);
+    in->resources = copy_of(resources);
+    in->last_successful_time = NAN;
     in->visible = visible;
     in->logging_on = logging_on;
     const char *echo = getenv(ENV_STDERR);
     in->echo_stderr = echo && *echo && strcmp(echo, "0") != 0;
     in->shared_proxy = is_shared_proxy((void *)log_message);
     in->state = STATE_INSTANTIATED;
-    enter_python_thread();
-    in->slave = slave3.instantiate(in->name, in->guid, in->resources_uri, visible, fmi3True,
-                                   fmi3False, fmi3False, NULL, 0, in, from_slave, NULL);
-    if (!in->slave) {
-        report(in, fmi2Error, NULL, "the slave could not be instantiated: see the message before");
-        free_instance3(in);
+    if (slave_construct(in, resources)) {
+        reportf(in, fmi2Error, "the slave could not be instantiated in %s: see the message "
+                "before", python_in_use());
+        free_instance(in);
         return NULL;
     }
-    fast_attach(in, resources);
+    fast_attach(in);
     if (record_matches_slave(in, resources, error, sizeof error)) {
         report(in, fmi2Error, NULL, error);
-        free_instance3(in);
+        free_instance(in);
         return NULL;
     }
     return in;
-}
-
-void free_instance3(struct instance *in)
-{
-    release_instance(in, slave3.free_instance);
 }
 
 void fmi3FreeInstance(fmi3Instance instance)
 {
     struct instance *in = enter(instance, ANY, "fmi3FreeInstance");
     if (in)
-        free_instance3(in);
+        free_instance(in);
 }
 
 const char *fmi3GetVersion(void) { return fmi3Version; }

@@ -20,6 +20,8 @@
 #include <stdlib.h>
 #include <string.h>
 
+const char SLAVE_BASE[] = "Fmi2Slave";
+
 /* The host's logger takes a printf format: a literal '%' must reach it doubled. */
 int to_host(const struct instance *in, fmi2Status status, const char *category, const char *text)
 {
@@ -114,7 +116,7 @@ fmi2Component fmi2Instantiate(fmi2String name, fmi2Type type, fmi2String guid,
         free_instance(in);
         return NULL;
     }
-    fast_attach(in, resources);
+    fast_attach(in);
     if (record_matches_slave(in, resources, error, sizeof error)) {
         report(in, fmi2Error, NULL, error);
         free_instance(in);

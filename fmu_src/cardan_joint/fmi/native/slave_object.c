@@ -1,26 +1,17 @@
-/* The FMI 2.0 slave's Python object, constructed and called by the runtime
- * itself (no pythonfmu binary): what pythonfmu 0.7.0's export library did, one
- * Python call per fmi2 call.  The slave class is the one class of the script
- * module (resources/slavemodule.txt, imported by slave_module.c) that derives
- * from pythonfmu's Fmi2Slave; it gets pythonfmu's keyword arguments
- * (instance_name, resources, visible).  After every call the slave's log queue
- * goes to report() (slave_drain); a Python exception is fmi2Fatal with
- * pythonfmu's message.  Python is reached as in fast_path.c: no headers,
- * functions looked up in the process's global scope, one ABI for 3.10-3.13. */
-#define _GNU_SOURCE
-#include "slave_python.h"
+/* The slave's Python object, constructed and called by the runtime itself (no
+ * pythonfmu binary), for FMI 2.0 and 3.0: what pythonfmu 0.7.0's and
+ * pythonfmu3 0.3.4's export libraries did, one Python call per FMI call.  The
+ * slave class is the one class of the script module (resources/slavemodule.txt,
+ * imported by slave_module.c) that derives from the FMI version's slave base
+ * (SLAVE_BASE); it gets the keyword arguments both libraries pass
+ * (instance_name, resources, visible; the runtime logs for the slave, so it
+ * passes no logger).  After every call the slave's log queue goes to report()
+ * (slave_drain); a Python exception is Fatal with pythonfmu's message. */
+#include "python_api.h"
 
-#include <dlfcn.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
-
-#define PY_FILE_INPUT 257
-
-#define DECLARE(result, name, parameters) result(*p_##name) parameters;
-OBJECT_FUNCTIONS(DECLARE)
-#undef DECLARE
-PyObject *py_none;
 
 /* The slave class as pythonfmu finds it, constructed as pythonfmu does. */
 static const char CONSTRUCT[] =
@@ -29,31 +20,15 @@ static const char CONSTRUCT[] =
     "    script = sys.modules[file.readline().strip()]\n"
     "classes = [value for value in vars(script).values() if isinstance(value, type)\n"
     "           and value.__module__ == script.__name__\n"
-    "           and any(base.__name__ == 'Fmi2Slave' for base in value.__mro__[1:])]\n"
+    "           and any(b.__name__ == base for b in value.__mro__[1:])]\n"
     "if len(classes) != 1:\n"
     "    raise TypeError(f'{script.__name__} defines {len(classes)} classes deriving from '\n"
-    "                    'Fmi2Slave: it must define one')\n"
+    "                    f'{base}: it must define one')\n"
     "slave = classes[0](instance_name=name, resources=resources, visible=visible)\n";
-
-static int resolve(void)
-{
-    static int resolved = -1;
-    if (resolved >= 0)
-        return resolved;
-#define RESOLVE(result, name, parameters)                                                 \
-    if (!(*(void **)&p_##name = dlsym(RTLD_DEFAULT, #name)))                              \
-        return resolved = 0;
-    OBJECT_FUNCTIONS(RESOLVE)
-#undef RESOLVE
-    py_none = dlsym(RTLD_DEFAULT, "_Py_NoneStruct");
-    return resolved = py_none != NULL;
-}
 
 /* The slave's log queue to the host, as pythonfmu forwards it after its calls. */
 void slave_drain(struct instance *in, PyObject *slave)
 {
-    if (!resolve())
-        return;
     PyObject *queue = p_PyObject_GetAttrString(slave, "log_queue");
     Py_ssize_t n = queue ? p_PyList_Size(queue) : -1;
     for (Py_ssize_t i = 0; i < n; i++) {
@@ -79,8 +54,6 @@ void slave_drain(struct instance *in, PyObject *slave)
     p_PyErr_Clear();
 }
 
-/* With the GIL, after a call whose result is `result` (NULL: it raised): the
- * slave's log, then the exception as pythonfmu reports it. */
 fmi2Status slave_finish(struct instance *in, PyObject *result, const char *what)
 {
     fmi2Status status = fmi2OK;
@@ -103,30 +76,21 @@ fmi2Status slave_finish(struct instance *in, PyObject *result, const char *what)
     return status;
 }
 
-static PyObject *global(PyObject *globals, const char *name, PyObject *value)
-{
-    if (value && p_PyDict_SetItemString(globals, name, value))
-        return NULL;
-    if (value)
-        p_Py_DecRef(value);
-    return value;
-}
-
 /* A new slave object for the instance (at instantiate and reset): 0, else -1
  * and the slave's old object kept. */
 int slave_construct(struct instance *in, const char *resources)
 {
-    if (!resolve()) {
+    if (!python_api()) {
         reportf(in, fmi2Fatal, "the process's Python lacks a function the runtime needs");
         return -1;
     }
     PyGILState_STATE gil = p_PyGILState_Ensure();
     PyObject *globals = p_PyDict_New(), *result = NULL;
-    if (globals && global(globals, "resources", p_PyUnicode_DecodeFSDefault(resources)) &&
-        global(globals, "name", p_PyUnicode_FromString(in->name)) &&
-        global(globals, "visible", p_PyLong_FromLong(in->visible)) &&
-        !p_PyDict_SetItemString(globals, "__builtins__", p_PyEval_GetBuiltins()))
-        result = p_PyRun_String(CONSTRUCT, PY_FILE_INPUT, globals, globals);
+    if (globals && set_global(globals, "resources", p_PyUnicode_DecodeFSDefault(resources)) &&
+        set_global(globals, "name", p_PyUnicode_FromString(in->name)) &&
+        set_global(globals, "visible", p_PyLong_FromLong(in->visible)) &&
+        set_global(globals, "base", p_PyUnicode_FromString(SLAVE_BASE)))
+        result = run_with(CONSTRUCT, globals);
     PyObject *slave = result ? p_PyDict_GetItemString(globals, "slave") : NULL;
     int failed = slave_finish(in, result, "instantiate") != fmi2OK || !slave;
     if (!failed) {
@@ -157,49 +121,85 @@ void slave_release(struct instance *in)
     p_PyGILState_Release(gil);
 }
 
-/* A method without arguments (enter/exit initialization, terminate); setup is
- * setup_experiment with the stored experiment, then enter_initialization_mode,
- * as pythonfmu 0.7.0 calls them. */
+/* With the GIL: a method call's result handed to slave_finish and released. */
+static fmi2Status finished(struct instance *in, PyObject *result, const char *method)
+{
+    fmi2Status status = slave_finish(in, result, method);
+    if (result)
+        p_Py_DecRef(result);
+    return status;
+}
+
+/* A method without arguments (enter/exit initialization, terminate). */
 fmi2Status slave_call(struct instance *in, const char *method)
 {
     PyGILState_STATE gil = p_PyGILState_Ensure();
-    fmi2Status status = fmi2OK;
-    if (strcmp(method, "enter_initialization_mode") == 0) {
-        PyObject *stop = in->stop_defined ? p_PyFloat_FromDouble(in->stop) : py_none;
-        PyObject *tolerance =
-            in->tolerance_defined ? p_PyFloat_FromDouble(in->tolerance) : py_none;
-        PyObject *result = p_PyObject_CallMethod(in->object, "setup_experiment", "(dOO)",
-                                                 in->start, stop, tolerance);
-        if (stop != py_none)
-            p_Py_DecRef(stop);
-        if (tolerance != py_none)
-            p_Py_DecRef(tolerance);
-        status = slave_finish(in, result, "setup_experiment");
-        if (result)
-            p_Py_DecRef(result);
-    }
-    if (status == fmi2OK) {
-        PyObject *result = p_PyObject_CallMethod(in->object, method, NULL);
-        status = slave_finish(in, result, method);
-        if (result)
-            p_Py_DecRef(result);
-    }
+    fmi2Status status = finished(in, p_PyObject_CallMethod(in->object, method, NULL), method);
     p_PyGILState_Release(gil);
     return status;
 }
 
-/* doStep through the slave's do_step: OK, or Discard when it returns false. */
-fmi2Status slave_do_step(struct instance *in, double time, double step)
+/* FMI 2.0: setup_experiment with the stored experiment, which pythonfmu 0.7.0
+ * calls right before enter_initialization_mode. */
+fmi2Status slave_setup_experiment(struct instance *in)
+{
+    PyGILState_STATE gil = p_PyGILState_Ensure();
+    PyObject *stop = in->stop_defined ? p_PyFloat_FromDouble(in->stop) : py_none;
+    PyObject *tolerance = in->tolerance_defined ? p_PyFloat_FromDouble(in->tolerance) : py_none;
+    PyObject *result = p_PyObject_CallMethod(in->object, "setup_experiment", "(dOO)", in->start,
+                                             stop, tolerance);
+    if (stop != py_none)
+        p_Py_DecRef(stop);
+    if (tolerance != py_none)
+        p_Py_DecRef(tolerance);
+    fmi2Status status = finished(in, result, "setup_experiment");
+    p_PyGILState_Release(gil);
+    return status;
+}
+
+/* With the GIL: do_step's answer as pythonfmu3 reads it (a result with a
+ * status and terminateSimulation) or pythonfmu (true: OK, else Discard). */
+static fmi2Status step_answer(PyObject *result, int *terminate)
+{
+    PyObject *status = p_PyObject_GetAttrString(result, "status");
+    long value = status ? p_PyLong_AsLong(status) : (p_PyObject_IsTrue(result) == 1 ? 0 : 2);
+    PyObject *ends = status ? p_PyObject_GetAttrString(result, "terminateSimulation") : NULL;
+    if (terminate)
+        *terminate = ends && p_PyObject_IsTrue(ends) == 1;
+    if (status)
+        p_Py_DecRef(status);
+    if (ends)
+        p_Py_DecRef(ends);
+    p_PyErr_Clear();
+    return value >= 0 && value <= fmi2Fatal ? (fmi2Status)value : fmi2Error;
+}
+
+/* doStep through the slave's do_step; `terminate` (may be NULL) as the slave says. */
+fmi2Status slave_do_step(struct instance *in, double time, double step, int *terminate)
 {
     PyGILState_STATE gil = p_PyGILState_Ensure();
     PyObject *result = p_PyObject_CallMethod(in->object, "do_step", "(dd)", time, step);
-    int taken = result ? p_PyObject_IsTrue(result) : 0;
-    fmi2Status status = slave_finish(in, result, "do_step");
-    if (result)
-        p_Py_DecRef(result);
+    fmi2Status answer = result ? step_answer(result, terminate) : fmi2OK;
+    fmi2Status status = finished(in, result, "do_step");
     p_PyGILState_Release(gil);
-    if (status == fmi2OK && taken != 1)
-        status = fmi2Discard;
+    if (status == fmi2OK)
+        status = answer;
     in->last_successful_time = status == fmi2OK ? time + step : time;
     return status;
+}
+
+/* Whether the slave has left initialization (its `_initialized`, which its FMU
+ * state carries): 1, 0, or -1 when it cannot tell. */
+int slave_initialized(struct instance *in)
+{
+    if (!in->object)
+        return -1;
+    PyGILState_STATE gil = p_PyGILState_Ensure();
+    PyObject *flag = p_PyObject_GetAttrString(in->object, "_initialized");
+    int initialized = flag ? p_PyObject_IsTrue(flag) : -1;
+    if (flag)
+        p_Py_DecRef(flag);
+    p_PyErr_Clear();
+    p_PyGILState_Release(gil);
+    return initialized;
 }

@@ -1,8 +1,9 @@
-/* The FMI 2.0 slave's values and FMU states through its Python methods, as
- * pythonfmu 0.7.0 called them (get_<type>/set_<type> on lists; FMU states are
- * the objects _get_fmu_state returns, one reference each, in bytes through
- * _fmu_state_to_bytes / _fmu_state_from_bytes).  Python as in slave_object.c. */
-#include "slave_python.h"
+/* The slave's values and FMU states through its Python methods, as pythonfmu
+ * 0.7.0 and pythonfmu3 0.3.4 called them (get_<type>/set_<type> on lists: the
+ * value references, and for a setter the values, flattened; FMU states are the
+ * objects _get_fmu_state returns, one reference each, in bytes through
+ * _fmu_state_to_bytes / _fmu_state_from_bytes), FMI 2.0 and 3.0 alike. */
+#include "python_api.h"
 
 #include <string.h>
 
@@ -14,25 +15,26 @@ static PyObject *references(const unsigned vr[], size_t n)
     return list;
 }
 
-/* get_<type>(vrs): its list's items into value (kind 'd', 'i', 'b' or 's'). */
+/* get_<type>(vrs): its list's items into value (kind 'd', 'i', 'b' or 's'), which
+ * holds n_values: a list of another length is refused, never copied. */
 fmi2Status slave_get(struct instance *in, const char *method, char kind, const unsigned vr[],
-                     size_t n, void *value)
+                     size_t n, void *value, size_t n_values)
 {
     PyGILState_STATE gil = p_PyGILState_Ensure();
     PyObject *vrs = references(vr, n);
     PyObject *result = vrs ? p_PyObject_CallMethod(in->object, method, "(O)", vrs) : NULL;
     if (vrs)
         p_Py_DecRef(vrs);
-    Py_ssize_t size = result ? p_PyList_Size(result) : (Py_ssize_t)n; /* -1: no list */
+    Py_ssize_t size = result ? p_PyList_Size(result) : (Py_ssize_t)n_values; /* -1: no list */
     fmi2Status status = slave_finish(in, result, method);
-    if (size != (Py_ssize_t)n) {
-        reportf(in, fmi2Fatal, "the slave's %s gave %zd values (-1: no list) for %zu value "
-                "references", method, size, n);
+    if (size != (Py_ssize_t)n_values) {
+        reportf(in, fmi2Fatal, "the slave's %s gave %zd values (-1: no list) for %zu values "
+                "of %zu value references", method, size, n_values, n);
         p_Py_DecRef(result);
         result = NULL;
         status = fmi2Fatal;
     }
-    for (size_t i = 0; result && i < n; i++) {
+    for (size_t i = 0; result && i < n_values; i++) {
         PyObject *item = p_PyList_GetItem(result, (Py_ssize_t)i);
         if (kind == 'd')
             ((double *)value)[i] = p_PyFloat_AsDouble(item);
@@ -69,11 +71,11 @@ static PyObject *item(char kind, const void *value, size_t i)
 
 /* set_<type>(vrs, values) (kind as for slave_get). */
 fmi2Status slave_set(struct instance *in, const char *method, char kind, const unsigned vr[],
-                     size_t n, const void *value)
+                     size_t n, const void *value, size_t n_values)
 {
     PyGILState_STATE gil = p_PyGILState_Ensure();
-    PyObject *vrs = references(vr, n), *values = p_PyList_New((Py_ssize_t)n);
-    for (size_t i = 0; values && i < n; i++)
+    PyObject *vrs = references(vr, n), *values = p_PyList_New((Py_ssize_t)n_values);
+    for (size_t i = 0; values && i < n_values; i++)
         p_PyList_SetItem(values, (Py_ssize_t)i, item(kind, value, i));
     PyObject *result =
         vrs && values ? p_PyObject_CallMethod(in->object, method, "(OO)", vrs, values) : NULL;

@@ -1,6 +1,7 @@
-/* The FMU states an instance handed out and has not freed, for FMI 2.0 and 3.0:
- * pythonfmu takes a state pointer for a Python object, so a foreign, freed or
- * NULL one must never reach it (fmu_states.c, fmi3_states.c). */
+/* The FMU state calls of FMI 2.0 and 3.0 (fmu_states.c, fmi3_states.c name
+ * them) and the states an instance handed out and has not freed: the runtime
+ * takes a state pointer for the slave's Python object, so a foreign, freed or
+ * NULL one is answered with Error and a message, without reaching Python. */
 #include "instance.h"
 
 #include <stdlib.h>
@@ -41,7 +42,7 @@ fmi2Status drop_state(struct instance *in, fmi2FMUstate *state)
     if (i == (size_t)-1) /* callers check known_state first: never free a foreign state */
         return fmi2Error;
     in->fmu_states[i] = in->fmu_states[--in->n_fmu_states];
-    return free_slave_state(in, state);
+    return slave_free_state(state);
 }
 
 /* A new state goes into *state; one of ours already there is replaced. */
@@ -60,3 +61,81 @@ int prepare_new_state(struct instance *in, fmi2FMUstate *state, const char *func
     return 1;
 }
 
+/* --- the calls, for both FMI versions ---------------------------------------- */
+
+fmi2Status state_get(void *c, fmi2FMUstate *state, const char *function)
+{
+    struct instance *in = enter(c, ALIVE, function);
+    if (!in || !prepare_new_state(in, state, function))
+        return fmi2Error;
+    fast_before(in);
+    fmi2Status status = leave(in, slave_get_state(in, state));
+    if (*state)
+        keep_state(in, *state);
+    return status;
+}
+
+fmi2Status state_set(void *c, fmi2FMUstate state, const char *function)
+{
+    struct instance *in = enter(c, ALIVE, function);
+    if (!in || !known_state(in, state, function))
+        return fmi2Error;
+    fast_before(in);
+    fmi2Status status = leave(in, slave_set_state(in, state));
+    fast_after(in);
+    restore_mode(in, status);
+    return status;
+}
+
+fmi2Status state_free(void *c, fmi2FMUstate *state, const char *function)
+{
+    struct instance *in = enter(c, ANY, function);
+    if (!in)
+        return fmi2Error;
+    if (!state || !*state)
+        return fmi2OK;  /* the standard makes freeing NULL a no-op */
+    if (!known_state(in, *state, function))
+        return fmi2Error;
+    fmi2Status status = leave(in, drop_state(in, state));
+    *state = NULL;
+    return status;
+}
+
+fmi2Status state_size(void *c, fmi2FMUstate state, size_t *size, const char *function)
+{
+    struct instance *in = enter(c, ALIVE, function);
+    if (!in || !known_state(in, state, function) ||
+        !arrays_given(in, function, 1, size, size))
+        return fmi2Error;
+    return leave(in, slave_state_bytes(in, state, NULL, size));
+}
+
+fmi2Status state_serialize(void *c, fmi2FMUstate state, char bytes[], size_t size,
+                           const char *function)
+{
+    struct instance *in = enter(c, ALIVE, function);
+    size_t needed = 0;
+    if (!in || !known_state(in, state, function) ||
+        !arrays_given(in, function, size, bytes, bytes))
+        return fmi2Error;
+    if (slave_state_bytes(in, state, NULL, &needed) != fmi2OK || size < needed) {
+        /* fmi<v>SerializeFMU<s>tate's size function: fmi<v>SerializedFMU<s>tateSize */
+        reportf(in, fmi2Error, "%s got %zu bytes for a state of %zu bytes; ask %.13sd%sSize "
+                "first", function, size, needed, function, function + 13);
+        return fmi2Error;
+    }
+    return leave(in, slave_state_bytes(in, state, bytes, &needed));
+}
+
+fmi2Status state_deserialize(void *c, const char bytes[], size_t size, fmi2FMUstate *state,
+                             const char *function)
+{
+    struct instance *in = enter(c, ALIVE, function);
+    if (!in || !arrays_given(in, function, size, bytes, bytes) ||
+        !prepare_new_state(in, state, function))
+        return fmi2Error;
+    fmi2Status status = leave(in, slave_state_from_bytes(in, bytes, size, state));
+    if (*state)
+        keep_state(in, *state);
+    return status;
+}

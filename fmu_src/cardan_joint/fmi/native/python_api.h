@@ -1,8 +1,10 @@
-/* The Python C API functions the FMI 2.0 slave's calls use (slave_object.c
- * resolves them, slave_values.c shares them): no Python headers, looked up in
- * the process's global scope, one ABI for CPython 3.10-3.13. */
-#ifndef CARDAN_JOINT_SLAVE_PYTHON_H
-#define CARDAN_JOINT_SLAVE_PYTHON_H
+/* The Python C API as the runtime calls it once Python runs in the process:
+ * one table, resolved once (python_api.c) in the process's global scope, with
+ * no Python headers: one ABI for CPython 3.10-3.13.  (Starting Python, before
+ * it is in the global scope, resolves its own few functions from the library:
+ * python_runtime.c, python_start.c.) */
+#ifndef CARDAN_JOINT_PYTHON_API_H
+#define CARDAN_JOINT_PYTHON_API_H
 
 #include "instance.h"
 
@@ -10,11 +12,14 @@
 
 typedef ssize_t Py_ssize_t;
 typedef int PyGILState_STATE; /* an enum in Python.h */
+#define PY_FILE_INPUT 257     /* the same in every CPython 3 */
+#define PYBUF_WRITE 0x200
 
-#define OBJECT_FUNCTIONS(X)                                                                \
+#define PYTHON_FUNCTIONS(X)                                                                \
     X(PyGILState_STATE, PyGILState_Ensure, (void))                                        \
     X(void, PyGILState_Release, (PyGILState_STATE))                                       \
     X(PyObject *, PyObject_CallMethod, (PyObject *, const char *, const char *, ...))     \
+    X(PyObject *, PyObject_CallFunctionObjArgs, (PyObject *, ...))                        \
     X(PyObject *, PyObject_GetAttrString, (PyObject *, const char *))                     \
     X(PyObject *, PyList_New, (Py_ssize_t))                                               \
     X(int, PyList_SetItem, (PyObject *, Py_ssize_t, PyObject *))                          \
@@ -30,6 +35,7 @@ typedef int PyGILState_STATE; /* an enum in Python.h */
     X(PyObject *, PyUnicode_DecodeFSDefault, (const char *))                              \
     X(PyObject *, PyBytes_FromStringAndSize, (const char *, Py_ssize_t))                  \
     X(int, PyBytes_AsStringAndSize, (PyObject *, char **, Py_ssize_t *))                  \
+    X(PyObject *, PyMemoryView_FromMemory, (char *, Py_ssize_t, int))                     \
     X(PyObject *, PyErr_Occurred, (void)) X(void, PyErr_Clear, (void))                    \
     X(void, PyErr_Fetch, (PyObject **, PyObject **, PyObject **))                         \
     X(PyObject *, PyObject_Repr, (PyObject *))                                            \
@@ -40,13 +46,23 @@ typedef int PyGILState_STATE; /* an enum in Python.h */
     X(PyObject *, PyRun_String, (const char *, int, PyObject *, PyObject *))
 
 #define DECLARE(result, name, parameters) extern result(*p_##name) parameters;
-OBJECT_FUNCTIONS(DECLARE)
+PYTHON_FUNCTIONS(DECLARE)
 #undef DECLARE
 extern PyObject *py_none;
 
+/* 1 once every function above (and None) is found, else 0: call it before any. */
+int python_api(void);
+
+/* With the GIL: run `code` with `globals` (a new dict holding __builtins__ and
+ * the caller's names); the result of PyRun_String (NULL: it raised). */
+PyObject *run_with(const char *code, PyObject *globals);
+/* With the GIL: globals[name] = value, the caller's reference to value taken
+ * over; 0 when either is missing or the dict refused it. */
+int set_global(PyObject *globals, const char *name, PyObject *value);
+
 /* With the GIL, after a call into the slave that returned `result` (NULL: it
  * raised): the slave's log to the host, then the exception as pythonfmu
- * reported it (fmi2Fatal). */
+ * reports it (Fatal). */
 fmi2Status slave_finish(struct instance *in, PyObject *result, const char *what);
 
 #endif
