@@ -3,9 +3,11 @@ contradicting the others: instantiate returns NULL, a logger message names the f
 the C host exits normally; under valgrind, no invalid read or write in the FMU's
 code. FMI 2.0 and 3.0."""
 
+import os
 import re
 import shutil
 import subprocess
+import sys
 from pathlib import Path
 
 import pytest
@@ -131,3 +133,61 @@ def test_under_valgrind_no_invalid_access_in_the_fmus_code(
     ]
     assert not ours, ours[0]
     assert "ERROR SUMMARY" in run.stderr
+
+
+# The slave module's class, patched at the end of its file: its getter answers one
+# value too many, and it has no one-call step (so every read reaches the getter).
+WRONG_COUNT = """
+def _one_too_many(getter):
+    return lambda self, vrs: list(getter(self, vrs)) + [0.0]
+
+def _no_layout(cls):
+    raise RuntimeError("no one-call step")
+
+{cls}.{getter} = _one_too_many({cls}.{getter})
+{cls}.fast_layout = classmethod(_no_layout)
+"""
+READ_ONE_OUTPUT = """
+import sys
+from fmpy import read_model_description
+from fmpy.fmi1 import FMICallException
+from fmpy.fmi2 import FMU2Slave
+from fmpy.fmi3 import FMU3Slave
+folder = sys.argv[1]
+description = read_model_description(folder)
+kind = FMU3Slave if description.fmiVersion.startswith("3") else FMU2Slave
+fmu = kind(guid=description.guid, unzipDirectory=folder, instanceName="counted",
+           modelIdentifier=description.coSimulation.modelIdentifier)
+fmu.instantiate()
+vr = next(v.valueReference for v in description.modelVariables if v.name == "output_speed")
+get = fmu.getFloat64 if kind is FMU3Slave else fmu.getReal
+try:
+    print("read", get([vr]))
+except FMICallException as refused:
+    print("refused", refused.status)
+"""
+
+
+@pytest.mark.parametrize("version", [2, 3])
+def test_a_getter_answering_another_count_is_refused_not_copied(request, tmp_path, version):
+    """The runtime copies a getter's values into the host's array only when the
+    slave gave exactly as many as the host asked for (slave_values.c)."""
+    unzipped = request.getfixturevalue("fmi3_unzipped" if version == 3 else "unzipped_fmu")
+    copy = tmp_path / "fmu"
+    shutil.copytree(unzipped, copy)
+    resources = copy / "resources"
+    script = resources / f"{(resources / 'slavemodule.txt').read_text().strip()}.py"
+    cls = re.search(r"^class (\w+)\(", script.read_text(), re.MULTILINE).group(1)
+    getter = "get_float64" if version == 3 else "get_real"
+    script.write_text(script.read_text() + WRONG_COUNT.format(cls=cls, getter=getter))
+    run = subprocess.run(
+        [sys.executable, "-c", READ_ONE_OUTPUT, str(copy)],
+        env={**os.environ, "CARDAN_JOINT_FMU_STDERR": "1"},
+        capture_output=True,
+        text=True,
+        timeout=120,
+    )
+    assert run.returncode == 0, run.stderr
+    # fmi2Fatal / fmi3Fatal (FMPy's FMI 3.0 logger prints on stdout before it)
+    assert run.stdout.splitlines()[-1] == "refused 4", run.stdout + run.stderr
+    assert f"the slave's {getter} gave 2 values (-1: no list) for 1 values" in run.stderr
