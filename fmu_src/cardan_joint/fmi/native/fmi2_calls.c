@@ -12,9 +12,6 @@
 #include <stdlib.h>
 #include <string.h>
 
-/* Reading in the instantiated state is beyond FMI 2.0 but harmless: start values. */
-#define READABLE ALIVE
-#define SETTABLE (STATE_INSTANTIATED | STATE_INITIALIZATION | STATE_STEP_COMPLETE)
 
 const char *where(enum state state)
 {
@@ -40,21 +37,21 @@ const char *fmi2GetVersion(void) { return "2.0"; }
 
 void fmi2FreeInstance(fmi2Component c)
 {
-    struct instance *in = enter(c, ANY, "fmi2FreeInstance");
+    struct instance *in = ENTER(c, fmi2FreeInstance);
     if (in)
         free_instance(in);
 }
 
 fmi2Status fmi2SetDebugLogging(fmi2Component c, fmi2Boolean on, size_t n, const fmi2String categories[])
 {
-    struct instance *in = enter(c, ANY, "fmi2SetDebugLogging");
+    struct instance *in = ENTER(c, fmi2SetDebugLogging);
     return in ? set_debug_logging(in, "fmi2SetDebugLogging", on, n, categories) : fmi2Error;
 }
 
 fmi2Status fmi2SetupExperiment(fmi2Component c, fmi2Boolean tolerance_defined, fmi2Real tolerance,
                                fmi2Real start, fmi2Boolean stop_defined, fmi2Real stop)
 {
-    struct instance *in = enter(c, STATE_INSTANTIATED, "fmi2SetupExperiment");
+    struct instance *in = ENTER(c, fmi2SetupExperiment);
     if (!in)
         return fmi2Error;
     /* Kept for fmi2EnterInitializationMode, which passes it to the slave (as pythonfmu). */
@@ -67,36 +64,36 @@ fmi2Status fmi2SetupExperiment(fmi2Component c, fmi2Boolean tolerance_defined, f
 fmi2Status fmi2EnterInitializationMode(fmi2Component c)
 {
     /* pythonfmu 0.7.0 sets the experiment up first, with fmi2SetupExperiment's values */
-    return transition(c, STATE_INSTANTIATED, "fmi2EnterInitializationMode",
+    return transition(c, CALL(fmi2EnterInitializationMode),
                       slave_setup_experiment, "enter_initialization_mode", STATE_INITIALIZATION);
 }
 
 fmi2Status fmi2ExitInitializationMode(fmi2Component c)
 {
-    return transition(c, STATE_INITIALIZATION, "fmi2ExitInitializationMode", NULL,
+    return transition(c, CALL(fmi2ExitInitializationMode), NULL,
                       "exit_initialization_mode", STATE_STEP_COMPLETE);
 }
 
 fmi2Status fmi2Terminate(fmi2Component c)
 {
-    return transition(c, STATE_STEP_COMPLETE, "fmi2Terminate", NULL, "terminate",
+    return transition(c, CALL(fmi2Terminate), NULL, "terminate",
                       STATE_TERMINATED);
 }
 
 /* Reset makes a fresh Python slave (reset_slave), as pythonfmu's did. */
 fmi2Status fmi2Reset(fmi2Component c)
 {
-    return transition(c, ALIVE, "fmi2Reset", NULL, NULL, STATE_INSTANTIATED);
+    return transition(c, CALL(fmi2Reset), NULL, NULL, STATE_INSTANTIATED);
 }
 
 /* --- values ------------------------------------------------------------------- */
 
-#define VALUES(get_or_set, Type, member, kind, allowed, constness)                             \
+#define VALUES(get_or_set, Type, member, kind, constness)                             \
     fmi2Status fmi2##get_or_set##Type(fmi2Component c, const fmi2ValueReference vr[],   \
                                       size_t n, constness fmi2##Type value[])            \
     {                                                                                    \
         const char *function = "fmi2" #get_or_set #Type;                                 \
-        struct instance *in = enter(c, allowed, function);                               \
+        struct instance *in = ENTER(c, fmi2##get_or_set##Type);                          \
         if (!in || !arrays_given(in, function, n, vr, value))                            \
             return fmi2Error;                                                            \
         fast_before(in);                                                                 \
@@ -106,12 +103,12 @@ fmi2Status fmi2Reset(fmi2Component c)
     }
 #define slave_Get slave_get
 #define slave_Set slave_set
-VALUES(Get, Integer, get_integer, 'i', READABLE, )
-VALUES(Get, Boolean, get_boolean, 'b', READABLE, )
-VALUES(Get, String, get_string, 's', READABLE, )
-VALUES(Set, Integer, set_integer, 'i', SETTABLE, const)
-VALUES(Set, Boolean, set_boolean, 'b', SETTABLE, const)
-VALUES(Set, String, set_string, 's', SETTABLE, const)
+VALUES(Get, Integer, get_integer, 'i', )
+VALUES(Get, Boolean, get_boolean, 'b', )
+VALUES(Get, String, get_string, 's', )
+VALUES(Set, Integer, set_integer, 'i', const)
+VALUES(Set, Boolean, set_boolean, 'b', const)
+VALUES(Set, String, set_string, 's', const)
 
 /* After initialization a fixed parameter stays as it is, even if a restored FMU
  * state makes the slave believe it is not initialized yet. */
@@ -142,7 +139,7 @@ static fmi2Status set_real(struct instance *in, const fmi2ValueReference vr[], s
 fmi2Status fmi2SetReal(fmi2Component c, const fmi2ValueReference vr[], size_t n,
                        const fmi2Real value[])
 {
-    struct instance *in = enter(c, SETTABLE, "fmi2SetReal");
+    struct instance *in = ENTER(c, fmi2SetReal);
     if (!in || !arrays_given(in, "fmi2SetReal", n, vr, value))
         return fmi2Error;
     size_t kept = 0, refused = 0;
@@ -173,7 +170,7 @@ fmi2Status fmi2SetReal(fmi2Component c, const fmi2ValueReference vr[], size_t n,
 
 fmi2Status fmi2GetReal(fmi2Component c, const fmi2ValueReference vr[], size_t n, fmi2Real value[])
 {
-    struct instance *in = enter(c, READABLE, "fmi2GetReal");
+    struct instance *in = ENTER(c, fmi2GetReal);
     if (!in || !arrays_given(in, "fmi2GetReal", n, vr, value))
         return fmi2Error;
     if (fast_serves(in, vr, n, 0))
@@ -188,7 +185,7 @@ fmi2Status fmi2GetReal(fmi2Component c, const fmi2ValueReference vr[], size_t n,
 
 fmi2Status fmi2DoStep(fmi2Component c, fmi2Real time, fmi2Real step, fmi2Boolean no_set_prior)
 {
-    struct instance *in = enter(c, STATE_STEP_COMPLETE, "fmi2DoStep");
+    struct instance *in = ENTER(c, fmi2DoStep);
     if (!in)
         return fmi2Error;
     (void)no_set_prior;
@@ -199,7 +196,7 @@ fmi2Status fmi2DoStep(fmi2Component c, fmi2Real time, fmi2Real step, fmi2Boolean
 
 fmi2Status fmi2GetRealStatus(fmi2Component c, fmi2StatusKind kind, fmi2Real *value)
 {
-    struct instance *in = enter(c, READABLE, "fmi2GetRealStatus");
+    struct instance *in = ENTER(c, fmi2GetRealStatus);
     if (!in || !arrays_given(in, "fmi2GetRealStatus", 1, value, value))
         return fmi2Error;
     if (kind == fmi2LastSuccessfulTime) {
@@ -212,7 +209,7 @@ fmi2Status fmi2GetRealStatus(fmi2Component c, fmi2StatusKind kind, fmi2Real *val
 
 fmi2Status fmi2GetBooleanStatus(fmi2Component c, fmi2StatusKind kind, fmi2Boolean *value)
 {
-    struct instance *in = enter(c, READABLE, "fmi2GetBooleanStatus");
+    struct instance *in = ENTER(c, fmi2GetBooleanStatus);
     if (!in || !arrays_given(in, "fmi2GetBooleanStatus", 1, value, value))
         return fmi2Error;
     if (kind == fmi2Terminated) {

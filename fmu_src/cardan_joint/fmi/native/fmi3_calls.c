@@ -14,9 +14,6 @@
 #include <stdlib.h>
 #include <string.h>
 
-/* Reading before initialization is harmless: start values. */
-#define READABLE ALIVE
-#define SETTABLE (STATE_INSTANTIATED | STATE_INITIALIZATION | STATE_STEP_COMPLETE)
 
 int values_fit(struct instance3 *in3, const char *function, enum value_type type,
                const fmi3ValueReference vr[], size_t nvr, const void *values, size_t n_values,
@@ -96,13 +93,13 @@ static fmi3Status set_all_but_fixed(struct instance3 *in3, const char *function,
 /* The slave's variables are Float64 (record_check.c holds the record to that):
  * an accessor of another type checks its arguments as every accessor does, so
  * any value reference is refused by name and an empty call succeeds. */
-#define NO_VALUES3(get_or_set, Type, allowed, constness)                                     \
+#define NO_VALUES3(get_or_set, Type, constness)                                     \
     fmi3Status fmi3##get_or_set##Type(fmi3Instance c, const fmi3ValueReference vr[],         \
                                       size_t nvr, constness fmi3##Type values[],             \
                                       size_t n_values)                                       \
     {                                                                                        \
         const char *function = "fmi3" #get_or_set #Type;                                     \
-        struct instance *in = enter(c, allowed, function);                                   \
+        struct instance *in = ENTER(c, fmi3##get_or_set##Type);                              \
         if (!in || !values_fit((struct instance3 *)in, function, T_##Type##_ID, vr, nvr,     \
                                values, n_values, 0))                                         \
             return fmi3Error;                                                                \
@@ -113,7 +110,7 @@ static fmi3Status set_all_but_fixed(struct instance3 *in3, const char *function,
         return fmi3Error;                                                                    \
     }
 #define NO_ACCESSORS(Type)                                                                   \
-    NO_VALUES3(Get, Type, READABLE, ) NO_VALUES3(Set, Type, SETTABLE, const)
+    NO_VALUES3(Get, Type, ) NO_VALUES3(Set, Type, const)
 #define T_Float32_ID T_FLOAT32
 #define T_Int8_ID T_INT8
 #define T_UInt8_ID T_UINT8
@@ -143,7 +140,7 @@ NO_ACCESSORS(String)
 fmi3Status fmi3GetFloat64(fmi3Instance c, const fmi3ValueReference vr[], size_t nvr,
                           fmi3Float64 values[], size_t n_values)
 {
-    struct instance *in = enter(c, READABLE, "fmi3GetFloat64");
+    struct instance *in = ENTER(c, fmi3GetFloat64);
     if (!in || !values_fit((struct instance3 *)in, "fmi3GetFloat64", T_FLOAT64, vr, nvr, values,
                            n_values, 0))
         return fmi3Error;
@@ -174,7 +171,7 @@ static fmi3Status set_float64(struct instance *in, const fmi3ValueReference vr[]
 fmi3Status fmi3SetFloat64(fmi3Instance c, const fmi3ValueReference vr[], size_t nvr,
                           const fmi3Float64 values[], size_t n_values)
 {
-    struct instance *in = enter(c, SETTABLE, "fmi3SetFloat64");
+    struct instance *in = ENTER(c, fmi3SetFloat64);
     int fit = in ? values_fit((struct instance3 *)in, "fmi3SetFloat64", T_FLOAT64, vr, nvr,
                               values, n_values, 1)
                  : 0;
@@ -193,7 +190,7 @@ fmi3Status fmi3SetFloat64(fmi3Instance c, const fmi3ValueReference vr[], size_t 
 fmi3Status fmi3SetDebugLogging(fmi3Instance c, fmi3Boolean on, size_t n,
                                const fmi3String categories[])
 {
-    struct instance *in = enter(c, ANY, "fmi3SetDebugLogging");
+    struct instance *in = ENTER(c, fmi3SetDebugLogging);
     return in ? (fmi3Status)set_debug_logging(in, "fmi3SetDebugLogging", on, n, categories)
               : fmi3Error;
 }
@@ -204,25 +201,25 @@ fmi3Status fmi3EnterInitializationMode(fmi3Instance c, fmi3Boolean tolerance_def
 {
     /* pythonfmu3 0.3.4 passes none of these on: the slave's clock starts at 0 */
     (void)tolerance_defined, (void)tolerance, (void)start, (void)stop_defined, (void)stop;
-    return (fmi3Status)transition(c, STATE_INSTANTIATED, "fmi3EnterInitializationMode", NULL,
+    return (fmi3Status)transition(c, CALL(fmi3EnterInitializationMode), NULL,
                                   "enter_initialization_mode", STATE_INITIALIZATION);
 }
 
 fmi3Status fmi3ExitInitializationMode(fmi3Instance c)
 {
-    return (fmi3Status)transition(c, STATE_INITIALIZATION, "fmi3ExitInitializationMode", NULL,
+    return (fmi3Status)transition(c, CALL(fmi3ExitInitializationMode), NULL,
                                   "exit_initialization_mode", STATE_STEP_COMPLETE);
 }
 
 fmi3Status fmi3Terminate(fmi3Instance c)
 {
-    return (fmi3Status)transition(c, STATE_STEP_COMPLETE, "fmi3Terminate", NULL, "terminate",
+    return (fmi3Status)transition(c, CALL(fmi3Terminate), NULL, "terminate",
                                   STATE_TERMINATED);
 }
 
 fmi3Status fmi3Reset(fmi3Instance c)
 {
-    return (fmi3Status)transition(c, ALIVE, "fmi3Reset", NULL, NULL, STATE_INSTANTIATED);
+    return (fmi3Status)transition(c, CALL(fmi3Reset), NULL, NULL, STATE_INSTANTIATED);
 }
 
 /* --- stepping ------------------------------------------------------------------- */
@@ -232,7 +229,7 @@ fmi3Status fmi3DoStep(fmi3Instance c, fmi3Float64 time, fmi3Float64 step,
                       fmi3Boolean *terminate, fmi3Boolean *early_return,
                       fmi3Float64 *last_successful_time)
 {
-    struct instance *in = enter(c, STATE_STEP_COMPLETE, "fmi3DoStep");
+    struct instance *in = ENTER(c, fmi3DoStep);
     if (!in)
         return fmi3Error;
     if (!event_handling_needed || !terminate || !early_return || !last_successful_time) {

@@ -41,6 +41,7 @@ struct instance3 {
 int values_fit(struct instance3 *in, const char *function, enum value_type type,
                const fmi3ValueReference vr[], size_t nvr, const void *values, size_t n_values,
                int setting);
-fmi3Status unsupported3(fmi3Instance instance, const char *function, const char *why);
+fmi3Status unsupported3(fmi3Instance instance, unsigned allowed, const char *function,
+                        const char *why);
 
 #endif

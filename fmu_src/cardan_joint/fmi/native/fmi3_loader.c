@@ -136,7 +136,7 @@ fmi3Instance fmi3InstantiateCoSimulation(
 
 void fmi3FreeInstance(fmi3Instance instance)
 {
-    struct instance *in = enter(instance, ANY, "fmi3FreeInstance");
+    struct instance *in = ENTER(instance, fmi3FreeInstance);
     if (in)
         free_instance(in);
 }

@@ -21,8 +21,7 @@ enum state {
     STATE_FATAL = 16,
 };
 
-#define ALIVE (STATE_INSTANTIATED | STATE_INITIALIZATION | STATE_STEP_COMPLETE | STATE_TERMINATED)
-#define ANY (ALIVE | STATE_FATAL)
+#include "masks.h"
 
 typedef struct _object PyObject;
 
@@ -69,14 +68,15 @@ void keep_state(struct instance *in, fmi2FMUstate state);
 int prepare_new_state(struct instance *in, fmi2FMUstate *state, const char *function);
 fmi2Status drop_state(struct instance *in, fmi2FMUstate *state);
 /* The FMU state calls, each named by its FMI function (state_book.c). */
-fmi2Status state_get(void *c, fmi2FMUstate *state, const char *function);
-fmi2Status state_set(void *c, fmi2FMUstate state, const char *function);
-fmi2Status state_free(void *c, fmi2FMUstate *state, const char *function);
-fmi2Status state_size(void *c, fmi2FMUstate state, size_t *size, const char *function);
+fmi2Status state_get(void *c, fmi2FMUstate *state, unsigned allowed, const char *function);
+fmi2Status state_set(void *c, fmi2FMUstate state, unsigned allowed, const char *function);
+fmi2Status state_free(void *c, fmi2FMUstate *state, unsigned allowed, const char *function);
+fmi2Status state_size(void *c, fmi2FMUstate state, size_t *size, unsigned allowed,
+                      const char *function);
 fmi2Status state_serialize(void *c, fmi2FMUstate state, char bytes[], size_t size,
-                           const char *function);
+                           unsigned allowed, const char *function);
 fmi2Status state_deserialize(void *c, const char bytes[], size_t size, fmi2FMUstate *state,
-                             const char *function);
+                             unsigned allowed, const char *function);
 /* The one-call step (fast_path.c): set up after instantiate (NULL when the slave
  * cannot take it), re-found after reset; fast_before/fast_after go around every
  * other call into the slave; fast_serves says whether fast_set (inputs_only) or

@@ -63,9 +63,9 @@ int prepare_new_state(struct instance *in, fmi2FMUstate *state, const char *func
 
 /* --- the calls, for both FMI versions ---------------------------------------- */
 
-fmi2Status state_get(void *c, fmi2FMUstate *state, const char *function)
+fmi2Status state_get(void *c, fmi2FMUstate *state, unsigned allowed, const char *function)
 {
-    struct instance *in = enter(c, ALIVE, function);
+    struct instance *in = enter(c, allowed, function);
     if (!in || !prepare_new_state(in, state, function))
         return fmi2Error;
     fast_before(in);
@@ -75,9 +75,9 @@ fmi2Status state_get(void *c, fmi2FMUstate *state, const char *function)
     return status;
 }
 
-fmi2Status state_set(void *c, fmi2FMUstate state, const char *function)
+fmi2Status state_set(void *c, fmi2FMUstate state, unsigned allowed, const char *function)
 {
-    struct instance *in = enter(c, ALIVE, function);
+    struct instance *in = enter(c, allowed, function);
     if (!in || !known_state(in, state, function))
         return fmi2Error;
     fast_before(in);
@@ -87,9 +87,9 @@ fmi2Status state_set(void *c, fmi2FMUstate state, const char *function)
     return status;
 }
 
-fmi2Status state_free(void *c, fmi2FMUstate *state, const char *function)
+fmi2Status state_free(void *c, fmi2FMUstate *state, unsigned allowed, const char *function)
 {
-    struct instance *in = enter(c, ANY, function);
+    struct instance *in = enter(c, allowed, function);
     if (!in)
         return fmi2Error;
     if (!state || !*state)
@@ -101,9 +101,10 @@ fmi2Status state_free(void *c, fmi2FMUstate *state, const char *function)
     return status;
 }
 
-fmi2Status state_size(void *c, fmi2FMUstate state, size_t *size, const char *function)
+fmi2Status state_size(void *c, fmi2FMUstate state, size_t *size,
+                      unsigned allowed, const char *function)
 {
-    struct instance *in = enter(c, ALIVE, function);
+    struct instance *in = enter(c, allowed, function);
     if (!in || !known_state(in, state, function) ||
         !arrays_given(in, function, 1, size, size))
         return fmi2Error;
@@ -111,9 +112,9 @@ fmi2Status state_size(void *c, fmi2FMUstate state, size_t *size, const char *fun
 }
 
 fmi2Status state_serialize(void *c, fmi2FMUstate state, char bytes[], size_t size,
-                           const char *function)
+                           unsigned allowed, const char *function)
 {
-    struct instance *in = enter(c, ALIVE, function);
+    struct instance *in = enter(c, allowed, function);
     size_t needed = 0;
     if (!in || !known_state(in, state, function) ||
         !arrays_given(in, function, size, bytes, bytes))
@@ -128,9 +129,9 @@ fmi2Status state_serialize(void *c, fmi2FMUstate state, char bytes[], size_t siz
 }
 
 fmi2Status state_deserialize(void *c, const char bytes[], size_t size, fmi2FMUstate *state,
-                             const char *function)
+                             unsigned allowed, const char *function)
 {
-    struct instance *in = enter(c, ALIVE, function);
+    struct instance *in = enter(c, allowed, function);
     if (!in || !arrays_given(in, function, size, bytes, bytes) ||
         !prepare_new_state(in, state, function))
         return fmi2Error;
