@@ -82,6 +82,44 @@ fmi2Status set_debug_logging(struct instance *in, const char *function, int on, 
     return fmi2OK;
 }
 
+/* What instantiate does alike in both FMI versions, on a zeroed instance that
+ * has its host's callbacks (`logger`: the host's logging function): the
+ * instance's own fields, its slave constructed, the one-call step set up and
+ * the variable record checked against the slave.  The instance, or NULL (the
+ * reason logged, the instance freed). */
+struct instance *start_instance(struct instance *in, const char *name, const char *guid,
+                                const char *location, const char *resources, int visible,
+                                int logging_on, void *logger)
+{
+    char error[2048];
+    in->magic = INSTANCE_MAGIC;
+    in->model = MODEL_IDENTIFIER;
+    in->name = copy_of(name);
+    in->guid = copy_of(guid);
+    in->resources_uri = copy_of(location);
+    in->resources = copy_of(resources);
+    in->last_successful_time = NAN;
+    in->visible = visible;
+    in->logging_on = logging_on;
+    const char *echo = getenv(ENV_STDERR);
+    in->echo_stderr = echo && *echo && strcmp(echo, "0") != 0;
+    in->shared_proxy = is_shared_proxy(logger);
+    in->state = STATE_INSTANTIATED;
+    if (slave_construct(in, resources)) {
+        reportf(in, fmi2Error, "the slave could not be instantiated in %s: see the message "
+                "before", python_in_use());
+        free_instance(in);
+        return NULL;
+    }
+    fast_attach(in);
+    if (record_matches_slave(in, resources, error, sizeof error)) {
+        report(in, fmi2Error, NULL, error);
+        free_instance(in);
+        return NULL;
+    }
+    return in;
+}
+
 /* Reset: a fresh slave object (its constructor, run again), as pythonfmu's and
  * pythonfmu3's reset did; Error (the old slave kept) when it cannot be made. */
 fmi2Status reset_slave(struct instance *in)

@@ -62,7 +62,7 @@ static fmi3Status set_all_but_fixed(struct instance3 *in3, const char *function,
 {
     struct instance *in = &in3->base;
     fmi3ValueReference *kept_vr = malloc(nvr * sizeof *kept_vr);
-    char *kept_values = malloc(n_values * element ? n_values * element : 1);
+    char *kept_values = malloc(n_values ? n_values * element : 1);
     size_t kept = 0, kept_n = 0, at = 0, fixed = 0;
     for (size_t i = 0; i < nvr; i++)
         fixed += find_variable(in3->variables, vr[i])->fixed;

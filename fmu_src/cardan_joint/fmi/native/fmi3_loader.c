@@ -9,7 +9,6 @@
 #define _GNU_SOURCE
 #include "fmi3_instance.h"
 
-#include <math.h>
 #include <pthread.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -106,32 +105,8 @@ fmi3Instance fmi3InstantiateCoSimulation(
     in3->environment = environment;
     in3->log_message = log_message;
     in3->variables = variables;
-    in->magic = INSTANCE_MAGIC;
-    in->model = MODEL_IDENTIFIER;
-    in->name = copy_of(name);
-    in->guid = copy_of(token);
-    in->resources_uri = copy_of(location);
-    in->resources = copy_of(resources);
-    in->last_successful_time = NAN;
-    in->visible = visible;
-    in->logging_on = logging_on;
-    const char *echo = getenv(ENV_STDERR);
-    in->echo_stderr = echo && *echo && strcmp(echo, "0") != 0;
-    in->shared_proxy = is_shared_proxy((void *)log_message);
-    in->state = STATE_INSTANTIATED;
-    if (slave_construct(in, resources)) {
-        reportf(in, fmi2Error, "the slave could not be instantiated in %s: see the message "
-                "before", python_in_use());
-        free_instance(in);
-        return NULL;
-    }
-    fast_attach(in);
-    if (record_matches_slave(in, resources, error, sizeof error)) {
-        report(in, fmi2Error, NULL, error);
-        free_instance(in);
-        return NULL;
-    }
-    return in;
+    return start_instance(in, name, token, location, resources, visible, logging_on,
+                          (void *)log_message);
 }
 
 void fmi3FreeInstance(fmi3Instance instance)

@@ -123,6 +123,10 @@ fmi2Status slave_free_state(fmi2FMUstate *state);
 fmi2Status slave_state_bytes(struct instance *in, fmi2FMUstate state, char *bytes, size_t *size);
 fmi2Status slave_state_from_bytes(struct instance *in, const char *bytes, size_t size,
                                   fmi2FMUstate *state);
+/* Instantiate's shared part (calls.c): the instance, or NULL (freed, logged). */
+struct instance *start_instance(struct instance *in, const char *name, const char *guid,
+                                const char *location, const char *resources, int visible,
+                                int logging_on, void *logger);
 /* Every part of an instance released, the instance freed (calls.c). */
 void free_instance(struct instance *in);
 void report(struct instance *in, fmi2Status status, const char *category, const char *text);
