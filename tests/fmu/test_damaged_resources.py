@@ -135,17 +135,19 @@ def test_under_valgrind_no_invalid_access_in_the_fmus_code(
     assert "ERROR SUMMARY" in run.stderr
 
 
-# The slave module's class, patched at the end of its file: its getter answers one
-# value too many, and it has no one-call step (so every read reaches the getter).
-WRONG_COUNT = """
-def _one_too_many(getter):
-    return lambda self, vrs: list(getter(self, vrs)) + [0.0]
-
+# Patches at the end of the slave module's file, for its class: no one-call step
+# (so every read and write reaches the slave), and a getter with one value too many.
+NO_ONE_CALL_STEP = """
 def _no_layout(cls):
     raise RuntimeError("no one-call step")
 
-{cls}.{getter} = _one_too_many({cls}.{getter})
 {cls}.fast_layout = classmethod(_no_layout)
+"""
+ONE_TOO_MANY = """
+def _one_too_many(getter):
+    return lambda self, vrs: list(getter(self, vrs)) + [0.0]
+
+{cls}.{getter} = _one_too_many({cls}.{getter})
 """
 READ_ONE_OUTPUT = """
 import sys
@@ -153,41 +155,65 @@ from fmpy import read_model_description
 from fmpy.fmi1 import FMICallException
 from fmpy.fmi2 import FMU2Slave
 from fmpy.fmi3 import FMU3Slave
-folder = sys.argv[1]
+folder, getter = sys.argv[1:]
 description = read_model_description(folder)
 kind = FMU3Slave if description.fmiVersion.startswith("3") else FMU2Slave
 fmu = kind(guid=description.guid, unzipDirectory=folder, instanceName="counted",
            modelIdentifier=description.coSimulation.modelIdentifier)
 fmu.instantiate()
 vr = next(v.valueReference for v in description.modelVariables if v.name == "output_speed")
-get = fmu.getFloat64 if kind is FMU3Slave else fmu.getReal
 try:
-    print("read", get([vr]))
+    print("read", getattr(fmu, getter)([vr]))
 except FMICallException as refused:
     print("refused", refused.status)
 """
 
 
-@pytest.mark.parametrize("version", [2, 3])
-def test_a_getter_answering_another_count_is_refused_not_copied(request, tmp_path, version):
-    """The runtime copies a getter's values into the host's array only when the
-    slave gave exactly as many as the host asked for (slave_values.c)."""
+def patched_copy(request, tmp_path, version, *patches, **names) -> Path:
+    """A copy of the FMU whose slave module ends with `patches` (formatted with its
+    class's name and `names`)."""
     unzipped = request.getfixturevalue("fmi3_unzipped" if version == 3 else "unzipped_fmu")
     copy = tmp_path / "fmu"
     shutil.copytree(unzipped, copy)
     resources = copy / "resources"
     script = resources / f"{(resources / 'slavemodule.txt').read_text().strip()}.py"
     cls = re.search(r"^class (\w+)\(", script.read_text(), re.MULTILINE).group(1)
-    getter = "get_float64" if version == 3 else "get_real"
-    script.write_text(script.read_text() + WRONG_COUNT.format(cls=cls, getter=getter))
+    script.write_text(script.read_text() + "".join(p.format(cls=cls, **names) for p in patches))
+    return copy
+
+
+def read_one_output(copy: Path, getter: str) -> tuple:
+    """FMPy's `getter` of output_speed: its last line ("read [...]" or "refused
+    <status>"; FMPy's FMI 3.0 logger prints on stdout before it) and stderr."""
     run = subprocess.run(
-        [sys.executable, "-c", READ_ONE_OUTPUT, str(copy)],
+        [sys.executable, "-c", READ_ONE_OUTPUT, str(copy), getter],
         env={**os.environ, "CARDAN_JOINT_FMU_STDERR": "1"},
         capture_output=True,
         text=True,
         timeout=120,
     )
     assert run.returncode == 0, run.stderr
-    # fmi2Fatal / fmi3Fatal (FMPy's FMI 3.0 logger prints on stdout before it)
-    assert run.stdout.splitlines()[-1] == "refused 4", run.stdout + run.stderr
-    assert f"the slave's {getter} gave 2 values (-1: no list) for 1 values" in run.stderr
+    return run.stdout.splitlines()[-1], run.stderr
+
+
+@pytest.mark.parametrize("version", [2, 3])
+def test_a_getter_answering_another_count_is_refused_not_copied(request, tmp_path, version):
+    """The runtime copies a getter's values into the host's array only when the
+    slave gave exactly as many as the host asked for (slave_values.c)."""
+    getter = "get_float64" if version == 3 else "get_real"
+    copy = patched_copy(request, tmp_path, version, NO_ONE_CALL_STEP, ONE_TOO_MANY, getter=getter)
+    answer, messages = read_one_output(copy, "getFloat64" if version == 3 else "getReal")
+    assert answer == "refused 4"  # fmi2Fatal / fmi3Fatal
+    assert f"the slave's {getter} gave 2 values (-1: no list) for 1 values" in messages
+
+
+def test_a_record_naming_another_type_is_no_way_past_the_float64_slave(request, tmp_path):
+    """FMI 3.0: a variable record that gives a variable another type than the
+    slave's (caught at instantiate when the slave has the one-call step) still
+    reaches no accessor of that type: the call is refused by name (fmi3_calls.c)."""
+    copy = patched_copy(request, tmp_path, 3, NO_ONE_CALL_STEP)
+    record = copy / "resources" / "variables.txt"
+    record.write_text(re.sub(r"Float64( 1 0 output_speed)", r"Int32\1", record.read_text()))
+    answer, messages = read_one_output(copy, "getInt32")
+    assert answer == "refused 3"  # fmi3Error
+    assert "fmi3GetInt32: the slave has Float64 variables only" in messages
