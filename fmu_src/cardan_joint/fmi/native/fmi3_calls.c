@@ -49,43 +49,41 @@ int values_fit(struct instance3 *in3, const char *function, enum value_type type
     return fixed ? 2 : 1;
 }
 
-typedef fmi3Status setter(struct instance *, const fmi3ValueReference[], size_t, const void *,
-                          size_t);
+static fmi3Status set_float64(struct instance *in, const fmi3ValueReference vr[], size_t nvr,
+                              const fmi3Float64 values[], size_t n_values);
 
 /* A batch with fixed parameters in step mode: each fixed one is refused by
  * name, every other value is set (as Reference-FMUs' setters go value by
  * value), and the call answers fmi3Error (docs/fmi-tools.md, "Batch sets").
  * values_fit has checked the references and the count. */
-static fmi3Status set_all_but_fixed(struct instance3 *in3, const char *function,
-                                    const fmi3ValueReference vr[], size_t nvr, const void *values,
-                                    size_t n_values, size_t element, setter *set)
+static fmi3Status set_all_but_fixed(struct instance3 *in3, const fmi3ValueReference vr[],
+                                    size_t nvr, const fmi3Float64 values[], size_t n_values)
 {
     struct instance *in = &in3->base;
     fmi3ValueReference *kept_vr = malloc(nvr * sizeof *kept_vr);
-    char *kept_values = malloc(n_values ? n_values * element : 1);
+    fmi3Float64 *kept_values = malloc((n_values ? n_values : 1) * sizeof *kept_values);
     size_t kept = 0, kept_n = 0, at = 0, fixed = 0;
     for (size_t i = 0; i < nvr; i++)
         fixed += find_variable(in3->variables, vr[i])->fixed;
     if (!kept_vr || !kept_values) {
         free(kept_vr), free(kept_values);
-        reportf(in, fmi2Error, "%s: out of memory; the call was ignored", function);
+        reportf(in, fmi2Error, "fmi3SetFloat64: out of memory; the call was ignored");
         return fmi3Error;
     }
     for (size_t i = 0; i < nvr; i++) {
         const struct variable *v = find_variable(in3->variables, vr[i]);
         if (v->fixed) {
-            reportf(in, fmi2Error, "%s: parameter %s is fixed: it can be set only before "
-                    "fmi3ExitInitializationMode; its value was not set%s", function, v->name,
+            reportf(in, fmi2Error, "fmi3SetFloat64: parameter %s is fixed: it can be set only "
+                    "before fmi3ExitInitializationMode; its value was not set%s", v->name,
                     nvr > fixed ? " (the call's other values were)" : "");
         } else {
             kept_vr[kept++] = vr[i];
-            memcpy(kept_values + kept_n * element, (const char *)values + at * element,
-                   v->size * element);
+            memcpy(kept_values + kept_n, values + at, v->size * sizeof *values);
             kept_n += v->size;
         }
         at += v->size;
     }
-    fmi3Status status = kept ? set(in, kept_vr, kept, kept_values, kept_n) : fmi3OK;
+    fmi3Status status = kept ? set_float64(in, kept_vr, kept, kept_values, kept_n) : fmi3OK;
     free(kept_vr), free(kept_values);
     return status > fmi3Error ? status : fmi3Error;
 }
@@ -155,9 +153,8 @@ fmi3Status fmi3GetFloat64(fmi3Instance c, const fmi3ValueReference vr[], size_t 
 }
 
 static fmi3Status set_float64(struct instance *in, const fmi3ValueReference vr[], size_t nvr,
-                              const void *any_values, size_t n_values)
+                              const fmi3Float64 values[], size_t n_values)
 {
-    const fmi3Float64 *values = any_values;
     if (fast_serves(in, vr, nvr, 1)) {
         fast_set(in, vr, nvr, values);
         return (fmi3Status)leave(in, fmi2OK);
@@ -180,8 +177,7 @@ fmi3Status fmi3SetFloat64(fmi3Instance c, const fmi3ValueReference vr[], size_t 
     if (nvr == 0)
         return fmi3OK;
     if (fit == 2)
-        return set_all_but_fixed((struct instance3 *)in, "fmi3SetFloat64", vr, nvr, values,
-                                 n_values, sizeof *values, set_float64);
+        return set_all_but_fixed((struct instance3 *)in, vr, nvr, values, n_values);
     return set_float64(in, vr, nvr, values, n_values);
 }
 
