@@ -107,7 +107,14 @@ def count_minor(minor, host, joint, floor, lengths) -> dict | None:
     if prefix is None:
         return None
     python, library = venv(prefix), prefix / "lib" / f"libpython3.{minor}.so.1.0"
-    path = {"PYTHONPATH": f"{ROOT}:{ROOT / 'fmu_src'}", "PYTHONHASHSEED": "0"}
+    # One BLAS thread: numpy's OpenBLAS workers spin after a call, and their
+    # instructions (10 k a step in some runs, none in others) are not the loop's.
+    path = {
+        "PYTHONPATH": f"{ROOT}:{ROOT / 'fmu_src'}",
+        "PYTHONHASHSEED": "0",
+        "OPENBLAS_NUM_THREADS": "1",
+        "OMP_NUM_THREADS": "1",
+    }
 
     def in_host(fmu):
         return lambda steps: [host, "bench", fmu, steps]

@@ -23,7 +23,6 @@ import statistics
 import subprocess
 import sys
 import time
-from array import array
 
 from cardan_joint.models.universal_joint import variables as table
 
@@ -86,17 +85,15 @@ def _normal_stepper():
 
 def _fast_stepper():
     slave = _slave()
-    layout = slave.fast_layout()
-    known = memoryview(array("d", [0.0] * layout["known_size"]))
-    outputs = memoryview(array("d", [0.0] * layout["outputs"]))
-    slave.fast_store(known)
     fast_step = slave.fast_step
+    inputs = tuple(TIMING_INPUTS.values())
 
-    # The inputs stay in the buffer, moved by each step as the physics row's
-    # (the loader's setReal writes them in C, at no Python cost).
+    # The loader passes the inputs as a tuple it builds in C (at no Python cost)
+    # and converts the reply in C.
     def run(first, length):
         for step in range(first, first + length):
-            if fast_step(step * STEP_SIZE, STEP_SIZE, known, outputs):
+            reply = fast_step(step * STEP_SIZE, STEP_SIZE, inputs)
+            if reply.__class__ is not tuple:
                 raise RuntimeError("the slave refused a timing step")
 
     return run

@@ -203,22 +203,22 @@ STEP_MUTATIONS = (
     Mutation(
         "one-call step: the inputs a step moved are written back",
         FAST_STEP,
-        "            refs.pack_inputs(known, 0, *inputs)\n",
-        "            pass\n",
+        "return OK, result, moved",
+        "return OK, result, tuple(inputs)",
         (FAST_STEP_TESTS, "-k", "normal_paths"),
     ),
     Mutation(
         "one-call step: held outputs are not kept",
         FAST_STEP,
-        "return self._STATUS.ok if self._outputs is not None else self._STATUS.warning",
-        "return self._STATUS.ok",
+        "return (self._STATUS.warning if held else self._STATUS.ok), outputs",
+        "return self._STATUS.ok, outputs",
         (FAST_STEP_TESTS, "-k", "refused_step or normal_paths"),
     ),
     Mutation(
         "one-call step: a read after an input write checks the inputs",
         FAST_STEP,
-        "known))\n        self._outputs = None\n        self._inputs_checked = False\n",
-        "known))\n        self._outputs = None\n",
+        "set_inputs(inputs)\n        self._outputs = None\n        self._inputs_checked = False\n",
+        "set_inputs(inputs)\n        self._outputs = None\n",
         (FAST_STEP_TESTS, "-k", "normal_paths"),
     ),
 )

@@ -2,39 +2,43 @@
 setReal, doStep and getReal (issue 21). This docstring is the protocol the
 loader's C side follows.
 
-Buffers. Per instance the loader owns two arrays of C doubles, sized and
-indexed by `fast_layout()` (a class method: `References.layout`), and hands
-them to these methods as writable buffers (PyMemoryView_FromMemory with
-PyBUF_WRITE, created once per instance; bytes or doubles format alike: the
-slave reads and writes native-order doubles through struct and keeps no
-reference after a call):
+Values. Per instance the loader owns two arrays of C doubles, sized and indexed
+by `fast_layout()` (a class method: `References.layout`):
 - known[known_size]: flat index i in slot i: inputs (0 to inputs - 1), then
   parameters (inputs to known_size - 1);
 - outputs[outputs]: flat index first_output + k in slot k.
 Flat indices are the FMI 2 value references; an FMI 3 loader maps its value
 references onto them as `slave3._FLAT` does (time and arrays aside).
+Values cross as tuples of floats, in slot order: the loader passes the inputs
+(known[0:inputs]) as a tuple and converts what comes back itself. Packing a
+buffer from Python (struct.pack_into on a memoryview) costs about 1,200
+instructions per call plus 150 per value; PyFloat_AsDouble in C costs a few
+dozen per value (benchmarks, section 7).
 
-Calls (statuses are the FMI version's own IntEnum: ok 0, warning 1, discard 2,
-error 3; each call logs through the slave as any other call does, so the
-loader forwards the log queue after it as after pythonfmu's calls):
-- fast_store(known): writes every input and parameter into known. Call it
-  after instantiation and after every call into the slave that can change
-  them: a setReal forwarded to Python, exitInitializationMode, set or
-  deserialized FMU state, reset.
-- fast_load(known): takes the inputs (not the parameters) from known, as a
+Calls return a status (ok 0, warning 1, discard 2, error 3: the FMI version's
+own IntEnum, or a plain int) or a tuple (status, values, ...) of a status and
+tuples of floats, whose values, in order, the loader writes into its arrays; each call logs through the slave as any other call does, so the
+loader forwards the log queue after it as after pythonfmu's calls:
+- fast_store() -> (ok, known): every input and parameter. Call it after
+  instantiation and after every call into the slave that can change them: a
+  setReal forwarded to Python, exitInitializationMode, set or deserialized FMU
+  state, reset.
+- fast_load(inputs) -> status: takes the inputs (not the parameters), as a
   setReal of every input would. Call it before every other call into the
   slave when an input was written since the last fast_* call (FMU state get,
   a forwarded setReal, terminate...), so the slave sees the host's inputs.
-- fast_step(t, h, known, outputs): takes the inputs, steps; on ok it writes
-  every output and the inputs the step moved (speed, bend angle and rate
-  advance over a step: a later getReal of them, or the next step, reads the
-  moved value). On discard (refused: the slave keeps its state and has logged
-  variable, value, limit and time) or error nothing is written.
-- fast_outputs(known, outputs): takes the inputs and writes every output
-  without stepping. ok: the outputs are current until the next input write
-  or call into the slave; warning: they are held at the last valid inputs and
-  the slave has warned; getReal warns again at every read, so the loader keeps
-  them stale (and answers fmi2OK, as getReal does); error: a fault, logged.
+- fast_step(t, h, inputs) -> (ok, outputs, inputs) | status: takes the
+  inputs, steps; when taken, every output and then the inputs the step moved
+  (speed, bend angle and rate advance over a step: a later getReal of them, or
+  the next step, reads the moved value). On discard (refused: the slave keeps
+  its state and has logged variable, value, limit and time) or error: a bare
+  status, nothing to write.
+- fast_outputs(inputs) -> (ok | warning, outputs) | error: takes the inputs
+  and gives every output without stepping. ok: the outputs are current until
+  the next input write or call into the slave; warning: they are held at the
+  last valid inputs and the slave has warned; getReal warns again at every
+  read, so the loader keeps them stale (and answers fmi2OK, as getReal does);
+  error: a fault, logged.
 
 Slave. The runtime constructs the slave itself (both FMI versions) and uses
 that object; a slave without these methods keeps plain calls.
@@ -53,6 +57,11 @@ from typing import Any
 
 from ..physics.api import Stepped
 from .references import References
+
+# ok in both versions' status enumerations, as a plain int for the taken step:
+# on CPython 3.11 reading the enumeration's member runs its metaclass's
+# attribute hook, a few hundred instructions a step.
+OK = 0
 
 
 class FastStep:
@@ -75,39 +84,38 @@ class FastStep:
         """The buffers' layout, for the loader to size and index its arrays."""
         return cls._refs.layout()
 
-    def fast_load(self, known) -> int:
-        """Take every input from the known buffer, as setReal of all inputs does
-        (parameters are not read: they are set through setReal, see layout)."""
+    def fast_load(self, inputs) -> int:
+        """Take every input, as setReal of all inputs does (parameters are not
+        taken: they are set through setReal, see the layout)."""
         try:
-            self._take_inputs(known)
+            self._take_inputs(inputs)
             return self._STATUS.ok
         except Exception as error:
             self._fault("fast_load", error)
             return self._STATUS.error
 
-    def _take_inputs(self, known) -> None:
-        self._model.set_inputs(self._refs.unpack_inputs(known))
+    def _take_inputs(self, inputs) -> None:
+        self._model.set_inputs(inputs)
         self._outputs = None
         self._inputs_checked = False
 
-    def fast_store(self, known) -> int:
-        """Write the instance's inputs and parameters into the known buffer: at
+    def fast_store(self):
+        """Every input and parameter, for the loader's known array: at
         instantiation and after anything that changes them in Python (a
         parameter set, an FMU state set, a reset)."""
         try:
-            self._refs.pack_known(known, 0, *self._refs.known_of(self._model))
-            return self._STATUS.ok
+            return self._STATUS.ok, self._refs.known_of(self._model)
         except Exception as error:
             self._fault("fast_store", error)
             return self._STATUS.error
 
-    def fast_step(self, current_time, step_size, known, outputs) -> int:
-        """Inputs from `known`, one step, every output into `outputs` when the step
-        is taken (status ok); otherwise the status of the refusal or fault."""
+    def fast_step(self, current_time, step_size, inputs):
+        """The inputs, one step; (ok, every output, the moved inputs) when the
+        step is taken, otherwise the status of the refusal or fault."""
         try:
-            model, refs = self._model, self._refs
+            model = self._model
             # The model's step takes the inputs, steps and evaluates its outputs once.
-            result = model.run(current_time, step_size, refs.unpack_inputs(known))
+            result = model.run(current_time, step_size, inputs)
             if result.__class__ is not tuple:
                 self._outputs = None
                 self._inputs_checked = False
@@ -117,23 +125,22 @@ class FastStep:
             # A taken step moves the inputs that are polynomial over it (the speed,
             # the bend angle and rate): getReal of an input reads the moved value,
             # and the next step starts from it.
-            inputs = self._inputs_held = model.inputs()
-            refs.pack_outputs(outputs, 0, *result)
-            refs.pack_inputs(known, 0, *inputs)
-            return self._STATUS.ok
+            moved = self._inputs_held = model.inputs()
+            return OK, result, moved
         except Exception as error:
             self._fault("fast_step", error)
             return self._STATUS.error
 
-    def fast_outputs(self, known, outputs) -> int:
-        """Inputs from `known`, then every output into `outputs` without stepping
-        (a read after a write of an input: direct feedthrough)."""
+    def fast_outputs(self, inputs):
+        """The inputs, then every output without stepping (a read after a write of
+        an input: direct feedthrough)."""
         try:
-            self._take_inputs(known)
-            self._refs.pack_outputs(outputs, 0, *self._current_outputs())
+            self._take_inputs(inputs)
+            outputs = tuple(self._current_outputs())
             # Held outputs are not cached (`_current_outputs`): the next read
             # re-evaluates and warns again, as getReal does.
-            return self._STATUS.ok if self._outputs is not None else self._STATUS.warning
+            held = self._outputs is None
+            return (self._STATUS.warning if held else self._STATUS.ok), outputs
         except Exception as error:
             self._fault("fast_outputs", error)
             return self._STATUS.error

@@ -3,7 +3,6 @@ parameters, then outputs: the FMI 2 value references) and the log categories
 every FMU of this project declares."""
 
 import math
-import struct
 from operator import attrgetter
 
 
@@ -44,14 +43,8 @@ class References:
         # What FMPy and most masters pass every step: all inputs, all outputs, in order.
         self.all_inputs = list(self.inputs)
         self.all_outputs = list(range(self.first_output, len(self.names)))
-        # The one-call step's buffers (`fast_step`): native-order doubles read and
-        # written through struct, so any writable buffer serves, whatever its
-        # format (a C loader's PyMemoryView_FromMemory gives bytes).
+        # The one-call step's known array (`fast_store`), in slot order.
         self.known_of = _values_of(self.known)
-        inputs = struct.Struct(f"={len(table.INPUTS)}d")
-        self.unpack_inputs, self.pack_inputs = inputs.unpack_from, inputs.pack_into
-        self.pack_known = struct.Struct(f"={len(self.known)}d").pack_into
-        self.pack_outputs = struct.Struct(f"={len(table.OUTPUTS)}d").pack_into
 
     def layout(self) -> dict:
         """The one-call step's buffers (fmi/fast_step.py), by flat index.

@@ -1,8 +1,8 @@
 /* The one-call step (issue 21), for FMI 2.0 and 3.0: the runtime keeps an
  * instance's inputs, parameters and outputs in C arrays, serves Real value
  * reads and input writes from them, and enters Python once per doStep (the
- * slave's fast_step on memoryviews over the arrays).  The protocol, which this
- * file follows, is the docstring of fmi/fast_step.py.  An instance whose
+ * slave's fast_step; values cross as tuples of floats, converted here).  The
+ * protocol, which this file follows, is the docstring of fmi/fast_step.py.  An instance whose
  * slave has no fast_step keeps plain calls (in->fast stays NULL): the
  * benchmarks' plain floor FMU does.  The GIL is taken per call, as pythonfmu
  * does, on the host thread's own thread state. */
@@ -37,15 +37,68 @@ static const char CLAIM[] =
 /* In the order of enum fast_method. */
 static const char *const METHODS[] = {"fast_step", "fast_outputs", "fast_load", "fast_store"};
 
+/* A tuple of the doubles values[0..n), or NULL. */
+static PyObject *tuple_of(const double *values, long n)
+{
+    PyObject *tuple = p_PyTuple_New(n);
+    for (long i = 0; tuple && i < n; i++) {
+        PyObject *item = p_PyFloat_FromDouble(values[i]);
+        if (!item || p_PyTuple_SetItem(tuple, i, item)) {
+            p_Py_DecRef(tuple);
+            tuple = NULL;
+        }
+    }
+    return tuple;
+}
+
+/* Where each method's values go: `first` doubles into the outputs array, then
+ * `second` into the known array (the protocol: fmi/fast_step.py). */
+static void destinations(const struct fast_path *fast, enum fast_method method, long *first,
+                         long *second)
+{
+    *first = method == FAST_STEP || method == FAST_OUTPUTS ? fast->outputs : 0;
+    *second = method == FAST_STEP ? fast->inputs : method == FAST_STORE ? fast->known_size : 0;
+}
+
+/* The status of a reply (a status, or (status, values, ...): tuples of
+ * floats, in order), the values written into the arrays only when every one
+ * of them converts and they are as many as the method gives; -1 otherwise. */
+static long take_reply(struct fast_path *fast, enum fast_method method, PyObject *reply)
+{
+    Py_ssize_t size = p_PyTuple_Size(reply);
+    if (size < 0) {
+        p_PyErr_Clear();
+        return p_PyLong_AsLong(reply);
+    }
+    long first, second, taken = 0;
+    destinations(fast, method, &first, &second);
+    for (Py_ssize_t part = 1; part < size; part++) {
+        PyObject *values = p_PyTuple_GetItem(reply, part);
+        Py_ssize_t count = p_PyTuple_Size(values);
+        if (count < 0 || count > first + second - taken)
+            return -1;
+        for (Py_ssize_t i = 0; i < count; i++, taken++) {
+            fast->scratch[taken] = p_PyFloat_AsDouble(p_PyTuple_GetItem(values, i));
+            if (fast->scratch[taken] == -1.0 && p_PyErr_Occurred())
+                return -1;
+        }
+    }
+    if (size < 2 || taken != first + second)
+        return -1;
+    memcpy(fast->values, fast->scratch, (size_t)first * sizeof(double));
+    memcpy(fast->known, fast->scratch + first, (size_t)second * sizeof(double));
+    return p_PyLong_AsLong(p_PyTuple_GetItem(reply, 0));
+}
+
 /* One call into the slave with the GIL held; its status (an FMI status number). */
 static long call(struct instance *in, enum fast_method method, PyObject *a, PyObject *b,
-                 PyObject *c, PyObject *d)
+                 PyObject *c)
 {
     struct fast_path *fast = in->fast;
-    PyObject *result = p_PyObject_CallFunctionObjArgs(fast->methods[method], a, b, c, d, NULL);
-    long status = result ? p_PyLong_AsLong(result) : -1;
-    if (result)
-        p_Py_DecRef(result);
+    PyObject *reply = p_PyObject_CallFunctionObjArgs(fast->methods[method], a, b, c, NULL);
+    long status = reply ? take_reply(fast, method, reply) : -1;
+    if (reply)
+        p_Py_DecRef(reply);
     int raised = p_PyErr_Occurred() != NULL;
     p_PyErr_Clear();
     slave_drain(in, fast->slave);
@@ -58,8 +111,8 @@ static long call(struct instance *in, enum fast_method method, PyObject *a, PyOb
 
 static void forget(struct fast_path *fast)
 {
-    PyObject **owned[] = {&fast->slave, &fast->views[0], &fast->views[1], &fast->methods[0],
-                          &fast->methods[1], &fast->methods[2], &fast->methods[3]};
+    PyObject **owned[] = {&fast->slave, &fast->methods[0], &fast->methods[1],
+                          &fast->methods[2], &fast->methods[3]};
     for (size_t i = 0; i < sizeof owned / sizeof *owned; i++) {
         if (*owned[i])
             p_Py_DecRef(*owned[i]);
@@ -106,8 +159,8 @@ static int claim(struct instance *in, struct fast_path *fast)
     return found;
 }
 
-/* With the GIL: the claimed slave's methods, the arrays and their views, and
- * the arrays filled (fast_store); 0 if any of it fails. */
+/* With the GIL: the claimed slave's methods, the arrays, and the known array
+ * filled (fast_store); 0 if any of it fails. */
 static int set_up(struct instance *in, struct fast_path *fast)
 {
     if (!claim(in, fast))
@@ -116,23 +169,23 @@ static int set_up(struct instance *in, struct fast_path *fast)
     if (known)
         fast->known = known;
     double *values = known ? realloc(fast->values, fast->outputs * sizeof *values) : NULL;
-    if (!values)
+    if (values)
+        fast->values = values;
+    /* A reply converts here first: a malformed one writes nothing. */
+    double *scratch =
+        values ? realloc(fast->scratch, (fast->outputs + fast->known_size) * sizeof *scratch)
+               : NULL;
+    if (!scratch)
         return 0;
-    fast->values = values;
-    fast->views[0] = p_PyMemoryView_FromMemory((char *)fast->known,
-                                               fast->known_size * (Py_ssize_t)sizeof(double),
-                                               PYBUF_WRITE);
-    fast->views[1] = p_PyMemoryView_FromMemory((char *)fast->values,
-                                               fast->outputs * (Py_ssize_t)sizeof(double),
-                                               PYBUF_WRITE);
+    fast->scratch = scratch;
     for (int m = 0; m < 4; m++)
         fast->methods[m] = p_PyObject_GetAttrString(fast->slave, METHODS[m]);
-    int ok = fast->views[0] && fast->views[1];
+    int ok = 1;
     for (int m = 0; m < 4; m++)
         ok = ok && fast->methods[m];
     p_PyErr_Clear();
     fast->stale = 1, fast->inputs_written = 0;
-    return ok && call(in, FAST_STORE, fast->views[0], NULL, NULL, NULL) == fmi2OK;
+    return ok && call(in, FAST_STORE, NULL, NULL, NULL) == fmi2OK;
 }
 
 static void drop(struct instance *in)
@@ -141,6 +194,7 @@ static void drop(struct instance *in)
     forget(fast);
     free(fast->known);
     free(fast->values);
+    free(fast->scratch);
     free(fast->table);
     free(fast);
     in->fast = NULL;
@@ -172,24 +226,34 @@ static void renew(struct instance *in, int again)
 void fast_detach(struct instance *in) { renew(in, 0); }
 void fast_reset(struct instance *in) { renew(in, 1); }
 
-/* One call into the slave, the GIL taken for it: fast_step(time, step, known,
- * outputs), fast_outputs(known, outputs), fast_load(known) or fast_store(known). */
+/* One call into the slave, the GIL taken for it: fast_step(time, step, inputs),
+ * fast_outputs(inputs), fast_load(inputs) or fast_store(). */
 long fast_call(struct instance *in, enum fast_method method, double time, double step)
 {
     struct fast_path *fast = in->fast;
     PyGILState_STATE gil = p_PyGILState_Ensure();
-    long status;
+    PyObject *inputs = method == FAST_STORE ? NULL : tuple_of(fast->known, fast->inputs);
+    PyObject *t = NULL, *h = NULL;
     if (method == FAST_STEP) {
-        PyObject *t = p_PyFloat_FromDouble(time), *h = p_PyFloat_FromDouble(step);
-        status = t && h ? call(in, method, t, h, fast->views[0], fast->views[1]) : fmi2Error;
-        if (t)
-            p_Py_DecRef(t);
-        if (h)
-            p_Py_DecRef(h);
-    } else {
-        status = call(in, method, fast->views[0], method == FAST_OUTPUTS ? fast->views[1] : NULL,
-                      NULL, NULL);
+        t = p_PyFloat_FromDouble(time);
+        h = p_PyFloat_FromDouble(step);
     }
+    long status;
+    if (method == FAST_STORE)
+        status = call(in, method, NULL, NULL, NULL);
+    else if (!inputs || (method == FAST_STEP && !(t && h))) {
+        reportf(in, fmi2Error, "the slave's %s failed: no memory for its arguments",
+                METHODS[method]);
+        status = fmi2Error;
+    } else if (method == FAST_STEP)
+        status = call(in, method, t, h, inputs);
+    else
+        status = call(in, method, inputs, NULL, NULL);
+    PyObject *owned[] = {inputs, t, h};
+    for (size_t i = 0; i < 3; i++)
+        if (owned[i])
+            p_Py_DecRef(owned[i]);
+    p_PyErr_Clear();
     p_PyGILState_Release(gil);
     return status;
 }

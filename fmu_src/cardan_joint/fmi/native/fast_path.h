@@ -9,11 +9,12 @@
 enum fast_method { FAST_STEP, FAST_OUTPUTS, FAST_LOAD, FAST_STORE };
 
 struct fast_path {
-    PyObject *slave, *views[2], *methods[4];
+    PyObject *slave, *methods[4];
     long inputs, known_size, first_output, outputs;
     int stale;          /* the outputs array is not current */
     int inputs_written; /* the slave has not taken the host's latest inputs yet */
     double *known, *values;
+    double *scratch; /* outputs + known_size: a reply converted before it is written */
     /* FMI 3 (NULL for FMI 2, whose value references are the flat indices):
      * {n, start[0..n], indices...}: value reference vr < n holds the flat
      * indices indices[start[vr]] to indices[start[vr + 1] - 1]. */

@@ -69,6 +69,12 @@ int fast_serves(const struct instance *in, const unsigned vr[], size_t n, int in
     if (!fast)
         return 0;
     long long limit = inputs_only ? fast->inputs : fast->first_output + fast->outputs, own;
+    if (!fast->table) { /* FMI 2: each value reference is its flat index */
+        for (size_t i = 0; i < n; i++)
+            if (vr[i] >= limit)
+                return 0;
+        return 1;
+    }
     for (size_t i = 0; i < n; i++) {
         const long long *indices;
         long long count = flat_of(fast, vr[i], &indices, &own);
@@ -86,7 +92,9 @@ void fast_set(struct instance *in, const unsigned vr[], size_t n, const double v
 {
     struct fast_path *fast = in->fast;
     long long own;
-    for (size_t i = 0; i < n; i++) {
+    for (size_t i = 0; !fast->table && i < n; i++)
+        fast->known[vr[i]] = value[i];
+    for (size_t i = 0; fast->table && i < n; i++) {
         const long long *indices;
         long long count = flat_of(fast, vr[i], &indices, &own);
         for (long long k = 0; k < count; k++)
@@ -106,8 +114,10 @@ fmi2Status fast_get(struct instance *in, const unsigned vr[], size_t n, double v
         /* Held outputs (warning) are evaluated, and warned about, at every read. */
         fast->stale = status != fmi2OK;
     }
-    long long own;
-    for (size_t i = 0; i < n; i++) {
+    long long own, first_output = fast->first_output;
+    for (size_t i = 0; !fast->table && i < n; i++)
+        value[i] = vr[i] < first_output ? fast->known[vr[i]] : fast->values[vr[i] - first_output];
+    for (size_t i = 0; fast->table && i < n; i++) {
         const long long *indices;
         long long count = flat_of(fast, vr[i], &indices, &own);
         for (long long k = 0; k < count; k++)

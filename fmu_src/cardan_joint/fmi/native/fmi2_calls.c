@@ -143,7 +143,9 @@ fmi2Status fmi2SetReal(fmi2Component c, const fmi2ValueReference vr[], size_t n,
     if (!in || !arrays_given(in, "fmi2SetReal", n, vr, value))
         return fmi2Error;
     size_t kept = 0, refused = 0;
-    for (size_t i = 0; in->state == STATE_STEP_COMPLETE && i < n; i++)
+    /* Inputs only (the common call, every step) hold no fixed parameter. */
+    int inputs_only = fast_serves(in, vr, n, 1);
+    for (size_t i = 0; in->state == STATE_STEP_COMPLETE && !inputs_only && i < n; i++)
         refused += fixed_parameter(in, vr[i]) != NULL;
     if (!refused)
         return set_real(in, vr, n, value);

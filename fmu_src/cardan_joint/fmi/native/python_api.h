@@ -20,7 +20,13 @@ typedef int PyGILState_STATE; /* an enum in Python.h */
     X(void, PyGILState_Release, (PyGILState_STATE))                                       \
     X(PyObject *, PyObject_CallMethod, (PyObject *, const char *, const char *, ...))     \
     X(PyObject *, PyObject_CallFunctionObjArgs, (PyObject *, ...))                        \
+    X(PyObject *, PyTuple_New, (Py_ssize_t))                                              \
+    X(int, PyTuple_SetItem, (PyObject *, Py_ssize_t, PyObject *))                         \
+    X(Py_ssize_t, PyTuple_Size, (PyObject *))                                             \
+    X(PyObject *, PyTuple_GetItem, (PyObject *, Py_ssize_t))                              \
     X(PyObject *, PyObject_GetAttrString, (PyObject *, const char *))                     \
+    X(PyObject *, PyObject_GetAttr, (PyObject *, PyObject *))                             \
+    X(PyObject *, PyUnicode_InternFromString, (const char *))                             \
     X(PyObject *, PyList_New, (Py_ssize_t))                                               \
     X(int, PyList_SetItem, (PyObject *, Py_ssize_t, PyObject *))                          \
     X(PyObject *, PyList_GetItem, (PyObject *, Py_ssize_t))                               \
