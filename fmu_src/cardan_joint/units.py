@@ -30,6 +30,16 @@ JOINT_UNITS = {
     )
 }
 
+# The bearing loads' and the catalogue life's units (docs/life.md).
+LIFE_UNITS = {
+    u.name: u
+    for u in (
+        Unit("m", (("m", 1),)),
+        Unit("N", (("kg", 1), ("m", 1), ("s", -2))),
+        Unit("1/h", (("s", -1),), factor=1.0 / 3600.0),
+    )
+}
+
 # Every unit of the driveline's models (the joint's and the spring-damper's).
 DRIVELINE_UNITS = {
     **JOINT_UNITS,
@@ -47,6 +57,7 @@ def table_of(variables) -> VariableTable:
 __all__ = [
     "DRIVELINE_UNITS",
     "JOINT_UNITS",
+    "LIFE_UNITS",
     "table_of",
     "DEG_TO_RAD",
     "RAD_PER_S_TO_RPM",

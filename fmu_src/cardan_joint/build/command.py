@@ -49,6 +49,12 @@ def main(argv=None, prog=None) -> int:
         "3 or 4 (Propshaft3, Propshaft4)",
     )
     parser.add_argument(
+        "--without-life",
+        action="store_true",
+        help="UniversalJoint only: build without the bearing loads and catalogue life "
+        "(UniversalJointNoLife; docs/life.md), e.g. to measure the joint's step without them",
+    )
+    parser.add_argument(
         "--cross-check",
         action="store_true",
         help="also write DEST/cross-check/fmus/2.0/cs/linux64/... with the "
@@ -60,6 +66,10 @@ def main(argv=None, prog=None) -> int:
         if "joints" not in discover()[args.model].default_settings:
             parser.error(f"--joints does not apply to {args.model}")
         settings["joints"] = args.joints
+    if args.without_life:
+        if "life" not in discover()[args.model].default_settings:
+            parser.error(f"--without-life does not apply to {args.model}")
+        settings["life"] = False
     if args.cross_check and (
         args.model != DEFAULT_MODEL
         or args.fmi_version != 2

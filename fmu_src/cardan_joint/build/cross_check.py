@@ -53,8 +53,8 @@ REFERENCE_OUTPUTS = (
     "input_torque",
     "input_yoke_moment",
     "output_yoke_moment",
-    "crosspiece_kinetic_energy",
-    "crosspiece_quaternion_0",
+    "input_bearing_force",
+    "life_consumed",
 )
 
 

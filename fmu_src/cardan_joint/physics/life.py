@@ -19,6 +19,7 @@ Pure Python, standard library only.
 import math
 from typing import NamedTuple
 
+from .life_torque import torque_over_step
 from .quadrature import lobatto_rule, panel_nodes
 
 _RAD_TO_DEG = 180.0 / math.pi
@@ -218,3 +219,27 @@ def compensated_add(total: float, error: float, term: float) -> tuple[float, flo
     else:
         error += (term - new) + total
     return new, error
+
+
+def rule_of(model) -> LifeRule:
+    """The rule from a joint model's parameters (`rated_torque`, `life_*`)."""
+    return LifeRule(
+        model.rated_torque, model.life_constant, model.life_exponent, model.life_min_angle
+    )
+
+
+def step_damage(rule: LifeRule, psi, b, w1, a1, rb, ab, inertia, load, h) -> float:
+    """Miner's damage of a joint over a step of `h` s from input-pin angle `psi`
+    (the joint's inputs held or ramped over the step as it steps them)."""
+    torque_at = torque_over_step(psi, b, w1, a1, rb, ab, inertia, load)
+    return life_increment(torque_at, h, w1, a1, b, rb, ab, inertia, rule)
+
+
+def life_outputs(rule: LifeRule, radius, consumed, torque, input_moment, output_moment,
+                 load, speed, bend) -> tuple[float, float, float, float]:
+    """(input_bearing_force, output_bearing_force, life_rate, life_consumed) now."""
+    return (
+        *bearing_forces(torque, input_moment, output_moment, load, radius),
+        life_rate(torque, speed, bend, rule),
+        consumed,
+    )

@@ -10,6 +10,7 @@ FMU maps its variables onto this object.
 
 from operator import itemgetter
 
+from ...physics.life import compensated_add, life_outputs, rule_of, step_damage
 from ...physics.refusal import Reason, Refusal
 
 # The kernel itself: the FMU's once-per-step call on floats skips the array dispatch.
@@ -29,6 +30,7 @@ def _ranges(names, *excluded):
 # The bend angle's own limit is the max_bend_angle parameter, checked apart.
 _INPUT_RANGES = _ranges(table.INPUTS, "bend_angle")
 _PARAMETER_RANGES = _ranges(table.PARAMETERS, "max_bend_angle")
+_PARAMETER_RANGES_WITHOUT_LIFE = _ranges(table.WITHOUT_LIFE.PARAMETERS, "max_bend_angle")
 # The fast path of `input_problem` checks |x| <= max, so the ranges must be symmetric.
 # (A ranged input it does not name fails tests/test_guards.py, which takes every
 # ranged input from the table.)
@@ -38,7 +40,9 @@ _ACCELERATION_LIMIT = bounds(table.BY_NAME["input_acceleration"])[1]
 _RATE_LIMIT = bounds(table.BY_NAME["bend_angle_rate"])[1]
 _BEND_ACCELERATION_LIMIT = bounds(table.BY_NAME["bend_angle_acceleration"])[1]
 _LOAD_LIMIT = bounds(table.BY_NAME["load_torque"])[1]
-_FROM_RESPONSE = itemgetter(*(JointResponse._fields.index(name) for name in table.OUTPUTS[2:]))
+_FROM_RESPONSE = itemgetter(
+    *(JointResponse._fields.index(name) for name in table.WITHOUT_LIFE.OUTPUTS[2:])
+)
 
 
 class CardanJoint(ShaftModel):
@@ -61,9 +65,21 @@ class CardanJoint(ShaftModel):
     crosspiece_inertia_2: float
     crosspiece_inertia_3: float
     max_bend_angle: float
+    # Bearing and life parameters (build setting `life`, docs/life.md).
+    bearing_radius: float
+    rated_torque: float
+    life_constant: float
+    life_exponent: float
+    life_min_angle: float
 
-    def __init__(self, **values: float) -> None:
-        set_start_values(self, table, values, "joint")
+    def __init__(self, life: bool = True, **values: float) -> None:
+        self.life = life
+        if life:  # Miner's sum, compensated: the model's own state
+            self._STATE = ("life_consumed", "life_consumed_error")
+        else:
+            self.table = table.WITHOUT_LIFE
+            self._parameter_ranges = _PARAMETER_RANGES_WITHOUT_LIFE
+        set_start_values(self, self.table, values, "joint")
         self.start(0.0)
 
     # --- set-up ------------------------------------------------------------
@@ -81,6 +97,9 @@ class CardanJoint(ShaftModel):
         # The phase is reduced to whole turns plus a fraction too, so a large or
         # negative phase costs no precision; its turns enter the quaternion's sign.
         self._phase = split_angle(self.yoke_phase if valid else 0.0)
+        if self.life:
+            self._life_rule = rule_of(self)
+            self.life_consumed = self.life_consumed_error = 0.0
 
     def _non_finite_limit(self, name: str, variable: Variable) -> float:
         # The bend angle's limit is the max_bend_angle parameter, not its table range.
@@ -90,7 +109,7 @@ class CardanJoint(ShaftModel):
 
     def parameter_problem(self) -> Refusal | None:
         """The Refusal that keeps the parameters from running, or None."""
-        problem = self._value_problem(table.PARAMETERS, _PARAMETER_RANGES)
+        problem = self._value_problem(self.table.PARAMETERS, self._parameter_ranges)
         if problem:
             return problem
         return angle_limit_problem(
@@ -120,7 +139,7 @@ class CardanJoint(ShaftModel):
         return self._explain_input_problem(step_size)
 
     def _explain_input_problem(self, step_size: float) -> Refusal | None:
-        problem = self._value_problem(table.INPUTS, _INPUT_RANGES)
+        problem = self._value_problem(self.table.INPUTS, _INPUT_RANGES)
         if problem:
             return problem
         guard = self.max_bend_angle
@@ -167,23 +186,45 @@ class CardanJoint(ShaftModel):
 
     def _advance(self, h: float) -> Refusal | None:
         """The input shaft (`ShaftModel`), then the bend angle, exact for its constant
-        acceleration over the step; a refusal changes nothing."""
+        acceleration over the step, and the life consumed (docs/life.md); a
+        refusal changes nothing."""
+        damage = self._step_damage(h) if self.life else 0.0
         problem = super()._advance(h)
         if problem:
             return problem
         rate, bend_acceleration = self.bend_angle_rate, self.bend_angle_acceleration
         self.bend_angle += h * (rate + 0.5 * bend_acceleration * h)
         self.bend_angle_rate = rate + bend_acceleration * h
+        if damage:
+            self.life_consumed, self.life_consumed_error = compensated_add(
+                self.life_consumed, self.life_consumed_error, damage
+            )
         return None
+
+    def _psi(self) -> float:
+        angle, phase = self._angle, self._phase
+        return angle.fraction + (phase.fraction + (angle.fraction_error + phase.fraction_error))
+
+    def _step_damage(self, h: float) -> float:
+        return step_damage(
+            self._life_rule,
+            self._psi(),
+            self.bend_angle,
+            self.input_speed,
+            self.input_acceleration,
+            self.bend_angle_rate,
+            self.bend_angle_acceleration,
+            (self.crosspiece_inertia_1, self.crosspiece_inertia_2, self.crosspiece_inertia_3),
+            self.load_torque,
+            h,
+        )
 
     # --- outputs -----------------------------------------------------------
 
     def response(self) -> JointResponse:
-        angle, phase = self._angle, self._phase
-        psi = angle.fraction + (phase.fraction + (angle.fraction_error + phase.fraction_error))
-        sign = -1.0 if (angle.turns + phase.turns) & 1 else 1.0
+        sign = -1.0 if (self._angle.turns + self._phase.turns) & 1 else 1.0
         return joint_response_kernel(
-            psi,
+            self._psi(),
             self.bend_angle,
             self.input_speed,
             self.input_acceleration,
@@ -201,4 +242,17 @@ class CardanJoint(ShaftModel):
         r = self.response()
         input_angle = float(self._angle)
         # Two roundings at most: within one ulp of gamma2 however many turns.
-        return (input_angle, input_angle + r[0]) + _FROM_RESPONSE(r)
+        values = (input_angle, input_angle + r[0]) + _FROM_RESPONSE(r)
+        if not self.life:
+            return values
+        return values + life_outputs(
+            self._life_rule,
+            self.bearing_radius,
+            self.life_consumed + self.life_consumed_error,
+            r.input_torque,
+            r.input_yoke_moment,
+            r.output_yoke_moment,
+            self.load_torque,
+            self.input_speed,
+            self.bend_angle,
+        )
