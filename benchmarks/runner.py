@@ -159,7 +159,8 @@ def report(results, sizes, quick, elapsed):
 def run_all(sizes, joint_fmu, workdir):
     fmus = {kind: unzip(build_floor_fmu(workdir, kind), workdir) for kind in FLOORS}
     fmus["joint"] = unzip(joint_fmu or build_joint_fmu(workdir), workdir)
-    cost = step_cost(fmus, sizes)
+    without_life = unzip(build_joint_fmu(workdir / "nolife", life=False), workdir)
+    cost = step_cost(fmus, sizes, without_life)
     return {
         "cost": cost,
         "accuracy": accuracy(fmus["joint"]),

@@ -60,7 +60,7 @@ def damage(case, h, rule):
     kinks += _sign_changes(lambda t: torque(t, case), h)
     kinks += _sign_changes(lambda t: w + a * t, h)
     for level in (rule.min_angle, -rule.min_angle):
-        kinks += _sign_changes(lambda t: b + rb * t + 0.5 * ab * t * t - level, h)
+        kinks += _sign_changes(lambda t, c=b - level: c + rb * t + 0.5 * ab * t * t, h)
     kinks = sorted({k for k in kinks if 0.0 <= k <= h})
     with mpmath.workdps(30):
         total = mpmath.quad(lambda t: rate(float(t), case, rule), kinks, maxdegree=10)

@@ -103,7 +103,9 @@ def test_bearing_forces_equal_an_independent_3d_construction(seed):
     case = _random_case(random.Random(seed))
     radius = 0.02 + 0.01 * seed
     _, out = _joint_at(case, bearing_radius=radius)
-    tau1, tau2 = _yoke_torques(*(case[k] for k in ("psi", "b", "w", "a", "rb", "ab", "inertia", "load")))
+    tau1, tau2 = _yoke_torques(
+        *(case[k] for k in ("psi", "b", "w", "a", "rb", "ab", "inertia", "load"))
+    )
     for name, tau in (("input_bearing_force", tau1), ("output_bearing_force", tau2)):
         expected = math.sqrt(sum(x * x for x in tau)) / (2.0 * radius)
         assert out[name] == pytest.approx(expected, rel=1e-9, abs=1e-9 * abs(case["load"]) / radius)
@@ -133,13 +135,25 @@ QUADRATURE_CASES = [
     # bend ramping through +-3 deg, massless cross
     (dict(w=150.0, a=0.0, b=-0.08, rb=2.0, ab=0.0, inertia=(0.0, 0.0, 0.0), load=300.0), 0.02, 5),
     # bend parabola crossing the floor twice, speed ramp
-    (dict(w=80.0, a=900.0, b=0.06, rb=-3.0, ab=60.0, inertia=(0.01, 0.02, 0.03), load=-250.0), 0.01, 4),
+    (
+        dict(w=80.0, a=900.0, b=0.06, rb=-3.0, ab=60.0, inertia=(0.01, 0.02, 0.03), load=-250.0),
+        0.01,
+        4,
+    ),
     # no load: the inertia torque reverses twice a turn
     (dict(w=220.0, a=0.0, b=0.5, rb=0.0, ab=0.0, inertia=(0.08, 0.04, 0.05), load=0.0), 0.01, 4),
     # load and inertia torque of one size: reversals at a strong bend
-    (dict(w=-140.0, a=0.0, b=0.74, rb=0.0, ab=0.0, inertia=(0.1, 0.04, 0.08), load=-100.0), 0.01, 3),
+    (
+        dict(w=-140.0, a=0.0, b=0.74, rb=0.0, ab=0.0, inertia=(0.1, 0.04, 0.08), load=-100.0),
+        0.01,
+        3,
+    ),
     # speed reversal inside a step under strong acceleration
-    (dict(w=-228.0, a=6040.0, b=0.98, rb=4.0, ab=-44.0, inertia=(0.07, 0.0004, 0.019), load=0.0), 0.05, 1),
+    (
+        dict(w=-228.0, a=6040.0, b=0.98, rb=4.0, ab=-44.0, inertia=(0.07, 0.0004, 0.019), load=0.0),
+        0.05,
+        1,
+    ),
 ]
 
 
@@ -181,7 +195,9 @@ def test_constant_torque_speed_and_angle_consume_t_over_3600_life_hours(inertia)
 
 
 def test_saving_restoring_and_serializing_mid_run_continues_bit_identically():
-    case = dict(psi=0.1, w=120.0, a=30.0, b=0.3, rb=0.1, ab=0.0, inertia=(0.02, 0.03, 0.04), load=80.0)
+    case = dict(
+        psi=0.1, w=120.0, a=30.0, b=0.3, rb=0.1, ab=0.0, inertia=(0.02, 0.03, 0.04), load=80.0
+    )
     joint, _ = _joint_at(case)
     for _ in range(7):
         joint.step(0.01)

@@ -28,6 +28,9 @@ _RAD_S_TO_RPM = 30.0 / math.pi
 _TARGET_DIGITS = 12.0 * math.log(10.0)
 _MAX_NODES = 9
 _INERTIA_REACH = 0.5
+# A step over thousands of turns (far beyond any co-simulation step) is
+# integrated with this many panels at most, then less exactly (docs/life.md).
+_MAX_PANELS = 4096
 # Substitution t = a + L u^q at a torque zero: |T|^p ~ |t - a|^p becomes
 # u^(q (p + 1) - 1), smooth enough for the panel's rule.
 _SMOOTH_POWER = 8.0
@@ -97,10 +100,11 @@ def _nodes_for(a, b, w1, a1, reach):
     panels = 1
     while True:
         ratio = 0.5 * (b - a) / (panels * tau)
-        rho = 1.0 / ratio + math.sqrt(1.0 / (ratio * ratio) + 1.0) if ratio else math.inf
-        points = 2 + math.ceil(0.5 * _TARGET_DIGITS / math.log(rho)) if rho < math.inf else 3
-        if points <= _MAX_NODES:
-            return panels, max(points, 3)
+        # log(rho), rho = 1/ratio + sqrt(1/ratio^2 + 1) the ellipse's parameter.
+        log_rho = math.asinh(1.0 / ratio) if ratio else math.inf
+        points = 2 + math.ceil(0.5 * _TARGET_DIGITS / log_rho) if log_rho < math.inf else 3
+        if points <= _MAX_NODES or panels >= _MAX_PANELS:
+            return panels, min(max(points, 3), _MAX_NODES)
         panels *= 2
 
 
@@ -235,8 +239,9 @@ def step_damage(rule: LifeRule, psi, b, w1, a1, rb, ab, inertia, load, h) -> flo
     return life_increment(torque_at, h, w1, a1, b, rb, ab, inertia, rule)
 
 
-def life_outputs(rule: LifeRule, radius, consumed, torque, input_moment, output_moment,
-                 load, speed, bend) -> tuple[float, float, float, float]:
+def life_outputs(
+    rule: LifeRule, radius, consumed, torque, input_moment, output_moment, load, speed, bend
+) -> tuple[float, float, float, float]:
     """(input_bearing_force, output_bearing_force, life_rate, life_consumed) now."""
     return (
         *bearing_forces(torque, input_moment, output_moment, load, radius),

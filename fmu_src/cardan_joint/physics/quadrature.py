@@ -34,8 +34,10 @@ def lobatto_rule(points: int) -> tuple[tuple[float, ...], tuple[float, ...]]:
                 break
         inner.append(x)
     nodes = (-1.0, *inner, 1.0)
-    weights = tuple(2.0 / (n * (n + 1) * _legendre(n, x)[0] ** 2) if abs(x) < 1 else
-                    2.0 / (n * (n + 1)) for x in nodes)
+    weights = tuple(
+        2.0 / (n * (n + 1) * _legendre(n, x)[0] ** 2) if abs(x) < 1 else 2.0 / (n * (n + 1))
+        for x in nodes
+    )
     return nodes, weights
 
 

@@ -18,7 +18,7 @@ from ...physics.response import JointResponse
 from ...physics.response import _response as joint_response_kernel
 from ...physics.revolutions import split_angle
 from ...physics.stepped import ShaftModel
-from ...physics.values import angle_limit_problem, bounds, set_start_values, value_ranges
+from ...physics.values import Table, angle_limit_problem, bounds, set_start_values, value_ranges
 from ...variable_schema import Variable
 from . import variables as table
 
@@ -46,7 +46,7 @@ _FROM_RESPONSE = itemgetter(
 
 
 class CardanJoint(ShaftModel):
-    table = table
+    table: Table = table
     _input_ranges = _INPUT_RANGES
     _parameter_ranges = _PARAMETER_RANGES
     _speed_limit = _SPEED_LIMIT
@@ -188,13 +188,15 @@ class CardanJoint(ShaftModel):
         """The input shaft (`ShaftModel`), then the bend angle, exact for its constant
         acceleration over the step, and the life consumed (docs/life.md); a
         refusal changes nothing."""
-        damage = self._step_damage(h) if self.life else 0.0
+        # The damage from the step's start values, once the shaft has taken the step.
+        start = self._life_start() if self.life else None
         problem = super()._advance(h)
         if problem:
             return problem
         rate, bend_acceleration = self.bend_angle_rate, self.bend_angle_acceleration
         self.bend_angle += h * (rate + 0.5 * bend_acceleration * h)
         self.bend_angle_rate = rate + bend_acceleration * h
+        damage = step_damage(self._life_rule, *start, h) if start else 0.0
         if damage:
             self.life_consumed, self.life_consumed_error = compensated_add(
                 self.life_consumed, self.life_consumed_error, damage
@@ -205,9 +207,9 @@ class CardanJoint(ShaftModel):
         angle, phase = self._angle, self._phase
         return angle.fraction + (phase.fraction + (angle.fraction_error + phase.fraction_error))
 
-    def _step_damage(self, h: float) -> float:
-        return step_damage(
-            self._life_rule,
+    def _life_start(self) -> tuple:
+        """What the damage of the next step starts from (`life.step_damage`)."""
+        return (
             self._psi(),
             self.bend_angle,
             self.input_speed,
@@ -216,7 +218,6 @@ class CardanJoint(ShaftModel):
             self.bend_angle_acceleration,
             (self.crosspiece_inertia_1, self.crosspiece_inertia_2, self.crosspiece_inertia_3),
             self.load_torque,
-            h,
         )
 
     # --- outputs -----------------------------------------------------------

@@ -17,7 +17,7 @@ MODEL = Model(
     # `life`: the bearing loads and catalogue life (docs/life.md); off measures
     # the joint's step without them.
     default_settings={"life": True},
-    name_for=lambda settings: "UniversalJoint" if settings.get("life", True) else (
-        "UniversalJointNoLife"
+    name_for=lambda settings: (
+        "UniversalJoint" if settings.get("life", True) else ("UniversalJointNoLife")
     ),
 )

@@ -10,8 +10,7 @@ Pure data: no FMI import, so the physics can read its defaults from here.
 
 import math
 
-from ...units import DEG_TO_RAD
-from ...units import JOINT_UNITS, LIFE_UNITS
+from ...units import DEG_TO_RAD, JOINT_UNITS, LIFE_UNITS
 from ...variable_schema import _IN, _OUT, _PAR, Variable, VariableTable, fmi3_groups
 
 # Inputs each output depends on directly (FMI ModelStructure "dependencies").
@@ -33,7 +32,7 @@ HALF_PI = 0.5 * math.pi
 
 # A table, one row per variable: kept as rows rather than one argument per line.
 # fmt: off
-VARIABLES = (
+VARIABLES: tuple[Variable, ...] = (
     # Inputs: polynomial in time over a step (speed with its acceleration, bend
     # angle with its rate and acceleration); the start values run a default demo.
     # Their ranges are physical bounds, generous for any driveline, that keep every
@@ -136,9 +135,12 @@ LIFE_VARIABLES = (
 ARRAY_STEMS = ("crosspiece_angular_velocity", "crosspiece_torque", "crosspiece_quaternion")
 LIFE_NAMES = tuple(v.name for v in LIFE_VARIABLES)
 WITHOUT_LIFE = VariableTable(VARIABLES, JOINT_UNITS, ARRAY_STEMS)
-VARIABLES = tuple(
-    v for v in VARIABLES if v.causality != _OUT
-) + LIFE_VARIABLES[:5] + tuple(v for v in VARIABLES if v.causality == _OUT) + LIFE_VARIABLES[5:]
+VARIABLES = (
+    tuple(v for v in VARIABLES if v.causality != _OUT)
+    + LIFE_VARIABLES[:5]
+    + tuple(v for v in VARIABLES if v.causality == _OUT)
+    + LIFE_VARIABLES[5:]
+)
 
 # This module is the UniversalJoint's table: the same lookups as every VariableTable.
 _TABLE = VariableTable(VARIABLES, {**JOINT_UNITS, **LIFE_UNITS}, ARRAY_STEMS)
