@@ -157,6 +157,22 @@ def _panel(f, a, b, points, zero_at):
     return 0.5 * length * total
 
 
+def _from_samples(f, times, values, panels, points, width):
+    """Lobatto panels summed from the torque already sampled at their nodes
+    (panel ends shared), so a step without a torque zero evaluates it once per node."""
+    _, weights = lobatto_rule(points)
+    per, last = points - 1, len(times) - 1
+    total = 0.0
+    for i, (t, torque) in enumerate(zip(times, values)):
+        k = i % per
+        w = weights[k] if i and i != last else weights[0]
+        if k == 0 and 0 < i < last:
+            w = weights[0] + weights[-1]
+        angle = max(abs(f.b + t * (f.rb + 0.5 * f.ab * t)), f.min_angle)
+        total += w * angle * abs(f.w1 + f.a1 * t) * abs(torque) ** f.p
+    return 0.5 * width * total
+
+
 def _segment(f, a, b, reach, massless):
     """The integral over [a, b], a stretch without kinks of the angle and speed:
     the torque's sign changes located first (each panel's nodes seen), then
@@ -175,6 +191,8 @@ def _segment(f, a, b, reach, massless):
         for t0, t1, v0, v1 in zip(times, times[1:], values, values[1:]):
             if (v0 < 0.0) != (v1 < 0.0) and v0 and v1:
                 cuts.append(_root(f.torque_at, t0, t1, v0, v1))
+        if len(cuts) == 2:  # no sign change: the sampled torques are the rule's nodes
+            return _from_samples(f, times, values, panels, points, (b - a) / panels)
         cuts.sort()
     total = 0.0
     for k, (lo, hi) in enumerate(zip(cuts, cuts[1:])):
