@@ -250,7 +250,7 @@ def rule_of(model) -> LifeRule:
     )
 
 
-def step_damage(rule: LifeRule, psi, b, w1, a1, rb, ab, inertia, load, h) -> float:
+def step_damage(rule: LifeRule, h, psi, b, w1, a1, rb, ab, inertia, load) -> float:
     """Miner's damage of a joint over a step of `h` s from input-pin angle `psi`
     (the joint's inputs held or ramped over the step as it steps them)."""
     torque_at = torque_over_step(psi, b, w1, a1, rb, ab, inertia, load)

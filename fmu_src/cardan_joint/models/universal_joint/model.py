@@ -9,6 +9,7 @@ FMU maps its variables onto this object.
 """
 
 from operator import itemgetter
+from typing import Any
 
 from ...physics.life import compensated_add, life_outputs, rule_of, step_damage
 from ...physics.refusal import Reason, Refusal
@@ -196,7 +197,7 @@ class CardanJoint(ShaftModel):
         rate, bend_acceleration = self.bend_angle_rate, self.bend_angle_acceleration
         self.bend_angle += h * (rate + 0.5 * bend_acceleration * h)
         self.bend_angle_rate = rate + bend_acceleration * h
-        damage = step_damage(self._life_rule, *start, h) if start else 0.0
+        damage = step_damage(self._life_rule, h, *start) if start else 0.0
         if damage:
             self.life_consumed, self.life_consumed_error = compensated_add(
                 self.life_consumed, self.life_consumed_error, damage
@@ -207,7 +208,7 @@ class CardanJoint(ShaftModel):
         angle, phase = self._angle, self._phase
         return angle.fraction + (phase.fraction + (angle.fraction_error + phase.fraction_error))
 
-    def _life_start(self) -> tuple:
+    def _life_start(self) -> tuple[Any, ...]:
         """What the damage of the next step starts from (`life.step_damage`)."""
         return (
             self._psi(),
