@@ -41,6 +41,25 @@ def lobatto_rule(points: int) -> tuple[tuple[float, ...], tuple[float, ...]]:
     return nodes, weights
 
 
+@cache
+def gauss_unit_rule(points: int) -> tuple[tuple[float, float], ...]:
+    """((u, w), ...) of the `points`-point Gauss-Legendre rule on [0, 1] (exact
+    for degree 2 points - 1; weights summing to 1): the one-panel step, which
+    needs no ends."""
+    rule = []
+    for k in range(points):
+        x = math.cos(math.pi * (k + 0.75) / (points + 0.5))  # Tricomi's first guess
+        for _ in range(100):
+            p, dp = _legendre(points, x)
+            step = p / dp
+            x -= step
+            if abs(step) < 1e-17:
+                break
+        p, dp = _legendre(points, x)
+        rule.append((0.5 * (1.0 - x), 1.0 / ((1.0 - x * x) * dp * dp)))
+    return tuple(rule)
+
+
 def panel_nodes(nodes, weights, a, b):
     """(t, w) pairs of a rule's nodes mapped onto [a, b] (ends exact)."""
     half, mid = 0.5 * (b - a), 0.5 * (a + b)
