@@ -136,8 +136,10 @@ def plot(rows, hand_rows, path, blocks=BLOCKS):
         times = rows["time"][rows["block"] == index]
         for axes in (ax, rate):
             axes.axvspan(times[0], times[-1], alpha=0.08 * (index % 2 + 1), color="grey")
-        ax.text(0.5 * (times[0] + times[-1]), 0.02, f"{block[0]} {block[4]:g}°", rotation=90,
-                ha="center", va="bottom", fontsize=8, transform=ax.get_xaxis_transform())  # fmt: skip
+        label = f"{block[0]} {block[4]:g}°"
+        middle = 0.5 * (times[0] + times[-1])
+        ax.text(middle, 0.02, label, rotation=90, ha="center", va="bottom", fontsize=8,
+                transform=ax.get_xaxis_transform())  # fmt: skip
     ax.set_ylabel("damage (Miner's sum, 1 = B10 life)")
     ax.set_title("Joint damage over a duty cycle")
     rate.set_xlabel("time in the cycle (s)")

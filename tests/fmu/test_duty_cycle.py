@@ -25,6 +25,6 @@ def test_at_the_working_angles_the_fluctuation_raises_each_blocks_damage_as_the_
     # Blocks long enough for whole turns to dominate: each block's damage over
     # the hand method's approaches the mean of (cos b / D)^p over a turn.
     rows = example.run(fmu_path, cycle=20.0)
-    for name, fmu, hand, ratio, factor in example.block_table(rows, cycle=20.0):
+    for name, _, _, ratio, factor in example.block_table(rows, cycle=20.0):
         assert ratio == pytest.approx(factor, rel=2e-3), name
     assert rows["life_consumed"][-1] > example.block_sum(cycle=20.0)
