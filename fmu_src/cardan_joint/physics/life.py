@@ -32,6 +32,7 @@ _MAX_NODES = 9
 # larger bound on the ellipse, so more digits asked of the same estimate.
 _GAUSS_DIGITS = 12.0 * math.log(10.0)
 _GAUSS_DIGITS_INERTIA = 14.0 * math.log(10.0)
+_INERTIA_GAUSS_REACH = 1.0
 _MAX_GAUSS = 6
 _INERTIA_REACH = 0.5
 # Below 1 mrad of bend the torque's singularities are practically out of reach.
@@ -273,6 +274,9 @@ def _one_panel(rule: LifeRule, h, psi, b, w1, a1, rb, ab, inertia, load):
     massless = not (inertia[0] or inertia[1] or inertia[2])
     peak = max(abs(b), abs(end))
     reach = math.acosh(1.0 / math.sin(peak)) if peak > 1e-3 else _FLAT_REACH
+    if not massless:
+        # The inertia's torque varies twice a turn even at no bend: its own scale.
+        reach = min(reach, _INERTIA_GAUSS_REACH)
     points = _gauss_points(h, w1, a1, reach, _GAUSS_DIGITS if massless else _GAUSS_DIGITS_INERTIA)
     if not points:
         return None
