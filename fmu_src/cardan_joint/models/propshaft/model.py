@@ -20,7 +20,6 @@ from .fluctuation import equivalent_angle, speed_ratio_fluctuation
 from .geometry import HALF_PI, TWO_PI, Layout, layout
 from .variables import propshaft_table
 
-
 _TUBE_PARTS = ("outer_diameter", "inner_diameter", "length", "youngs_modulus", "density")
 
 
