@@ -148,6 +148,20 @@ QUADRATURE_CASES = [
         0.01,
         3,
     ),
+    # one-panel steps (the common path): a strong ramp near the lock-up's reach,
+    # and the inertia's torque alone at almost no bend (its own scale, not D's)
+    (
+        dict(
+            w=-278.7, a=19373.8, b=0.861, rb=0.0, ab=0.0, inertia=(0.038, 0.039, 0.0004), load=76.4
+        ),
+        1e-4,
+        5,
+    ),
+    (
+        dict(w=180.9, a=0.0, b=0.0013, rb=0.96, ab=0.0, inertia=(0.026, 0.099, 0.0079), load=0.0),
+        1e-3,
+        5,
+    ),
     # speed reversal inside a step under strong acceleration
     (
         dict(w=-228.0, a=6040.0, b=0.98, rb=4.0, ab=-44.0, inertia=(0.07, 0.0004, 0.019), load=0.0),
