@@ -10,7 +10,9 @@ import shutil
 from pathlib import Path
 
 from cardan_joint.fmi.native import install_loader
-from cardan_joint.models.universal_joint import variables as table
+
+# The runtime's joint and its floors: the joint built without life (docs/life.md).
+from cardan_joint.models.universal_joint.variables import WITHOUT_LIFE as table
 
 from .timing import ROOT, run_checked
 

@@ -14,6 +14,7 @@ SUMMARY_ROWS = (
     "| 1. FMU2Slave loop (set 6, doStep, get 20) vs plain floor,",
     "| 1. FMU2Slave loop vs bare floor (stricter),",
     "| 1. `simulate_fmu` (inputs set every step, 20 outputs recorded) vs plain floor,",
+    "| 1. Life on vs off (docs/life.md): the default build vs the joint built `--without-life`,",
     "| 2. FMU output angle error after 1 s,",
     "| 2. RK4 (Tătaru's ODE) angle error ÷ FMU's at 1e-2 s,",
     "| 2. cost per step at 1e-4 s: RK4 in Python vs FMU under `simulate_fmu` |",
