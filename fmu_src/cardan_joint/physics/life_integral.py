@@ -21,7 +21,8 @@ _MAX_NODES = 9
 _INERTIA_REACH = 0.5
 # A step over thousands of turns (far beyond any co-simulation step) is
 # integrated with this many panels at most, then less exactly (docs/life.md).
-_MAX_PANELS = 4096
+_MAX_PANELS = 1024
+_MAX_ZEROS = 256
 # Substitution t = a + L u^q at a torque zero: |T|^p ~ |t - a|^p becomes
 # u^(q (p + 1) - 1), smooth enough for the panel's rule.
 _SMOOTH_POWER = 8.0
@@ -154,11 +155,16 @@ def _segment(f, a, b, reach, massless):
                 times.append(t)
                 values.append(f.torque_at(t))
         times[-1] = b
-        for t0, t1, v0, v1 in zip(times, times[1:], values, values[1:]):
-            if (v0 < 0.0) != (v1 < 0.0) and v0 and v1:
-                cuts.append(_root(f.torque_at, t0, t1, v0, v1))
-        if len(cuts) == 2:  # no sign change: the sampled torques are the rule's nodes
+        changes = [
+            (t0, t1, v0, v1)
+            for t0, t1, v0, v1 in zip(times, times[1:], values, values[1:])
+            if (v0 < 0.0) != (v1 < 0.0) and v0 and v1
+        ]
+        # No sign change, or more than a step of any co-simulation meets (a step
+        # over thousands of turns): the sampled torques are the rule's nodes.
+        if not changes or len(changes) > _MAX_ZEROS:
             return _from_samples(f, times, values, panels, points, (b - a) / panels)
+        cuts += [_root(f.torque_at, *change) for change in changes]
         cuts.sort()
     total = 0.0
     for k, (lo, hi) in enumerate(zip(cuts, cuts[1:])):
