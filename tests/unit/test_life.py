@@ -258,6 +258,9 @@ def test_a_non_positive_radius_or_rated_torque_is_refused_by_name(name, value):
     assert problem is not None and problem.variable == name and problem.value == value
     assert name in problem.message and "parameter" in problem.message
     assert joint.step(1e-3) is not None
+    # Outputs stay readable: the joint's own, and no load or life without a radius or rating.
+    out = dict(zip(joint.table.OUTPUTS, joint.outputs()))
+    assert math.isfinite(out["output_speed"]) and math.isnan(out["life_rate"])
 
 
 def test_without_life_the_joint_gives_the_same_numbers_and_lacks_only_the_life_rows():

@@ -8,6 +8,7 @@ nothing, returning a `Refusal` (variable, value, limit, time, reason code);
 FMU maps its variables onto this object.
 """
 
+import math
 from operator import itemgetter
 from typing import Any
 
@@ -247,6 +248,8 @@ class CardanJoint(ShaftModel):
         values = (input_angle, input_angle + r[0]) + _FROM_RESPONSE(r)
         if not self.life:
             return values
+        if self.parameter_fault:  # a zero radius or rated torque has no load or life
+            return values + (math.nan, math.nan, math.nan, self.life_consumed)
         return values + life_outputs(
             self._life_rule,
             self.bearing_radius,
