@@ -67,7 +67,7 @@ VALUE_MUTATIONS = (
     Mutation(
         "inputs: any bad value (slow path)",
         MODEL,
-        "self._value_problem(table.INPUTS, _INPUT_RANGES)",
+        "self._value_problem(self.table.INPUTS, _INPUT_RANGES)",
         "None",
         (GUARDS, "-k", "input"),
     ),

@@ -29,6 +29,9 @@ class Table(Protocol):
     @property
     def PARAMETERS(self) -> tuple[str, ...]: ...
 
+    @property
+    def OUTPUTS(self) -> tuple[str, ...]: ...
+
     def start_values(self) -> dict[str, float]: ...
 
 

@@ -205,7 +205,7 @@ class CompliantJoint(CompliantDrive):
     max_bend_angle: float
 
     def __init__(self, **values: float) -> None:
-        super().__init__(CardanJoint(), COMPLIANT_JOINT, "compliant joint", **values)
+        super().__init__(CardanJoint(life=False), COMPLIANT_JOINT, "compliant joint", **values)
 
     def _kinematics(self) -> tuple[float, float]:
         r = self.rigid.response()

@@ -15,10 +15,13 @@ from ...physics.stepped import ShaftModel
 from ...physics.values import angle_limit_problem, set_start_values, value_ranges
 from .chain import chain
 from .checks import angle_warnings
+from .critical_speed import critical_speed, critical_speed_warnings
 from .fluctuation import equivalent_angle, speed_ratio_fluctuation
 from .geometry import HALF_PI, TWO_PI, Layout, layout
 from .refusals import PropshaftReason
 from .variables import propshaft_table
+
+_TUBE_PARTS = ("outer_diameter", "inner_diameter", "length", "youngs_modulus", "density")
 
 
 class Propshaft(ShaftModel):
@@ -32,6 +35,7 @@ class Propshaft(ShaftModel):
     crosspiece_inertia_2: float
     crosspiece_inertia_3: float
     max_working_angle: float
+    critical_speed_margin: float
 
     def __init__(self, joints: int = 2, **values: float) -> None:
         self.table = table = propshaft_table(joints)
@@ -69,6 +73,10 @@ class Propshaft(ShaftModel):
             self.crosspiece_inertia_3,
         )
         self.layout = self._geometry()
+        self._critical_speeds = tuple(
+            critical_speed(*(getattr(self, f"shaft_{k}_{part}") for part in _TUBE_PARTS))
+            for k in range(1, self.joints)
+        )
         self.parameter_fault = self._working_angle_problem(self.layout)
         if self.parameter_fault:
             return
@@ -180,6 +188,7 @@ class Propshaft(ShaftModel):
             state.input_torque,
             state.kinetic_energy,
             *self._geometry_outputs(),
+            *(abs(w) / c for w, c in zip(state.speeds, self._critical_speeds)),
         )
 
     def _geometry_outputs(self) -> tuple:
@@ -196,4 +205,8 @@ class Propshaft(ShaftModel):
         """The industry's angle checks at the current input speed (never refusals)."""
         if self.parameter_fault:
             return ()
-        return angle_warnings(self.layout.working_angles, self.fluctuation(), self.input_speed)[0]
+        angles = angle_warnings(self.layout.working_angles, self.fluctuation(), self.input_speed)[0]
+        # The shafts' mean speed is the input's: the critical-speed check at it.
+        return angles + critical_speed_warnings(
+            self._critical_speeds, self.input_speed, self.critical_speed_margin
+        )

@@ -8,7 +8,7 @@ Pure data: no FMI import.
 from dataclasses import replace
 from functools import cache
 
-from ...units import DEG_TO_RAD
+from ...units import DEG_TO_RAD, JOINT_UNITS, TUBE_UNITS
 from ...variable_schema import _OUT, _PAR, Variable, VariableTable
 from ..universal_joint import variables as joint
 from ..universal_joint.variables import HALF_PI
@@ -223,4 +223,50 @@ def propshaft_table(joints: int = 2) -> VariableTable:
             HALF_PI,
         ),
     ]
-    return VariableTable(inputs + parameters + _outputs(joints), joint.UNITS)
+    parameters += _tubes(joints)
+    outputs = _outputs(joints) + [
+        Variable(
+            f"shaft_{k}_critical_speed_ratio",
+            _OUT,
+            "1",
+            f"Speed of intermediate shaft {k} over its tube's first bending critical speed "
+            "(pinned-pinned)",
+            min=0.0,
+            depends_on=_SPEED,
+        )
+        for k in range(1, joints)
+    ]
+    return VariableTable(inputs + parameters + outputs, {**JOINT_UNITS, **TUBE_UNITS})
+
+
+# (name, unit, description, default, min, max) of each intermediate shaft's tube:
+# a steel tube 76.2 x 2.1 mm, 1.4 m long.
+_TUBE = (
+    ("outer_diameter", "m", "tube outer diameter D", 0.0762, 1e-4, 10.0),
+    ("inner_diameter", "m", "tube inner diameter d (0: solid)", 0.072, 0.0, 10.0),
+    ("length", "m", "tube length L between the joints' centres", 1.4, 1e-3, 100.0),
+    ("youngs_modulus", "Pa", "tube Young's modulus E", 2.1e11, 1e6, 1e13),
+    ("density", "kg/m3", "tube density rho", 7850.0, 1.0, 1e5),
+)
+
+
+def _tubes(joints):
+    rows = [
+        Variable(
+            f"shaft_{k}_{name}",
+            _PAR,
+            unit,
+            f"Intermediate shaft {k}: {text}",
+            start,
+            None,
+            low,
+            high,
+        )  # fmt: skip
+        for k in range(1, joints)
+        for name, unit, text, start, low, high in _TUBE
+    ]
+    rows.append(
+        Variable("critical_speed_margin", _PAR, "1", "Largest shaft speed over critical speed "
+                 "without a warning (the shop rule's margin)", 0.75, None, 0.0, 1.0)
+    )  # fmt: skip
+    return rows
