@@ -31,15 +31,16 @@ def floor_config(kind: str) -> dict:
     return {"value_access": kind, "variables": variables}
 
 
-def build_floor_fmu(dest, kind: str) -> Path:
+def build_floor_fmu(dest, kind: str, loader: bool = True) -> Path:
     """Build the `kind` floor FMU into `dest` ("plain" or "bare"); return its path.
+    Without `loader`, the FMU is pythonfmu's alone (its C++ binary, no project code).
 
     Each kind gets its own folder (both FMUs are named Floor.fmu) and its own
     module name, derived from the script and its configuration.
     """
     config = json.dumps(floor_config(kind), indent=1)
     digest = hashlib.sha256(SLAVE.read_bytes() + config.encode()).hexdigest()[:12]
-    folder = Path(dest).resolve() / f"floor_{kind}"
+    folder = Path(dest).resolve() / f"floor_{kind}{'' if loader else '_pythonfmu'}"
     staging = folder / "staging"
     staging.mkdir(parents=True, exist_ok=True)
     script = staging / f"benchmark_floor_{kind}_{digest}.py"
@@ -59,10 +60,11 @@ def build_floor_fmu(dest, kind: str) -> Path:
         ],
         cwd=staging,
     )
-    # The joint's build puts the native loader in front of pythonfmu's binary:
+    # The joint's build replaces pythonfmu's binary by the project's runtime:
     # the floor gets the same, so that the ratio measures the joint alone.
     fmu = folder / "Floor.fmu"
-    install_loader(fmu, "Floor")
+    if loader:
+        install_loader(fmu, "Floor")
     return fmu
 
 

@@ -11,7 +11,9 @@ Measures, each in its module, and writes benchmarks/results.md:
 4. `growth`: per-step cost and memory as the run grows;
 5. `c_host`: the same step in a C host against FMPy's loop;
 6. `one_call`: the joint against the plain floor in each host (issue 21's
-   goals) and the joint's Python alone (physics, slave, one-call step).
+   goals) and the joint's Python alone (physics, slave, one-call step);
+7. `instructions`: instructions per step (callgrind) of the joint against
+   pythonfmu's own plain floor and against its Python step, on CPython 3.10-3.13.
 
 Not part of the test run: tests/system/test_benchmarks_smoke.py only checks that
 `--quick` writes the tables.
@@ -33,6 +35,7 @@ from .accuracy import accuracy, accuracy_rows, accuracy_table, worker_accuracy
 from .c_host import c_host_cost, c_host_rows
 from .floor import FLOORS, build_floor_fmu, build_joint_fmu, unzip
 from .growth import growth, growth_rows, growth_table, worker_tracemalloc
+from .instructions import MINORS, instruction_rows, instructions, worker_instructions
 from .one_call import one_call_rows, python_step, worker_python_step, worker_python_steps
 from .step_cost import (
     LOOP_CHUNK,
@@ -60,6 +63,8 @@ class Sizes:
     memory_steps: tuple  # run lengths traced by tracemalloc
     vector_samples: int
     scalar_samples: int
+    instruction_steps: tuple  # the two run lengths whose difference callgrind counts
+    instruction_minors: tuple  # CPython 3.<minor> counted
 
 
 FULL = Sizes(
@@ -70,6 +75,8 @@ FULL = Sizes(
     memory_steps=(1_000, 100_000),
     vector_samples=1_000_000,
     scalar_samples=100_000,
+    instruction_steps=(100, 600),
+    instruction_minors=MINORS,
 )
 QUICK = Sizes(
     runs=1,
@@ -79,6 +86,8 @@ QUICK = Sizes(
     memory_steps=(10, 100),
     vector_samples=2_000,
     scalar_samples=200,
+    instruction_steps=(1, 3),
+    instruction_minors=(sys.version_info.minor,),
 )
 
 # What `python -m benchmarks --worker REQUEST` runs (timing.in_fresh_process).
@@ -92,6 +101,7 @@ WORKERS = {
     "trigonometry": worker_trigonometry,
     "python_step": worker_python_step,
     "python_steps": worker_python_steps,
+    "instructions": worker_instructions,
 }
 
 
@@ -114,6 +124,7 @@ def summary_table(results, sizes):
             *growth_rows(results["growth"]),
             *c_host_rows(results["c_host"], sizes),
             *one_call_rows(results["python"], results["cost"], results["c_host"], sizes),
+            *instruction_rows(results["instructions"], sizes),
         ]
     )
 
@@ -173,6 +184,12 @@ def run_all(sizes, joint_fmu, workdir):
         "growth": growth(fmus, sizes, cost),
         "c_host": c_host_cost(fmus, sizes, workdir),
         "python": python_step(sizes),
+        "instructions": instructions(
+            fmus["joint"],
+            unzip(build_floor_fmu(workdir, "plain", loader=False), workdir),
+            workdir,
+            sizes,
+        ),
     }
 
 

@@ -217,8 +217,8 @@ STEP_MUTATIONS = (
     Mutation(
         "one-call step: a read after an input write checks the inputs",
         FAST_STEP,
-        "        self._outputs = None\n        self._inputs_checked = False\n",
-        "        self._outputs = None\n",
+        "known))\n        self._outputs = None\n        self._inputs_checked = False\n",
+        "known))\n        self._outputs = None\n",
         (FAST_STEP_TESTS, "-k", "normal_paths"),
     ),
 )

@@ -11,36 +11,45 @@ NATIVE = HERE.parents[1] / "fmu_src" / "cardan_joint" / "fmi" / "native"
 FMI3_HOST = sorted(HERE.glob("*3.c"))  # host3.c, fuzz3.c, threads3.c
 
 
-def _compile(output: Path, include: Path, sources: list) -> Path:
-    subprocess.run(
-        [
-            *compiler(),
-            "-std=gnu11",
-            "-O2",
-            "-pthread",
-            f"-I{include}",
-            *map(str, sources),
-            "-ldl",
-            "-lm",
-            "-o",
-            str(output),
-        ],
-        check=True,
-    )
-    return output
+def host_files(fmi3: bool = False) -> tuple:
+    """(the header folder, the C sources) of the FMI 2.0 or the FMI 3.0 host."""
+    if fmi3:
+        return fmi3_headers(), FMI3_HOST
+    return NATIVE, [c for c in sorted(HERE.glob("*.c")) if c not in FMI3_HOST]
+
+
+def compile_command(output, include, sources, cc=None) -> list:
+    """The command line compiling a host; `cc` (default: the machine's compiler) and
+    the paths may be another machine's (tests/system compile in a Debian root)."""
+    return [
+        *(cc or compiler()),
+        "-std=gnu11",
+        "-O2",
+        "-pthread",
+        f"-I{include}",
+        *map(str, sources),
+        "-ldl",
+        "-lm",
+        "-o",
+        str(output),
+    ]
 
 
 def compile_host(output: Path) -> Path:
-    return _compile(output, NATIVE, [c for c in sorted(HERE.glob("*.c")) if c not in FMI3_HOST])
+    subprocess.run(compile_command(output, *host_files()), check=True)
+    return output
 
 
 def compile_host3(output: Path) -> Path:
-    return _compile(output, fmi3_headers(), FMI3_HOST)
+    subprocess.run(compile_command(output, *host_files(fmi3=True)), check=True)
+    return output
 
 
 def compile_concurrent(output: Path) -> Path:
     """concurrent/concurrent.c: several FMUs (FMI 2.0 and 3.0) started from threads at once."""
-    return _compile(output, NATIVE, [HERE / "concurrent" / "concurrent.c"])
+    sources = [HERE / "concurrent" / "concurrent.c"]
+    subprocess.run(compile_command(output, NATIVE, sources), check=True)
+    return output
 
 
 if __name__ == "__main__":

@@ -213,13 +213,26 @@ def test_fmpy_and_libcosim_in_a_python_that_links_libpython_statically(fmu_path)
     assert fmpy_angle == pytest.approx(libcosim_angle, rel=1e-12)
 
 
-def test_the_fmu_ships_the_loader_and_pythonfmus_binary(fmu_path):
+def test_the_fmu_ships_the_runtime_as_its_only_binary(fmu_path):
+    """The runtime constructs and calls the slave itself: no pythonfmu binary."""
     names = zipfile.ZipFile(fmu_path).namelist()
-    assert {
-        "binaries/linux64/UniversalJoint.so",
-        "binaries/linux64/UniversalJoint_pythonfmu.so",
-        "resources/python_runtime.txt",
-    } <= set(names)
+    assert [name for name in names if name.startswith("binaries/")] == [
+        "binaries/linux64/UniversalJoint.so"
+    ]
+    assert "resources/python_runtime.txt" in names
+
+
+def test_the_fmu_binary_needs_no_cxx_runtime(unzipped_fmu):
+    """pythonfmu 0.7.0's binary needed GCC 12's C++ runtime (GLIBCXX_3.4.30): a host
+    that brings an older libstdc++ first (MATLAB) could not instantiate the FMU."""
+    if not shutil.which("objdump"):
+        pytest.skip("needs objdump (binutils)")
+    binary = Path(unzipped_fmu) / "binaries" / "linux64" / "UniversalJoint.so"
+    symbols = subprocess.run(
+        ["objdump", "-T", str(binary)], capture_output=True, text=True, check=True
+    ).stdout
+    assert "GLIBC_" in symbols  # the table was read
+    assert "GLIBCXX" not in symbols and "CXXABI" not in symbols
 
 
 def test_finding_and_starting_a_python_spawns_no_process(c_host, unzipped_fmu, tmp_path):

@@ -25,18 +25,7 @@ def peak_kib(host, folder, cycles: int) -> int:
     return usage.ru_maxrss
 
 
-# Not strict: the peak-memory growth it leaves varies between runs (2.6 to 17 KB
-# per cycle measured), and once in a while stays below the bound.
-LEAKS = pytest.mark.xfail(
-    strict=False,
-    reason="pythonfmu 0.7.0's binary re-runs the slave script at every fmi2Instantiate and "
-    "the script's compensating Py_IncRef keeps each run's namespace (its model class) "
-    "alive, gone once the runtime constructs the slave itself "
-    "(issue 24 item 1)",
-)
-
-
-@pytest.mark.parametrize("version", [pytest.param(2, marks=LEAKS), 3])
+@pytest.mark.parametrize("version", [2, 3])
 def test_two_thousand_cycles_leave_less_than_a_kilobyte_each(request, version):
     host = request.getfixturevalue("c_host3" if version == 3 else "c_host")
     folder = request.getfixturevalue("fmi3_unzipped" if version == 3 else "unzipped_fmu")

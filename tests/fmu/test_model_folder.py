@@ -2,8 +2,8 @@
 name and renaming the model inside that folder only gives a new model whose
 FMUs (FMI 2.0 and 3.0) build, validate and simulate, whose reference run the
 suite's own checks regenerate and reproduce through its FMU, and which the docs
-list: `tools/model_pages.py` adds it to the generated index blocks of README.md
-and docs/README.md, and no other file outside the new folder changes (no hand
+list: `tools/model_pages.py` adds it to the generated index block of README.md,
+and no other file outside the new folder changes (no hand
 edit anywhere). Done in a copy of the project: the tree is left alone.
 
 Known, not this module's: after an FMI 2.0 FMU is simulated in-process, the
@@ -31,7 +31,7 @@ IGNORED = shutil.ignore_patterns(
     *LEFT_OUT, ".ruff_cache", ".mypy_cache", "*.egg-info", "__pycache__"
 )
 # The generated index blocks: the only text outside the new folder that changes.
-INDEXES = (Path("README.md"), Path("docs") / "README.md")
+INDEXES = (Path("README.md"),)
 MODEL_INDEX = re.compile(r"<!-- models:begin -->\n.*?<!-- models:end -->", re.DOTALL)
 
 

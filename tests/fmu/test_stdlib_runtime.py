@@ -43,7 +43,7 @@ def test_every_model_imports_and_steps_without_numpy_as_with_it(without_numpy):
 
 
 @pytest.mark.parametrize(
-    ("fixture", "model"), [("fmu_path", "UniversalJoint"), ("fmi3_path", "UniversalJoint3")]
+    ("fixture", "model"), [("fmu_path", "UniversalJoint"), ("fmi3_scalar_path", "UniversalJoint3")]
 )
 def test_the_built_fmu_in_fmpy_gives_the_values_of_the_standard_library_run(
     request, without_numpy, fixture, model

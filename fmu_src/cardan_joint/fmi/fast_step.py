@@ -36,10 +36,11 @@ loader forwards the log queue after it as after pythonfmu's calls):
   the slave has warned; getReal warns again at every read, so the loader keeps
   them stale (and answers fmi2OK, as getReal does); error: a fault, logged.
 
-Claim. pythonfmu does not hand its Python object out: each slave registers
-itself at construction, per thread (`_fast_register`), and the loader calls
-the class's `fast_claim(instance_name)` right after instantiate and reset on
-the same thread. A slave class without it keeps plain forwarding.
+Claim. The FMI 2.0 runtime constructs the slave itself and uses it. pythonfmu3
+(FMI 3.0) does not hand its Python object out: each slave registers itself at
+construction, per thread (`_fast_register`), and the FMI 3.0 loader calls the
+class's `fast_claim(instance_name)` right after instantiate and reset on the
+same thread. A slave without these methods keeps plain calls.
 
 In C. setReal of inputs only: write known, mark outputs stale. Any other
 setReal: fast_load if needed, forward to Python, fast_store. getReal: if the

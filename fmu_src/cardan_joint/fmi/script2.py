@@ -7,17 +7,7 @@ copy of `cardan_joint` it ships, so two FMUs of this project never share code in
 one process.
 """
 
-import ctypes
-
 from cardan_joint.fmi.slave import ModelSlave
-
-# pythonfmu 0.7.0's loader re-runs this file at every fmi2Instantiate and then
-# releases one reference too many to this module's namespace (it Py_DECREFs the
-# borrowed result of PyModule_GetDict). Taking one reference per run keeps the
-# count right; without it the namespace is freed after a few instantiations and
-# the host process crashes. An extra reference (when imported otherwise) only
-# keeps the namespace alive.
-ctypes.pythonapi.Py_IncRef(ctypes.py_object(globals()))
 
 
 class ModelFmu(ModelSlave):

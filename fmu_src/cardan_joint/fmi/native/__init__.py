@@ -3,8 +3,9 @@
 pythonfmu's (and pythonfmu3's) binary needs a Python already in the process.
 `install_loader` compiles `loader.c` (FMI 2.0) or `fmi3_loader.c` (FMI 3.0) and
 friends with the machine's C compiler ($CC, else `cc`; no Python headers
-needed), moves pythonfmu's binary to `binaries/<platform>/<id>_pythonfmu.so`
-(`_pythonfmu3.so`), puts the loader at `binaries/<platform>/<id>.so` and records
+needed) and puts it at `binaries/<platform>/<id>.so`. FMI 2.0: it replaces
+pythonfmu's binary (the runtime constructs and calls the slave itself); FMI 3.0:
+pythonfmu3's binary moves to `binaries/<platform>/<id>_pythonfmu3.so`. It records
 in `resources/python_runtime.txt` what the FMU needs of a Python (a minimum
 version, the build's minor as the preferred one), no machine paths, and in
 `resources/variables.txt` each variable's reference, type, size and fixedness
@@ -30,7 +31,8 @@ _COMMON = (
     "fast_path.c",
     "fast_values.c",
     "state_book.c",
-    "slave_library.c",
+    "slave_object.c",
+    "slave_values.c",
     "python_runtime.c",
     "python_start.c",
     "python_discovery.c",
@@ -39,9 +41,16 @@ _COMMON = (
     "slave_module.c",
 )
 SOURCES = {
-    2: ("loader.c", "fmi2_calls.c", "fmi2_unsupported.c", "fmu_states.c", *_COMMON),
+    2: (
+        "loader.c",
+        "fmi2_calls.c",
+        "fmi2_unsupported.c",
+        "fmu_states.c",
+        *_COMMON,
+    ),
     3: (
         "fmi3_loader.c",
+        "slave_library.c",
         "fmi3_calls.c",
         "fmi3_states.c",
         "fmi3_unsupported.c",
@@ -51,7 +60,9 @@ SOURCES = {
 }
 # Where pythonfmu / pythonfmu3 put their Linux binary, and where the loader moves it.
 BINARY_FOLDER = {2: "binaries/linux64", 3: "binaries/x86_64-linux"}
-SLAVE_SUFFIX = {2: "_pythonfmu.so", 3: "_pythonfmu3.so"}
+# FMI 3.0's runtime still forwards to pythonfmu3's binary, shipped under this name;
+# the FMI 2.0 runtime calls the slave itself and ships no pythonfmu binary.
+SLAVE_SUFFIX = {3: "_pythonfmu3.so"}
 RECORD = "resources/python_runtime.txt"
 # Each variable's value reference, type, size and fixedness, for both loaders
 # (FMI 3.0: value count checks; both: the fixed-parameter guard). In resources/:
@@ -73,6 +84,15 @@ def fmi3_headers() -> Path:
 
 
 MINIMUM_PYTHON = (3, 10)  # the oldest CPython the FMU's code and the loader support
+
+
+# The manylinux2014 floor: the binary loads on glibc 2.17 and newer, wherever it is
+# built. The header binds the functions glibc 2.34 moved into libc.so.6 to their old
+# versions; an older glibc has them in libdl.so.2 and libpthread.so.0, needed here
+# (no --as-needed: nothing of a new glibc's stubs is used, they must stay needed).
+GLIBC_FLOOR = (2, 17)
+GLIBC_FLOOR_COMPILE = ("-include", str(_HERE / "glibc_compat.h"))
+GLIBC_FLOOR_LINK = ("-Wl,--no-as-needed", "-l:libdl.so.2", "-l:libpthread.so.0")
 
 
 class NativeBuildError(RuntimeError):
@@ -141,12 +161,13 @@ def compile_loader(model_identifier: str, output: Path, fmi_version: int = 2) ->
         "-shared",
         "-pthread",
         "-Wall",
+        *GLIBC_FLOOR_COMPILE,
         f"-DMODEL_IDENTIFIER=\"{model_identifier}\"",
         *headers,
         *(str(_HERE / source) for source in SOURCES[fmi_version]),
         "-Wl,-z,nodelete",
         f"-Wl,--version-script={exports}",
-        "-ldl",
+        *GLIBC_FLOOR_LINK,
         "-o",
         str(output),
     ]
@@ -185,7 +206,8 @@ def variables_record(model_description: bytes) -> str:
 
 
 def install_loader(fmu_path, model_identifier: str, fmi_version: int = 2) -> None:
-    """Rewrite the .fmu in place: loader in front of pythonfmu's binary, the records."""
+    """Rewrite the .fmu in place: the runtime as the FMU's binary (FMI 3.0: in front
+    of pythonfmu3's), the records."""
     fmu_path = Path(fmu_path)
     folder = BINARY_FOLDER[fmi_version]
     binary = f"{folder}/{model_identifier}.so"
@@ -200,6 +222,8 @@ def install_loader(fmu_path, model_identifier: str, fmi_version: int = 2) -> Non
                 raise NativeBuildError(f"{fmu_path} has no {binary} to put the loader in front of")
             for item in source.infolist():
                 if item.filename in (RECORD, VARIABLES):
+                    continue
+                if item.filename == binary and fmi_version not in SLAVE_SUFFIX:
                     continue
                 name = (
                     f"{folder}/{model_identifier}{SLAVE_SUFFIX[fmi_version]}"

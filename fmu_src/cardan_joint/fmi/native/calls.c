@@ -6,6 +6,7 @@
 #include "instance.h"
 
 #include <stdlib.h>
+#include <string.h>
 
 struct instance *enter(fmi2Component c, unsigned allowed, const char *function)
 {
@@ -86,7 +87,7 @@ void release_instance(struct instance *in, void (*free_slave)(void *))
     fast_detach(in);
     while (in->n_fmu_states)
         drop_state(in, &in->fmu_states[0]);
-    if (in->slave)
+    if (in->slave && free_slave)
         free_slave(in->slave);
     for (size_t i = 0; i < in->n_categories; i++)
         free(in->categories[i]);
@@ -96,5 +97,11 @@ void release_instance(struct instance *in, void (*free_slave)(void *))
     free(in->name);
     free(in->guid);
     free(in->resources_uri);
+    free(in->resources);
     free(in);
+}
+
+char *copy_of(const char *text)
+{
+    return strdup(text ? text : "");
 }

@@ -3,7 +3,7 @@
  * reads and input writes from them, and enters Python once per doStep (the
  * slave's fast_step on memoryviews over the arrays).  The protocol, which this
  * file follows, is the docstring of fmi/fast_step.py.  An instance whose
- * slave cannot be claimed or has no fast_step keeps plain forwarding
+ * slave has no fast_step (or, FMI 3.0, cannot be claimed) keeps plain calls
  * (in->fast stays NULL): the benchmarks' plain floor FMU does.
  *
  * Python is reached as in slave_module.c: no headers, functions looked up in
@@ -47,15 +47,17 @@ typedef int PyGILState_STATE; /* an enum in Python.h */
 #define DECLARE(result, name, parameters) static result(*p_##name) parameters;
 FAST_FUNCTIONS(DECLARE)
 #undef DECLARE
+static PyObject *none;
 
-/* Finds the slave pythonfmu just constructed on this thread (fmi/fast_step.py
- * fast_claim), through the script module pythonfmu imported. */
+/* The slave's layout: FMI 2.0 passes the runtime's own slave object; FMI 3.0
+ * (slave None) claims the one pythonfmu3 just constructed on this thread
+ * (fmi/fast_step.py fast_claim), through the script module. */
 static const char CLAIM[] =
     "import sys\n"
     "with open(resources + '/slavemodule.txt') as file:\n"
     "    script = sys.modules.get(file.readline().strip())\n"
-    "slave, sizes = None, ()\n"
-    "for value in list(vars(script).values()) if script else ():\n"
+    "sizes = ()\n"
+    "for value in list(vars(script).values()) if script and slave is None else ():\n"
     "    if isinstance(value, type) and hasattr(value, 'fast_claim'):\n"
     "        slave = value.fast_claim(name)\n"
     "        break\n"
@@ -90,34 +92,8 @@ static int resolve(void)
         return resolved = 0;
     FAST_FUNCTIONS(RESOLVE)
 #undef RESOLVE
-    return resolved = 1;
-}
-
-/* The slave's log queue to the host, as pythonfmu forwards it after its calls. */
-static void drain(struct instance *in, PyObject *slave)
-{
-    PyObject *queue = p_PyObject_GetAttrString(slave, "log_queue");
-    Py_ssize_t n = queue ? p_PyList_Size(queue) : -1;
-    for (Py_ssize_t i = 0; i < n; i++) {
-        PyObject *item = p_PyList_GetItem(queue, i);
-        PyObject *status = p_PyObject_GetAttrString(item, "status");
-        PyObject *category = p_PyObject_GetAttrString(item, "category");
-        PyObject *message = p_PyObject_GetAttrString(item, "msg");
-        const char *text = message ? p_PyUnicode_AsUTF8(message) : NULL;
-        const char *kind = category ? p_PyUnicode_AsUTF8(category) : NULL;
-        long level = status ? p_PyLong_AsLong(status) : fmi2Error;
-        report(in, level >= 0 && level <= fmi2Fatal ? (fmi2Status)level : fmi2Error, kind,
-               text ? text : "");
-        PyObject *owned[] = {status, category, message};
-        for (size_t k = 0; k < 3; k++)
-            if (owned[k])
-                p_Py_DecRef(owned[k]);
-    }
-    if (n > 0)
-        p_PyList_SetSlice(queue, 0, n, NULL);
-    if (queue)
-        p_Py_DecRef(queue);
-    p_PyErr_Clear();
+    none = dlsym(RTLD_DEFAULT, "_Py_NoneStruct");
+    return resolved = none != NULL;
 }
 
 /* One call into the slave with the GIL held; its status (an FMI status number). */
@@ -131,7 +107,7 @@ static long call(struct instance *in, enum fast_method method, PyObject *a, PyOb
         p_Py_DecRef(result);
     int raised = p_PyErr_Occurred() != NULL;
     p_PyErr_Clear();
-    drain(in, fast->slave);
+    slave_drain(in, fast->slave);
     if (raised || status < 0 || status > fmi2Fatal) {
         reportf(in, fmi2Error, "the slave's %s failed", METHODS[method]);
         return fmi2Error;
@@ -173,13 +149,14 @@ static int read_flat_table(struct fast_path *fast, PyObject *table)
            fast_table(fast, bytes, (size_t)size);
 }
 
-/* With the GIL: claim the slave this thread just constructed; 0 if none fits. */
+/* With the GIL: the instance's slave and its layout; 0 if none fits. */
 static int claim(struct instance *in, struct fast_path *fast)
 {
     PyObject *globals = p_PyDict_New(), *result = NULL;
     if (globals &&
         set_global(globals, "resources", p_PyUnicode_DecodeFSDefault(fast->resources)) &&
         set_global(globals, "name", p_PyUnicode_FromString(in->name)) &&
+        !p_PyDict_SetItemString(globals, "slave", in->object ? in->object : none) &&
         !p_PyDict_SetItemString(globals, "__builtins__", p_PyEval_GetBuiltins()))
         result = p_PyRun_String(CLAIM, PY_FILE_INPUT, globals, globals);
     int found = result && global_long(globals, "found") == 1;
@@ -246,15 +223,14 @@ void fast_attach(struct instance *in, const char *resources)
     if (!resolve() || !(in->fast = calloc(1, sizeof *in->fast)))
         return;
     in->fast->resources = copy_of(resources);
-    in->fast->last_successful_time = NAN;
     PyGILState_STATE gil = p_PyGILState_Ensure();
     if (!set_up(in, in->fast))
         drop(in);
     p_PyGILState_Release(gil);
 }
 
-/* Before the instance is freed, or after pythonfmu's reset (again: its new
- * slave, else plain forwarding from now on). */
+/* Before the instance is freed, or after a reset (again: its new slave, else
+ * plain calls from now on). */
 static void renew(struct instance *in, int again)
 {
     if (!in->fast)

@@ -5,8 +5,6 @@
 
 #include "instance.h"
 
-typedef struct _object PyObject;
-
 /* The slave's methods, in the order fast_path.c looks them up. */
 enum fast_method { FAST_STEP, FAST_OUTPUTS, FAST_LOAD, FAST_STORE };
 
@@ -16,7 +14,6 @@ struct fast_path {
     int stale;          /* the outputs array is not current */
     int inputs_written; /* the slave has not taken the host's latest inputs yet */
     double *known, *values;
-    double last_successful_time; /* what pythonfmu's doStep would have kept */
     char *resources;
     /* FMI 3 (NULL for FMI 2, whose value references are the flat indices):
      * {n, start[0..n], indices...}: value reference vr < n holds the flat

@@ -127,20 +127,8 @@ int fast_step(struct instance *in, double time, double step)
         return -1;
     long status = fast_call(in, FAST_STEP, time, step);
     /* pythonfmu: the step's end when taken, its start when not (NaN before any). */
-    fast->last_successful_time = status == fmi2OK ? time + step : time;
+    in->last_successful_time = status == fmi2OK ? time + step : time;
     fast->inputs_written = 0;
     fast->stale = status != fmi2OK;
     return (int)status;
-}
-
-/* fmi2GetRealStatus(fmi2LastSuccessfulTime) and fmi2GetBooleanStatus(fmi2Terminated)
- * (FMPy's simulate_fmu asks both after a refused step): kept here, as pythonfmu
- * keeps them in its doStep, which the one-call step does not go through.
- * fmi2Terminated is always false (fmi2_calls.c). */
-int fast_last_successful_time(const struct instance *in, double *value)
-{
-    if (!in->fast)
-        return 0;
-    *value = in->fast->last_successful_time;
-    return 1;
 }

@@ -1,13 +1,14 @@
 /* The fmi2 functions after fmi2Instantiate: each checks the instance and the
  * FMI 2.0 co-simulation state machine, enters Python's thread state for this
- * host thread, forwards to pythonfmu, and returns the worst status logged.
+ * host thread, calls the slave's Python method (slave_object.c), and returns
+ * the worst status logged.
  * A call the standard does not allow in the current state, on a NULL array or
  * on an FMU state this instance did not hand out is answered with fmi2Error and
  * a message, without reaching Python, and changes nothing. */
 #define _GNU_SOURCE
 #include "instance.h"
 
-#include <dlfcn.h>
+#include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -15,18 +16,6 @@
 /* Reading in the instantiated state is beyond FMI 2.0 but harmless: start values. */
 #define READABLE ALIVE
 #define SETTABLE (STATE_INSTANTIATED | STATE_INITIALIZATION | STATE_STEP_COMPLETE)
-
-int resolve_slave_api(void *handle, char *error, size_t size)
-{
-#define RESOLVE(member, symbol, result, parameters)                                      \
-    if (!(slave.member = (result(*) parameters)dlsym(handle, #symbol))) {                \
-        snprintf(error, size, "pythonfmu's binary has no %s", #symbol);                  \
-        return -1;                                                                       \
-    }
-    SLAVE_FUNCTIONS(RESOLVE)
-#undef RESOLVE
-    return 0;
-}
 
 const char *where(enum state state)
 {
@@ -49,7 +38,9 @@ const char *where(enum state state)
 
 void free_instance(struct instance *in)
 {
-    release_instance(in, slave.free_instance);
+    fast_detach(in);
+    slave_release(in);
+    release_instance(in, NULL);
 }
 
 const char *fmi2GetTypesPlatform(void) { return "default"; }
@@ -74,23 +65,28 @@ fmi2Status fmi2SetupExperiment(fmi2Component c, fmi2Boolean tolerance_defined, f
     struct instance *in = enter(c, STATE_INSTANTIATED, "fmi2SetupExperiment");
     if (!in)
         return fmi2Error;
-    fast_before(in);
-    fmi2Status status = leave(in, slave.setup_experiment(in->slave, tolerance_defined, tolerance,
-                                                         start, stop_defined, stop));
-    fast_after(in);
-    return status;
+    /* Kept for fmi2EnterInitializationMode, which passes it to the slave (as pythonfmu). */
+    in->tolerance_defined = tolerance_defined, in->tolerance = tolerance;
+    in->stop_defined = stop_defined, in->stop = stop;
+    in->start = start;
+    return leave(in, fmi2OK);
 }
 
 static fmi2Status transition(fmi2Component c, unsigned allowed, const char *function,
-                             fmi2Status (*call)(fmi2Component), enum state next)
+                             const char *method, enum state next)
 {
     struct instance *in = enter(c, allowed, function);
     if (!in)
         return fmi2Error;
     fast_before(in);
-    fmi2Status status = leave(in, call(in->slave));
-    if (call == slave.reset)
+    fmi2Status status;
+    if (method) {
+        status = leave(in, slave_call(in, method));
+    } else {  /* reset: a fresh slave object (its constructor, run again) */
+        status = leave(in, slave_construct(in, in->resources) ? fmi2Error : fmi2OK);
+        in->last_successful_time = NAN;
         fast_reset(in);
+    }
     fast_after(in);
     if (status <= fmi2Error && in->state != STATE_FATAL)
         in->state = next;
@@ -100,30 +96,30 @@ static fmi2Status transition(fmi2Component c, unsigned allowed, const char *func
 fmi2Status fmi2EnterInitializationMode(fmi2Component c)
 {
     return transition(c, STATE_INSTANTIATED, "fmi2EnterInitializationMode",
-                      slave.enter_initialization, STATE_INITIALIZATION);
+                      "enter_initialization_mode", STATE_INITIALIZATION);
 }
 
 fmi2Status fmi2ExitInitializationMode(fmi2Component c)
 {
     return transition(c, STATE_INITIALIZATION, "fmi2ExitInitializationMode",
-                      slave.exit_initialization, STATE_STEP_COMPLETE);
+                      "exit_initialization_mode", STATE_STEP_COMPLETE);
 }
 
 fmi2Status fmi2Terminate(fmi2Component c)
 {
-    return transition(c, STATE_STEP_COMPLETE, "fmi2Terminate", slave.terminate,
+    return transition(c, STATE_STEP_COMPLETE, "fmi2Terminate", "terminate",
                       STATE_TERMINATED);
 }
 
-/* pythonfmu's own reset makes a fresh Python slave (its constructor, run again). */
+/* Reset makes a fresh Python slave, as pythonfmu's did. */
 fmi2Status fmi2Reset(fmi2Component c)
 {
-    return transition(c, ALIVE, "fmi2Reset", slave.reset, STATE_INSTANTIATED);
+    return transition(c, ALIVE, "fmi2Reset", NULL, STATE_INSTANTIATED);
 }
 
 /* --- values ------------------------------------------------------------------- */
 
-#define VALUES(get_or_set, Type, member, allowed, constness)                             \
+#define VALUES(get_or_set, Type, member, kind, allowed, constness)                             \
     fmi2Status fmi2##get_or_set##Type(fmi2Component c, const fmi2ValueReference vr[],   \
                                       size_t n, constness fmi2##Type value[])            \
     {                                                                                    \
@@ -132,16 +128,18 @@ fmi2Status fmi2Reset(fmi2Component c)
         if (!in || !arrays_given(in, function, n, vr, value))                            \
             return fmi2Error;                                                            \
         fast_before(in);                                                                 \
-        fmi2Status status = leave(in, slave.member(in->slave, vr, n, value));            \
+        fmi2Status status = leave(in, slave_##get_or_set(in, #member, kind, vr, n, value)); \
         fast_after(in);                                                                  \
         return status;                                                                   \
     }
-VALUES(Get, Integer, get_integer, READABLE, )
-VALUES(Get, Boolean, get_boolean, READABLE, )
-VALUES(Get, String, get_string, READABLE, )
-VALUES(Set, Integer, set_integer, SETTABLE, const)
-VALUES(Set, Boolean, set_boolean, SETTABLE, const)
-VALUES(Set, String, set_string, SETTABLE, const)
+#define slave_Get slave_get
+#define slave_Set slave_set
+VALUES(Get, Integer, get_integer, 'i', READABLE, )
+VALUES(Get, Boolean, get_boolean, 'b', READABLE, )
+VALUES(Get, String, get_string, 's', READABLE, )
+VALUES(Set, Integer, set_integer, 'i', SETTABLE, const)
+VALUES(Set, Boolean, set_boolean, 'b', SETTABLE, const)
+VALUES(Set, String, set_string, 's', SETTABLE, const)
 
 /* After initialization a fixed parameter stays as it is, even if a restored FMU
  * state makes the slave believe it is not initialized yet. */
@@ -161,7 +159,7 @@ static fmi2Status set_real(struct instance *in, const fmi2ValueReference vr[], s
         return leave(in, fmi2OK);
     }
     fast_before(in);
-    fmi2Status status = leave(in, slave.set_real(in->slave, vr, n, value));
+    fmi2Status status = leave(in, slave_set(in, "set_real", 'd', vr, n, value));
     fast_after(in);
     return status;
 }
@@ -209,7 +207,7 @@ fmi2Status fmi2GetReal(fmi2Component c, const fmi2ValueReference vr[], size_t n,
     if (fast_serves(in, vr, n, 0))
         return leave(in, fast_get(in, vr, n, value));
     fast_before(in);
-    fmi2Status status = leave(in, slave.get_real(in->slave, vr, n, value));
+    fmi2Status status = leave(in, slave_get(in, "get_real", 'd', vr, n, value));
     fast_after(in);
     return status;
 }
@@ -221,9 +219,10 @@ fmi2Status fmi2DoStep(fmi2Component c, fmi2Real time, fmi2Real step, fmi2Boolean
     struct instance *in = enter(c, STATE_STEP_COMPLETE, "fmi2DoStep");
     if (!in)
         return fmi2Error;
+    (void)no_set_prior;
     int status = fast_step(in, time, step);
     return step_status(in, status >= 0 ? (fmi2Status)status
-                                       : slave.do_step(in->slave, time, step, no_set_prior));
+                                       : slave_do_step(in, time, step));
 }
 
 fmi2Status fmi2GetRealStatus(fmi2Component c, fmi2StatusKind kind, fmi2Real *value)
@@ -231,12 +230,12 @@ fmi2Status fmi2GetRealStatus(fmi2Component c, fmi2StatusKind kind, fmi2Real *val
     struct instance *in = enter(c, READABLE, "fmi2GetRealStatus");
     if (!in || !arrays_given(in, "fmi2GetRealStatus", 1, value, value))
         return fmi2Error;
-    if (kind == fmi2LastSuccessfulTime && fast_last_successful_time(in, value))
+    if (kind == fmi2LastSuccessfulTime) {
+        *value = in->last_successful_time;
         return leave(in, fmi2OK);
-    fast_before(in);
-    fmi2Status status = leave(in, slave.get_real_status(in->slave, kind, value));
-    fast_after(in);
-    return status;
+    }
+    report(in, fmi2Error, NULL, "Invalid status inquiry for fmi2GetRealStatus");
+    return fmi2Error;
 }
 
 fmi2Status fmi2GetBooleanStatus(fmi2Component c, fmi2StatusKind kind, fmi2Boolean *value)
@@ -248,8 +247,6 @@ fmi2Status fmi2GetBooleanStatus(fmi2Component c, fmi2StatusKind kind, fmi2Boolea
         *value = fmi2False;  /* the model never ends a run; a refused step is an error */
         return leave(in, fmi2OK);
     }
-    fast_before(in);
-    fmi2Status status = leave(in, slave.get_boolean_status(in->slave, kind, value));
-    fast_after(in);
-    return status;
+    report(in, fmi2Error, NULL, "Invalid status inquiry for fmi2GetBooleanStatus");
+    return fmi2Error;
 }

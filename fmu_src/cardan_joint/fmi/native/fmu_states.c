@@ -3,10 +3,11 @@
  * answered with fmi2Error and a message, without reaching Python. */
 #include "instance.h"
 
-/* pythonfmu's free, for drop_state (state_book.c). */
+/* The slave's state object released, for drop_state (state_book.c). */
 fmi2Status free_slave_state(struct instance *in, fmi2FMUstate *state)
 {
-    return slave.free_fmu_state(in->slave, state);
+    (void)in;
+    return slave_free_state(state);
 }
 
 /* --- FMU state ---------------------------------------------------------------- */
@@ -17,7 +18,7 @@ fmi2Status fmi2GetFMUstate(fmi2Component c, fmi2FMUstate *state)
     if (!in || !prepare_new_state(in, state, "fmi2GetFMUstate"))
         return fmi2Error;
     fast_before(in);
-    fmi2Status status = leave(in, slave.get_fmu_state(in->slave, state));
+    fmi2Status status = leave(in, slave_get_state(in, state));
     if (*state)
         keep_state(in, *state);
     return status;
@@ -29,7 +30,7 @@ fmi2Status fmi2SetFMUstate(fmi2Component c, fmi2FMUstate state)
     if (!in || !known_state(in, state, "fmi2SetFMUstate"))
         return fmi2Error;
     fast_before(in);
-    fmi2Status status = leave(in, slave.set_fmu_state(in->slave, state));
+    fmi2Status status = leave(in, slave_set_state(in, state));
     fast_after(in);
     restore_mode(in, status);
     return status;
@@ -55,7 +56,7 @@ fmi2Status fmi2SerializedFMUstateSize(fmi2Component c, fmi2FMUstate state, size_
     if (!in || !known_state(in, state, "fmi2SerializedFMUstateSize") ||
         !arrays_given(in, "fmi2SerializedFMUstateSize", 1, size, size))
         return fmi2Error;
-    return leave(in, slave.serialized_size(in->slave, state, size));
+    return leave(in, slave_state_bytes(in, state, NULL, size));
 }
 
 fmi2Status fmi2SerializeFMUstate(fmi2Component c, fmi2FMUstate state, fmi2Byte bytes[], size_t size)
@@ -65,13 +66,12 @@ fmi2Status fmi2SerializeFMUstate(fmi2Component c, fmi2FMUstate state, fmi2Byte b
     if (!in || !known_state(in, state, "fmi2SerializeFMUstate") ||
         !arrays_given(in, "fmi2SerializeFMUstate", size, bytes, bytes))
         return fmi2Error;
-    if (slave.serialized_size(in->slave, state, &needed) != fmi2OK || size < needed) {
+    if (slave_state_bytes(in, state, NULL, &needed) != fmi2OK || size < needed) {
         reportf(in, fmi2Error, "fmi2SerializeFMUstate got %zu bytes for a state of %zu bytes; "
                 "ask fmi2SerializedFMUstateSize first", size, needed);
         return fmi2Error;
     }
-    /* pythonfmu copies as many bytes as it is told, from a state only `needed` long. */
-    return leave(in, slave.serialize(in->slave, state, bytes, needed));
+    return leave(in, slave_state_bytes(in, state, bytes, &needed));
 }
 
 fmi2Status fmi2DeSerializeFMUstate(fmi2Component c, const fmi2Byte bytes[], size_t size,
@@ -81,7 +81,7 @@ fmi2Status fmi2DeSerializeFMUstate(fmi2Component c, const fmi2Byte bytes[], size
     if (!in || !arrays_given(in, "fmi2DeSerializeFMUstate", size, bytes, bytes) ||
         !prepare_new_state(in, state, "fmi2DeSerializeFMUstate"))
         return fmi2Error;
-    fmi2Status status = leave(in, slave.deserialize(in->slave, bytes, size, state));
+    fmi2Status status = leave(in, slave_state_from_bytes(in, bytes, size, state));
     if (*state)
         keep_state(in, *state);
     return status;

@@ -1,4 +1,4 @@
-/* One FMU instance as the loader sees it, and pythonfmu's fmi2 entry points. */
+/* One FMU instance as the runtime sees it. */
 #ifndef CARDAN_JOINT_INSTANCE_H
 #define CARDAN_JOINT_INSTANCE_H
 
@@ -23,14 +23,21 @@ enum state {
 #define ALIVE (STATE_INSTANTIATED | STATE_INITIALIZATION | STATE_STEP_COMPLETE | STATE_TERMINATED)
 #define ANY (ALIVE | STATE_FATAL)
 
+typedef struct _object PyObject;
+
 struct instance {
     unsigned magic;
-    void *slave;
+    void *slave;                     /* FMI 3.0: pythonfmu3's instance */
+    PyObject *object;                /* FMI 2.0: the slave's Python object (slave_object.c) */
+    PyObject *strings;               /* FMI 2.0: the last fmi2GetString's values, kept alive */
+    double start, stop, tolerance;   /* FMI 2.0: the experiment, for enter initialization */
+    int stop_defined, tolerance_defined;
+    double last_successful_time;     /* fmi2LastSuccessfulTime: NaN before any step */
     const char *model;
     char *name, *guid, *resources_uri;
+    char *resources;                 /* FMI 2.0: the resources folder, for reset */
     fmi2Boolean visible;
     fmi2CallbackFunctions host;      /* the host's callbacks, as given */
-    fmi2CallbackFunctions to_slave;  /* the same with this file's logger */
     int logging_on, echo_stderr, shared_proxy;
     char **categories;
     size_t n_categories;
@@ -42,55 +49,6 @@ struct instance {
     struct fast_path *fast;          /* the one-call step's arrays; NULL: plain forwarding */
 };
 
-#define SLAVE_FUNCTIONS(X)                                                            \
-    X(instantiate, fmi2Instantiate, fmi2Component, (fmi2String, fmi2Type, fmi2String,   \
-      fmi2String, const fmi2CallbackFunctions *, fmi2Boolean, fmi2Boolean))            \
-    X(free_instance, fmi2FreeInstance, void, (fmi2Component))                           \
-    X(setup_experiment, fmi2SetupExperiment, fmi2Status, (fmi2Component, fmi2Boolean,   \
-      fmi2Real, fmi2Real, fmi2Boolean, fmi2Real))                                       \
-    X(enter_initialization, fmi2EnterInitializationMode, fmi2Status, (fmi2Component))   \
-    X(exit_initialization, fmi2ExitInitializationMode, fmi2Status, (fmi2Component))     \
-    X(terminate, fmi2Terminate, fmi2Status, (fmi2Component))                            \
-    X(reset, fmi2Reset, fmi2Status, (fmi2Component))                                    \
-    X(get_real, fmi2GetReal, fmi2Status, (fmi2Component, const fmi2ValueReference *,    \
-      size_t, fmi2Real *))                                                              \
-    X(get_integer, fmi2GetInteger, fmi2Status, (fmi2Component,                          \
-      const fmi2ValueReference *, size_t, fmi2Integer *))                               \
-    X(get_boolean, fmi2GetBoolean, fmi2Status, (fmi2Component,                          \
-      const fmi2ValueReference *, size_t, fmi2Boolean *))                               \
-    X(get_string, fmi2GetString, fmi2Status, (fmi2Component,                            \
-      const fmi2ValueReference *, size_t, fmi2String *))                                \
-    X(set_real, fmi2SetReal, fmi2Status, (fmi2Component, const fmi2ValueReference *,    \
-      size_t, const fmi2Real *))                                                        \
-    X(set_integer, fmi2SetInteger, fmi2Status, (fmi2Component,                          \
-      const fmi2ValueReference *, size_t, const fmi2Integer *))                         \
-    X(set_boolean, fmi2SetBoolean, fmi2Status, (fmi2Component,                          \
-      const fmi2ValueReference *, size_t, const fmi2Boolean *))                         \
-    X(set_string, fmi2SetString, fmi2Status, (fmi2Component,                            \
-      const fmi2ValueReference *, size_t, const fmi2String *))                          \
-    X(get_fmu_state, fmi2GetFMUstate, fmi2Status, (fmi2Component, fmi2FMUstate *))      \
-    X(set_fmu_state, fmi2SetFMUstate, fmi2Status, (fmi2Component, fmi2FMUstate))        \
-    X(free_fmu_state, fmi2FreeFMUstate, fmi2Status, (fmi2Component, fmi2FMUstate *))    \
-    X(serialized_size, fmi2SerializedFMUstateSize, fmi2Status, (fmi2Component,          \
-      fmi2FMUstate, size_t *))                                                          \
-    X(serialize, fmi2SerializeFMUstate, fmi2Status, (fmi2Component, fmi2FMUstate,       \
-      fmi2Byte *, size_t))                                                              \
-    X(deserialize, fmi2DeSerializeFMUstate, fmi2Status, (fmi2Component,                 \
-      const fmi2Byte *, size_t, fmi2FMUstate *))                                        \
-    X(do_step, fmi2DoStep, fmi2Status, (fmi2Component, fmi2Real, fmi2Real, fmi2Boolean)) \
-    X(get_real_status, fmi2GetRealStatus, fmi2Status, (fmi2Component, fmi2StatusKind,   \
-      fmi2Real *))                                                                      \
-    X(get_boolean_status, fmi2GetBooleanStatus, fmi2Status, (fmi2Component,             \
-      fmi2StatusKind, fmi2Boolean *))
-
-struct slave_api {
-#define MEMBER(member, symbol, result, parameters) result(*member) parameters;
-    SLAVE_FUNCTIONS(MEMBER)
-#undef MEMBER
-};
-extern struct slave_api slave;
-
-int resolve_slave_api(void *handle, char *error, size_t size);
 int load_slave_library(const char *suffix, int (*resolve)(void *, char *, size_t), char *error,
                        size_t size);
 /* Per FMI version: the host's logger (0: the host has none) and what a call
@@ -127,7 +85,6 @@ int fast_serves(const struct instance *in, const unsigned vr[], size_t n, int in
 void fast_set(struct instance *in, const unsigned vr[], size_t n, const double value[]);
 fmi2Status fast_get(struct instance *in, const unsigned vr[], size_t n, double value[]);
 int fast_step(struct instance *in, double time, double step);
-int fast_last_successful_time(const struct instance *in, double *value);
 int fast_initialized(struct instance *in);
 /* After a set FMU state: the mode the state was taken in (calls.c). */
 void restore_mode(struct instance *in, fmi2Status status);
@@ -138,6 +95,22 @@ int slave_module_imports(const char *resources, char *error, size_t size);
 /* resources/VARIABLES_RECORD agrees with the slave's own layout (the one-call
  * step's): else -1 and a message naming the file (record_check.c). */
 int record_matches_slave(struct instance *in, const char *resources, char *error, size_t size);
+/* FMI 2.0: the slave's Python object and its calls (slave_object.c). */
+int slave_construct(struct instance *in, const char *resources);
+void slave_release(struct instance *in);
+void slave_drain(struct instance *in, PyObject *slave);
+fmi2Status slave_call(struct instance *in, const char *method);
+fmi2Status slave_do_step(struct instance *in, double time, double step);
+fmi2Status slave_get(struct instance *in, const char *method, char kind, const unsigned vr[],
+                     size_t n, void *value);
+fmi2Status slave_set(struct instance *in, const char *method, char kind, const unsigned vr[],
+                     size_t n, const void *value);
+fmi2Status slave_get_state(struct instance *in, fmi2FMUstate *state);
+fmi2Status slave_set_state(struct instance *in, fmi2FMUstate state);
+fmi2Status slave_free_state(fmi2FMUstate *state);
+fmi2Status slave_state_bytes(struct instance *in, fmi2FMUstate state, char *bytes, size_t *size);
+fmi2Status slave_state_from_bytes(struct instance *in, const char *bytes, size_t size,
+                                  fmi2FMUstate *state);
 void free_instance(struct instance *in);
 void release_instance(struct instance *in, void (*free_slave)(void *));
 void report(struct instance *in, fmi2Status status, const char *category, const char *text);

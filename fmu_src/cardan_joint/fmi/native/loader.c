@@ -1,26 +1,24 @@
-/* The FMU's binaries/linux64/<modelIdentifier>.so: makes pythonfmu's binary,
- * shipped beside it as <modelIdentifier>_pythonfmu.so, run in any FMI host.
+/* The FMU's binaries/linux64/<modelIdentifier>.so, its only binary: the FMI 2.0
+ * runtime, which needs no pythonfmu binary.
  *
  * At fmi2Instantiate it uses the host's Python or starts one it finds on the
- * machine (python_runtime.c, python_discovery.c), then loads pythonfmu's binary
- * and forwards the fmi2 calls (fmi2_calls.c) through a per-instance FMI state machine (calls.c).  pythonfmu
- * always gets this file's logger with logging on, so every message of the
- * slave arrives here and report.c routes it: warnings and refusals go to the
- * host's logger whether or not it asked for debug logging, and the status a
- * call returns is the worst one the slave logged during it (pythonfmu itself
- * can only return OK or Discard).  The FMI 3.0 loader (fmi3_loader.c) shares
- * all of that; only the fmi entry points and the host's logger call differ.
+ * machine (python_runtime.c, python_discovery.c), imports the slave's script
+ * module (slave_module.c), constructs the slave object and calls its Python
+ * methods (slave_object.c) from the fmi2 calls (fmi2_calls.c), through a
+ * per-instance FMI state machine (calls.c).  Every message the slave logs
+ * arrives here and report.c routes it: warnings and refusals go to the host's
+ * logger whether or not it asked for debug logging, and the status a call
+ * returns is the worst one the slave logged during it.  The FMI 3.0 loader
+ * (fmi3_loader.c) shares the state machine, the logging and the start.
  */
 #define _GNU_SOURCE
 #include "instance.h"
 
-#include <dlfcn.h>
+#include <math.h>
 #include <pthread.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
-
-struct slave_api slave;
 
 /* The host's logger takes a printf format: a literal '%' must reach it doubled. */
 int to_host(const struct instance *in, fmi2Status status, const char *category, const char *text)
@@ -44,14 +42,6 @@ int to_host(const struct instance *in, fmi2Status status, const char *category, 
     in->host.logger(in->host.componentEnvironment, in->name, status, category, escaped);
     free(escaped);
     return 1;
-}
-
-/* pythonfmu calls it with the message as its format and no arguments. */
-static void from_slave(fmi2ComponentEnvironment environment, fmi2String name,
-                       fmi2Status status, fmi2String category, fmi2String message, ...)
-{
-    (void)name;
-    report(environment, status, category, message ? message : "");
 }
 
 /* Messages before an instance exists still go to the host's logger. */
@@ -83,8 +73,7 @@ fmi2Component fmi2Instantiate(fmi2String name, fmi2Type type, fmi2String guid,
     }
     if (read_runtime_record(resources, &record, error, sizeof error) ||
         start_python(&record, error, sizeof error) ||
-        slave_module_imports(resources, error, sizeof error) ||
-        load_slave_library("_pythonfmu.so", resolve_slave_api, error, sizeof error)) {
+        slave_module_imports(resources, error, sizeof error)) {
         early_message(functions, name, error);
         return NULL;
     }
@@ -109,6 +98,8 @@ fmi2Component fmi2Instantiate(fmi2String name, fmi2Type type, fmi2String guid,
     in->name = copy_of(name);
     in->guid = copy_of(guid);
     in->resources_uri = copy_of(location);
+    in->resources = copy_of(resources);
+    in->last_successful_time = NAN;
     in->visible = visible;
     in->logging_on = logging_on;
     const char *echo = getenv(ENV_STDERR);
@@ -116,13 +107,8 @@ fmi2Component fmi2Instantiate(fmi2String name, fmi2Type type, fmi2String guid,
     if (functions)
         in->host = *functions;
     in->shared_proxy = is_shared_proxy((void *)in->host.logger);
-    in->to_slave = in->host;
-    in->to_slave.logger = from_slave;
-    in->to_slave.componentEnvironment = in;
     in->state = STATE_INSTANTIATED;
-    in->slave = slave.instantiate(in->name, fmi2CoSimulation, in->guid, in->resources_uri,
-                                  &in->to_slave, in->visible, fmi2True);
-    if (!in->slave) {
+    if (slave_construct(in, resources)) {
         reportf(in, fmi2Error, "the slave could not be instantiated in %s: see the message "
                 "before", python_in_use());
         free_instance(in);

@@ -59,7 +59,3 @@ int load_slave_library(const char *suffix, int (*resolve)(void *, char *, size_t
     return result;
 }
 
-char *copy_of(const char *text)
-{
-    return strdup(text ? text : "");
-}
