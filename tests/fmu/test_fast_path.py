@@ -14,18 +14,11 @@ import sys
 from pathlib import Path
 
 import pytest
+from robustness_support import GOOD
 
 from cardan_joint.host.instance import ExtractedFMU, status_of
 from cardan_joint.models.universal_joint import variables as table
 
-GOOD = dict(
-    input_speed=12.0,
-    input_acceleration=3.0,
-    bend_angle=0.4,
-    bend_angle_rate=0.05,
-    bend_angle_acceleration=-0.1,
-    load_torque=80.0,
-)
 PLAIN_ENTRIES = {
     2: ("set_real", "get_real", "do_step"),
     3: ("set_float64", "get_float64", "do_step"),

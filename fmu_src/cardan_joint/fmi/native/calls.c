@@ -85,8 +85,12 @@ fmi2Status set_debug_logging(struct instance *in, const char *function, int on, 
 void release_instance(struct instance *in, void (*free_slave)(void *))
 {
     fast_detach(in);
-    while (in->n_fmu_states)
-        drop_state(in, &in->fmu_states[0]);
+    /* drop_state moves the book's last entry into the freed slot and clears the
+     * pointer it is given: hand it a copy, never a slot of the book itself. */
+    while (in->n_fmu_states) {
+        fmi2FMUstate state = in->fmu_states[0];
+        drop_state(in, &state);
+    }
     if (in->slave && free_slave)
         free_slave(in->slave);
     for (size_t i = 0; i < in->n_categories; i++)
