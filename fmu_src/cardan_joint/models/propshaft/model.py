@@ -102,12 +102,30 @@ class Propshaft(ShaftModel):
                     "rad",
                     kind="parameter",
                 )
-        return angle_limit_problem(
+        return self._tube_problem() or angle_limit_problem(
             PropshaftReason.WORKING_ANGLE_GUARD,
             "max_working_angle",
             self.max_working_angle,
             self.time,
         )
+
+    def _tube_problem(self):
+        """A tube whose bore is not below its outer diameter has no wall (its
+        critical speed would be a number for no shaft)."""
+        for k in range(1, self.joints):
+            inner = getattr(self, f"shaft_{k}_inner_diameter")
+            outer = getattr(self, f"shaft_{k}_outer_diameter")
+            if not inner < outer:
+                return Refusal(
+                    PropshaftReason.TUBE_BORE,
+                    f"shaft_{k}_inner_diameter",
+                    inner,
+                    outer,
+                    self.time,
+                    "m",
+                    kind="parameter",
+                )
+        return None
 
     def _geometry(self):
         return layout(
