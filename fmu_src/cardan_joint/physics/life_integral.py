@@ -78,15 +78,16 @@ def _nodes_for(a, b, w1, a1, reach):
 class _Integrand:
     """rate(t) / scale: A(t) |w(t)| |T(t)|^p over one step."""
 
-    def __init__(self, torque_at, w1, a1, b, rb, ab, min_angle, exponent):
+    def __init__(self, torque_at, w1, a1, b, rb, ab, min_angle, exponent, speed_at=None):
         self.torque_at = torque_at
         self.w1, self.a1, self.b, self.rb, self.ab = w1, a1, b, rb, ab
         self.min_angle, self.p = min_angle, exponent
+        self.speed = speed_at or (lambda t: w1 + a1 * t)
 
     def parts(self, t):
         torque = self.torque_at(t)
         angle = max(abs(self.b + t * (self.rb + 0.5 * self.ab * t)), self.min_angle)
-        return torque, angle * abs(self.w1 + self.a1 * t) * abs(torque) ** self.p
+        return torque, angle * abs(self.speed(t)) * abs(torque) ** self.p
 
 
 def _root(torque_at, a, b, fa, fb):
@@ -136,7 +137,7 @@ def _from_samples(f, times, values, panels, points, width):
         if k == 0 and 0 < i < last:
             w = weights[0] + weights[-1]
         angle = max(abs(f.b + t * (f.rb + 0.5 * f.ab * t)), f.min_angle)
-        total += w * angle * abs(f.w1 + f.a1 * t) * abs(torque) ** f.p
+        total += w * angle * abs(f.speed(t)) * abs(torque) ** f.p
     return 0.5 * width * total
 
 
@@ -183,14 +184,20 @@ def _segment(f, a, b, reach, massless):
     return total
 
 
-def life_increment(torque_at, h, w1, a1, b, rb, ab, inertia, min_angle, exponent) -> float:
+def life_increment(
+    torque_at, h, w1, a1, b, rb, ab, inertia, min_angle, exponent, speed_at=None, peak=0.0
+) -> float:
     """The integral over a step of `h` s of A(t) |w(t)| |T(t)|^p, A = max(|b(t)|,
     `min_angle`): the life rate's variable part (`life.step_damage` scales it).
 
-    `torque_at(t)`: T1 t s into the step (`life_torque.torque_over_step`);
-    the speed w1 + a1 t and bend b + rb t + ab t^2 / 2 as the joint steps them."""
-    f = _Integrand(torque_at, w1, a1, b, rb, ab, min_angle, exponent)
-    peak = max(abs(b), abs(b + h * (rb + 0.5 * ab * h)))
+    `torque_at(t)`: T t s into the step (`life_torque.torque_over_step`); the
+    bend b + rb t + ab t^2 / 2 as the joint steps it; the speed w1 + a1 t, or
+    `speed_at(t)` for a joint behind others (a propshaft's: its sign is the
+    input's, w1 + a1 t still sizes the panels). `peak`: a larger bend whose
+    singularities the torque also has (a propshaft's other joints); `inertia`:
+    every inertia that can turn the torque over (all zero: T keeps its sign)."""
+    f = _Integrand(torque_at, w1, a1, b, rb, ab, min_angle, exponent, speed_at)
+    peak = max(peak, abs(b), abs(b + h * (rb + 0.5 * ab * h)))
     if ab and 0.0 < -rb / ab < h:
         peak = max(peak, abs(b - 0.5 * rb * rb / ab))
     # D = 0 at cos(psi) = +-1 / sin(b): an imaginary input angle acosh(1/|sin b|) away.

@@ -9,6 +9,7 @@ fixed at `start`; the fluctuation search runs once, at the first output read.
 
 import math
 
+from ...physics.life import rule_of
 from ...physics.refusal import Refusal
 from ...physics.revolutions import angle_value, split_angle
 from ...physics.stepped import ShaftModel
@@ -18,13 +19,14 @@ from .checks import angle_warnings
 from .critical_speed import critical_speed, critical_speed_warnings
 from .fluctuation import equivalent_angle, speed_ratio_fluctuation
 from .geometry import HALF_PI, TWO_PI, Layout, layout
+from .life import PropshaftLife
 from .refusals import PropshaftReason
 from .variables import propshaft_table
 
 _TUBE_PARTS = ("outer_diameter", "inner_diameter", "length", "youngs_modulus", "density")
 
 
-class Propshaft(ShaftModel):
+class Propshaft(PropshaftLife, ShaftModel):
     # The inputs and parameters every layout has, set from the table by __init__;
     # the per-shaft angles, phases and inertias are read by name (`getattr`).
     input_speed: float
@@ -36,9 +38,16 @@ class Propshaft(ShaftModel):
     crosspiece_inertia_3: float
     max_working_angle: float
     critical_speed_margin: float
+    # Every joint's bearing and life parameters (docs/life.md).
+    bearing_radius: float
+    rated_torque: float
+    life_constant: float
+    life_exponent: float
+    life_min_angle: float
 
-    def __init__(self, joints: int = 2, **values: float) -> None:
-        self.table = table = propshaft_table(joints)
+    def __init__(self, joints: int = 2, life: bool = True, **values: float) -> None:
+        self.life = life
+        self.table = table = propshaft_table(joints, life)
         self._fluctuation: tuple[Layout, float] | None = None
         self.joints = joints
         self._layout_outputs: tuple[Layout, tuple] | None = None
@@ -64,6 +73,7 @@ class Propshaft(ShaftModel):
         self.parameter_fault = self._angle_problem()
         valid = not self.parameter_fault
         self._angle = split_angle(self.input_angle_start if valid else 0.0)
+        self._life = [(0.0, 0.0)] * self.joints  # each joint's Miner's sum (total, error)
         if not valid:
             return
         self._inertia = tuple(getattr(self, n) for n in self._inertias)
@@ -72,6 +82,8 @@ class Propshaft(ShaftModel):
             self.crosspiece_inertia_2,
             self.crosspiece_inertia_3,
         )
+        if self.life:
+            self._life_rule = rule_of(self)
         self.layout = self._geometry()
         self._critical_speeds = tuple(
             critical_speed(*(getattr(self, f"shaft_{k}_{part}") for part in _TUBE_PARTS))
@@ -207,6 +219,7 @@ class Propshaft(ShaftModel):
             state.kinetic_energy,
             *self._geometry_outputs(),
             *(abs(w) / c for w, c in zip(state.speeds, self._critical_speeds)),
+            *(self._life_outputs(state) if self.life else ()),
         )
 
     def _geometry_outputs(self) -> tuple:

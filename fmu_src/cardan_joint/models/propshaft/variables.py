@@ -8,7 +8,7 @@ Pure data: no FMI import.
 from dataclasses import replace
 from functools import cache
 
-from ...units import DEG_TO_RAD, JOINT_UNITS, TUBE_UNITS
+from ...units import DEG_TO_RAD, JOINT_UNITS, LIFE_UNITS, TUBE_UNITS
 from ...variable_schema import _OUT, _PAR, Variable, VariableTable
 from ..universal_joint import variables as joint
 from ..universal_joint.variables import HALF_PI
@@ -185,7 +185,9 @@ def _outputs(joints):
 
 
 @cache
-def propshaft_table(joints: int = 2) -> VariableTable:
+def propshaft_table(joints: int = 2, life: bool = True) -> VariableTable:
+    """The table for `joints` joints; `life` off leaves out the bearing and life
+    rows (the compliant propshaft's rigid part: its load is the spring's)."""
     if joints not in JOINTS:
         raise ValueError(f"joints = {joints!r}: the Propshaft is built for {JOINTS} joints")
     inputs = [
@@ -223,7 +225,7 @@ def propshaft_table(joints: int = 2) -> VariableTable:
             HALF_PI,
         ),
     ]
-    parameters += _tubes(joints)
+    parameters += _tubes(joints) + (_life_parameters() if life else [])
     outputs = _outputs(joints) + [
         Variable(
             f"shaft_{k}_critical_speed_ratio",
@@ -236,7 +238,30 @@ def propshaft_table(joints: int = 2) -> VariableTable:
         )
         for k in range(1, joints)
     ]
-    return VariableTable(inputs + parameters + outputs, {**JOINT_UNITS, **TUBE_UNITS})
+    outputs += _life_outputs(joints) if life else []
+    units = {**JOINT_UNITS, **TUBE_UNITS, **LIFE_UNITS}
+    return VariableTable(inputs + parameters + outputs, units)
+
+
+def _life_parameters():
+    """The joint's bearing and life parameters (docs/life.md), one set for every joint."""
+    return [
+        replace(row, description=f"Every joint: {row.description[0].lower()}{row.description[1:]}")
+        for row in joint.LIFE_VARIABLES
+        if row.causality == _PAR
+    ]
+
+
+def _life_outputs(joints):
+    """The joint's four life outputs for each joint k, `joint_k_` before the name,
+    its input shaft the one upstream (shaft k - 1)."""
+    rows = [row for row in joint.LIFE_VARIABLES if row.causality == _OUT]
+    return [
+        replace(row, name=f"joint_{k}_{row.name}", depends_on=_TORQUE if row.depends_on else (),
+                description=f"Joint {k}: {row.description[0].lower()}{row.description[1:]}")
+        for k in range(1, joints + 1)
+        for row in rows
+    ]  # fmt: skip
 
 
 # (name, unit, description, default, min, max) of each intermediate shaft's tube:
