@@ -246,7 +246,7 @@ def propshaft_table(joints: int = 2, life: bool = True) -> VariableTable:
 def _life_parameters():
     """The joint's bearing and life parameters (docs/life.md), one set for every joint."""
     return [
-        replace(row, description=f"Every joint: {row.description[0].lower()}{row.description[1:]}")
+        replace(row, description=f"Every joint: {row.description}")
         for row in joint.LIFE_VARIABLES
         if row.causality == _PAR
     ]
@@ -258,7 +258,7 @@ def _life_outputs(joints):
     rows = [row for row in joint.LIFE_VARIABLES if row.causality == _OUT]
     return [
         replace(row, name=f"joint_{k}_{row.name}", depends_on=_TORQUE if row.depends_on else (),
-                description=f"Joint {k}: {row.description[0].lower()}{row.description[1:]}")
+                description=f"Joint {k}: {row.description}")
         for k in range(1, joints + 1)
         for row in rows
     ]  # fmt: skip
