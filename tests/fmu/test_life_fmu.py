@@ -2,7 +2,8 @@
 equal the physics model's bit for bit, and life_consumed is part of the FMU
 state (get, set, serialize)."""
 
-from cardan_joint.host.instance import FmuInstance
+from cardan_joint.host.instance import ExtractedFMU, FmuInstance
+from cardan_joint.models.propshaft import Propshaft
 from cardan_joint.models.universal_joint.model import CardanJoint
 
 LIFE = ("input_bearing_force", "output_bearing_force", "life_rate", "life_consumed")
@@ -71,3 +72,50 @@ def test_life_consumed_is_saved_restored_and_serialized_bit_for_bit(
     finally:
         joint.close()
         fresh.close()
+
+
+# The Propshaft: each joint's life outputs (`joint_k_`), FMI 2.0 = FMI 3.0 = the model.
+PROPSHAFT_START = dict(shaft_1_top_angle=0.12, rated_torque=500.0, bearing_radius=0.025)
+PROPSHAFT_STEPS = [
+    dict(input_speed=120.0 - 9.0 * k, input_acceleration=-900.0, load_torque=200.0 - 30.0 * k)
+    for k in range(20)
+]
+PROPSHAFT_LIFE = tuple(f"joint_{k}_{name}" for k in (1, 2) for name in LIFE)
+
+
+def _propshaft_model_run(steps):
+    shaft = Propshaft(2, **PROPSHAFT_START)
+    trace = []
+    for values in steps:
+        for name, value in values.items():
+            setattr(shaft, name, value)
+        assert shaft.step(H) is None
+        outputs = dict(zip(shaft.table.OUTPUTS, shaft.outputs()))
+        trace.append(tuple(outputs[n] for n in PROPSHAFT_LIFE))
+    return trace
+
+
+def _propshaft_run(shaft, steps):
+    trace = []
+    for values in steps:
+        shaft.set(**values)
+        shaft.step(H)
+        outputs = shaft.get_outputs()
+        trace.append(tuple(outputs[n] for n in PROPSHAFT_LIFE))
+    return trace
+
+
+def test_the_propshafts_joints_give_the_models_life_in_fmi2_and_fmi3_with_their_state(built):
+    expected = _propshaft_model_run(PROPSHAFT_STEPS)
+    assert min(expected[-1][3::4]) > 0.0
+    for version in (2, 3):
+        with ExtractedFMU(built("Propshaft", version)) as fmu:
+            shaft = fmu.instance(f"propshaft{version}", start_values=PROPSHAFT_START)
+            try:
+                assert _propshaft_run(shaft, PROPSHAFT_STEPS[:8]) == expected[:8]
+                saved = shaft.serialize_state(shaft.get_state())
+                assert _propshaft_run(shaft, PROPSHAFT_STEPS[8:]) == expected[8:]
+                shaft.set_state(shaft.deserialize_state(saved))
+                assert _propshaft_run(shaft, PROPSHAFT_STEPS[8:]) == expected[8:]
+            finally:
+                shaft.close()

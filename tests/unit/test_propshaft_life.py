@@ -32,7 +32,11 @@ def _reference_damages(shaft, h):
     in degrees and rpm integrated by mpmath between the torque's sign changes."""
     _, fraction, error = shaft._angle
     w0, a0 = shaft.input_speed, shaft.input_acceleration
-    crosspiece = (shaft.crosspiece_inertia_1, shaft.crosspiece_inertia_2, shaft.crosspiece_inertia_3)
+    crosspiece = (
+        shaft.crosspiece_inertia_1,
+        shaft.crosspiece_inertia_2,
+        shaft.crosspiece_inertia_3,
+    )
     inertias = [getattr(shaft, f"shaft_{k}_inertia") for k in range(1, shaft.joints)]
 
     def state(t):
@@ -50,8 +54,11 @@ def _reference_damages(shaft, h):
             speed = s.speeds[k - 1] if k else w0 + a0 * t
             degrees = max(beta, RULE.min_angle) * 180.0 / math.pi
             rpm = abs(speed) * 30.0 / math.pi
-            return degrees * rpm / RULE.constant * (abs(s.torques[k]) / RULE.rated_torque) ** (
-                RULE.exponent
+            return (
+                degrees
+                * rpm
+                / RULE.constant
+                * (abs(s.torques[k]) / RULE.rated_torque) ** (RULE.exponent)
             )
 
         ts = np.linspace(0.0, h, 2001)

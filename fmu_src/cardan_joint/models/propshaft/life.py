@@ -151,7 +151,9 @@ class PropshaftLife:
         totals = [float(x) for x in state["life_consumed"]]
         errors = [float(x) for x in state["life_consumed_error"]]
         if not len(totals) == len(errors) == self.joints:
-            raise ValueError(f"life_consumed: {len(totals)} joints in the state, {self.joints} here")
+            raise ValueError(
+                f"life_consumed: {len(totals)} joints in the state, {self.joints} here"
+            )
 
         def put() -> None:
             put_angle()
