@@ -54,6 +54,7 @@ TUBE_UNITS = {
 DRIVELINE_UNITS = {
     **JOINT_UNITS,
     **TUBE_UNITS,
+    **LIFE_UNITS,
     "N.m.s/rad": Unit("N.m.s/rad", (("kg", 1), ("m", 2), ("s", -1), ("rad", -1))),
     "N.m/rad": Unit("N.m/rad", (("kg", 1), ("m", 2), ("s", -2), ("rad", -1))),
 }

@@ -15,7 +15,10 @@ _T1 = JointResponse._fields.index("input_torque")
 
 
 def torque(t, case):
+    """T1 at t; the case's load a number, or a function of t (a spring's torque)."""
     psi, b, w, a, rb, ab, inertia, load = case
+    if callable(load):
+        load = load(t)
     return float(
         joint_response(
             psi + w * t + 0.5 * a * t * t,

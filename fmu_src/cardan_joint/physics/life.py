@@ -21,6 +21,7 @@ from typing import NamedTuple
 from .life_integral import FLAT_REACH, life_increment
 from .life_torque import input_torque, torque_over_step
 from .quadrature import gauss_unit_rule
+from .response import JointResponse, kernel
 
 _RAD_TO_DEG = 180.0 / math.pi
 _RAD_S_TO_RPM = 30.0 / math.pi
@@ -145,6 +146,34 @@ def step_damage(rule: LifeRule, h, psi, b, w1, a1, rb, ab, inertia, load) -> flo
         return fast * rate_scale(rule) / 3600.0
     torque_at = torque_over_step(psi, b, w1, a1, rb, ab, inertia, load)
     total = life_increment(torque_at, h, w1, a1, b, rb, ab, inertia, rule.min_angle, rule.exponent)
+    return total * rate_scale(rule) / 3600.0
+
+
+_SPRING_FIELDS = tuple(
+    JointResponse._fields.index(name)
+    for name in ("input_torque", "speed_ratio", "cardan_error", "output_speed")
+)
+
+
+def step_damage_loaded(rule: LifeRule, h, psi, b, w1, a1, rb, ab, inertia, load_at) -> float:
+    """`step_damage` with a load that follows the joint's motion over the step (a
+    spring at the output): `load_at(t, cardan_error, output_speed)`, N.m. T1 is
+    affine in the load with slope cos b / D (the speed ratio), so one kernel
+    call per node gives both the kinematics the load needs and the torque."""
+    I1, I2, I3 = inertia
+
+    def torque_at(t):
+        r = kernel(
+            math, psi + t * (w1 + 0.5 * a1 * t), b + t * (rb + 0.5 * ab * t), w1 + a1 * t, a1,
+            rb + ab * t, ab, I1, I2, I3, 0.0, 1.0,
+        )  # fmt: skip
+        free, ratio, error, speed = (r[i] for i in _SPRING_FIELDS)
+        return free + ratio * load_at(t, error, speed)
+
+    # A load that follows the motion can turn the torque over, whatever the cross.
+    total = life_increment(
+        torque_at, h, w1, a1, b, rb, ab, (*inertia, 1.0), rule.min_angle, rule.exponent
+    )
     return total * rate_scale(rule) / 3600.0
 
 

@@ -49,7 +49,7 @@ def _spring_outputs(twist_deps, torque_deps):
     # fmt: on
 
 
-def compliant_table(rigid=joint_table.WITHOUT_LIFE) -> VariableTable:
+def compliant_table(rigid=joint_table) -> VariableTable:
     """The compliant drive's table from its rigid drive's table."""
     by_name = rigid.BY_NAME
     inputs = []

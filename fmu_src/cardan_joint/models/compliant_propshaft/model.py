@@ -20,7 +20,7 @@ class CompliantPropshaft(CompliantDrive):
 
     def __init__(self, joints: int = 2, **values: float) -> None:
         table = compliant_propshaft_table(joints)
-        super().__init__(Propshaft(joints, life=False), table, "compliant propshaft", **values)
+        super().__init__(Propshaft(joints), table, "compliant propshaft", **values)
         self.joints = joints
 
     def _kinematics(self) -> tuple[float, float]:

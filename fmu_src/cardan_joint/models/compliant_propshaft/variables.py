@@ -11,6 +11,4 @@ from ..propshaft.variables import propshaft_table
 @cache
 def compliant_propshaft_table(joints: int = 2) -> VariableTable:
     """The CompliantPropshaft's table for `joints` joints."""
-    # Without life: the rigid part's damage would integrate a load it does not
-    # know over the step (the spring's), so the compliant drives leave it out.
-    return compliant_table(propshaft_table(joints, life=False))
+    return compliant_table(propshaft_table(joints))

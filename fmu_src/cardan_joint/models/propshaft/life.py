@@ -91,6 +91,10 @@ class PropshaftLife:
     input_speed: float
     input_acceleration: float
     load_torque: float
+    _shifts: tuple
+    # Set over a step by a layer whose load follows the motion (the compliant
+    # drive's spring): load(t, kinematic offset, kinematic output speed), N.m.
+    load_over_step: Any = None
 
     def _life_outputs(self, state) -> tuple:
         """Each joint's bearing forces, life rate and life consumed."""
@@ -117,7 +121,9 @@ class PropshaftLife:
         if problem or not self.life:
             return problem
 
-        def chain_at(t):
+        spring = self.load_over_step
+
+        def chain_at(t, load=None):
             return chain(
                 self.layout,
                 fraction,
@@ -125,13 +131,24 @@ class PropshaftLife:
                 acceleration,
                 self._crosspiece,
                 self._inertia,
-                self.load_torque,
+                self.load_torque if load is None else load,
                 error + t * (speed + 0.5 * acceleration * t),
             )
 
-        inertias = (*self._crosspiece, *self._inertia)
+        def loaded_at(t):  # the kinematics first, the spring's load from them
+            free = chain_at(t, 0.0)
+            offset = free.offsets[-1] - self._shifts[-1]
+            return chain_at(t, spring(t, offset, free.speeds[-1]))
+
+        inertias = (*self._crosspiece, *self._inertia, 0.0 if spring is None else 1.0)
         damages = step_damages(
-            self._life_rule, h, chain_at, self.layout.working_angles, speed, acceleration, inertias
+            self._life_rule,
+            h,
+            chain_at if spring is None else loaded_at,
+            self.layout.working_angles,
+            speed,
+            acceleration,
+            inertias,
         )
         self._life = added(self._life, damages)
         return None

@@ -6,7 +6,13 @@ import math
 from collections.abc import Callable
 from typing import Any
 
-from ...physics.life import compensated_add, life_outputs, rule_of, step_damage
+from ...physics.life import (
+    compensated_add,
+    life_outputs,
+    rule_of,
+    step_damage,
+    step_damage_loaded,
+)
 from ...physics.response import JointResponse
 
 _TORQUES = tuple(
@@ -25,6 +31,9 @@ class JointLife:
     life_constant: float
     life_exponent: float
     life_min_angle: float
+    # Set over a step by a layer whose load follows the motion (the compliant
+    # drive's spring): load(t, kinematic offset, kinematic output speed), N.m.
+    load_over_step: Callable | None = None
 
     def _start_life(self) -> None:
         """The rule from the parameters (fixed until the next start), no damage yet."""
@@ -52,7 +61,13 @@ class JointLife:
 
     def _add_damage(self, h: float, start: tuple[Any, ...] | None) -> None:
         """Miner's sum plus the step's damage from `start`, compensated."""
-        damage = step_damage(self._life_rule, h, *start) if start else 0.0
+        if not start:
+            return
+        load = self.load_over_step
+        if load is None:
+            damage = step_damage(self._life_rule, h, *start)
+        else:
+            damage = step_damage_loaded(self._life_rule, h, *start[:-1], load)
         if damage:
             self.life_consumed, self.life_consumed_error = compensated_add(
                 self.life_consumed, self.life_consumed_error, damage
