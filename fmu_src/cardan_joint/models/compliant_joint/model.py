@@ -221,6 +221,11 @@ class CompliantJoint(CompliantDrive):
     crosspiece_inertia_2: float
     crosspiece_inertia_3: float
     max_bend_angle: float
+    bearing_radius: float
+    rated_torque: float
+    life_constant: float
+    life_exponent: float
+    life_min_angle: float
 
     def __init__(self, **values: float) -> None:
         super().__init__(CardanJoint(), COMPLIANT_JOINT, "compliant joint", **values)
