@@ -2,7 +2,10 @@
 equal the physics model's bit for bit, and life_consumed is part of the FMU
 state (get, set, serialize)."""
 
+import pytest
+
 from cardan_joint.host.instance import ExtractedFMU, FmuInstance
+from cardan_joint.models import discover
 from cardan_joint.models.propshaft import Propshaft
 from cardan_joint.models.universal_joint.model import CardanJoint
 
@@ -119,3 +122,31 @@ def test_the_propshafts_joints_give_the_models_life_in_fmi2_and_fmi3_with_their_
                 assert _propshaft_run(shaft, PROPSHAFT_STEPS[8:]) == expected[8:]
             finally:
                 shaft.close()
+
+
+JOINTED = sorted(key for key, spec in discover().items() if spec.owner == "joint")
+
+
+@pytest.mark.parametrize("key", JOINTED)
+def test_every_jointed_model_has_the_life_outputs_in_fmi2_and_fmi3_bit_for_bit(key, built):
+    traces = []
+    for version in (2, 3):
+        with ExtractedFMU(built(key, version)) as fmu:
+            names = [v.name for v in fmu.model_description.modelVariables]
+            life = [n for n in names if n.endswith(LIFE)]
+            # One of each of the four per joint (a propshaft's joints: `joint_k_`).
+            assert len(life) % 4 == 0 and {n[-len(s) :] for n in life for s in LIFE if
+                                            n.endswith(s)} == set(LIFE)  # fmt: skip
+            instance = fmu.instance(f"{key}{version}")
+            try:
+                trace = []
+                for k in range(12):
+                    instance.set(input_speed=60.0 + 5.0 * k, input_acceleration=500.0)
+                    instance.step(0.01)
+                    trace.append(tuple(instance.get_outputs().items()))
+                traces.append(trace)
+            finally:
+                instance.close()
+    assert traces[0] == traces[1]
+    consumed = [v for n, v in traces[0][-1] if n.endswith("life_consumed")]
+    assert consumed and min(consumed) > 0.0
