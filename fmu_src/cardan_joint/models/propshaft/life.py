@@ -154,7 +154,7 @@ class PropshaftLife:
         return None
 
     def own_state(self) -> dict:
-        state = super().own_state()
+        state = super().own_state()  # type: ignore[misc]
         if not self.life:
             return state
         state["life_consumed"] = [total for total, _ in self._life]
@@ -162,7 +162,7 @@ class PropshaftLife:
         return state
 
     def own_state_from(self, state: dict):
-        put_angle = super().own_state_from(state)
+        put_angle = super().own_state_from(state)  # type: ignore[misc]
         if not self.life:
             return put_angle
         totals = [float(x) for x in state["life_consumed"]]

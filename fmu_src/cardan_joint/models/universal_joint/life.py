@@ -67,7 +67,12 @@ class JointLife:
         if load is None:
             damage = step_damage(self._life_rule, h, *start)
         else:
-            damage = step_damage_loaded(self._life_rule, h, *start[:-1], load)
+            # The held load gives way to the moving one.
+            psi, bend, speed, acceleration, rate, bend_acceleration, inertia, _ = start
+            damage = step_damage_loaded(
+                self._life_rule, h, psi, bend, speed, acceleration, rate, bend_acceleration,
+                inertia, load,
+            )  # fmt: skip
         if damage:
             self.life_consumed, self.life_consumed_error = compensated_add(
                 self.life_consumed, self.life_consumed_error, damage
