@@ -171,6 +171,13 @@ VALUE_MUTATIONS = (
         (GUARDS, "-k", "bend"),
     ),
     Mutation(
+        "propshaft tube: inner diameter below the outer",
+        "fmu_src/cardan_joint/models/propshaft/model.py",
+        "if not inner < outer:",
+        "if False:",
+        ("tests/unit/test_propshaft_refusals.py", "-k", "wall"),
+    ),
+    Mutation(
         "bend angle marks its outputs invalid",
         MODEL,
         "if not abs(self.bend_angle) < self.max_bend_angle:",
