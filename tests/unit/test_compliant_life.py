@@ -2,7 +2,8 @@
 life under the spring's torque, which follows the motion over a step. The damage
 against mpmath's adaptive quadrature of the catalogue rate (`life_reference`),
 the spring's torque at each instant rebuilt from the closed forms: the cardan
-error and output speed from the full kernel, the lag as the polynomial it is."""
+error and output speed from the full kernel, the lag as the polynomial it is.
+The compliant propshaft's: tests/unit/test_propshaft_life.py."""
 
 import json
 import math
@@ -79,18 +80,6 @@ def test_the_compliant_joints_loads_and_rate_are_the_joints_under_the_spring():
     same = dict(zip(rigid.table.OUTPUTS, rigid.outputs()))
     for name in ("input_bearing_force", "output_bearing_force", "life_rate", "input_torque"):
         assert out[name] == same[name]
-
-
-def test_the_compliant_propshaft_integrates_its_joints_life_under_the_spring():
-    # Against the same propshaft with the spring's torque, a constant, as its
-    # load: a spring much stiffer than the motion's lag holds it nearly still.
-    shaft = CompliantPropshaft(2, input_speed=150.0, output_speed=150.0, twist_angle_start=0.02,
-                               torsional_stiffness=1e4, torsional_damping=0.0)  # fmt: skip
-    assert shaft.step(1e-4) is None
-    out = dict(zip(shaft.table.OUTPUTS, shaft.outputs()))
-    for k in (1, 2):
-        rate = out[f"joint_{k}_life_rate"]
-        assert out[f"joint_{k}_life_consumed"] == pytest.approx(rate * 1e-4 / 3600.0, rel=1e-2)
 
 
 @pytest.mark.parametrize("make", [lambda: CompliantJoint(), lambda: CompliantPropshaft(3)])

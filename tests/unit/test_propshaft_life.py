@@ -16,6 +16,7 @@ import numpy as np
 import pytest
 from scipy.optimize import brentq
 
+from cardan_joint.models.compliant_propshaft.model import CompliantPropshaft
 from cardan_joint.models.propshaft import Propshaft, chain
 from cardan_joint.physics.life import LifeRule
 
@@ -27,9 +28,10 @@ def _outputs(shaft):
     return dict(zip(shaft.table.OUTPUTS, shaft.outputs()))
 
 
-def _reference_damages(shaft, h):
+def _reference_damages(shaft, h, spring=None):
     """Each joint's damage over the next step of `h` s, from the catalogue rate
-    in degrees and rpm integrated by mpmath between the torque's sign changes."""
+    in degrees and rpm integrated by mpmath between the torque's sign changes;
+    the load `spring(t, free chain)` if given (a compliant layer's), else held."""
     _, fraction, error = shaft._angle
     w0, a0 = shaft.input_speed, shaft.input_acceleration
     crosspiece = (
@@ -41,7 +43,10 @@ def _reference_damages(shaft, h):
 
     def state(t):
         angle = fraction + (error + (w0 * t + 0.5 * a0 * t * t))
-        return chain(shaft.layout, angle, w0 + a0 * t, a0, crosspiece, inertias, shaft.load_torque)
+        load = shaft.load_torque
+        if spring:
+            load = spring(t, chain(shaft.layout, angle, w0 + a0 * t, a0, crosspiece, inertias))
+        return chain(shaft.layout, angle, w0 + a0 * t, a0, crosspiece, inertias, load)
 
     damages = []
     for k, beta in enumerate(shaft.layout.working_angles):
@@ -160,3 +165,27 @@ def test_without_life_the_propshaft_gives_the_same_numbers_and_lacks_only_the_li
         for k in (1, 2, 3)
         for name in ("input_bearing_force", "output_bearing_force", "life_rate", "life_consumed")
     }
+
+
+def test_under_a_spring_each_joints_life_consumed_equals_an_adaptive_quadrature():
+    drive = CompliantPropshaft(3, shaft_1_top_angle=D(8.0), input_speed=130.0,
+                               input_acceleration=600.0, output_speed=127.0,
+                               output_acceleration=1500.0, torsional_stiffness=3e3)  # fmt: skip
+    shaft, h = drive.rigid, 0.01
+    expected = [0.0] * 3
+    k, c, shift = drive.torsional_stiffness, drive.torsional_damping, shaft._shifts[-1]
+    for _ in range(3):
+        lag, wo, ao = drive._lag, drive.output_speed, drive.output_acceleration
+        slip, slip_rate = shaft.input_speed - wo, shaft.input_acceleration - ao
+
+        def spring(t, free, lag=lag, wo=wo, ao=ao, slip=slip, slip_rate=slip_rate):
+            twist = free.offsets[-1] - shift + lag + slip * t + 0.5 * slip_rate * t * t
+            return k * twist + c * (free.speeds[-1] - (wo + ao * t))
+
+        expected = [e + d for e, d in zip(expected, _reference_damages(shaft, h, spring))]
+        assert drive.step(h) is None
+        out = dict(zip(drive.table.OUTPUTS, drive.outputs()))
+        for j in (1, 2, 3):
+            got = out[f"joint_{j}_life_consumed"]
+            assert abs(got - expected[j - 1]) <= 1e-9 * expected[j - 1], j
+    assert min(expected) > 0.0
