@@ -10,7 +10,9 @@ import shutil
 from pathlib import Path
 
 from cardan_joint.fmi.native import install_loader
-from cardan_joint.models.universal_joint import variables as table
+
+# The runtime's joint and its floors: the joint built without life (docs/life.md).
+from cardan_joint.models.universal_joint.variables import WITHOUT_LIFE as table
 
 from .timing import ROOT, run_checked
 
@@ -66,10 +68,12 @@ def build_floor_fmu(dest, kind: str, loader: bool = True) -> Path:
     return fmu
 
 
-def build_joint_fmu(dest) -> Path:
-    """A fresh build of the working tree, so that the numbers are those of this code."""
-    run_checked([str(ROOT / "build_fmu.py"), "--dest", str(dest)], cwd=ROOT)
-    return Path(dest) / "UniversalJoint.fmu"
+def build_joint_fmu(dest, life: bool = True) -> Path:
+    """A fresh build of the working tree, so that the numbers are those of this code
+    (`life` off: the same joint without bearing loads and life, docs/life.md)."""
+    extra = [] if life else ["--no-life"]
+    run_checked([str(ROOT / "build_fmu.py"), "--dest", str(dest), *extra], cwd=ROOT)
+    return Path(dest) / ("UniversalJoint.fmu" if life else "UniversalJointNoLife.fmu")
 
 
 def unzip(fmu: Path, workdir: Path) -> str:

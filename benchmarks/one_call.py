@@ -24,7 +24,8 @@ import subprocess
 import sys
 import time
 
-from cardan_joint.models.universal_joint import variables as table
+# The runtime's joint and its floors: the joint built without life (docs/life.md).
+from cardan_joint.models.universal_joint.variables import WITHOUT_LIFE as table
 
 from .step_cost import STEP_SIZE, TIMING_INPUTS
 from .timing import ROOT, against, chunks, in_fresh_process, met, us
@@ -42,7 +43,7 @@ PYTHON_PATHS = ("physics", "slave set/do_step/get", "slave fast_step")
 def _physics_stepper():
     from cardan_joint.models.universal_joint.model import CardanJoint
 
-    joint = CardanJoint(**TIMING_INPUTS)
+    joint = CardanJoint(False, **TIMING_INPUTS)  # the runtime's joint: without life
     step, outputs = joint.step, joint.outputs
 
     def run(first, length):
@@ -59,6 +60,7 @@ def _slave():
 
     class Joint(ModelSlave):
         model_folder = "universal_joint"
+        build_settings = {"life": False}  # the runtime's joint: without life
 
     slave = Joint(instance_name="benchmark")
     slave.setup_experiment(0.0)

@@ -43,7 +43,8 @@ def step_loop(joint, steps, first_step=0):
     references = joint.references
     inputs = [references[name] for name in TIMING_INPUTS]
     values = list(TIMING_INPUTS.values())
-    outputs = [references[name] for name in table.OUTPUTS]
+    # All the joint's outputs (a build without life has fewer).
+    outputs = [references[name] for name in table.OUTPUTS if name in references]
     set_real, do_step, get_real = joint.fmu.setReal, joint.fmu.doStep, joint.fmu.getReal
     h = STEP_SIZE
     for step in range(first_step, first_step + steps):
@@ -128,10 +129,13 @@ def side_by_side(kind, fmus: dict, runs, steps, chunk):
     ]
 
 
-def step_cost(fmus, sizes):
+def step_cost(fmus, sizes, with_life=None):
+    """`with_life`: the joint built with life (the default build), timed in the
+    loop beside the others: its step against the joint's without life."""
     simulated = {name: fmus[name] for name in ("plain", "joint")}
+    looped = {**fmus, "life": with_life} if with_life else fmus
     return {
-        "loop": side_by_side("loop", fmus, sizes.runs, sizes.steps, LOOP_CHUNK),
+        "loop": side_by_side("loop", looped, sizes.runs, sizes.steps, LOOP_CHUNK),
         "simulate": side_by_side(
             "simulate", simulated, sizes.simulate_runs, sizes.steps, SIMULATE_CHUNK
         ),
@@ -154,10 +158,25 @@ def cost_rows(cost, sizes):
     plain, plain_ratio = cost_cell(cost["loop"], "plain")
     bare, _ = cost_cell(cost["loop"], "bare")
     simulate, _ = cost_cell(cost["simulate"], "plain")
+    life = []
+    if "life" in cost["loop"][0]["times"]:
+        # The life-on build over the joint (without life), as `against` takes a floor.
+        pairs = [
+            {"times": {"joint": run["times"]["life"], "without": run["times"]["joint"]}}
+            for run in cost["loop"]
+        ]
+        on_off = against(pairs, "without")
+        life = [
+            f"| 1. Life on vs off (docs/life.md): the default build vs the joint built "
+            f"`--no-life`, {runs('loop')} | with life {us(on_off['joint'])}, without "
+            f"{us(on_off['floor'])}: **×{on_off['ratio']:.2f}** (single runs "
+            f"×{on_off['pair_min']:.2f}–{on_off['pair_max']:.2f}) | (context) | |"
+        ]
     return [
         f"| 1. FMU2Slave loop (set 6, doStep, get 20) vs plain floor, {runs('loop')} | "
         f"{plain} | ≤ ×{RATIO_GOAL} | {met(plain_ratio <= RATIO_GOAL)} |",
         f"| 1. FMU2Slave loop vs bare floor (stricter), {runs('loop')} | {bare} | (context) | |",
         f"| 1. `simulate_fmu` (inputs set every step, 20 outputs recorded) vs plain floor, "
         f"{runs('simulate')} | {simulate} | (context) | |",
+        *life,
     ]

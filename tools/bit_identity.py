@@ -1,13 +1,20 @@
 """Every model's FMUs (FMI 2.0 and 3.0) of two source trees, bit for bit.
 
-    python tools/bit_identity.py BEFORE_TREE AFTER_TREE [--steps N]
+    python tools/bit_identity.py BEFORE_TREE AFTER_TREE [--steps N] [--model KEY ...]
+                                 [--after-setting=--SETTING ...]
 
 Builds each model found in AFTER_TREE with each tree's own build_fmu.py, runs
 both through one long scenario in FMPy (inputs varied every step, out-of-range
 and NaN inputs: refused steps and held outputs; reads after writes; an FMU state
 saved, serialized and restored) and compares every status, every output's bits
 and every log message. Exits 1 on the first FMU that differs. A check for
-changes that must not change results (a refactoring, a faster step)."""
+changes that must not change results (a refactoring, a faster step).
+
+--model restricts the comparison to those models; --after-setting builds AFTER
+with a build setting BEFORE lacks (e.g. `--after-setting=--no-life`: a model
+with a new part, built without it), both under the model's plain name;
+--common-outputs compares only the outputs BEFORE has (AFTER adds outputs, and
+parameters at their defaults, and must leave the others as they were)."""
 
 import argparse
 import math
@@ -45,15 +52,16 @@ def flat(values) -> bytes:
     return struct.pack(f"{len(numbers)}d", *numbers)
 
 
-def scenario(fmu: Path, steps: int) -> list:
-    """Everything an FMU answers over the scenario, in order."""
+def scenario(fmu: Path, steps: int, only=None) -> list:
+    """Everything an FMU answers over the scenario, in order (of the outputs
+    `only` names, if given)."""
     log: list = []
     record: list = []
     with ExtractedFMU(fmu) as extracted:
         inputs = [v for v in extracted.model_description.modelVariables if v.causality == "input"]
         starts = {v.name: float(v.start) for v in inputs}
         with extracted.instance("bits", messages=log) as fmu_instance:
-            outputs = fmu_instance.outputs
+            outputs = [n for n in fmu_instance.outputs if only is None or n in only]
 
             def read(tag):
                 record.append((tag, flat(fmu_instance.values(*outputs))))
@@ -87,14 +95,27 @@ def main(argv=None) -> int:
     parser.add_argument("before", type=Path)
     parser.add_argument("after", type=Path)
     parser.add_argument("--steps", type=int, default=4000)
+    parser.add_argument("--model", action="append", default=[], help="only this model")
+    parser.add_argument("--after-setting", action="append", default=[], metavar="ARG")
+    parser.add_argument("--common-outputs", action="store_true", help="only BEFORE's outputs")
     args = parser.parse_args(argv)
     with tempfile.TemporaryDirectory(prefix="bit_identity_") as work:
         for arguments, name in builds():
-            answers = []
+            if args.model and arguments[1] not in args.model:
+                continue
+            if args.after_setting:  # one name on both sides, whatever the setting names
+                arguments = [*arguments, "--name", Path(name).stem]
+            answers: list = []
+            only = None
             for tree, side in ((args.before, "before"), (args.after, "after")):
                 dest = Path(work) / side
-                build(tree.resolve(), dest, arguments)
-                answers.append(scenario(dest / name, args.steps))
+                extra = args.after_setting if side == "after" else []
+                build(tree.resolve(), dest, [*arguments, *extra])
+                answers.append(scenario(dest / name, args.steps, only))
+                if args.common_outputs and only is None:
+                    with ExtractedFMU(dest / name) as before:
+                        described = before.model_description.modelVariables
+                        only = {v.name for v in described if v.causality == "output"}
             same = answers[0] == answers[1]
             print(f"{name}: {'identical' if same else 'DIFFERENT'} ({len(answers[0])} records)")
             if not same:

@@ -47,6 +47,7 @@ class Example:
 EXAMPLES = (
     Example("demo", ("demo.png",)),
     Example("motor_load", ("motor_load.png",)),
+    Example("duty_cycle", ("duty_cycle.png",)),
     Example("driveshaft", ("driveshaft.png",), sources=("examples/_driveshaft_support.py",)),
     Example("propshaft_layout", ("propshaft_layout.png",), model="Propshaft"),
     Example(

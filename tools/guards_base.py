@@ -12,6 +12,7 @@ sys.path.insert(0, str(ROOT / "fmu_src"))
 
 RESTORED = "        values = {name: float(state[name]) for name in self._saved_names()}\n"
 MODEL = "fmu_src/cardan_joint/models/universal_joint/model.py"
+LIMITS = "fmu_src/cardan_joint/models/universal_joint/limits.py"
 VALUES = "fmu_src/cardan_joint/physics/values.py"
 STEPPED = "fmu_src/cardan_joint/physics/stepped.py"
 SLAVE = "fmu_src/cardan_joint/fmi/slave.py"

@@ -4,6 +4,7 @@ at its peak inside the step, in the slow path and the fast path."""
 
 from guards_base import (
     GUARDS,
+    LIMITS,
     MODEL,
     SLAVE_GUARDS,
     VALUES,
@@ -17,15 +18,15 @@ FINITE_LOOP = (
     "        for name in names:\n            value = getattr(self, name)\n"
     "            if not math.isfinite(value):"
 )
-INPUT_RANGES = '_INPUT_RANGES = _ranges(table.INPUTS, "bend_angle")'
-PARAMETER_RANGES = '_PARAMETER_RANGES = _ranges(table.PARAMETERS, "max_bend_angle")'
+INPUT_RANGES = 'INPUT_RANGES = _ranges(table.INPUTS, "bend_angle")'
+PARAMETER_RANGES = 'PARAMETER_RANGES = _ranges(table.PARAMETERS, "max_bend_angle")'
 # Every input and parameter but the bend angle and its guard has a table range.
 RANGED_INPUTS = tuple(n for n in table.INPUTS if n != "bend_angle")
 RANGED_PARAMETERS = tuple(n for n in table.PARAMETERS if n != "max_bend_angle")
 ALL_INPUTS = table.INPUTS
 PARAMETERS = table.PARAMETERS
 FAST_PATH = {
-    "input_speed": "abs(speed) <= _SPEED_LIMIT",
+    "input_speed": "abs(speed) <= SPEED_LIMIT",
     "input_acceleration": "abs(acceleration) <= _ACCELERATION_LIMIT",
     "bend_angle_rate": "abs(rate) <= _RATE_LIMIT",
     "bend_angle_acceleration": "abs(acc) <= _BEND_ACCELERATION_LIMIT",
@@ -51,7 +52,7 @@ VALUE_MUTATIONS = (
     *(
         Mutation(
             f"input {n} range (slow path)",
-            MODEL,
+            LIMITS,
             INPUT_RANGES,
             INPUT_RANGES.replace('"bend_angle"', f'"bend_angle", {n!r}'),
             (GUARDS, "-k", "input"),
@@ -60,14 +61,14 @@ VALUE_MUTATIONS = (
     ),
     *(
         Mutation(
-            f"input {n} range (fast path)", MODEL, FAST_PATH[n], "True", (GUARDS, "-k", "input")
+            f"input {n} range (fast path)", LIMITS, FAST_PATH[n], "True", (GUARDS, "-k", "input")
         )
         for n in RANGED_INPUTS
     ),
     Mutation(
         "inputs: any bad value (slow path)",
         MODEL,
-        "self._value_problem(table.INPUTS, _INPUT_RANGES)",
+        "self._value_problem(self.table.INPUTS, INPUT_RANGES)",
         "None",
         (GUARDS, "-k", "input"),
     ),
@@ -81,7 +82,7 @@ VALUE_MUTATIONS = (
     *(
         Mutation(
             f"parameter {n} range",
-            MODEL,
+            LIMITS,
             PARAMETER_RANGES,
             PARAMETER_RANGES.replace('"max_bend_angle"', f'"max_bend_angle", {n!r}'),
             (GUARDS, "-k", "parameter"),
@@ -119,21 +120,21 @@ VALUE_MUTATIONS = (
     # The bend angle: now, at the step's end, at the peak inside the step; both paths.
     Mutation(
         "bend angle now (fast path)",
-        MODEL,
+        LIMITS,
         "and abs(beta) < guard",
         "and True",
         (GUARDS, "-k", "bend"),
     ),
     Mutation(
         "bend angle at step end (fast path)",
-        MODEL,
+        LIMITS,
         "abs(beta + step_size * (rate + 0.5 * acc * step_size)) < guard",
         "True",
         (GUARDS, "-k", "bend"),
     ),
     Mutation(
         "bend peak inside the step (fast path)",
-        MODEL,
+        LIMITS,
         "(rate * acc >= 0.0 or -rate / acc >= step_size)",
         "True",
         PEAK_TESTS,
@@ -168,6 +169,13 @@ VALUE_MUTATIONS = (
         "if abs(worst) >= guard:",
         "if False:",
         (GUARDS, "-k", "bend"),
+    ),
+    Mutation(
+        "propshaft tube: inner diameter below the outer",
+        "fmu_src/cardan_joint/models/propshaft/model.py",
+        "if not inner < outer:",
+        "if False:",
+        ("tests/unit/test_propshaft_refusals.py", "-k", "wall"),
     ),
     Mutation(
         "bend angle marks its outputs invalid",

@@ -30,9 +30,31 @@ JOINT_UNITS = {
     )
 }
 
+# The bearing loads' and the catalogue life's units (docs/life.md).
+LIFE_UNITS = {
+    u.name: u
+    for u in (
+        Unit("m", (("m", 1),)),
+        Unit("N", (("kg", 1), ("m", 1), ("s", -2))),
+        Unit("1/h", (("s", -1),), factor=1.0 / 3600.0),
+    )
+}
+
+# A propshaft tube's material (its critical speed).
+TUBE_UNITS = {
+    u.name: u
+    for u in (
+        Unit("m", (("m", 1),)),
+        Unit("Pa", (("kg", 1), ("m", -1), ("s", -2))),
+        Unit("kg/m3", (("kg", 1), ("m", -3))),
+    )
+}
+
 # Every unit of the driveline's models (the joint's and the spring-damper's).
 DRIVELINE_UNITS = {
     **JOINT_UNITS,
+    **TUBE_UNITS,
+    **LIFE_UNITS,
     "N.m.s/rad": Unit("N.m.s/rad", (("kg", 1), ("m", 2), ("s", -1), ("rad", -1))),
     "N.m/rad": Unit("N.m/rad", (("kg", 1), ("m", 2), ("s", -2), ("rad", -1))),
 }
@@ -47,6 +69,8 @@ def table_of(variables) -> VariableTable:
 __all__ = [
     "DRIVELINE_UNITS",
     "JOINT_UNITS",
+    "LIFE_UNITS",
+    "TUBE_UNITS",
     "table_of",
     "DEG_TO_RAD",
     "RAD_PER_S_TO_RPM",

@@ -19,6 +19,7 @@ class Unit:
     name: str
     exponents: tuple  # ((base unit, exponent), ...) of FMI's BaseUnit
     display: tuple = ()  # ((display unit, factor), ...): display = factor * value
+    factor: float = 1.0  # SI value = factor * value (FMI BaseUnit factor), e.g. 1/h
 
 
 @dataclass(frozen=True)
@@ -47,9 +48,11 @@ class VariableTable:
     `variables.py` module may itself be its table (the same attribute names);
     others build one (e.g. `units.table_of`)."""
 
-    def __init__(self, variables, units: Mapping[str, Unit]):
-        """`units`: the unit definitions (name -> Unit) its description declares."""
+    def __init__(self, variables, units: Mapping[str, Unit], array_stems: tuple = ()):
+        """`units`: the unit definitions (name -> Unit) its description declares;
+        `array_stems`: the vectors FMI 3 declares as arrays (`fmi3_groups`)."""
         self.VARIABLES = tuple(variables)
+        self.ARRAY_STEMS = tuple(array_stems)
         self.BY_NAME = {v.name: v for v in self.VARIABLES}
         self.INPUTS = _names(self.VARIABLES, _IN)
         self.PARAMETERS = _names(self.VARIABLES, _PAR)
@@ -63,8 +66,8 @@ class VariableTable:
         return markdown_table(self.VARIABLES)
 
     def fmi3_variables(self) -> tuple:
-        """Its FMI 3 variables (scalars: the table's rows name no arrays)."""
-        return fmi3_groups(self.VARIABLES)
+        """Its FMI 3 variables: arrays where ARRAY_STEMS says, else scalars."""
+        return fmi3_groups(self.VARIABLES, self.ARRAY_STEMS)
 
 
 def _names(variables, causality):

@@ -171,7 +171,8 @@ def _driven(stiffness, stop=0.3):
     response = rigid.response()
     rigid.load_torque = inertia * response.output_acceleration + drag * load.speed + constant
     return (
-        dict(zip(COMPLIANT_JOINT.OUTPUTS, joint.outputs()))["input_torque"] - rigid.outputs()[-3],
+        dict(zip(COMPLIANT_JOINT.OUTPUTS, joint.outputs()))["input_torque"]
+        - dict(zip(rigid.table.OUTPUTS, rigid.outputs()))["input_torque"],
         load.speed - response.output_speed,
     )
 

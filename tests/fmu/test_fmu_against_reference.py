@@ -97,10 +97,16 @@ SCALE_OF = {
 }
 
 
+# The bearing loads and life have their own independent references (tests/unit/test_life.py).
+LIFE = {"input_bearing_force", "output_bearing_force", "life_rate", "life_consumed"}
+
+
 def check_point(values, case, t):
     ref = reference_at(case, t)
     s = scales(case, t)
     for name, value in values.items():
+        if name in LIFE:
+            continue
         if name in ANGLES:
             assert abs(value - ref[name]) <= 1e-12 + 1e-15 * abs(ref[name]), (
                 name,

@@ -12,7 +12,8 @@ PHYSICS_NAMES = {
     ).split(),
     "parameter": (
         "yoke_phase input_angle_start crosspiece_inertia_1 crosspiece_inertia_2 "
-        "crosspiece_inertia_3 max_bend_angle"
+        "crosspiece_inertia_3 max_bend_angle bearing_radius rated_torque life_constant "
+        "life_exponent life_min_angle"
     ).split(),
     "output": (
         "input_angle output_angle output_speed output_acceleration cardan_error "
@@ -20,7 +21,8 @@ PHYSICS_NAMES = {
         "crosspiece_angular_velocity_3 crosspiece_torque_1 crosspiece_torque_2 "
         "crosspiece_torque_3 crosspiece_kinetic_energy crosspiece_quaternion_0 "
         "crosspiece_quaternion_1 crosspiece_quaternion_2 crosspiece_quaternion_3 "
-        "input_torque input_yoke_moment output_yoke_moment"
+        "input_torque input_yoke_moment output_yoke_moment input_bearing_force "
+        "output_bearing_force life_rate life_consumed"
     ).split(),
 }
 PHYSICS_UNITS = {
@@ -43,6 +45,13 @@ PHYSICS_UNITS = {
     "input_torque": "N.m",
     "input_yoke_moment": "N.m",
     "output_yoke_moment": "N.m",
+    "bearing_radius": "m",
+    "rated_torque": "N.m",
+    "life_min_angle": "rad",
+    "input_bearing_force": "N",
+    "output_bearing_force": "N",
+    "life_rate": "1/h",
+    "life_consumed": "1",
 }
 
 

@@ -14,6 +14,7 @@ SUMMARY_ROWS = (
     "| 1. FMU2Slave loop (set 6, doStep, get 20) vs plain floor,",
     "| 1. FMU2Slave loop vs bare floor (stricter),",
     "| 1. `simulate_fmu` (inputs set every step, 20 outputs recorded) vs plain floor,",
+    "| 1. Life on vs off (docs/life.md): the default build vs the joint built `--no-life`,",
     "| 2. FMU output angle error after 1 s,",
     "| 2. RK4 (Tătaru's ODE) angle error ÷ FMU's at 1e-2 s,",
     "| 2. cost per step at 1e-4 s: RK4 in Python vs FMU under `simulate_fmu` |",
@@ -92,4 +93,10 @@ def test_the_floor_builder_makes_an_fmu_with_the_joints_variables(model_descript
             for v in description.modelVariables
         ]
 
-    assert signature(floor) == signature(model_description)
+    # The floor mirrors the runtime's joint: the build without life (docs/life.md),
+    # whose variables are the default build's without the life rows.
+    from cardan_joint.models.universal_joint.variables import WITHOUT_LIFE
+
+    joint = [row for row in signature(model_description) if row[0] in WITHOUT_LIFE.BY_NAME]
+    assert len(joint) == len(WITHOUT_LIFE.VARIABLES)
+    assert signature(floor) == joint

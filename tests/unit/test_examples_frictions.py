@@ -12,6 +12,7 @@ from conftest import ROOT, load_example
 BUILDS = {
     "demo": "python build_fmu.py --model UniversalJoint`",
     "driveshaft": "python build_fmu.py --model UniversalJoint`",
+    "duty_cycle": "python build_fmu.py --model UniversalJoint`",
     "motor_load": "python build_fmu.py --model UniversalJoint`",
     "propshaft_layout": "python build_fmu.py --model Propshaft`",
     "seed_wikipedia": "python build_fmu.py --model UniversalJoint`",

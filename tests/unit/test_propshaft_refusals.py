@@ -84,3 +84,18 @@ def test_joints_applies_to_the_propshaft_only(capsys):
     with pytest.raises(SystemExit):
         main(["--joints", "3"])
     assert "--joints does not apply to UniversalJoint" in capsys.readouterr().err
+
+
+@pytest.mark.parametrize("joints, shaft", [(2, 1), (3, 2)])
+@pytest.mark.parametrize("bore", [0.0762, 0.08])
+def test_a_tube_without_a_wall_is_refused_by_name(joints, shaft, bore):
+    # Outer diameter 0.0762 m by default: a bore as wide or wider leaves no wall.
+    tube = Propshaft(joints, **{f"shaft_{shaft}_inner_diameter": bore})
+    fault = tube.parameter_fault
+    assert fault is not None and fault.variable == f"shaft_{shaft}_inner_diameter"
+    assert fault.value == bore and fault.limit == 0.0762 and fault.unit == "m"
+    text = str(fault)
+    assert f"parameter shaft_{shaft}_inner_diameter = {bore} m" in text and "0.0762" in text
+    assert type(fault).from_message(fault.message) == fault
+    assert tube.step(0.01) == fault and tube.time == 0.0
+    assert Propshaft(joints, **{f"shaft_{shaft}_inner_diameter": 0.0761}).parameter_fault is None

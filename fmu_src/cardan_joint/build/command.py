@@ -14,12 +14,19 @@ def _add_setting(parser, setting: str, specs) -> None:
     """`--<setting>`, offered for the models whose spec declares the setting."""
     defaults = ", ".join(f"{s.key} {s.default_settings[setting]}" for s in specs)
     helps = {s.setting_help.get(setting) for s in specs} - {None}
+    kind = type(specs[0].default_settings[setting])
+    # A switch is `--<setting>` / `--no-<setting>`: argparse's type=bool would take
+    # any text, "false" too, as true.
+    how = (
+        {"action": argparse.BooleanOptionalAction}
+        if kind is bool
+        else {"type": kind, "metavar": setting.upper()}
+    )
     parser.add_argument(
         f"--{setting}",
-        type=type(specs[0].default_settings[setting]),
         default=None,
-        metavar=setting.upper(),
         help=f"{'; '.join(sorted(helps)) or setting} (default: {defaults})",
+        **how,
     )
 
 

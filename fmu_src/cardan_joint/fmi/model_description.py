@@ -36,9 +36,10 @@ def _unit_definitions(table) -> Element:
     node = Element("UnitDefinitions")
     for unit in table.UNITS.values():
         unit_node = SubElement(node, "Unit", name=unit.name)
-        SubElement(
-            unit_node, "BaseUnit", {base: str(exponent) for base, exponent in unit.exponents}
-        )
+        base = {name: str(exponent) for name, exponent in unit.exponents}
+        if unit.factor != 1.0:
+            base["factor"] = _number(unit.factor)
+        SubElement(unit_node, "BaseUnit", base)
         for display, factor in unit.display:
             SubElement(unit_node, "DisplayUnit", name=display, factor=_number(factor))
     return node

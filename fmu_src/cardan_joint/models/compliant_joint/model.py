@@ -136,12 +136,30 @@ class CompliantDrive(ValueChecks):
                 "rad",
                 details,
             )
-        problem = rigid.advance(h)  # its inputs and parameters were checked above
+        if getattr(rigid, "life", False):
+            rigid.load_over_step = self._spring_over_step(speed, acceleration)
+        try:
+            problem = rigid.advance(h)  # its inputs and parameters were checked above
+        finally:
+            rigid.load_over_step = None
         if problem:
             return problem
         self._lag += change
         self.output_speed = speed + acceleration * h
         return None
+
+    def _spring_over_step(self, speed: float, acceleration: float):
+        """The spring's torque t s into the step, from the rigid drive's kinematic
+        offset and speed then (`outputs`' formula): the load its life integrates."""
+        rigid, lag = self.rigid, self._lag
+        slip, slip_rate = rigid.input_speed - speed, rigid.input_acceleration - acceleration
+        stiffness, damping = self.torsional_stiffness, self.torsional_damping
+
+        def torque(t: float, offset: float, kinematic_speed: float) -> float:
+            twist = offset + (lag + t * (slip + 0.5 * slip_rate * t))
+            return stiffness * twist + damping * (kinematic_speed - (speed + acceleration * t))
+
+        return torque
 
     # --- outputs -------------------------------------------------------------
 
@@ -203,6 +221,11 @@ class CompliantJoint(CompliantDrive):
     crosspiece_inertia_2: float
     crosspiece_inertia_3: float
     max_bend_angle: float
+    bearing_radius: float
+    rated_torque: float
+    life_constant: float
+    life_exponent: float
+    life_min_angle: float
 
     def __init__(self, **values: float) -> None:
         super().__init__(CardanJoint(), COMPLIANT_JOINT, "compliant joint", **values)

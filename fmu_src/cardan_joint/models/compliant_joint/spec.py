@@ -32,7 +32,9 @@ MODEL = Model(
             "input_yoke_moment",
             "output_yoke_moment",
             "spring_energy",
-            "crosspiece_kinetic_energy",
+            # The joint's life under the spring (the crosspiece's energy is the
+            # UniversalJoint reference's; at most 9 outputs here).
+            "life_consumed",
         ),
     ),
 )

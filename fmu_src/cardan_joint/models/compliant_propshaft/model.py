@@ -17,6 +17,11 @@ class CompliantPropshaft(CompliantDrive):
     crosspiece_inertia_2: float
     crosspiece_inertia_3: float
     max_working_angle: float
+    bearing_radius: float
+    rated_torque: float
+    life_constant: float
+    life_exponent: float
+    life_min_angle: float
 
     def __init__(self, joints: int = 2, **values: float) -> None:
         table = compliant_propshaft_table(joints)

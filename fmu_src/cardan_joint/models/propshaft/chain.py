@@ -38,6 +38,11 @@ class ChainState(NamedTuple):
     accelerations: tuple[Any, ...]  # alpha_1 .. alpha_N
     input_torque: Any
     kinetic_energy: Any  # crosspieces and intermediate shafts
+    # Each joint's pin angle psi_k, input torque T_k and load L_k (its output
+    # shaft's torque): what its bearing loads and life are evaluated from.
+    pins: tuple[Any, ...] = ()
+    torques: tuple[Any, ...] = ()
+    loads: tuple[Any, ...] = ()
 
 
 def chain(
@@ -55,12 +60,13 @@ def chain(
     I1, I2, I3 = crosspiece_inertia
     offset = 0.0
     phases = (0.0,) + geometry.phases
-    offsets, speeds, accelerations, free_torques, ratios = [], [], [], [], []
+    offsets, speeds, accelerations, free_torques, ratios, pins = [], [], [], [], [], []
     energy = 0.0
     w, a = speed, acceleration
     for k, joint in enumerate(geometry.joints):
         base = offset + k * HALF_PI + phases[k] - joint.pin_offset
         psi, beta = angle + (angle_error + base), joint.working_angle
+        pins.append(psi)
         xp = math if psi.__class__ is float and beta.__class__ is float else namespace(psi, beta)
         r = kernel(xp, psi, beta, w, a, 0.0, 0.0, I1, I2, I3, 0.0, 1.0)
         offset = offset + phases[k] + joint.twist + r[_CARDAN_ERROR]
@@ -74,10 +80,22 @@ def chain(
     inertias = shaft_inertias or (0.0,) * (len(geometry.joints) - 1)
     load = load_torque
     torque = load
+    torques, loads = [], []
     for k in range(len(geometry.joints) - 1, -1, -1):
         torque = free_torques[k] + ratios[k] * load
+        torques.append(torque)
+        loads.append(load)
         if k:
             load = torque + inertias[k - 1] * accelerations[k - 1]
     for J, w_k in zip(inertias, speeds):
         energy = energy + 0.5 * J * w_k * w_k
-    return ChainState(tuple(offsets), tuple(speeds), tuple(accelerations), torque, energy)
+    return ChainState(
+        tuple(offsets),
+        tuple(speeds),
+        tuple(accelerations),
+        torque,
+        energy,
+        tuple(pins),
+        tuple(reversed(torques)),
+        tuple(reversed(loads)),
+    )

@@ -9,19 +9,24 @@ fixed at `start`; the fluctuation search runs once, at the first output read.
 
 import math
 
+from ...physics.life import rule_of
 from ...physics.refusal import Refusal
 from ...physics.revolutions import angle_value, split_angle
 from ...physics.stepped import ShaftModel
 from ...physics.values import angle_limit_problem, set_start_values, value_ranges
 from .chain import chain
 from .checks import angle_warnings
+from .critical_speed import critical_speed, critical_speed_warnings
 from .fluctuation import equivalent_angle, speed_ratio_fluctuation
 from .geometry import HALF_PI, TWO_PI, Layout, layout
+from .life import PropshaftLife
 from .refusals import PropshaftReason
 from .variables import propshaft_table
 
+_TUBE_PARTS = ("outer_diameter", "inner_diameter", "length", "youngs_modulus", "density")
 
-class Propshaft(ShaftModel):
+
+class Propshaft(PropshaftLife, ShaftModel):
     # The inputs and parameters every layout has, set from the table by __init__;
     # the per-shaft angles, phases and inertias are read by name (`getattr`).
     input_speed: float
@@ -32,9 +37,17 @@ class Propshaft(ShaftModel):
     crosspiece_inertia_2: float
     crosspiece_inertia_3: float
     max_working_angle: float
+    critical_speed_margin: float
+    # Every joint's bearing and life parameters (docs/life.md).
+    bearing_radius: float
+    rated_torque: float
+    life_constant: float
+    life_exponent: float
+    life_min_angle: float
 
-    def __init__(self, joints: int = 2, **values: float) -> None:
-        self.table = table = propshaft_table(joints)
+    def __init__(self, joints: int = 2, life: bool = True, **values: float) -> None:
+        self.life = life
+        self.table = table = propshaft_table(joints, life)
         self._fluctuation: tuple[Layout, float] | None = None
         self.joints = joints
         self._layout_outputs: tuple[Layout, tuple] | None = None
@@ -60,6 +73,7 @@ class Propshaft(ShaftModel):
         self.parameter_fault = self._angle_problem()
         valid = not self.parameter_fault
         self._angle = split_angle(self.input_angle_start if valid else 0.0)
+        self._life = [(0.0, 0.0)] * self.joints  # each joint's Miner's sum (total, error)
         if not valid:
             return
         self._inertia = tuple(getattr(self, n) for n in self._inertias)
@@ -68,7 +82,13 @@ class Propshaft(ShaftModel):
             self.crosspiece_inertia_2,
             self.crosspiece_inertia_3,
         )
+        if self.life:
+            self._life_rule = rule_of(self)
         self.layout = self._geometry()
+        self._critical_speeds = tuple(
+            critical_speed(*(getattr(self, f"shaft_{k}_{part}") for part in _TUBE_PARTS))
+            for k in range(1, self.joints)
+        )
         self.parameter_fault = self._working_angle_problem(self.layout)
         if self.parameter_fault:
             return
@@ -94,12 +114,30 @@ class Propshaft(ShaftModel):
                     "rad",
                     kind="parameter",
                 )
-        return angle_limit_problem(
+        return self._tube_problem() or angle_limit_problem(
             PropshaftReason.WORKING_ANGLE_GUARD,
             "max_working_angle",
             self.max_working_angle,
             self.time,
         )
+
+    def _tube_problem(self):
+        """A tube whose bore is not below its outer diameter has no wall (its
+        critical speed would be a number for no shaft)."""
+        for k in range(1, self.joints):
+            inner = getattr(self, f"shaft_{k}_inner_diameter")
+            outer = getattr(self, f"shaft_{k}_outer_diameter")
+            if not inner < outer:
+                return Refusal(
+                    PropshaftReason.TUBE_BORE,
+                    f"shaft_{k}_inner_diameter",
+                    inner,
+                    outer,
+                    self.time,
+                    "m",
+                    kind="parameter",
+                )
+        return None
 
     def _geometry(self):
         return layout(
@@ -180,6 +218,8 @@ class Propshaft(ShaftModel):
             state.input_torque,
             state.kinetic_energy,
             *self._geometry_outputs(),
+            *(abs(w) / c for w, c in zip(state.speeds, self._critical_speeds)),
+            *(self._life_outputs(state) if self.life else ()),
         )
 
     def _geometry_outputs(self) -> tuple:
@@ -196,4 +236,8 @@ class Propshaft(ShaftModel):
         """The industry's angle checks at the current input speed (never refusals)."""
         if self.parameter_fault:
             return ()
-        return angle_warnings(self.layout.working_angles, self.fluctuation(), self.input_speed)[0]
+        angles = angle_warnings(self.layout.working_angles, self.fluctuation(), self.input_speed)[0]
+        # The shafts' mean speed is the input's: the critical-speed check at it.
+        return angles + critical_speed_warnings(
+            self._critical_speeds, self.input_speed, self.critical_speed_margin
+        )

@@ -8,7 +8,7 @@ Pure data: no FMI import.
 from dataclasses import replace
 from functools import cache
 
-from ...units import DEG_TO_RAD
+from ...units import DEG_TO_RAD, JOINT_UNITS, LIFE_UNITS, TUBE_UNITS
 from ...variable_schema import _OUT, _PAR, Variable, VariableTable
 from ..universal_joint import variables as joint
 from ..universal_joint.variables import HALF_PI
@@ -185,7 +185,9 @@ def _outputs(joints):
 
 
 @cache
-def propshaft_table(joints: int = 2) -> VariableTable:
+def propshaft_table(joints: int = 2, life: bool = True) -> VariableTable:
+    """The table for `joints` joints; `life` off leaves out the bearing and life
+    rows (the compliant propshaft's rigid part: its load is the spring's)."""
     if joints not in JOINTS:
         raise ValueError(f"joints = {joints!r}: the Propshaft is built for {JOINTS} joints")
     inputs = [
@@ -223,4 +225,73 @@ def propshaft_table(joints: int = 2) -> VariableTable:
             HALF_PI,
         ),
     ]
-    return VariableTable(inputs + parameters + _outputs(joints), joint.UNITS)
+    parameters += _tubes(joints) + (_life_parameters() if life else [])
+    outputs = _outputs(joints) + [
+        Variable(
+            f"shaft_{k}_critical_speed_ratio",
+            _OUT,
+            "1",
+            f"Speed of intermediate shaft {k} over its tube's first bending critical speed "
+            "(pinned-pinned)",
+            min=0.0,
+            depends_on=_SPEED,
+        )
+        for k in range(1, joints)
+    ]
+    outputs += _life_outputs(joints) if life else []
+    units = {**JOINT_UNITS, **TUBE_UNITS, **LIFE_UNITS}
+    return VariableTable(inputs + parameters + outputs, units)
+
+
+def _life_parameters():
+    """The joint's bearing and life parameters (docs/life.md), one set for every joint."""
+    return [
+        replace(row, description=f"Every joint: {row.description}")
+        for row in joint.LIFE_VARIABLES
+        if row.causality == _PAR
+    ]
+
+
+def _life_outputs(joints):
+    """The joint's four life outputs for each joint k, `joint_k_` before the name,
+    its input shaft the one upstream (shaft k - 1)."""
+    rows = [row for row in joint.LIFE_VARIABLES if row.causality == _OUT]
+    return [
+        replace(row, name=f"joint_{k}_{row.name}", depends_on=_TORQUE if row.depends_on else (),
+                description=f"Joint {k}: {row.description}")
+        for k in range(1, joints + 1)
+        for row in rows
+    ]  # fmt: skip
+
+
+# (name, unit, description, default, min, max) of each intermediate shaft's tube:
+# a steel tube 76.2 x 2.1 mm, 1.4 m long.
+_TUBE = (
+    ("outer_diameter", "m", "tube outer diameter D", 0.0762, 1e-4, 10.0),
+    ("inner_diameter", "m", "tube inner diameter d (0: solid)", 0.072, 0.0, 10.0),
+    ("length", "m", "tube length L between the joints' centres", 1.4, 1e-3, 100.0),
+    ("youngs_modulus", "Pa", "tube Young's modulus E", 2.1e11, 1e6, 1e13),
+    ("density", "kg/m3", "tube density rho", 7850.0, 1.0, 1e5),
+)
+
+
+def _tubes(joints):
+    rows = [
+        Variable(
+            f"shaft_{k}_{name}",
+            _PAR,
+            unit,
+            f"Intermediate shaft {k}: {text}",
+            start,
+            None,
+            low,
+            high,
+        )  # fmt: skip
+        for k in range(1, joints)
+        for name, unit, text, start, low, high in _TUBE
+    ]
+    rows.append(
+        Variable("critical_speed_margin", _PAR, "1", "Largest shaft speed over critical speed "
+                 "without a warning (the shop rule's margin)", 0.75, None, 0.0, 1.0)
+    )  # fmt: skip
+    return rows

@@ -16,60 +16,32 @@ from ...physics.refusal import Reason, Refusal
 from ...physics.response import JointResponse, kernel
 from ...physics.revolutions import advanced, angle_value, split_angle
 from ...physics.stepped import ShaftModel
-from ...physics.values import (
-    MAX_INCREMENT,
-    angle_limit_problem,
-    bounds,
-    set_start_values,
-    value_ranges,
-)
+from ...physics.values import MAX_INCREMENT, Table, angle_limit_problem, set_start_values
 from ...variable_schema import Variable
 from . import variables as table
+from .life import JointLife
+from .limits import (
+    INPUT_RANGES,
+    PARAMETER_RANGES,
+    PARAMETER_RANGES_WITHOUT_LIFE,
+    SPEED_LIMIT,
+    fits,
+)
 
-
-def _ranges(names, *excluded):
-    return value_ranges(table.BY_NAME, names, *excluded)
-
-
-# The bend angle's own limit is the max_bend_angle parameter, checked apart.
-_INPUT_RANGES = _ranges(table.INPUTS, "bend_angle")
-_PARAMETER_RANGES = _ranges(table.PARAMETERS, "max_bend_angle")
-# The fast path of `input_problem` checks |x| <= max, so the ranges must be symmetric.
-# (A ranged input it does not name fails tests/unit/test_guards.py, which takes every
-# ranged input from the table.)
-assert all(low == -high for _, low, high, _ in _INPUT_RANGES), "input ranges must be symmetric"
-_SPEED_LIMIT = bounds(table.BY_NAME["input_speed"])[1]
-_ACCELERATION_LIMIT = bounds(table.BY_NAME["input_acceleration"])[1]
-_RATE_LIMIT = bounds(table.BY_NAME["bend_angle_rate"])[1]
-_BEND_ACCELERATION_LIMIT = bounds(table.BY_NAME["bend_angle_acceleration"])[1]
-_LOAD_LIMIT = bounds(table.BY_NAME["load_torque"])[1]
-# After the two angles, the outputs are the kernel's leading fields, in order.
-_KINEMATIC_OUTPUTS = len(table.OUTPUTS) - 2
-assert JointResponse._fields[:_KINEMATIC_OUTPUTS] == table.OUTPUTS[2:], "kernel's field order"
+# After the two angles, the outputs are the kernel's leading fields, in order
+# (then, with life on, the bearing loads and life: `JointLife._with_life`).
+_KINEMATIC_OUTPUTS = len(table.WITHOUT_LIFE.OUTPUTS) - 2
+assert JointResponse._fields[:_KINEMATIC_OUTPUTS] == table.WITHOUT_LIFE.OUTPUTS[2:], (
+    "kernel's field order"
+)
 _CARDAN_ERROR = JointResponse._fields.index("cardan_error")
 
 
-def _fits(speed, acceleration, beta, rate, acc, load, guard, step_size) -> bool:
-    """The common case, once per FMU step: every input in its range and the bend
-    angle below `guard` at both ends of the step, not peaking inside it. NaN fails
-    every comparison, so it never fits."""
-    return (
-        abs(speed) <= _SPEED_LIMIT
-        and abs(acceleration) <= _ACCELERATION_LIMIT
-        and abs(rate) <= _RATE_LIMIT
-        and abs(acc) <= _BEND_ACCELERATION_LIMIT
-        and abs(load) <= _LOAD_LIMIT
-        and abs(beta) < guard
-        and abs(beta + step_size * (rate + 0.5 * acc * step_size)) < guard
-        and (rate * acc >= 0.0 or -rate / acc >= step_size)
-    )
-
-
-class CardanJoint(ShaftModel):
-    table = table
-    _input_ranges = _INPUT_RANGES
-    _parameter_ranges = _PARAMETER_RANGES
-    _speed_limit = _SPEED_LIMIT
+class CardanJoint(JointLife, ShaftModel):
+    table: Table = table
+    _input_ranges = INPUT_RANGES
+    _parameter_ranges = PARAMETER_RANGES
+    _speed_limit = SPEED_LIMIT
 
     # Inputs and parameters (`variables.INPUTS`, `variables.PARAMETERS`): __init__
     # sets each from the table, so the names here must be the table's.
@@ -86,8 +58,12 @@ class CardanJoint(ShaftModel):
     crosspiece_inertia_3: float
     max_bend_angle: float
 
-    def __init__(self, **values: float) -> None:
-        set_start_values(self, table, values, "joint")
+    def __init__(self, life: bool = True, **values: float) -> None:
+        self.life = life
+        if not life:
+            self.table = table.WITHOUT_LIFE
+            self._parameter_ranges = PARAMETER_RANGES_WITHOUT_LIFE
+        set_start_values(self, self.table, values, "joint")
         self.start(0.0)
 
     # --- set-up ------------------------------------------------------------
@@ -105,6 +81,7 @@ class CardanJoint(ShaftModel):
         # The phase is reduced to whole turns plus a fraction too, so a large or
         # negative phase costs no precision; its turns enter the quaternion's sign.
         self._phase = split_angle(self.yoke_phase if valid else 0.0)
+        self._start_life()
 
     def _non_finite_limit(self, name: str, variable: Variable) -> float:
         # The bend angle's limit is the max_bend_angle parameter, not its table range.
@@ -114,7 +91,7 @@ class CardanJoint(ShaftModel):
 
     def parameter_problem(self) -> Refusal | None:
         """The Refusal that keeps the parameters from running, or None."""
-        problem = self._value_problem(table.PARAMETERS, _PARAMETER_RANGES)
+        problem = self._value_problem(self.table.PARAMETERS, self._parameter_ranges)
         if problem:
             return problem
         return angle_limit_problem(
@@ -139,12 +116,12 @@ class CardanJoint(ShaftModel):
         # the bend angle at both ends of the step. NaN fails every comparison, so
         # it always takes the slow path, which names the first problem.
         speed, acceleration, beta, rate, acc, load = self.inputs()
-        if _fits(speed, acceleration, beta, rate, acc, load, self.max_bend_angle, step_size):
+        if fits(speed, acceleration, beta, rate, acc, load, self.max_bend_angle, step_size):
             return None
         return self._explain_input_problem(step_size)
 
     def _explain_input_problem(self, step_size: float) -> Refusal | None:
-        problem = self._value_problem(table.INPUTS, _INPUT_RANGES)
+        problem = self._value_problem(self.table.INPUTS, INPUT_RANGES)
         if problem:
             return problem
         guard = self.max_bend_angle
@@ -191,13 +168,16 @@ class CardanJoint(ShaftModel):
 
     def _advance(self, h: float) -> Refusal | None:
         """The input shaft (`ShaftModel`), then the bend angle, exact for its constant
-        acceleration over the step; a refusal changes nothing."""
+        acceleration over the step, and the life consumed (docs/life.md); a
+        refusal changes nothing."""
+        start = self._life_start()  # the damage's start values, before the step
         problem = ShaftModel._advance(self, h)  # not super(): once per step
         if problem:
             return problem
         rate, bend_acceleration = self.bend_angle_rate, self.bend_angle_acceleration
         self.bend_angle += h * (rate + 0.5 * bend_acceleration * h)
         self.bend_angle_rate = rate + bend_acceleration * h
+        self._add_damage(h, start)
         return None
 
     # --- the FMU's step ------------------------------------------------------
@@ -225,17 +205,19 @@ class CardanJoint(ShaftModel):
         if not (
             0.0 < h < math.inf
             and self.parameter_fault is None
-            and _fits(
+            and fits(
                 speed, acceleration, beta, rate, bend_acceleration, load, self.max_bend_angle, h
             )
             and abs(increment) <= MAX_INCREMENT
-            and abs(end_speed) <= _SPEED_LIMIT
+            and abs(end_speed) <= SPEED_LIMIT
         ):
             return ShaftModel.run(self, time, h, inputs)
+        start = self._life_start()  # as `_advance`
         self._angle = angle = advanced(self._angle, increment)
         self.input_speed = end_speed
         self.bend_angle = end_beta = beta + h * (rate + 0.5 * bend_acceleration * h)
         self.bend_angle_rate = end_rate = rate + bend_acceleration * h
+        self._add_damage(h, start)
         self.time = time + h
         return self._outputs(
             angle, end_beta, end_speed, acceleration, end_rate, bend_acceleration, load
@@ -295,4 +277,5 @@ class CardanJoint(ShaftModel):
         )
         input_angle = angle_value(angle)
         # Two roundings at most: within one ulp of gamma2 however many turns.
-        return (input_angle, input_angle + r[_CARDAN_ERROR]) + r[:_KINEMATIC_OUTPUTS]
+        values = (input_angle, input_angle + r[_CARDAN_ERROR]) + r[:_KINEMATIC_OUTPUTS]
+        return self._with_life(values, r, load, speed, beta)

@@ -10,8 +10,7 @@ Pure data: no FMI import, so the physics can read its defaults from here.
 
 import math
 
-from ...units import DEG_TO_RAD
-from ...units import JOINT_UNITS as UNITS
+from ...units import DEG_TO_RAD, JOINT_UNITS, LIFE_UNITS
 from ...variable_schema import _IN, _OUT, _PAR, Variable, VariableTable, fmi3_groups
 
 # Inputs each output depends on directly (FMI ModelStructure "dependencies").
@@ -33,7 +32,7 @@ HALF_PI = 0.5 * math.pi
 
 # A table, one row per variable: kept as rows rather than one argument per line.
 # fmt: off
-VARIABLES = (
+VARIABLES: tuple[Variable, ...] = (
     # Inputs: polynomial in time over a step (speed with its acceleration, bend
     # angle with its rate and acceleration); the start values run a default demo.
     # Their ranges are physical bounds, generous for any driveline, that keep every
@@ -105,22 +104,62 @@ VARIABLES = (
     Variable("output_yoke_moment", _OUT, "N.m", "Secondary couple on the output yoke (bending "
              "moment normal to the output shaft)", min=0.0, depends_on=_TORQUE),
 )
+# Bearing loads and catalogue life (docs/life.md): a build setting (`life`, on by
+# default) leaves them out, so the joint's step can be measured without them.
+LIFE_VARIABLES = (
+    Variable("bearing_radius", _PAR, "m", "Trunnion bearing radius r: distance from the cross "
+             "centre to the needle bearing's load line", 0.03, None, 1e-6, 10.0),
+    Variable("rated_torque", _PAR, "N.m", "Rated torque T_r of the joint: the catalogue life "
+             "is life_constant hours / (angle in deg x speed in rpm) at T1 = T_r",
+             1000.0, None, 1e-6, 1e9),
+    Variable("life_constant", _PAR, "1", "Catalogue life constant K (h x rpm x deg): "
+             "L_h = K / (A n) (T_r/|T1|)^p", 1.5e6, None, 1e-9, 1e30),
+    Variable("life_exponent", _PAR, "1", "Catalogue life exponent p (10/3: needle bearings)",
+             10.0 / 3.0, None, 1.0, 10.0),
+    Variable("life_min_angle", _PAR, "rad", "Smallest working angle A_min the life rule "
+             "takes (the needles must roll)", 3.0 * DEG_TO_RAD, "deg", 0.0, HALF_PI),
+    Variable("input_bearing_force", _OUT, "N", "Force on each input-yoke trunnion bearing, "
+             "sqrt(T1^2 + C1^2) / (2 r)", min=0.0, depends_on=_TORQUE),
+    Variable("output_bearing_force", _OUT, "N", "Force on each output-yoke trunnion bearing, "
+             "sqrt(T_L^2 + C2^2) / (2 r)", min=0.0, depends_on=_TORQUE),
+    Variable("life_rate", _OUT, "1/h", "Catalogue damage rate 1/L_h at this instant "
+             "(0 at rest or without torque)", min=0.0, depends_on=_TORQUE),
+    Variable("life_consumed", _OUT, "1", "Miner's sum of dt / (3600 L_h) since the start: "
+             "1 = the B10 life used up", min=0.0),
+)
 # fmt: on
 
-
-# This module is the UniversalJoint's table: the same lookups as every VariableTable.
-_TABLE = VariableTable(VARIABLES, UNITS)
-BY_NAME, INPUTS, PARAMETERS, OUTPUTS = (
-    _TABLE.BY_NAME,
-    _TABLE.INPUTS,
-    _TABLE.PARAMETERS,
-    _TABLE.OUTPUTS,
-)
-start_values = _TABLE.start_values
 
 # Vector quantities: FMI 2 has one row per element (`<stem>_<i>`); FMI 3 declares
 # each as one Float64 array named by the stem, elements in the rows' order.
 ARRAY_STEMS = ("crosspiece_angular_velocity", "crosspiece_torque", "crosspiece_quaternion")
+LIFE_NAMES = tuple(v.name for v in LIFE_VARIABLES)
+WITHOUT_LIFE = VariableTable(VARIABLES, JOINT_UNITS, ARRAY_STEMS)
+VARIABLES = (
+    tuple(v for v in VARIABLES if v.causality != _OUT)
+    + LIFE_VARIABLES[:5]
+    + tuple(v for v in VARIABLES if v.causality == _OUT)
+    + LIFE_VARIABLES[5:]
+)
+
+# This module is the UniversalJoint's table: the same lookups as every VariableTable.
+_TABLE = VariableTable(VARIABLES, {**JOINT_UNITS, **LIFE_UNITS}, ARRAY_STEMS)
+BY_NAME, INPUTS, PARAMETERS, OUTPUTS, UNITS = (
+    _TABLE.BY_NAME,
+    _TABLE.INPUTS,
+    _TABLE.PARAMETERS,
+    _TABLE.OUTPUTS,
+    _TABLE.UNITS,
+)
+start_values = _TABLE.start_values
+
+
+def table_for(life: bool = True):
+    """The table of a build: this module, or with `life` off the one without the
+    bearing and life rows (build setting `life`)."""
+    import sys
+
+    return sys.modules[__name__] if life else WITHOUT_LIFE
 
 
 def fmi3_variables() -> tuple:

@@ -1,0 +1,179 @@
+"""The propshaft's bearing loads and catalogue life, joint by joint (docs/life.md):
+the single joint's rule (`physics.life`) on each joint, with that joint's input
+shaft speed, torque T_k and load L_k from the chain (`chain.ChainState`).
+
+Over a step the input shaft is polynomial, so every shaft's speed and every
+joint's torque are closed forms of the time (the chain at the input angle of
+that instant): each joint's damage is `life_integral.life_increment` of them,
+the chain evaluated once per node for all joints."""
+
+import math
+from typing import Any
+
+from ...physics.life import bearing_forces, compensated_add, life_rate, rate_scale
+from ...physics.life_integral import life_increment
+from ...physics.response import JointResponse, kernel
+from ...physics.stepped import ShaftModel
+from .chain import chain
+
+_MOMENTS = tuple(
+    JointResponse._fields.index(name) for name in ("input_yoke_moment", "output_yoke_moment")
+)
+
+
+def joint_outputs(rule, radius, state, working_angles, speed, acceleration, crosspiece):
+    """((input force, output force, life rate) of each joint) for a chain `state`
+    at input speed and acceleration `speed`, `acceleration`."""
+    values = []
+    w, a = speed, acceleration
+    for k, beta in enumerate(working_angles):
+        torque, load = state.torques[k], state.loads[k]
+        r = kernel(math, state.pins[k], beta, w, a, 0.0, 0.0, *crosspiece, load, 1.0)
+        moments = (r[i] for i in _MOMENTS)
+        values.append(
+            (*bearing_forces(torque, *moments, load, radius), life_rate(torque, w, beta, rule))
+        )
+        w, a = state.speeds[k], state.accelerations[k]
+    return values
+
+
+def step_damages(rule, h, chain_at, working_angles, speed, acceleration, inertias):
+    """Each joint's Miner damage over a step of `h` s: `chain_at(t)` the chain
+    t s into it, the input shaft at `speed` and constant `acceleration`;
+    `inertias` every inertia of the driveline (all zero: no torque reversal)."""
+    states: dict = {}
+
+    def state(t):
+        found = states.get(t)
+        if found is None:
+            found = states[t] = chain_at(t)
+        return found
+
+    peak = max(working_angles)
+    scale = rate_scale(rule) / 3600.0
+    damages = []
+    for k, beta in enumerate(working_angles):
+
+        def torque_at(t, k=k):
+            return state(t).torques[k]
+
+        def speed_at(t, k=k):
+            return state(t).speeds[k - 1] if k else speed + acceleration * t
+
+        total = life_increment(
+            torque_at, h, speed, acceleration, beta, 0.0, 0.0, inertias,
+            rule.min_angle, rule.exponent, speed_at, peak,
+        )  # fmt: skip
+        damages.append(total * scale)
+    return damages
+
+
+def added(sums, damages):
+    """Each joint's compensated Miner's sum (total, error) plus its damage."""
+    return [compensated_add(total, error, d) if d else (total, error)
+            for (total, error), d in zip(sums, damages)]  # fmt: skip
+
+
+class PropshaftLife:
+    """Each joint's bearing loads, life rate and Miner's sum (`life` on), mixed
+    into `Propshaft`: its outputs, its step's damage and its saved state."""
+
+    life: bool
+    joints: int
+    _life: list
+    _life_rule: Any
+    _crosspiece: tuple
+    _inertia: tuple
+    layout: Any
+    _angle: Any
+    parameter_fault: Any
+    bearing_radius: float
+    input_speed: float
+    input_acceleration: float
+    load_torque: float
+    _shifts: tuple
+    # Set over a step by a layer whose load follows the motion (the compliant
+    # drive's spring): load(t, kinematic offset, kinematic output speed), N.m.
+    load_over_step: Any = None
+
+    def _life_outputs(self, state) -> tuple:
+        """Each joint's bearing forces, life rate and life consumed."""
+        if self.parameter_fault:  # no load or life then
+            return tuple(v for total, error in self._life for v in (*[math.nan] * 3, total + error))
+        rows = joint_outputs(
+            self._life_rule,
+            self.bearing_radius,
+            state,
+            self.layout.working_angles,
+            self.input_speed,
+            self.input_acceleration,
+            self._crosspiece,
+        )
+        return tuple(
+            v for row, (total, error) in zip(rows, self._life) for v in (*row, total + error)
+        )
+
+    def _advance(self, h: float):
+        """The input shaft (`ShaftModel`), then each joint's damage over the step."""
+        _, fraction, error = self._angle
+        speed, acceleration = self.input_speed, self.input_acceleration
+        problem = ShaftModel._advance(self, h)  # type: ignore[arg-type]
+        if problem or not self.life:
+            return problem
+
+        spring = self.load_over_step
+
+        def chain_at(t, load=None):
+            return chain(
+                self.layout,
+                fraction,
+                speed + acceleration * t,
+                acceleration,
+                self._crosspiece,
+                self._inertia,
+                self.load_torque if load is None else load,
+                error + t * (speed + 0.5 * acceleration * t),
+            )
+
+        def loaded_at(t):  # the kinematics first, the spring's load from them
+            free = chain_at(t, 0.0)
+            offset = free.offsets[-1] - self._shifts[-1]
+            return chain_at(t, spring(t, offset, free.speeds[-1]))
+
+        inertias = (*self._crosspiece, *self._inertia, 0.0 if spring is None else 1.0)
+        damages = step_damages(
+            self._life_rule,
+            h,
+            chain_at if spring is None else loaded_at,
+            self.layout.working_angles,
+            speed,
+            acceleration,
+            inertias,
+        )
+        self._life = added(self._life, damages)
+        return None
+
+    def own_state(self) -> dict:
+        state = super().own_state()  # type: ignore[misc]
+        if not self.life:
+            return state
+        state["life_consumed"] = [total for total, _ in self._life]
+        state["life_consumed_error"] = [error for _, error in self._life]
+        return state
+
+    def own_state_from(self, state: dict):
+        put_angle = super().own_state_from(state)  # type: ignore[misc]
+        if not self.life:
+            return put_angle
+        totals = [float(x) for x in state["life_consumed"]]
+        errors = [float(x) for x in state["life_consumed_error"]]
+        if not len(totals) == len(errors) == self.joints:
+            raise ValueError(
+                f"life_consumed: {len(totals)} joints in the state, {self.joints} here"
+            )
+
+        def put() -> None:
+            put_angle()
+            self._life = list(zip(totals, errors))
+
+        return put

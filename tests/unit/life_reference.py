@@ -1,0 +1,70 @@
+"""An independent reference for the life integral: the catalogue rate from the
+joint's full response kernel at each instant, integrated by mpmath's adaptive
+tanh-sinh quadrature between kinks found by dense sampling and scipy's brentq
+(not the FMU's Lobatto panels, root finder or reduced torque)."""
+
+import math
+
+import mpmath
+import numpy as np
+from scipy.optimize import brentq
+
+from cardan_joint.physics.response import JointResponse, joint_response
+
+_T1 = JointResponse._fields.index("input_torque")
+
+
+def torque(t, case):
+    """T1 at t; the case's load a number, or a function of t (a spring's torque)."""
+    psi, b, w, a, rb, ab, inertia, load = case
+    if callable(load):
+        load = load(t)
+    return float(
+        joint_response(
+            psi + w * t + 0.5 * a * t * t,
+            b + rb * t + 0.5 * ab * t * t,
+            w + a * t,
+            a,
+            rb + ab * t,
+            ab,
+            inertia,
+            load,
+        )[_T1]
+    )
+
+
+def rate(t, case, rule):
+    """1/L_h at t, straight from the catalogue formula (degrees, rpm)."""
+    psi, b, w, a, rb, ab, inertia, load = case
+    angle_deg = max(abs(b + rb * t + 0.5 * ab * t * t), rule.min_angle) * 180.0 / math.pi
+    rpm = abs(w + a * t) * 60.0 / (2.0 * math.pi)
+    T = abs(torque(t, case))
+    if rpm == 0.0 or T == 0.0:
+        return 0.0
+    return angle_deg * rpm / rule.constant * (T / rule.rated_torque) ** rule.exponent
+
+
+def _sign_changes(f, h, samples=4001):
+    ts = np.linspace(0.0, h, samples)
+    values = [f(t) for t in ts]
+    roots = []
+    for t0, t1, v0, v1 in zip(ts, ts[1:], values, values[1:]):
+        if v0 == 0.0:
+            roots.append(t0)
+        elif v0 * v1 < 0.0:
+            roots.append(brentq(f, t0, t1, xtol=1e-300, rtol=1e-15, maxiter=500))
+    return roots
+
+
+def damage(case, h, rule):
+    """Miner's damage over [0, h]: the integral of rate / 3600."""
+    psi, b, w, a, rb, ab, inertia, load = case
+    kinks = [0.0, h]
+    kinks += _sign_changes(lambda t: torque(t, case), h)
+    kinks += _sign_changes(lambda t: w + a * t, h)
+    for level in (rule.min_angle, -rule.min_angle):
+        kinks += _sign_changes(lambda t, c=b - level: c + rb * t + 0.5 * ab * t * t, h)
+    kinks = sorted({k for k in kinks if 0.0 <= k <= h})
+    with mpmath.workdps(30):
+        total = mpmath.quad(lambda t: rate(float(t), case, rule), kinks, maxdegree=10)
+    return float(total) / 3600.0
