@@ -12,8 +12,8 @@ sys.path.insert(0, str(ROOT / "fmu_src"))
 
 RESTORED = "        values = {name: float(state[name]) for name in self._saved_names()}\n"
 MODEL = "fmu_src/cardan_joint/models/universal_joint/model.py"
-VALUES = "fmu_src/cardan_joint/physics/values.py"
-STEPPED = "fmu_src/cardan_joint/physics/stepped.py"
+VALUES = "fmu_src/cardan_joint/framework/values.py"
+STEPPED = "fmu_src/cardan_joint/framework/stepped.py"
 SLAVE = "fmu_src/cardan_joint/fmi/slave.py"
 CORE = "fmu_src/cardan_joint/fmi/core.py"
 FAST_STEP = "fmu_src/cardan_joint/fmi/fast_step.py"

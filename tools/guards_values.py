@@ -6,6 +6,7 @@ from guards_base import (
     GUARDS,
     MODEL,
     SLAVE_GUARDS,
+    STEPPED,
     VALUES,
     Mutation,
 )
@@ -44,7 +45,7 @@ VALUE_MUTATIONS = (
     # Inputs: finiteness and range, each variable alone, in the slow path and the fast path.
     *(
         Mutation(
-            f"input {n} finite", VALUES, FINITE_LOOP, _skip(n), (GUARDS, "-k", "non_finite_input")
+            f"input {n} finite", STEPPED, FINITE_LOOP, _skip(n), (GUARDS, "-k", "non_finite_input")
         )
         for n in ALL_INPUTS
     ),
@@ -74,7 +75,7 @@ VALUE_MUTATIONS = (
     # Parameters, checked once per start.
     *(
         Mutation(
-            f"parameter {n} finite", VALUES, FINITE_LOOP, _skip(n), (GUARDS, "-k", "parameter")
+            f"parameter {n} finite", STEPPED, FINITE_LOOP, _skip(n), (GUARDS, "-k", "parameter")
         )
         for n in PARAMETERS
     ),
@@ -97,7 +98,7 @@ VALUE_MUTATIONS = (
     ),
     Mutation(
         "bad parameters refuse every step",
-        VALUES,
+        STEPPED,
         "if self.parameter_fault:\n            return self.parameter_fault.at(self.time)",
         "if False:\n            return self.parameter_fault.at(self.time)",
         (GUARDS, "-k", "parameter or max_bend_angle"),

@@ -56,7 +56,7 @@ import weakref
 from collections.abc import Callable
 from typing import Any
 
-from ..physics.api import Stepped
+from ..framework.api import Stepped
 from .references import References
 
 # The slave each thread constructed last: pythonfmu keeps its Python object to

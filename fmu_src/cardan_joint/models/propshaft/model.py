@@ -9,10 +9,10 @@ fixed at `start`; the fluctuation search runs once, at the first output read.
 
 import math
 
-from ...physics.refusal import Refusal
+from ...framework.refusal import Refusal
+from ...framework.stepped import ShaftModel
+from ...framework.values import angle_limit_problem, set_start_values, value_ranges
 from ...physics.revolutions import angle_value, split_angle
-from ...physics.stepped import ShaftModel
-from ...physics.values import angle_limit_problem, set_start_values, value_ranges
 from .chain import chain
 from .checks import angle_warnings
 from .fluctuation import equivalent_angle, speed_ratio_fluctuation
@@ -81,7 +81,7 @@ class Propshaft(ShaftModel):
         problem = self._value_problem(self.table.PARAMETERS, self._parameter_ranges)
         if problem:
             return problem
-        # Built like values.ValueChecks' refusals (one Refusal call per reason).
+        # Built like stepped.ValueChecks' refusals (one Refusal call per reason).
         for name in self._sides + self._tops:
             value = getattr(self, name)
             if not abs(value) < HALF_PI:
