@@ -40,7 +40,7 @@ def cardan_joint(*args, cwd: Path = ROOT):
 def refused_keeping_state(model, change: dict, words, held_input: str) -> None:
     """`model` (stepped once) refuses a step after `change` with a message holding
     `words` that reads back exactly, and keeps its state but `held_input`."""
-    from cardan_joint.physics import Refusal
+    from cardan_joint.framework import Refusal
 
     model.step(0.5)
     before = model.state()

@@ -69,7 +69,7 @@ PLUMBING_MUTATIONS = (
     ),
     Mutation(
         "exact rotor step: series near zero drag",
-        "fmu_src/cardan_joint/physics/stepped.py",
+        "fmu_src/cardan_joint/physics/rotor.py",
         "    if abs(z) > 0.05:\n",
         "    if True:\n",
         ("tests/fmu/test_inertia_load.py",),

@@ -21,14 +21,14 @@ STEP_MUTATIONS = (
     # The step itself.
     Mutation(
         "step size finite",
-        VALUES,
+        STEPPED,
         "if not (math.isfinite(step_size) and step_size > 0.0):",
         "if not (step_size > 0.0):",
         (GUARDS, "-k", "step_size"),
     ),
     Mutation(
         "step size positive",
-        VALUES,
+        STEPPED,
         "if not (math.isfinite(step_size) and step_size > 0.0):",
         "if not (math.isfinite(step_size)):",
         (GUARDS, "-k", "step_size"),

@@ -7,6 +7,7 @@ from guards_base import (
     LIMITS,
     MODEL,
     SLAVE_GUARDS,
+    STEPPED,
     VALUES,
     Mutation,
 )
@@ -45,7 +46,7 @@ VALUE_MUTATIONS = (
     # Inputs: finiteness and range, each variable alone, in the slow path and the fast path.
     *(
         Mutation(
-            f"input {n} finite", VALUES, FINITE_LOOP, _skip(n), (GUARDS, "-k", "non_finite_input")
+            f"input {n} finite", STEPPED, FINITE_LOOP, _skip(n), (GUARDS, "-k", "non_finite_input")
         )
         for n in ALL_INPUTS
     ),
@@ -75,7 +76,7 @@ VALUE_MUTATIONS = (
     # Parameters, checked once per start.
     *(
         Mutation(
-            f"parameter {n} finite", VALUES, FINITE_LOOP, _skip(n), (GUARDS, "-k", "parameter")
+            f"parameter {n} finite", STEPPED, FINITE_LOOP, _skip(n), (GUARDS, "-k", "parameter")
         )
         for n in PARAMETERS
     ),
@@ -98,7 +99,7 @@ VALUE_MUTATIONS = (
     ),
     Mutation(
         "bad parameters refuse every step",
-        VALUES,
+        STEPPED,
         "if self.parameter_fault:\n            return self.parameter_fault.at(self.time)",
         "if False:\n            return self.parameter_fault.at(self.time)",
         (GUARDS, "-k", "parameter or max_bend_angle"),

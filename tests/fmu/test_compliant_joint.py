@@ -8,13 +8,13 @@ import numpy as np
 import pytest
 from reference.geometry import geometric_reference
 
+from cardan_joint.framework import Reason, Refusal
 from cardan_joint.host.instance import FmuInstance
 from cardan_joint.models.compliant_joint.model import CompliantDrive, CompliantJoint
 from cardan_joint.models.compliant_joint.refusals import CompliantReason
 from cardan_joint.models.compliant_joint.variables import COMPLIANT_JOINT
 from cardan_joint.models.inertia_load.model import InertiaLoad
 from cardan_joint.models.universal_joint.model import CardanJoint
-from cardan_joint.physics import Reason, Refusal
 
 INERTIA = (0.02, 0.03, 0.045)
 START = dict(

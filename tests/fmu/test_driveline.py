@@ -7,10 +7,10 @@ import numpy as np
 import pytest
 from conftest import refused_keeping_state
 
+from cardan_joint.framework import Reason
 from cardan_joint.host.instance import ExtractedFMU, FmuInstance
 from cardan_joint.models.load.model import Load
 from cardan_joint.models.motor.model import Motor
-from cardan_joint.physics import Reason
 
 
 @pytest.fixture(scope="module")

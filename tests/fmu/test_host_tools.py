@@ -14,9 +14,17 @@ from cardan_joint.models import MODELS
 
 # Every model the build offers, for every FMI version it offers.
 BUILDS = [(key, version) for key, spec in MODELS.items() for version in spec.fmi_versions]
+# The command reads an FMI 3.0 FMU one way for every model (FmuInfo; each model's
+# FMI 3.0 build equals its FMI 2.0 build, checked below): every model through
+# FMI 2.0, FMI 3.0 through a single joint and a propshaft with build settings.
+RUNS = [(key, 2) for key in MODELS] + [("UniversalJoint", 3), ("CompliantPropshaft", 3)]
+# Building what the message names takes a build per case: one FMI 2.0 model and
+# one FMI 3.0 model with a build setting run it; every build's command is read
+# back below without building.
+REBUILT = [("UniversalJoint", 2), ("CompliantPropshaft", 3)]
 
 
-@pytest.mark.parametrize("key, version", BUILDS)
+@pytest.mark.parametrize("key, version", RUNS)
 def test_simulate_writes_a_csv_and_a_png_for_every_model(built, key, version, tmp_path):
     fmu = built(key, version)
     out = tmp_path / "run.csv"
@@ -91,7 +99,7 @@ def test_a_constant_bend_angle_with_a_nonzero_rate_is_refused(built, tmp_path):
     assert "bend_angle = 0.3" in run.stderr and "bend_angle_rate = 0.5" in run.stderr
 
 
-@pytest.mark.parametrize("key, version", BUILDS)
+@pytest.mark.parametrize("key, version", REBUILT)
 def test_a_missing_fmu_names_the_command_that_builds_it(built, key, version, tmp_path):
     """The named command, run as given, writes exactly the missing file."""
     fmu = built(key, version)
@@ -107,6 +115,16 @@ def test_a_missing_fmu_names_the_command_that_builds_it(built, key, version, tmp
     )
     assert built_now.returncode == 0, built_now.stderr
     assert missing.is_file()
+
+
+@pytest.mark.parametrize("key, version", BUILDS)
+def test_every_builds_missing_fmu_command_names_its_model_and_version(key, version):
+    spec = MODELS[key]
+    name = spec.default_name(spec.default_settings)
+    path = f"dist/fmi3/{name}.fmu" if version == 3 else f"dist/{name}.fmu"
+    flags = build_command(path).split()[2:]
+    assert flags[flags.index("--model") + 1] == key
+    assert ("--fmi-version" in flags) == (version == 3)
 
 
 def test_the_missing_fmu_command_carries_the_joints_and_fmi_version():

@@ -9,7 +9,7 @@ from conftest import refused_keeping_state
 
 from cardan_joint.host.instance import FmuInstance
 from cardan_joint.models.inertia_load.model import InertiaLoad
-from cardan_joint.physics.stepped import exact_rotor_step
+from cardan_joint.physics.rotor import exact_rotor_step
 
 
 def _ode(load, torques, steps):

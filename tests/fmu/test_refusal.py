@@ -6,6 +6,8 @@ import math
 import numpy as np
 import pytest
 
+from cardan_joint.framework import Reason, Refusal
+from cardan_joint.framework.refusal import reasons
 from cardan_joint.host.simulate import RefusalError, SimulationError, simulate
 from cardan_joint.models.compliant_joint.model import CompliantJoint
 from cardan_joint.models.compliant_joint.refusals import CompliantReason
@@ -17,8 +19,6 @@ from cardan_joint.models.propshaft import Propshaft
 from cardan_joint.models.propshaft.refusals import PropshaftReason
 from cardan_joint.models.universal_joint import variables as table
 from cardan_joint.models.universal_joint.model import CardanJoint
-from cardan_joint.physics import Reason, Refusal
-from cardan_joint.physics.refusal import reasons
 
 GUARD = table.BY_NAME["max_bend_angle"].start
 # One way to meet each reason: (start values, step size).
@@ -99,7 +99,7 @@ def test_each_refusal_reads_back_exactly_from_its_message(reason, time):
 def test_a_model_declares_its_own_reasons():
     from enum import Enum
 
-    from cardan_joint.physics.refusal import register_reasons
+    from cardan_joint.framework.refusal import register_reasons
 
     class Untemplated(str, Enum):
         JAM = "jam"

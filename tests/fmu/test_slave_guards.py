@@ -10,10 +10,10 @@ import pytest
 from pythonfmu.enums import Fmi2Status
 
 from cardan_joint.fmi.slave import ModelSlave
+from cardan_joint.framework import Reason, Refusal
 from cardan_joint.host.instance import FmuInstance
 from cardan_joint.models.universal_joint import variables as table
 from cardan_joint.models.universal_joint.model import CardanJoint
-from cardan_joint.physics import Reason, Refusal
 
 
 class Joint(ModelSlave):

@@ -6,8 +6,8 @@ import math
 import threading
 import time
 
+from cardan_joint.framework import Reason, Refusal
 from cardan_joint.host.instance import FmuInstance
-from cardan_joint.physics import Reason, Refusal
 
 THREADS = 8
 STEPS = 1000

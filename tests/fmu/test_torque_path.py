@@ -33,7 +33,7 @@ def energy_rate(psi, beta, w1, a1, rb, ab, inertia):
         )
 
 
-@settings(max_examples=200, deadline=None)
+@settings(max_examples=100, deadline=None)
 @given(angles, bends, st.floats(-100, 100), st.floats(-500, 500), inertias, st.floats(-1e3, 1e3))
 def test_power_balance_at_constant_bend(psi, beta, w1, a1, inertia, load):
     r = joint_response(psi, beta, w1, a1, 0.0, 0.0, inertia, load)
@@ -43,7 +43,7 @@ def test_power_balance_at_constant_bend(psi, beta, w1, a1, inertia, load):
     assert abs(balance - expected) <= 1e-11 * scale + 1e-300
 
 
-@settings(max_examples=200, deadline=None)
+@settings(max_examples=100, deadline=None)
 @given(
     angles,
     bends,

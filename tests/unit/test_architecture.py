@@ -1,7 +1,8 @@
 """Physics apart from plumbing, and the layers of the package.
 
-Layers, each importing only its own and lower ones: the shared physics and data
-(`physics/`, `units`, `variable_schema`, `names`, `extras`, `results`) <- the model folders
+Layers, each importing only its own and lower ones: the equations and shared data
+(`physics/`, `units`, `variable_schema`, `names`, `extras`, `results`) <- the
+stepped-model runtime (`framework/`) <- the model folders
 (`models/<name>/`: a model's table, physics and spec; one model may build on
 another) <- `fmi/` (the slaves) <- `build/` <- `host/` <- the commands (`sweep/`,
 `cli`, the `simulate` entry point). Checked on the source, statically.
@@ -13,8 +14,15 @@ import sys
 from pathlib import Path
 
 PACKAGE = Path(__file__).resolve().parents[2] / "fmu_src" / "cardan_joint"
-LAYERS = {"shared": 0, "models": 1, "fmi": 2, "build": 3, "host": 4, "commands": 5}
-TOP = {"physics": "shared", "models": "models", "fmi": "fmi", "build": "build", "host": "host"}
+LAYERS = {"shared": 0, "framework": 1, "models": 2, "fmi": 3, "build": 4, "host": 5, "commands": 6}
+TOP = {
+    "physics": "shared",
+    "framework": "framework",
+    "models": "models",
+    "fmi": "fmi",
+    "build": "build",
+    "host": "host",
+}
 SHARED_MODULES = {"__init__", "units", "variable_schema", "names", "extras", "results"}
 
 
@@ -71,13 +79,18 @@ def test_no_module_imports_a_higher_layer():
 
 def test_the_layer_check_sees_an_upward_import(tmp_path):
     # The check above must be able to fail: a physics module importing a host one,
-    # absolutely and relatively; a model importing the shared physics is fine.
+    # absolutely and relatively, or the framework (equations never lean on the
+    # runtime); a model importing the framework and the physics is fine.
     (tmp_path / "physics").mkdir()
     (tmp_path / "physics" / "values.py").write_text("from cardan_joint.host import simulate\n")
     (tmp_path / "physics" / "step.py").write_text("from ..host.instance import FmuInstance\n")
+    (tmp_path / "physics" / "rotor.py").write_text("from ..framework.refusal import Refusal\n")
     (tmp_path / "models").mkdir()
-    (tmp_path / "models" / "load.py").write_text("from ..physics import values\n")
+    (tmp_path / "models" / "load.py").write_text(
+        "from ..physics import values\nfrom ..framework import stepped\n"
+    )
     assert _upward_imports(tmp_path) == [
+        "shared module physics.rotor imports ['framework.refusal']",
         "shared module physics.step imports ['host.instance']",
         "shared module physics.values imports ['host']",
     ]

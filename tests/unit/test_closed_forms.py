@@ -31,7 +31,7 @@ def _scales(w1, a1, rb, ab):
     return speed, acceleration
 
 
-@settings(max_examples=300, deadline=None)
+@settings(max_examples=100, deadline=None)
 @given(angles, bends, speeds, accelerations, bend_rates, bend_accelerations)
 def test_kinematics_and_angular_velocity_match_computer_algebra(psi, beta, w1, a1, rb, ab):
     r = joint_response(psi, beta, w1, a1, rb, ab)
@@ -77,7 +77,7 @@ def _body_torque_reference(psi, beta, w1, a1, rb, ab, inertia):
     return torque, energy
 
 
-@settings(max_examples=200, deadline=None)
+@settings(max_examples=100, deadline=None)
 @given(angles, bends, speeds, accelerations, bend_rates, bend_accelerations, inertias, loads)
 def test_euler_torques_energy_and_yoke_reactions(psi, beta, w1, a1, rb, ab, inertia, load):
     r = joint_response(psi, beta, w1, a1, rb, ab, inertia, load)

@@ -7,6 +7,7 @@ from xml.etree.ElementTree import Element, SubElement
 import pytest
 
 from cardan_joint.fmi import model_description, model_description3
+from cardan_joint.framework.values import value_ranges
 from cardan_joint.models.inertia_load.model import InertiaLoad
 from cardan_joint.models.inertia_load.variables import INERTIA_LOAD
 from cardan_joint.models.load.model import Load
@@ -17,7 +18,6 @@ from cardan_joint.models.propshaft import Propshaft
 from cardan_joint.models.propshaft.variables import propshaft_table
 from cardan_joint.models.universal_joint import variables as table
 from cardan_joint.models.universal_joint.model import CardanJoint
-from cardan_joint.physics.values import value_ranges
 
 
 @pytest.mark.parametrize(

@@ -1,5 +1,5 @@
 """No generic layer names a model: fmi/, host/, build/ and the stepped-model
-framework work from what discovery finds, so a model added as a folder needs
+framework (framework/) work from what discovery finds, so a model added as a folder needs
 nothing there. The names are discovery's own (each model's key, folder and
 physics class), so a new model is checked as soon as its folder exists."""
 
@@ -11,7 +11,7 @@ from conftest import ROOT
 from cardan_joint.models import discover
 
 PACKAGE = ROOT / "fmu_src" / "cardan_joint"
-LAYERS = ("fmi", "host", "build")
+LAYERS = ("fmi", "host", "build", "framework")
 FRAMEWORK = (
     "__init__.py",
     "models/__init__.py",
@@ -19,8 +19,6 @@ FRAMEWORK = (
     "names.py",
     "units.py",
     "results.py",
-    "physics/stepped.py",
-    "physics/values.py",
 )
 # A driveline of named models (Motor -> drive -> Load) is an application of the
 # models, not a layer under them: it names the models it couples.

@@ -6,9 +6,9 @@ import math
 
 import pytest
 
+from cardan_joint.framework import Reason
 from cardan_joint.models.universal_joint import variables as table
 from cardan_joint.models.universal_joint.model import CardanJoint
-from cardan_joint.physics import Reason
 
 GUARD = table.BY_NAME["max_bend_angle"].start
 TINY = 1e-9  # a step too short for anything but the input itself to matter

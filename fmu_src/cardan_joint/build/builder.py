@@ -3,8 +3,8 @@
 Which models exist and their start-value checks come from their folders
 (`models/<name>/spec.py`, found by `models.discover`); every model's script is
 written from the one template of its FMI version (`fmi/script<N>.py`). Every
-build ships its own copy of the runtime part of `cardan_joint` (physics, model
-folders, slaves) under a name derived from a
+build ships its own copy of the runtime part of `cardan_joint` (physics, framework,
+model folders, slaves) under a name derived from a
 hash of that code and of the build's settings, and names the slave module
 after the same hash: two different FMUs of this project loaded in one process
 can then never run each other's code (Python keeps one module per name per
@@ -25,7 +25,8 @@ from ..models import model as find_model
 from .archive import ArchiveError, normalise
 
 PACKAGE_DIR = Path(__file__).resolve().parent.parent
-# What an FMU needs at run time: the shared layers, every model folder (a model
+# What an FMU needs at run time: the shared layers (the equations, the
+# stepped-model framework), every model folder (a model
 # may build on another's) and the
 # slaves. The rest of the package (host, build, the native loader's sources)
 # runs in the host only.
@@ -35,6 +36,7 @@ RUNTIME = (
     "units.py",
     "variable_schema.py",
     "physics",
+    "framework",
     "models",
     "fmi",
 )

@@ -2,7 +2,7 @@
 
 No equation lives here: a slave maps its variables onto a physics object
 (`_new_model()`: whatever the model folder's spec makes, see `binding`) with the
-model API of `physics.api.Stepped`. This mixin keeps the behaviour around it:
+model API of `framework.api.Stepped`. This mixin keeps the behaviour around it:
 the output cache, the outputs held while an input is invalid, the refused step
 that leaves the model untouched, the parameters fixed after initialization and
 the complete FMU state. It addresses variables by *flat index*, the position

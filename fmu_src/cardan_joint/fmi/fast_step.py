@@ -55,7 +55,7 @@ stale otherwise.
 from collections.abc import Callable
 from typing import Any
 
-from ..physics.api import Stepped
+from ..framework.api import Stepped
 from .references import References
 
 # ok in both versions' status enumerations, as a plain int for the taken step:

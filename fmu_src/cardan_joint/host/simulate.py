@@ -31,7 +31,7 @@ from .interrupts import SimulationInterrupted, interrupt_between_steps
 from .run_arguments import RunLength, check_memory, run_length
 
 if TYPE_CHECKING:  # imported in first_refusal at run time, where it is needed
-    from ..physics.refusal import Refusal
+    from ..framework.refusal import Refusal
 
 DEFAULT_FMU = Path("dist") / f"{DEFAULT_MODEL}.fmu"
 # (status name, category, text) of one FMU log message.
@@ -69,8 +69,8 @@ class RefusalError(SimulationError):
 
 def first_refusal(texts: Iterable[str]) -> "Refusal | None":
     """The first `Refusal` written in `texts` (the FMU's log), or None."""
+    from ..framework.refusal import Refusal
     from ..models import discover
-    from ..physics.refusal import Refusal
 
     discover()  # every model's own reasons are declared (read back) with its folder
 

@@ -22,7 +22,7 @@ from pathlib import Path
 from typing import TYPE_CHECKING, Any
 
 if TYPE_CHECKING:
-    from ..physics.api import Stepped
+    from ..framework.api import Stepped
 
 MODELS_DIR = Path(__file__).resolve().parent
 
@@ -53,7 +53,7 @@ class Model:
     """How to build one model and what its FMU slave maps onto.
 
     `make(settings, **start_values)` returns the physics object (the model API,
-    `physics.api.Stepped`); `table_for(settings)` its variable table. `live_outputs` are
+    `framework.api.Stepped`); `table_for(settings)` its variable table. `live_outputs` are
     the leading outputs that follow the state while an input is invalid;
     `owner` is what "stays put" in the slave's messages.
     """
@@ -108,7 +108,7 @@ class Model:
         """Raise StartValueError unless `values` name inputs and parameters only and
         the model built with `settings` can run with them (the physics' own checks:
         its unknown-name check names the nearest valid names)."""
-        from ..physics.values import UnknownVariableError
+        from ..framework.values import UnknownVariableError
 
         if self.check_settings:
             self.check_settings(settings)

@@ -1,4 +1,5 @@
-"""The physics every model shares: pure Python, no FMI import.
+"""The equations every model shares: pure Python, no FMI import, no framework
+(the stepped-model runtime is `framework/`).
 
 Angles in rad, speeds in rad/s, torques in N.m. `psi` is the input-pin angle
 (input angle + yoke phase), `beta` the bend angle. `joint_response` holds every
@@ -17,18 +18,17 @@ from .quantities import (
     roll_angle,
     speed_ratio,
 )
-from .refusal import Reason, Refusal
 from .response import JointResponse, joint_response
 from .revolutions import RevolutionAngle, advance, split_angle
+from .rotor import exact_rotor_step
 
 __all__ = [
     "JointResponse",
-    "Reason",
-    "Refusal",
     "RevolutionAngle",
     "advance",
     "cardan_error",
     "degree_of_unevenness",
+    "exact_rotor_step",
     "joint_response",
     "max_cardan_error",
     "output_angle",

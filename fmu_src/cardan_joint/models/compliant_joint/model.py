@@ -18,9 +18,9 @@ inertia and bend-rate terms included). Same protocol as every stepped model.
 
 from operator import attrgetter
 
-from ...physics.refusal import Refusal
-from ...physics.stepped import SteppedModel
-from ...physics.values import MAX_INCREMENT, ValueChecks, set_start_values, value_ranges
+from ...framework.refusal import Refusal
+from ...framework.stepped import SteppedModel, ValueChecks
+from ...framework.values import MAX_INCREMENT, set_start_values, value_ranges
 from ..universal_joint.model import CardanJoint
 from .refusals import CompliantReason
 from .variables import COMPLIANT_JOINT

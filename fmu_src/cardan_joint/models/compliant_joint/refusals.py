@@ -3,7 +3,7 @@ ones; the CompliantPropshaft's drive is this one too)."""
 
 from enum import Enum
 
-from ...physics.refusal import register_reasons
+from ...framework.refusal import register_reasons
 
 
 class CompliantReason(str, Enum):

@@ -2,12 +2,12 @@
 
 J d(omega)/dt = drive_torque - drag omega - constant_torque, the drive torque held
 over a step: the Motor's linear rotor equation, solved exactly by the same
-`physics.stepped.exact_rotor_step` (drag = 0 included). The constant torque is a
+`physics.rotor.exact_rotor_step` (drag = 0 included). The constant torque is a
 torque, not a friction: at standstill it turns the load backwards unless the
 drive torque balances it. Same protocol and checks as the Motor.
 """
 
-from ...physics.stepped import RotorModel
+from ...framework.stepped import RotorModel
 from .refusals import InertiaLoadReason
 from .variables import INERTIA_LOAD
 

@@ -2,8 +2,8 @@
 constant torque; it has no state: torque = J a + c omega + T0 of the shaft motion
 it is given."""
 
-from ...physics.refusal import Refusal
-from ...physics.stepped import SteppedModel
+from ...framework.refusal import Refusal
+from ...framework.stepped import SteppedModel
 from .variables import LOAD
 
 

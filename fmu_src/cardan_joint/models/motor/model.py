@@ -2,10 +2,10 @@
 characteristic T(omega) = T_s (1 - omega / omega_0) (stall torque T_s, no-load
 speed omega_0) against a load torque T_L held over the step. With k = T_s / omega_0
 the rotor obeys J d(omega)/dt = T_s - k omega - T_L, a linear ODE solved exactly
-over a step (`physics.stepped.exact_rotor_step`): no integration error at any step.
+over a step (`physics.rotor.exact_rotor_step`): no integration error at any step.
 """
 
-from ...physics.stepped import RotorModel
+from ...framework.stepped import RotorModel
 from .refusals import MotorReason
 from .variables import MOTOR
 

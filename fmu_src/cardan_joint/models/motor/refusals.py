@@ -2,7 +2,7 @@
 
 from enum import Enum
 
-from ...physics.refusal import register_reasons
+from ...framework.refusal import register_reasons
 
 
 class MotorReason(str, Enum):

@@ -13,7 +13,7 @@ from typing import Any
 from ...physics.life import bearing_forces, compensated_add, life_rate, rate_scale
 from ...physics.life_integral import life_increment
 from ...physics.response import JointResponse, kernel
-from ...physics.stepped import ShaftModel
+from ...framework.stepped import ShaftModel
 from .chain import chain
 
 _MOMENTS = tuple(

@@ -9,11 +9,11 @@ fixed at `start`; the fluctuation search runs once, at the first output read.
 
 import math
 
+from ...framework.refusal import Refusal
+from ...framework.stepped import ShaftModel
+from ...framework.values import angle_limit_problem, set_start_values, value_ranges
 from ...physics.life import rule_of
-from ...physics.refusal import Refusal
 from ...physics.revolutions import angle_value, split_angle
-from ...physics.stepped import ShaftModel
-from ...physics.values import angle_limit_problem, set_start_values, value_ranges
 from .chain import chain
 from .checks import angle_warnings
 from .critical_speed import critical_speed, critical_speed_warnings
@@ -101,7 +101,7 @@ class Propshaft(PropshaftLife, ShaftModel):
         problem = self._value_problem(self.table.PARAMETERS, self._parameter_ranges)
         if problem:
             return problem
-        # Built like values.ValueChecks' refusals (one Refusal call per reason).
+        # Built like stepped.ValueChecks' refusals (one Refusal call per reason).
         for name in self._sides + self._tops:
             value = getattr(self, name)
             if not abs(value) < HALF_PI:

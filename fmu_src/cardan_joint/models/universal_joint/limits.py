@@ -1,7 +1,7 @@
 """The joint's value ranges and the common case's one-comparison-chain input check
 (`fits`), from its table."""
 
-from ...physics.values import bounds, value_ranges
+from ...framework.values import bounds, value_ranges
 from . import variables as table
 
 

@@ -10,13 +10,13 @@ FMU maps its variables onto this object.
 
 import math
 
-from ...physics.refusal import Reason, Refusal
+from ...framework.refusal import Reason, Refusal
+from ...framework.stepped import ShaftModel
+from ...framework.values import MAX_INCREMENT, Table, angle_limit_problem, set_start_values
 
 # The kernel itself: the FMU's once-per-step call on floats skips the array dispatch.
 from ...physics.response import JointResponse, kernel
 from ...physics.revolutions import advanced, angle_value, split_angle
-from ...physics.stepped import ShaftModel
-from ...physics.values import MAX_INCREMENT, Table, angle_limit_problem, set_start_values
 from ...variable_schema import Variable
 from . import variables as table
 from .life import JointLife

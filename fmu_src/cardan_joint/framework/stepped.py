@@ -1,26 +1,29 @@
-"""The one stepped-model base every model's physics derives from: `SteppedModel`
-(inputs and parameters as attributes with the table's start values, their
-checks, the step and the saved state), `ShaftModel` (a model driven at an
-input shaft kept as exact revolutions) and `RotorModel` (one rotor advanced by
-`exact_rotor_step`, the exact step of a driven inertia).
+"""The stepped models' runtime, top to bottom: a step is `SteppedModel.run`
+(inputs, `step`, outputs), `step` the checks (`ValueChecks.step_problem`: step
+size, parameters, inputs) and then the model's `_advance` and the clock. A
+model's folder adds its equations (`models/<name>/model.py`); nothing else is
+on the step's path. `ShaftModel` is a model driven at an input shaft kept as
+exact revolutions, `RotorModel` one rotor advanced by the rotor's exact step
+(`physics.rotor`).
 
 Every stepped model gives the model API (`api.Stepped`) the FMU slaves' core
-relies on; the value and step-size checks are the joint's (`values.ValueChecks`).
+relies on; the saved state is `values.SavedState`.
 """
 
 import math
-from collections.abc import Callable
+from collections.abc import Callable, Iterator
 from functools import cache
 from operator import attrgetter
 from typing import Any
 
-from .refusal import Refusal
-from .revolutions import Turns, advanced, angle_value
+from ..physics.revolutions import Turns, advanced, angle_value
+from ..physics.rotor import exact_rotor_step
+from ..variable_schema import Variable
+from .api import Table
+from .refusal import Reason, Refusal, crossed_limit
 from .values import (
     MAX_INCREMENT,
     SavedState,
-    Table,
-    ValueChecks,
     bounds,
     overflow,
     set_start_values,
@@ -35,31 +38,63 @@ def _getter(names: tuple[str, ...]):
     return getter if len(names) > 1 else lambda model: (getter(model),)
 
 
-def _phi2(z: float) -> float:
-    """(exp(z) - 1 - z) / z^2, without the cancellation of that formula near z = 0."""
-    if abs(z) > 0.05:
-        return (math.expm1(z) - z) / (z * z)
-    # Taylor series 1/2 + z/6 + ... to z^8: truncation below 1e-19 for |z| <= 0.05.
-    total, term = 0.0, 1.0
-    for k in range(2, 11):
-        term /= k
-        total += term
-        term *= z
-    return total
+class ValueChecks:
+    """Refusals for bad attribute values of a model object with a variable `table`."""
 
+    # What the host model provides: its table, its clock, the parameters' refusal
+    # (fixed at `start`) and the check of its inputs over a step.
+    table: Table
+    time: float
+    parameter_fault: Refusal | None
 
-def exact_rotor_step(speed: float, inertia: float, damping: float, torque: float, h: float):
-    """(speed, angle increment) after `h` s of J w' = torque - damping w, the torque
-    held: exact for any damping >= 0, zero included (then uniform acceleration).
+    def input_problem(self, step_size: float = 0.0) -> Refusal | None:
+        raise NotImplementedError(f"{type(self).__name__} must check its inputs")
 
-    With a = (torque - damping w) / J and z = -damping h / J:
-    w(h) = w + a h (e^z - 1)/z and the angle grows by w h + a h^2 (e^z - 1 - z)/z^2.
-    """
-    acceleration = (torque - damping * speed) / inertia
-    z = -damping * h / inertia
-    # expm1 keeps full precision when h is much shorter than the time constant.
-    phi1 = math.expm1(z) / z if z else 1.0
-    return speed + acceleration * h * phi1, h * (speed + acceleration * h * _phi2(z))
+    def _non_finite_limit(self, name: str, variable: Variable) -> float:
+        """The limit a NaN or infinite `name` is reported against: its range's bound."""
+        return crossed_limit(getattr(self, name), *bounds(variable))
+
+    def _bad_values(self, names, ranges) -> Iterator[Refusal]:
+        """A Refusal for each of `names` not finite or outside its range."""
+        by_name = self.table.BY_NAME
+        for name in names:
+            value = getattr(self, name)
+            if not math.isfinite(value):
+                variable = by_name[name]
+                yield Refusal(
+                    Reason.NOT_FINITE,
+                    name,
+                    value,
+                    self._non_finite_limit(name, variable),
+                    self.time,
+                    variable.unit,
+                    kind=variable.causality,
+                )
+        for name, low, high, unit in ranges:
+            value = getattr(self, name)
+            if math.isfinite(value) and not low <= value <= high:
+                yield Refusal(
+                    Reason.OUT_OF_RANGE,
+                    name,
+                    value,
+                    crossed_limit(value, low, high),
+                    self.time,
+                    unit,
+                    {"low": low, "high": high},
+                    by_name[name].causality,
+                )
+
+    def _value_problem(self, names, ranges) -> Refusal | None:
+        """The first bad value, or None."""
+        return next(self._bad_values(names, ranges), None)
+
+    def step_problem(self, step_size: float) -> Refusal | None:
+        """The Refusal of a step of `step_size` from now, or None."""
+        if not (math.isfinite(step_size) and step_size > 0.0):
+            return Refusal(Reason.STEP_SIZE, "step_size", step_size, 0.0, self.time, "s")
+        if self.parameter_fault:
+            return self.parameter_fault.at(self.time)
+        return self.input_problem(step_size)
 
 
 class SteppedModel(ValueChecks, SavedState):

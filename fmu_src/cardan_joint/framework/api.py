@@ -1,12 +1,32 @@
 """The model API: what every model's physics object gives its FMU slave
 (`fmi/core.py`, `fmi/fast_step.py`), stated once and checked by mypy (each
-spec's `make` returns one, `stepped` takes a class that makes one)."""
+spec's `make` returns one, `stepped` takes a class that makes one), and what
+the framework reads of a model's variable table."""
 
-from collections.abc import Sequence
+from collections.abc import Mapping, Sequence
 from typing import Protocol
 
+from ..variable_schema import Variable
 from .refusal import Refusal
-from .values import Table
+
+
+class Table(Protocol):
+    """What the checks read of a variable table: the `variables` module itself
+    or a `variables.VariableTable` (read-only, so either one matches)."""
+
+    @property
+    def BY_NAME(self) -> Mapping[str, Variable]: ...
+
+    @property
+    def INPUTS(self) -> tuple[str, ...]: ...
+
+    @property
+    def PARAMETERS(self) -> tuple[str, ...]: ...
+
+    @property
+    def OUTPUTS(self) -> tuple[str, ...]: ...
+
+    def start_values(self) -> dict[str, float]: ...
 
 
 class Stepped(Protocol):

@@ -1,38 +1,19 @@
-"""Checks of variable values, the input shaft's exact advance and the saved
-state, shared by every stepped model (physics/stepped.py): one Refusal
-per bad value, one state format."""
+"""What the stepped models' checks and state are built of (`stepped.py`): the
+ranges and start values read from a variable table, the refusals of an angle
+limit and of an overflowing step, and the saved state in its one format."""
 
 import math
-from collections.abc import Callable, Iterator, Mapping
-from typing import Protocol
+from collections.abc import Callable, Mapping
 
 from ..names import unknown
 from ..variable_schema import Variable
-from .refusal import Reason, Refusal, crossed_limit
+from .api import Table
+from .refusal import Reason, Refusal
 
 # Beyond 1e15 rad a float has no fractional digits left: the pin's position
 # after such a step is undefined, and the exact turn arithmetic would overflow.
 MAX_INCREMENT = 1e15
 HALF_PI = 0.5 * math.pi
-
-
-class Table(Protocol):
-    """What the checks read of a variable table: the `variables` module itself
-    or a `variables.VariableTable` (read-only, so either one matches)."""
-
-    @property
-    def BY_NAME(self) -> Mapping[str, Variable]: ...
-
-    @property
-    def INPUTS(self) -> tuple[str, ...]: ...
-
-    @property
-    def PARAMETERS(self) -> tuple[str, ...]: ...
-
-    @property
-    def OUTPUTS(self) -> tuple[str, ...]: ...
-
-    def start_values(self) -> dict[str, float]: ...
 
 
 Range = tuple[str, float, float, str]
@@ -72,65 +53,6 @@ def set_start_values(model, table: Table, values: Mapping[str, float], what: str
         raise UnknownVariableError(unknown(strangers[0], settable, kind))
     for name, value in {**table.start_values(), **values}.items():
         setattr(model, name, float(value))
-
-
-class ValueChecks:
-    """Refusals for bad attribute values of a model object with a variable `table`."""
-
-    # What the host model provides: its table, its clock, the parameters' refusal
-    # (fixed at `start`) and the check of its inputs over a step.
-    table: Table
-    time: float
-    parameter_fault: Refusal | None
-
-    def input_problem(self, step_size: float = 0.0) -> Refusal | None:
-        raise NotImplementedError(f"{type(self).__name__} must check its inputs")
-
-    def _non_finite_limit(self, name: str, variable: Variable) -> float:
-        """The limit a NaN or infinite `name` is reported against: its range's bound."""
-        return crossed_limit(getattr(self, name), *bounds(variable))
-
-    def _bad_values(self, names, ranges) -> Iterator[Refusal]:
-        """A Refusal for each of `names` not finite or outside its range."""
-        by_name = self.table.BY_NAME
-        for name in names:
-            value = getattr(self, name)
-            if not math.isfinite(value):
-                variable = by_name[name]
-                yield Refusal(
-                    Reason.NOT_FINITE,
-                    name,
-                    value,
-                    self._non_finite_limit(name, variable),
-                    self.time,
-                    variable.unit,
-                    kind=variable.causality,
-                )
-        for name, low, high, unit in ranges:
-            value = getattr(self, name)
-            if math.isfinite(value) and not low <= value <= high:
-                yield Refusal(
-                    Reason.OUT_OF_RANGE,
-                    name,
-                    value,
-                    crossed_limit(value, low, high),
-                    self.time,
-                    unit,
-                    {"low": low, "high": high},
-                    by_name[name].causality,
-                )
-
-    def _value_problem(self, names, ranges) -> Refusal | None:
-        """The first bad value, or None."""
-        return next(self._bad_values(names, ranges), None)
-
-    def step_problem(self, step_size: float) -> Refusal | None:
-        """The Refusal of a step of `step_size` from now, or None."""
-        if not (math.isfinite(step_size) and step_size > 0.0):
-            return Refusal(Reason.STEP_SIZE, "step_size", step_size, 0.0, self.time, "s")
-        if self.parameter_fault:
-            return self.parameter_fault.at(self.time)
-        return self.input_problem(step_size)
 
 
 def angle_limit_problem(reason, name: str, value: float, time: float) -> Refusal | None:
