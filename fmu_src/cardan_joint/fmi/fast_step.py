@@ -17,8 +17,9 @@ dozen per value (benchmarks, section 7).
 
 Calls return a status (ok 0, warning 1, discard 2, error 3: the FMI version's
 own IntEnum, or a plain int) or a tuple (status, values, ...) of a status and
-tuples of floats, whose values, in order, the loader writes into its arrays; each call logs through the slave as any other call does, so the
-loader forwards the log queue after it as after pythonfmu's calls:
+tuples of floats, whose values, in order, the loader writes into its arrays.
+Each call logs through the slave as any other call does; the loader forwards
+the log queue after it:
 - fast_store() -> (ok, known): every input and parameter. Call it after
   instantiation and after every call into the slave that can change them: a
   setReal forwarded to Python, exitInitializationMode, set or deserialized FMU

@@ -10,10 +10,10 @@ the chain evaluated once per node for all joints."""
 import math
 from typing import Any
 
+from ...framework.stepped import ShaftModel
 from ...physics.life import bearing_forces, compensated_add, life_rate, rate_scale
 from ...physics.life_integral import life_increment
 from ...physics.response import JointResponse, kernel
-from ...framework.stepped import ShaftModel
 from .chain import chain
 
 _MOMENTS = tuple(
