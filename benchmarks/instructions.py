@@ -102,7 +102,7 @@ def worker_instructions(what, steps, fmu):
     return {}
 
 
-def count_minor(minor, host, joint, floor, lengths) -> dict | None:
+def count_minor(minor, host, joint, floor, lengths, life=None) -> dict | None:
     prefix = cpython(minor)
     if prefix is None:
         return None
@@ -130,16 +130,22 @@ def count_minor(minor, host, joint, floor, lengths) -> dict | None:
         "fmpy joint": per_step(python_worker(python, "loop", joint), path, lengths),
         "fmpy floor": per_step(python_worker(python, "loop", floor), path, lengths),
     }
+    if life:
+        counts["c_host life"] = per_step(
+            in_host(life), {"CARDAN_JOINT_FMU_PYTHON_LIBRARY": str(library)}, lengths
+        )
     counts["version"] = prefix.name
     return counts
 
 
-def instructions(joint, floor, workdir, sizes) -> dict:
-    """{minor: counts per step} for each CPython found (None where it is missing)."""
+def instructions(joint, floor, workdir, sizes, life=None) -> dict:
+    """{minor: counts per step} for each CPython found (None where it is missing);
+    `life`: the joint built with life (the default build), counted beside `joint`."""
     host = compile_c_host(workdir)
     lengths = sizes.instruction_steps
     return {
-        minor: count_minor(minor, host, joint, floor, lengths) for minor in sizes.instruction_minors
+        minor: count_minor(minor, host, joint, floor, lengths, life)
+        for minor in sizes.instruction_minors
     }
 
 
@@ -170,7 +176,19 @@ def instruction_rows(results, sizes) -> list:
     measured = {minor: counts for minor, counts in results.items() if counts}
     missing = [f"3.{minor}" for minor, counts in results.items() if not counts]
     note = f"; not measured (no pyenv CPython): {', '.join(missing)}" if missing else ""
-    rows = []
+    rows, life_rows = [], []
+    with_life = {m: c for m, c in measured.items() if "c_host life" in c}
+    if with_life:
+        cells = [
+            f"{c['version']}: with life {c['c_host life'] / 1e3:.1f} k, without "
+            f"{c['c_host joint'] / 1e3:.1f} k: **×{c['c_host life'] / c['c_host joint']:.2f}**"
+            for c in with_life.values()
+        ]
+        life_rows.append(
+            f"| 7d. instructions per step (callgrind, runs of {lengths[1]:,} − "
+            f"{lengths[0]:,} steps): C host: the joint with life (the default build, "
+            f"docs/life.md) / without (`--no-life`) | {'; '.join(cells)}{note} | (context) | |"
+        )
     for key, (title, first, second) in ROWS.items():
         cells, worst = [], 0.0
         for counts in measured.values():
@@ -185,4 +203,4 @@ def instruction_rows(results, sizes) -> list:
             f"{lengths[1]:,} − {lengths[0]:,} steps): {title} | {'; '.join(cells)}{note} | "
             f"≤ ×{GOALS[key]} | {met(bool(measured) and worst <= GOALS[key])} |"
         )
-    return rows
+    return rows + life_rows

@@ -30,6 +30,7 @@ SUMMARY_ROWS = (
     "| 7a. instructions per step (callgrind,",
     "| 7b. instructions per step (callgrind,",
     "| 7c. instructions per step (callgrind,",
+    "| 7d. instructions per step (callgrind,",
 )
 
 
@@ -64,6 +65,24 @@ def test_quick_run_writes_every_row(fmu_path, tmp_path):
     for bend in ("2π/7", "2π/5"):
         for step in ("1e-01", "1e-02", "1e-03", "1e-04"):
             assert sum(line.startswith(f"| {bend} | {step} |") for line in lines) == 1
+
+    # Section 7 alone replaces its own rows and says so; every other line stays.
+    again = subprocess.run(
+        [sys.executable, "-m", "benchmarks", "--quick", "--instructions-only",
+         "--output", str(output), "--fmu", str(fmu_path)],
+        capture_output=True, text=True, cwd=ROOT, timeout=600,
+    )  # fmt: skip
+    assert again.returncode == 0, again.stdout + again.stderr
+    remeasured = output.read_text().splitlines()
+    note = [i for i, line in enumerate(remeasured) if line.startswith("Rows 7a-7d")]
+    assert len(note) == 1 and remeasured[note[0] + 1] == "" and remeasured[note[0] - 1] == ""
+    del remeasured[note[0] : note[0] + 2]
+    assert [line for line in remeasured if not line.startswith("| 7")] == [
+        line for line in lines if not line.startswith("| 7")
+    ]
+    for row in SUMMARY_ROWS:
+        assert sum(line.startswith(row) for line in remeasured) == 1, row
+    assert sum(line.startswith("Rows 7a-7d re-measured alone") for line in remeasured) == 1
 
 
 def test_the_floor_builder_makes_an_fmu_with_the_joints_variables(model_description, tmp_path):
