@@ -211,7 +211,8 @@ def instructions_only(sizes, joint_fmu, workdir, output: Path, elapsed_since: fl
     # An earlier note goes with the blank line that follows it.
     notes = {i for i, line in enumerate(lines) if line.startswith(REMEASURED)}
     dropped = notes | {i + 1 for i in notes if i + 1 < len(lines) and not lines[i + 1]}
-    kept, at = [], None
+    kept: list[str] = []
+    at: int | None = None
     for i, line in enumerate(lines):
         if line.startswith(INSTRUCTION_ROWS) and at is None:
             at = len(kept)  # where the summary table had them
