@@ -203,8 +203,8 @@ STEP_MUTATIONS = (
     Mutation(
         "one-call step: the inputs a step moved are written back",
         FAST_STEP,
-        "return OK, result, moved",
-        "return OK, result, tuple(inputs)",
+        "return OK, outputs, moved",
+        "return OK, outputs, tuple(inputs)",
         (FAST_STEP_TESTS, "-k", "normal_paths"),
     ),
     Mutation(

@@ -49,7 +49,9 @@ def test_run_is_step_then_outputs_to_the_bit_for_every_model():
             if problem:
                 assert result == problem, (key, k)
             else:
-                assert bits(result) == bits(plain.outputs()), (key, k)
+                outputs, moved = result
+                assert bits(outputs) == bits(plain.outputs()), (key, k)
+                assert bits(moved) == bits(plain.inputs()), (key, k)
             outcomes[problem is None] += 1
             assert inline.state() == plain.state() or math.nan in inputs, (key, k)
             if problem:  # start the next one from valid inputs again

@@ -121,13 +121,14 @@ class FastStep:
                 self._outputs = None
                 self._inputs_checked = False
                 return self._refused(result, current_time, step_size)
-            self._outputs = self._outputs_held = result
-            self._inputs_checked = True
             # A taken step moves the inputs that are polynomial over it (the speed,
             # the bend angle and rate): getReal of an input reads the moved value,
             # and the next step starts from it.
-            moved = self._inputs_held = model.inputs()
-            return OK, result, moved
+            outputs, moved = result
+            self._outputs = self._outputs_held = outputs
+            self._inputs_held = moved
+            self._inputs_checked = True
+            return OK, outputs, moved
         except Exception as error:
             self._fault("fast_step", error)
             return self._STATUS.error

@@ -63,8 +63,9 @@ class Stepped(Protocol):
         """The outputs' values, in the table's order."""
 
     def run(self, time: float, step_size: float, inputs: Sequence[float]) -> "tuple | Refusal":
-        """The FMU's step: `set_inputs`, then `step` from `time`, then `outputs`
-        (the clock back where it was if refused)."""
+        """The FMU's step: `set_inputs`, then `step` from `time`, then the pair
+        (`outputs`, `inputs` after the step: those polynomial over it have moved),
+        or the Refusal (the clock back where it was)."""
 
     def state(self) -> dict: ...
 

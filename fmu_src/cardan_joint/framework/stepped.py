@@ -149,15 +149,15 @@ class SteppedModel(ValueChecks, SavedState):
 
     def run(self, time: float, step_size: float, inputs) -> "tuple | Refusal":
         """The FMU's step: take `inputs` (the table's order), advance `step_size` s
-        from `time` and return the outputs after it, or the Refusal of the step
-        (then only the inputs have changed, the clock neither)."""
+        from `time` and return the outputs and the inputs after it, or the Refusal
+        of the step (then only the inputs have changed, the clock neither)."""
         self.set_inputs(inputs)
         before, self.time = self.time, time
         problem = self.step(step_size)
         if problem:
             self.time = before
             return problem
-        return self.outputs()
+        return self.outputs(), self.inputs()
 
     def outputs(self) -> tuple:
         raise NotImplementedError(f"{type(self).__name__} must give its outputs")

@@ -184,8 +184,9 @@ class CardanJoint(JointLife, ShaftModel):
 
     def run(self, time: float, h: float, inputs) -> "tuple | Refusal":
         """The FMU's step, top to bottom: take `inputs` (the table's order), advance
-        `h` s from `time` and return the outputs after it (the table's order), or
-        the Refusal of the step (then only the inputs have changed).
+        `h` s from `time` and return the outputs and the inputs after it (the
+        table's orders), or the Refusal of the step (then only the inputs have
+        changed).
 
         The common case inline, once per FMU step: the checks of `step_problem`
         and `_advance` at once (the inputs' through `_fits`, as `input_problem`),
@@ -212,16 +213,20 @@ class CardanJoint(JointLife, ShaftModel):
             and abs(end_speed) <= SPEED_LIMIT
         ):
             return ShaftModel.run(self, time, h, inputs)
-        start = self._life_start()  # as `_advance`
+        # The life hooks are called only with life on: a call costs a few hundred
+        # instructions a step, as much as the runtime's whole budget.
+        start = self._life_start() if self.life else None  # as `_advance`
         self._angle = angle = advanced(self._angle, increment)
         self.input_speed = end_speed
         self.bend_angle = end_beta = beta + h * (rate + 0.5 * bend_acceleration * h)
         self.bend_angle_rate = end_rate = rate + bend_acceleration * h
-        self._add_damage(h, start)
+        if start:
+            self._add_damage(h, start)
         self.time = time + h
-        return self._outputs(
+        outputs = self._outputs(
             angle, end_beta, end_speed, acceleration, end_rate, bend_acceleration, load
         )
+        return outputs, (end_speed, acceleration, end_beta, end_rate, bend_acceleration, load)
 
     # --- outputs -----------------------------------------------------------
 
@@ -278,4 +283,4 @@ class CardanJoint(JointLife, ShaftModel):
         input_angle = angle_value(angle)
         # Two roundings at most: within one ulp of gamma2 however many turns.
         values = (input_angle, input_angle + r[_CARDAN_ERROR]) + r[:_KINEMATIC_OUTPUTS]
-        return self._with_life(values, r, load, speed, beta)
+        return self._with_life(values, r, load, speed, beta) if self.life else values
