@@ -99,21 +99,27 @@ def c_host3(tmp_path_factory) -> Path:
 
 @pytest.fixture(scope="session")
 def built(tmp_path_factory):
-    """built(model, fmi_version, arrays) -> the FMU `build_fmu.py --model <model>
-    [--fmi-version=3 [--fmi3-arrays]]` writes, built at most once per test session:
-    every FMU test shares it (a module's own build of a model is a defect)."""
+    """built(model, fmi_version, arrays, settings) -> the FMU `build_fmu.py --model
+    <model> [--fmi-version=3 [--fmi3-arrays]] [settings...]` writes, built at most
+    once per test session: every FMU test shares it (a module's own build of a
+    model is a defect)."""
     from cardan_joint import DEFAULT_MODEL
 
     fmus: dict = {}
 
-    def fmu(model: str = DEFAULT_MODEL, fmi_version: int = 2, arrays: bool = False) -> Path:
-        key = model, fmi_version, arrays
+    def fmu(
+        model: str = DEFAULT_MODEL,
+        fmi_version: int = 2,
+        arrays: bool = False,
+        settings: tuple[str, ...] = (),
+    ) -> Path:
+        key = model, fmi_version, arrays, settings
         if key not in fmus:
             options = ["--model", model]
             options += ["--fmi-version=3"] if fmi_version == 3 else []
             options += ["--fmi3-arrays"] if arrays else []
             dest = tmp_path_factory.mktemp(f"{model}{fmi_version}{'a' if arrays else ''}")
-            fmus[key] = build_fmu(dest, *options)
+            fmus[key] = build_fmu(dest, *options, *settings)
         return fmus[key]
 
     return fmu
@@ -136,6 +142,18 @@ def unzipped_fmu(fmu_path, tmp_path_factory):
     from fmpy import extract
 
     directory = extract(str(fmu_path), unzipdir=str(tmp_path_factory.mktemp("unzipped")))
+    yield directory
+    shutil.rmtree(directory, ignore_errors=True)
+
+
+@pytest.fixture(scope="session")
+def unzipped_without_life(built, tmp_path_factory):
+    """The default model built `--no-life`, extracted: for long runs about the
+    joint's motion, which a life integral over every step would only slow."""
+    from fmpy import extract
+
+    fmu = built(settings=("--no-life",))
+    directory = extract(str(fmu), unzipdir=str(tmp_path_factory.mktemp("unzipped_no_life")))
     yield directory
     shutil.rmtree(directory, ignore_errors=True)
 
