@@ -46,6 +46,7 @@ CAUSES = {
     PropshaftReason.SHAFT_ANGLE: [(dict(shaft_1_top_angle=-math.pi / 2), 0.1)],
     PropshaftReason.WORKING_ANGLE_GUARD: [(dict(max_working_angle=2.0), 0.1)],
     PropshaftReason.WORKING_ANGLE: [(dict(shaft_1_side_angle=0.6, max_working_angle=0.5), 0.1)],
+    PropshaftReason.TUBE_BORE: [(dict(shaft_1_inner_diameter=0.2), 0.1)],
     # The motor's.
     MotorReason.ROTOR_SPEED: [
         (dict(load_torque=9e8, stall_torque=60.0, no_load_speed=100.0, rotor_inertia=0.3), 0.1)
@@ -59,6 +60,7 @@ PROPSHAFT_REASONS = {
     PropshaftReason.SHAFT_ANGLE,
     PropshaftReason.WORKING_ANGLE_GUARD,
     PropshaftReason.WORKING_ANGLE,
+    PropshaftReason.TUBE_BORE,
 }
 MOTOR_REASONS = {MotorReason.ROTOR_SPEED}
 
