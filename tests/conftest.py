@@ -97,12 +97,25 @@ def c_host3(tmp_path_factory) -> Path:
     return compile_host3(tmp_path_factory.mktemp("c_host3") / "host3")
 
 
+def session_folder(config, tmp_path_factory, name: str) -> Path:
+    """A folder every process of the test session shares: pytest-xdist's workers
+    (their config has `workerinput`; a child pytest that inherited a worker's
+    environment does not) each have their own base temp below one common parent."""
+    base = tmp_path_factory.getbasetemp()
+    folder = (base.parent if hasattr(config, "workerinput") else base) / name
+    folder.mkdir(exist_ok=True)
+    return folder
+
+
 @pytest.fixture(scope="session")
-def built(tmp_path_factory):
+def built(pytestconfig, tmp_path_factory):
     """built(model, fmi_version, arrays, settings) -> the FMU `build_fmu.py --model
     <model> [--fmi-version=3 [--fmi3-arrays]] [settings...]` writes, built at most
-    once per test session: every FMU test shares it (a module's own build of a
-    model is a defect)."""
+    once per test session, however many xdist workers run it: every FMU test
+    shares it (a module's own build of a model is a defect). The first process
+    to ask builds under a lock; the others wait and read the path it wrote."""
+    import fcntl
+
     from cardan_joint import DEFAULT_MODEL
 
     fmus: dict = {}
@@ -115,11 +128,19 @@ def built(tmp_path_factory):
     ) -> Path:
         key = model, fmi_version, arrays, settings
         if key not in fmus:
-            options = ["--model", model]
-            options += ["--fmi-version=3"] if fmi_version == 3 else []
-            options += ["--fmi3-arrays"] if arrays else []
-            dest = tmp_path_factory.mktemp(f"{model}{fmi_version}{'a' if arrays else ''}")
-            fmus[key] = build_fmu(dest, *options, *settings)
+            name = f"{model}{fmi_version}{'a' if arrays else ''}{''.join(settings)}"
+            dest = session_folder(pytestconfig, tmp_path_factory, "fmus") / name
+            with open(f"{dest}.lock", "w") as lock:
+                fcntl.flock(lock, fcntl.LOCK_EX)
+                done = Path(f"{dest}.built")
+                if not done.exists():
+                    options = ["--model", model]
+                    options += ["--fmi-version=3"] if fmi_version == 3 else []
+                    options += ["--fmi3-arrays"] if arrays else []
+                    shutil.rmtree(dest, ignore_errors=True)  # a build that failed half way
+                    dest.mkdir()
+                    done.write_text(str(build_fmu(dest, *options, *settings)))
+                fmus[key] = Path(done.read_text())
         return fmus[key]
 
     return fmu
