@@ -41,11 +41,12 @@ class JointLife:
             self._life_rule = rule_of(self)
             self.life_consumed = self.life_consumed_error = 0.0
 
-    def _life_start(self) -> tuple[Any, ...] | None:
+    # The hooks below run with life on only: the joint checks `life` at each call
+    # (a call costs a few hundred instructions a step).
+
+    def _life_start(self) -> tuple[Any, ...]:
         """What the damage of the next step starts from (`life.step_damage`), taken
-        before the step; None with life off."""
-        if not self.life:
-            return None
+        before the step."""
         angle, phase = self._angle, self._phase  # type: ignore[attr-defined]
         joint: Any = self
         return (
@@ -59,10 +60,8 @@ class JointLife:
             joint.load_torque,
         )
 
-    def _add_damage(self, h: float, start: tuple[Any, ...] | None) -> None:
+    def _add_damage(self, h: float, start: tuple[Any, ...]) -> None:
         """Miner's sum plus the step's damage from `start`, compensated."""
-        if not start:
-            return
         load = self.load_over_step
         if load is None:
             damage = step_damage(self._life_rule, h, *start)
@@ -79,10 +78,8 @@ class JointLife:
             )
 
     def _with_life(self, values: tuple, r: tuple, load, speed, beta) -> tuple:
-        """`values` (the joint's outputs) and, with life on, the four life outputs
-        from the kernel's tuple `r`."""
-        if not self.life:
-            return values
+        """`values` (the joint's outputs) and the four life outputs from the
+        kernel's tuple `r`."""
         if self.parameter_fault:  # type: ignore[attr-defined] # no load or life then
             return values + (math.nan, math.nan, math.nan, self.life_consumed)
         torque, input_moment, output_moment = (r[i] for i in _TORQUES)

@@ -170,14 +170,16 @@ class CardanJoint(JointLife, ShaftModel):
         """The input shaft (`ShaftModel`), then the bend angle, exact for its constant
         acceleration over the step, and the life consumed (docs/life.md); a
         refusal changes nothing."""
-        start = self._life_start()  # the damage's start values, before the step
+        # The damage's start values, taken before the step (life on only: see `run`).
+        start = self._life_start() if self.life else None
         problem = ShaftModel._advance(self, h)  # not super(): once per step
         if problem:
             return problem
         rate, bend_acceleration = self.bend_angle_rate, self.bend_angle_acceleration
         self.bend_angle += h * (rate + 0.5 * bend_acceleration * h)
         self.bend_angle_rate = rate + bend_acceleration * h
-        self._add_damage(h, start)
+        if start:
+            self._add_damage(h, start)
         return None
 
     # --- the FMU's step ------------------------------------------------------
