@@ -119,21 +119,19 @@ def count_minor(minor, host, joint, floor, lengths, life=None) -> dict | None:
     def in_host(fmu):
         return lambda steps: [host, "bench", fmu, steps]
 
+    # One hash seed in every counted process: str hashes set dict probe chains,
+    # and a random seed moved a C host's count by up to 1 k a step between runs.
+    joint_host = {"CARDAN_JOINT_FMU_PYTHON_LIBRARY": str(library), "PYTHONHASHSEED": "0"}
+    floor_host = {"LD_PRELOAD": str(library), "PYTHONHOME": str(prefix), "PYTHONHASHSEED": "0"}
     counts = {
-        "c_host joint": per_step(
-            in_host(joint), {"CARDAN_JOINT_FMU_PYTHON_LIBRARY": str(library)}, lengths
-        ),
-        "c_host floor": per_step(
-            in_host(floor), {"LD_PRELOAD": str(library), "PYTHONHOME": str(prefix)}, lengths
-        ),
+        "c_host joint": per_step(in_host(joint), joint_host, lengths),
+        "c_host floor": per_step(in_host(floor), floor_host, lengths),
         "physics": per_step(python_worker(python, "physics"), path, lengths),
         "fmpy joint": per_step(python_worker(python, "loop", joint), path, lengths),
         "fmpy floor": per_step(python_worker(python, "loop", floor), path, lengths),
     }
     if life:
-        counts["c_host life"] = per_step(
-            in_host(life), {"CARDAN_JOINT_FMU_PYTHON_LIBRARY": str(library)}, lengths
-        )
+        counts["c_host life"] = per_step(in_host(life), joint_host, lengths)
     counts["version"] = prefix.name
     return counts
 

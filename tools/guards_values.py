@@ -107,15 +107,15 @@ VALUE_MUTATIONS = (
     Mutation(
         "bad input_angle_start not used as the start angle",
         MODEL,
-        "split_angle(self.input_angle_start if valid else 0.0)",
-        "split_angle(self.input_angle_start)",
+        "split_turns(self.input_angle_start if valid else 0.0)",
+        "split_turns(self.input_angle_start)",
         (GUARDS, "-k", "parameter"),
     ),
     Mutation(
         "bad yoke_phase not used as the phase",
         MODEL,
-        "split_angle(self.yoke_phase if valid else 0.0)",
-        "split_angle(self.yoke_phase)",
+        "split_turns(self.yoke_phase if valid else 0.0)",
+        "split_turns(self.yoke_phase)",
         (GUARDS, "-k", "parameter"),
     ),
     # The bend angle: now, at the step's end, at the peak inside the step; both paths.

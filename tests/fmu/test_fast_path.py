@@ -195,3 +195,59 @@ def test_plain_calls_when_the_slave_has_no_fast_step_give_the_same_bits(extracte
     assert fast_messages == plain_messages
     assert any(status == 1 and "held" in text for status, _, text in fast_messages)
     assert any(status == 2 for status, _, _ in fast_messages)  # the refused step
+
+
+def test_each_input_write_reaches_the_slave_to_the_bit_and_unchanged_inputs_cross_again(
+    extracted, monkeypatch
+):
+    """fast_values.c's inputs_tuple: an input the host leaves as it was crosses as
+    the last call's object, compared bit for bit, so 0.0 then -0.0, or the
+    smallest change, still reaches the slave."""
+    with extracted.instance("warm-up"):
+        pass
+    slave_class, _ = slave_classes(extracted)
+    model = model_class(slave_class)
+    original, seen = model.run, []
+
+    def recording(self, time, h, inputs):
+        seen.append(inputs)
+        return original(self, time, h, inputs)
+
+    monkeypatch.setattr(model, "run", recording)
+    written = (0.0, -0.0, -0.0, 5e-324, -0.1)
+    with extracted.instance("bits") as fast:
+        for value in written:
+            fast.set(**{**GOOD, "bend_angle_acceleration": value})
+            fast.step(1e-3)
+    column = table.INPUTS.index("bend_angle_acceleration")
+    assert bits(inputs[column] for inputs in seen) == bits(written)
+    assert seen[2] is seen[1]  # nothing written differed: the same tuple
+    assert seen[3] is not seen[2] and seen[3][0] is seen[2][0]  # only the changed one is new
+
+
+def test_a_reply_of_other_numbers_than_floats_is_converted_as_python_does(extracted, monkeypatch):
+    """python_api.h reads an exact float in place and anything else through the C
+    API: outputs given as an int and a float subclass reach the host as float()
+    makes them."""
+    with extracted.instance("warm-up"):
+        pass
+    slave_class, _ = slave_classes(extracted)
+    model = model_class(slave_class)
+    original, given = model.run, []
+
+    class Subclassed(float):
+        pass
+
+    def other_numbers(self, time, h, inputs):
+        outputs, moved = original(self, time, h, inputs)
+        outputs = (round(outputs[0] * 1e6), Subclassed(outputs[1]), *outputs[2:])
+        given.append(outputs)
+        return outputs, moved
+
+    monkeypatch.setattr(model, "run", other_numbers)
+    with extracted.instance("numbers") as fast:
+        fast.set(**GOOD)
+        fast.step(1e-3)
+        read = list(fast.get_flat_outputs().values())
+    assert isinstance(given[0][0], int) and given[0][0] != 0
+    assert bits(read[:2]) == bits([float(given[0][0]), float(given[0][1])])

@@ -12,8 +12,10 @@ references onto them as `slave3._FLAT` does (time and arrays aside).
 Values cross as tuples of floats, in slot order: the loader passes the inputs
 (known[0:inputs]) as a tuple and converts what comes back itself. Packing a
 buffer from Python (struct.pack_into on a memoryview) costs about 1,200
-instructions per call plus 150 per value; PyFloat_AsDouble in C costs a few
-dozen per value (benchmarks, section 7).
+instructions per call plus 150 per value; the loader reads an exact float or
+tuple in place (any other object through the C API), and passes an input the
+host left as it was (bit for bit) as the same object again (benchmarks,
+section 7).
 
 Calls return a status (ok 0, warning 1, discard 2, error 3: the FMI version's
 own IntEnum, or a plain int) or a tuple (status, values, ...) of a status and

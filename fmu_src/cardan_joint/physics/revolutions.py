@@ -8,7 +8,6 @@ exact, so the input angle does not drift however long the run.
 """
 
 import math
-from functools import lru_cache
 from typing import NamedTuple
 
 # 2 pi as a double-double: the double nearest to it and the rest.
@@ -35,7 +34,9 @@ class RevolutionAngle(NamedTuple):
 def angle_value(angle: Turns) -> float:
     """The angle as the float nearest to it (two roundings at most)."""
     turns, fraction, fraction_error = angle
-    product, product_error, low = _whole_turns(turns)
+    # A dict's get, not a cached function: this runs once per step, and a call
+    # through lru_cache costs about a thousand instructions (CPython 3.11).
+    product, product_error, low = _WHOLE_TURNS.get(turns) or _whole_turns(turns)
     # _two_sum(product, fraction), inlined: this runs once per step.
     total = product + fraction
     bb = total - product
@@ -43,12 +44,18 @@ def angle_value(angle: Turns) -> float:
     return total + (sum_error + product_error + fraction_error + low)
 
 
-@lru_cache(maxsize=8)
+# turns -> `_whole_turns(turns)`: changes once a revolution, read every step.
+_WHOLE_TURNS: dict[int, tuple[float, float, float]] = {}
+_WHOLE_TURNS_KEPT = 8
+
+
 def _whole_turns(turns):
-    """turns * 2 pi as (product, its rounding error, turns * TWO_PI_LO): changes
-    once a revolution, read every step."""
+    """turns * 2 pi as (product, its rounding error, turns * TWO_PI_LO), kept."""
     product, product_error = _two_product(float(turns), TWO_PI_HI)
-    return product, product_error, turns * TWO_PI_LO
+    if len(_WHOLE_TURNS) >= _WHOLE_TURNS_KEPT:
+        _WHOLE_TURNS.clear()
+    whole = _WHOLE_TURNS[turns] = product, product_error, turns * TWO_PI_LO
+    return whole
 
 
 def _two_sum(a, b):
@@ -93,8 +100,14 @@ def _normalized(turns: int, fraction: float, error: float) -> Turns:
     return turns, fraction, error
 
 
+def split_turns(angle: float) -> Turns:
+    """`split_angle` as a stepped model keeps it (a plain tuple: unpacking a
+    NamedTuple, once per step, takes CPython's generic iterator path)."""
+    return _normalized(0, float(angle), 0.0)
+
+
 def split_angle(angle: float) -> RevolutionAngle:
-    return RevolutionAngle(*_normalized(0, float(angle), 0.0))
+    return RevolutionAngle(*split_turns(angle))
 
 
 def advance(angle: Turns, increment: float) -> RevolutionAngle:
@@ -103,9 +116,15 @@ def advance(angle: Turns, increment: float) -> RevolutionAngle:
 
 def advanced(angle: Turns, increment: float) -> Turns:
     """`advance` on a stepped model's plain tuple (once per step)."""
-    # _two_sum(fraction, increment), inlined: this runs once per step.
+    # _two_sum(fraction, increment), then `_normalized`'s common case (no turn
+    # crossed), inlined: this runs once per step, and a call costs about a
+    # thousand instructions.
     turns, fraction, fraction_error = angle
     total = fraction + increment
     bb = total - fraction
-    error = (fraction - (total - bb)) + (increment - bb)
-    return _normalized(turns, total, fraction_error + error)
+    error = fraction_error + ((fraction - (total - bb)) + (increment - bb))
+    fraction = total + error
+    bb = fraction - total
+    if 0.0 <= fraction <= TWO_PI_HI:
+        return turns, fraction, (total - (fraction - bb)) + (error - bb)
+    return _normalized(turns, total, error)

@@ -37,71 +37,23 @@ static const char CLAIM[] =
 /* In the order of enum fast_method. */
 static const char *const METHODS[] = {"fast_step", "fast_outputs", "fast_load", "fast_store"};
 
-/* A tuple of the doubles values[0..n), or NULL. */
-static PyObject *tuple_of(const double *values, long n)
-{
-    PyObject *tuple = p_PyTuple_New(n);
-    for (long i = 0; tuple && i < n; i++) {
-        PyObject *item = p_PyFloat_FromDouble(values[i]);
-        if (!item || p_PyTuple_SetItem(tuple, i, item)) {
-            p_Py_DecRef(tuple);
-            tuple = NULL;
-        }
-    }
-    return tuple;
-}
-
-/* Where each method's values go: `first` doubles into the outputs array, then
- * `second` into the known array (the protocol: fmi/fast_step.py). */
-static void destinations(const struct fast_path *fast, enum fast_method method, long *first,
-                         long *second)
-{
-    *first = method == FAST_STEP || method == FAST_OUTPUTS ? fast->outputs : 0;
-    *second = method == FAST_STEP ? fast->inputs : method == FAST_STORE ? fast->known_size : 0;
-}
-
-/* The status of a reply (a status, or (status, values, ...): tuples of
- * floats, in order), the values written into the arrays only when every one
- * of them converts and they are as many as the method gives; -1 otherwise. */
-static long take_reply(struct fast_path *fast, enum fast_method method, PyObject *reply)
-{
-    Py_ssize_t size = p_PyTuple_Size(reply);
-    if (size < 0) {
-        p_PyErr_Clear();
-        return p_PyLong_AsLong(reply);
-    }
-    long first, second, taken = 0;
-    destinations(fast, method, &first, &second);
-    for (Py_ssize_t part = 1; part < size; part++) {
-        PyObject *values = p_PyTuple_GetItem(reply, part);
-        Py_ssize_t count = p_PyTuple_Size(values);
-        if (count < 0 || count > first + second - taken)
-            return -1;
-        for (Py_ssize_t i = 0; i < count; i++, taken++) {
-            fast->scratch[taken] = p_PyFloat_AsDouble(p_PyTuple_GetItem(values, i));
-            if (fast->scratch[taken] == -1.0 && p_PyErr_Occurred())
-                return -1;
-        }
-    }
-    if (size < 2 || taken != first + second)
-        return -1;
-    memcpy(fast->values, fast->scratch, (size_t)first * sizeof(double));
-    memcpy(fast->known, fast->scratch + first, (size_t)second * sizeof(double));
-    return p_PyLong_AsLong(p_PyTuple_GetItem(reply, 0));
-}
-
 /* One call into the slave with the GIL held; its status (an FMI status number). */
 static long call(struct instance *in, enum fast_method method, PyObject *a, PyObject *b,
                  PyObject *c)
 {
     struct fast_path *fast = in->fast;
-    PyObject *reply = p_PyObject_CallFunctionObjArgs(fast->methods[method], a, b, c, NULL);
+    PyObject *const arguments[] = {a, b, c};
+    size_t count = !a ? 0 : !b ? 1 : !c ? 2 : 3;
+    PyObject *reply = p_PyObject_Vectorcall
+                          ? p_PyObject_Vectorcall(fast->methods[method], arguments, count, NULL)
+                          : p_PyObject_CallFunctionObjArgs(fast->methods[method], a, b, c, NULL);
     long status = reply ? take_reply(fast, method, reply) : -1;
     if (reply)
         p_Py_DecRef(reply);
     int raised = p_PyErr_Occurred() != NULL;
     p_PyErr_Clear();
-    slave_drain(in, fast->slave);
+    if (!fast->queue || p_PyList_Size(fast->queue) != 0)
+        slave_drain(in, fast->slave);
     if (raised || status < 0 || status > fmi2Fatal) {
         reportf(in, fmi2Error, "the slave's %s failed", METHODS[method]);
         return fmi2Error;
@@ -111,8 +63,9 @@ static long call(struct instance *in, enum fast_method method, PyObject *a, PyOb
 
 static void forget(struct fast_path *fast)
 {
-    PyObject **owned[] = {&fast->slave, &fast->methods[0], &fast->methods[1],
-                          &fast->methods[2], &fast->methods[3]};
+    PyObject **owned[] = {&fast->slave,      &fast->methods[0], &fast->methods[1],
+                          &fast->methods[2], &fast->methods[3], &fast->queue,
+                          &fast->last_inputs, &fast->last_step};
     for (size_t i = 0; i < sizeof owned / sizeof *owned; i++) {
         if (*owned[i])
             p_Py_DecRef(*owned[i]);
@@ -165,6 +118,7 @@ static int set_up(struct instance *in, struct fast_path *fast)
 {
     if (!claim(in, fast))
         return 0;
+    python_layout();
     double *known = realloc(fast->known, fast->known_size * sizeof *known);
     if (known)
         fast->known = known;
@@ -180,6 +134,13 @@ static int set_up(struct instance *in, struct fast_path *fast)
     fast->scratch = scratch;
     for (int m = 0; m < 4; m++)
         fast->methods[m] = p_PyObject_GetAttrString(fast->slave, METHODS[m]);
+    /* pythonfmu's slaves make the list once, in __init__, and only append to
+     * it; one that is no list is drained by name at every call. */
+    fast->queue = p_PyObject_GetAttrString(fast->slave, "log_queue");
+    if (fast->queue && p_PyList_Size(fast->queue) < 0) {
+        p_Py_DecRef(fast->queue);
+        fast->queue = NULL;
+    }
     int ok = 1;
     for (int m = 0; m < 4; m++)
         ok = ok && fast->methods[m];
@@ -232,11 +193,17 @@ long fast_call(struct instance *in, enum fast_method method, double time, double
 {
     struct fast_path *fast = in->fast;
     PyGILState_STATE gil = p_PyGILState_Ensure();
-    PyObject *inputs = method == FAST_STORE ? NULL : tuple_of(fast->known, fast->inputs);
+    PyObject *inputs = method == FAST_STORE ? NULL : inputs_tuple(fast);
     PyObject *t = NULL, *h = NULL;
     if (method == FAST_STEP) {
         t = p_PyFloat_FromDouble(time);
-        h = p_PyFloat_FromDouble(step);
+        h = float_like(fast->last_step, step);
+        if (h) {
+            p_Py_IncRef(h);
+            if (fast->last_step)
+                p_Py_DecRef(fast->last_step);
+            fast->last_step = h;
+        }
     }
     long status;
     if (method == FAST_STORE)

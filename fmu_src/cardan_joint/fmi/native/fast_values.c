@@ -1,11 +1,102 @@
-/* The one-call step's values (the protocol: fmi/fast_step.py): input writes
- * and Real reads answered from the instance's arrays, doStep in one call into
- * the slave, and the slave kept in step with the arrays around every other
- * call (fast_path.c sets the arrays up and makes the calls). */
+/* The one-call step's values (the protocol: fmi/fast_step.py): the arguments
+ * made and the replies read, input writes and Real reads answered from the
+ * instance's arrays, doStep in one call into the slave, and the slave kept in
+ * step with the arrays around every other call (fast_path.c sets the arrays up
+ * and makes the calls). */
 #include "fast_path.h"
+#include "python_api.h"
 
 #include <stdlib.h>
 #include <string.h>
+
+/* A float of `value`: `last` itself (a reference added) when it holds the same
+ * bits, or a new one (NULL: no memory). */
+PyObject *float_like(PyObject *last, double value)
+{
+    if (last) {
+        double was = py_float_value(last);
+        if (memcmp(&was, &value, sizeof value) == 0) {
+            p_Py_IncRef(last);
+            return last;
+        }
+    }
+    return p_PyFloat_FromDouble(value);
+}
+
+/* The inputs (known[0..inputs)) as a tuple of floats, or NULL: the last call's
+ * tuple when every value is as it was, else a new one that reuses the last
+ * one's unchanged items; kept for the next call.  A float made and freed costs
+ * more than comparing its bits. */
+PyObject *inputs_tuple(struct fast_path *fast)
+{
+    PyObject *last = fast->last_inputs;
+    long n = fast->inputs, same = 0;
+    for (long i = 0; last && i < n; i++) {
+        double was = py_float_value(py_tuple_item(last, i));
+        same += memcmp(&was, &fast->known[i], sizeof was) == 0;
+    }
+    if (last && same == n) {
+        p_Py_IncRef(last);
+        return last;
+    }
+    PyObject *tuple = p_PyTuple_New(n);
+    for (long i = 0; tuple && i < n; i++) {
+        PyObject *item = float_like(last ? py_tuple_item(last, i) : NULL, fast->known[i]);
+        if (!item || p_PyTuple_SetItem(tuple, i, item)) {
+            p_Py_DecRef(tuple);
+            tuple = NULL;
+        }
+    }
+    if (tuple) {
+        p_Py_IncRef(tuple);
+        if (last)
+            p_Py_DecRef(last);
+        fast->last_inputs = tuple;
+    }
+    return tuple;
+}
+
+/* Where each method's values go: `first` doubles into the outputs array, then
+ * `second` into the known array (the protocol: fmi/fast_step.py). */
+static void destinations(const struct fast_path *fast, enum fast_method method, long *first,
+                         long *second)
+{
+    *first = method == FAST_STEP || method == FAST_OUTPUTS ? fast->outputs : 0;
+    *second = method == FAST_STEP ? fast->inputs : method == FAST_STORE ? fast->known_size : 0;
+}
+
+/* The status of a reply (a status, or (status, values, ...): tuples of
+ * floats, in order), the values written into the arrays only when every one
+ * of them converts and they are as many as the method gives; -1 otherwise. */
+long take_reply(struct fast_path *fast, enum fast_method method, PyObject *reply)
+{
+    Py_ssize_t size = py_tuple_size(reply);
+    if (size < 0) {
+        p_PyErr_Clear();
+        return p_PyLong_AsLong(reply);
+    }
+    long first, second, taken = 0;
+    destinations(fast, method, &first, &second);
+    for (Py_ssize_t part = 1; part < size; part++) {
+        PyObject *values = py_tuple_item(reply, part);
+        Py_ssize_t count = py_tuple_size(values);
+        if (count < 0 || count > first + second - taken)
+            return -1;
+        PyObject *const *items = py_tuple_items(values);
+        double *scratch = fast->scratch + taken;
+        for (Py_ssize_t i = 0; i < count; i++) {
+            scratch[i] = py_float_value(items ? items[i] : p_PyTuple_GetItem(values, i));
+            if (scratch[i] == -1.0 && p_PyErr_Occurred())
+                return -1;
+        }
+        taken += count;
+    }
+    if (size < 2 || taken != first + second)
+        return -1;
+    memcpy(fast->values, fast->scratch, (size_t)first * sizeof(double));
+    memcpy(fast->known, fast->scratch + first, (size_t)second * sizeof(double));
+    return p_PyLong_AsLong(py_tuple_item(reply, 0));
+}
 
 /* Takes the table of FMI 3's value references (none: FMI 2's are the flat
  * indices); 0 if it is malformed or names an index beyond the arrays. */

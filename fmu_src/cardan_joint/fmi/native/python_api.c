@@ -9,6 +9,8 @@
 PYTHON_FUNCTIONS(DEFINE)
 #undef DEFINE
 PyObject *py_none;
+PyObject *(*p_PyObject_Vectorcall)(PyObject *, PyObject *const *, size_t, PyObject *);
+const void *py_float_type, *py_tuple_type;
 
 static int resolved;
 static pthread_once_t once = PTHREAD_ONCE_INIT;
@@ -21,7 +23,36 @@ static void resolve(void)
     PYTHON_FUNCTIONS(RESOLVE)
 #undef RESOLVE
     py_none = dlsym(RTLD_DEFAULT, "_Py_NoneStruct");
+    *(void **)&p_PyObject_Vectorcall = dlsym(RTLD_DEFAULT, "PyObject_Vectorcall");
     resolved = py_none != NULL;
+}
+
+void python_layout(void)
+{
+    static int checked; /* the GIL orders the callers */
+    if (checked)
+        return;
+    checked = 1;
+    const void *float_type = dlsym(RTLD_DEFAULT, "PyFloat_Type");
+    const void *tuple_type = dlsym(RTLD_DEFAULT, "PyTuple_Type");
+    PyObject *x = p_PyFloat_FromDouble(0.3125), *t = x ? p_PyTuple_New(1) : NULL;
+    int holds = 0;
+    if (t) {
+        p_Py_IncRef(x); /* the tuple takes a reference */
+        const struct py_head *fh = (const void *)x, *th = (const void *)t;
+        /* Compared before the types are set: the readers still call the API. */
+        holds = float_type && tuple_type && !p_PyTuple_SetItem(t, 0, x) &&
+                fh->type == float_type && th->type == tuple_type;
+        py_float_type = float_type, py_tuple_type = tuple_type;
+        holds = holds && py_float_value(x) == 0.3125 && py_tuple_size(t) == 1 &&
+                py_tuple_item(t, 0) == x;
+        p_Py_DecRef(t);
+    }
+    if (x)
+        p_Py_DecRef(x);
+    if (!holds)
+        py_float_type = py_tuple_type = NULL;
+    p_PyErr_Clear();
 }
 
 int python_api(void)

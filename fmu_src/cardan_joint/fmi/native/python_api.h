@@ -59,6 +59,59 @@ extern PyObject *py_none;
 /* 1 once every function above (and None) is found, else 0: call it before any. */
 int python_api(void);
 
+/* Where the process has it (CPython 3.11 on): a call with the arguments in an
+ * array, without the variadic call's counting and copying; NULL otherwise. */
+extern PyObject *(*p_PyObject_Vectorcall)(PyObject *, PyObject *const *, size_t, PyObject *);
+
+/* A release build's float and tuple (CPython 3.10-3.13): a reference count and
+ * a type, then the value, or the size and the items.  The step's reply is read
+ * through them, one load per value where the API costs a call or two; the
+ * types are set only once python_layout() has found the layout on objects the
+ * API made (NULL otherwise, or for any other build: the API's calls). */
+struct py_head {
+    Py_ssize_t refcount;
+    const void *type;
+};
+extern const void *py_float_type, *py_tuple_type;
+
+/* With the GIL: find whether floats and tuples are laid out as above. */
+void python_layout(void);
+
+/* A tuple's size, or -1 (an error set) if `o` is no tuple. */
+static inline Py_ssize_t py_tuple_size(PyObject *o)
+{
+    const struct py_head *head = (const void *)o;
+    if (head->type == py_tuple_type && py_tuple_type)
+        return ((const struct { struct py_head head; Py_ssize_t size; } *)o)->size;
+    return p_PyTuple_Size(o);
+}
+
+/* The items of an exact tuple in place, or NULL (then PyTuple_GetItem). */
+static inline PyObject *const *py_tuple_items(PyObject *o)
+{
+    const struct py_head *head = (const void *)o;
+    if (head->type == py_tuple_type && py_tuple_type)
+        return (PyObject *const *)((const char *)o + sizeof(struct py_head) +
+                                   sizeof(Py_ssize_t));
+    return NULL;
+}
+
+/* Item i < py_tuple_size(o) of a tuple. */
+static inline PyObject *py_tuple_item(PyObject *o, Py_ssize_t i)
+{
+    PyObject *const *items = py_tuple_items(o);
+    return items ? items[i] : p_PyTuple_GetItem(o, i);
+}
+
+/* As PyFloat_AsDouble (-1.0 with an error set when `o` converts to no float). */
+static inline double py_float_value(PyObject *o)
+{
+    const struct py_head *head = (const void *)o;
+    if (head->type == py_float_type && py_float_type)
+        return ((const struct { struct py_head head; double value; } *)o)->value;
+    return p_PyFloat_AsDouble(o);
+}
+
 /* With the GIL: run `code` with `globals` (a new dict holding __builtins__ and
  * the caller's names); the result of PyRun_String (NULL: it raised). */
 PyObject *run_with(const char *code, PyObject *globals);

@@ -13,7 +13,7 @@ from ...framework.refusal import Refusal
 from ...framework.stepped import ShaftModel
 from ...framework.values import angle_limit_problem, set_start_values, value_ranges
 from ...physics.life import rule_of
-from ...physics.revolutions import angle_value, split_angle
+from ...physics.revolutions import angle_value, split_turns
 from .chain import chain
 from .checks import angle_warnings
 from .critical_speed import critical_speed, critical_speed_warnings
@@ -72,7 +72,7 @@ class Propshaft(PropshaftLife, ShaftModel):
         self.time = float(time)
         self.parameter_fault = self._angle_problem()
         valid = not self.parameter_fault
-        self._angle = split_angle(self.input_angle_start if valid else 0.0)
+        self._angle = split_turns(self.input_angle_start if valid else 0.0)
         self._life = [(0.0, 0.0)] * self.joints  # each joint's Miner's sum (total, error)
         if not valid:
             return

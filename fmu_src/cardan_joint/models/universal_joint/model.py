@@ -16,7 +16,7 @@ from ...framework.values import MAX_INCREMENT, Table, angle_limit_problem, set_s
 
 # The kernel itself: the FMU's once-per-step call on floats skips the array dispatch.
 from ...physics.response import JointResponse, kernel
-from ...physics.revolutions import advanced, angle_value, split_angle
+from ...physics.revolutions import advanced, angle_value, split_turns
 from ...variable_schema import Variable
 from . import variables as table
 from .life import JointLife
@@ -77,10 +77,10 @@ class CardanJoint(JointLife, ShaftModel):
         self.time = float(time)
         self.parameter_fault = self.parameter_problem()  # fixed until the next start
         valid = not self.parameter_fault
-        self._angle = split_angle(self.input_angle_start if valid else 0.0)
+        self._angle = split_turns(self.input_angle_start if valid else 0.0)
         # The phase is reduced to whole turns plus a fraction too, so a large or
         # negative phase costs no precision; its turns enter the quaternion's sign.
-        self._phase = split_angle(self.yoke_phase if valid else 0.0)
+        self._phase = split_turns(self.yoke_phase if valid else 0.0)
         self._start_life()
 
     def _non_finite_limit(self, name: str, variable: Variable) -> float:
@@ -178,7 +178,7 @@ class CardanJoint(JointLife, ShaftModel):
         rate, bend_acceleration = self.bend_angle_rate, self.bend_angle_acceleration
         self.bend_angle += h * (rate + 0.5 * bend_acceleration * h)
         self.bend_angle_rate = rate + bend_acceleration * h
-        if start:
+        if start is not None:
             self._add_damage(h, start)
         return None
 
@@ -222,7 +222,7 @@ class CardanJoint(JointLife, ShaftModel):
         self.input_speed = end_speed
         self.bend_angle = end_beta = beta + h * (rate + 0.5 * bend_acceleration * h)
         self.bend_angle_rate = end_rate = rate + bend_acceleration * h
-        if start:
+        if start is not None:
             self._add_damage(h, start)
         self.time = time + h
         outputs = self._outputs(
