@@ -124,7 +124,9 @@ def _section(rows_by_name) -> list[str]:
         "range": lambda name, rows: _range(rows[0]),
         "description": lambda name, rows: _description(rows),
     }
-    cells = [[cell(*entry) for cell in columns.values()] for entry in rows_by_name]
+    cells = [
+        [cell(*entry).replace("|", "\\|") for cell in columns.values()] for entry in rows_by_name
+    ]
     kept = [i for i in range(len(columns)) if any(row[i] for row in cells)]
     heads = list(columns)
     lines = ["| " + " | ".join(heads[i] for i in kept) + " |", "|" + "---|" * len(kept)]
