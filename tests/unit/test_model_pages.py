@@ -1,7 +1,8 @@
 """What the docs say about the models is generated from the models: the index in
-README.md and docs/README.md lists every model discovery finds, and each model's
-page holds its table's variables (and FMI 3 arrays) as the code has them. One
-check over discovery for every model, instead of a hand-kept list per test."""
+README.md lists every model discovery finds, and each model's page lists its
+table's variables (indexed rows as `joint_<k>_...`, rows shared with a base
+model's page by a link) and FMI 3 arrays as the code has them. One check over
+discovery for every model, instead of a hand-kept list per test."""
 
 import importlib.util
 import re
