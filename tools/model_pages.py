@@ -3,8 +3,10 @@
 Each generated block sits between `<!-- key:begin -->` and `<!-- key:end -->`:
 - `models` in README.md: the index of every model discovery
   finds (its page, FMI versions and description, from its spec);
-- `variables` on each model's page (models/<name>/README.md): its variable table;
-- `fmi3-arrays` on the page of a model with FMI 3 arrays: the arrays' table.
+- `variables` on each model's page (models/<name>/README.md): its variables, one table
+  per causality, indexed rows (`joint_<k>_...`) once, rows the same as a base
+  model's named with a link to its page;
+- `fmi3-arrays` on the page of a model with FMI 3 arrays: the arrays, one line.
 
     python tools/model_pages.py            # rewrite the stale blocks
     python tools/model_pages.py --check    # list them, exit 1 if any
@@ -17,11 +19,11 @@ from __future__ import annotations
 
 import argparse
 import os
+import re
 import sys
 from pathlib import Path
 
 from cardan_joint.models import Model, discover
-from cardan_joint.variable_schema import array_table
 
 ROOT = Path(__file__).resolve().parents[1]
 INDEXES = (ROOT / "README.md",)
@@ -39,12 +41,152 @@ def model_index(page: Path) -> str:
 
 def page_blocks(spec: Model) -> dict[str, str]:
     """The generated blocks of a model's page, by key."""
-    table = spec.table()
-    blocks = {"variables": table.markdown_table()}
-    arrays = array_table(table.fmi3_variables())
+    base = bases().get(spec.key)
+    blocks = {"variables": variables_block(spec, discover()[base] if base else None)}
+    arrays = arrays_line(spec.table().fmi3_variables())
     if arrays:
         blocks["fmi3-arrays"] = arrays
     return blocks
+
+
+# --- the variable tables -----------------------------------------------------
+
+# What a page shows of a variable; two models' rows are "the same" when all of it is.
+SHOWN = ("name", "causality", "unit", "display_unit", "start", "min", "max", "description")
+INDEX = re.compile(r"(?:(?<=_)|^)(\d+)(?=_|$)")  # the index in `joint_2_life_rate`
+
+
+def _number(value) -> str:
+    return "" if value is None else f"{value:.6g}"
+
+
+def _unit(v) -> str:
+    return v.unit + (f" ({v.display_unit})" if v.display_unit else "")
+
+
+def _range(v) -> str:
+    low, high = _number(v.min), _number(v.max)
+    return f"[{low}, {high}]" if (low or high) else ""
+
+
+def _one_of(texts: list[str]) -> str:
+    """`texts` said once: their common start and end (to a word) around each
+    one's own middle, in order ("about the input pin / output pin")."""
+    if len(set(texts)) == 1:
+        return texts[0]
+    head = os.path.commonprefix(texts)
+    head = head[: head.rfind(" ") + 1]
+    tail = os.path.commonprefix([t[len(head) :][::-1] for t in texts])[::-1]
+    cut = re.search(r"[ ,;:]", tail)
+    tail = tail[cut.start() :] if cut else ""
+    middles = [t[len(head) : len(t) - len(tail)] for t in texts]
+    return head + " / ".join(middles) + tail
+
+
+def _index(v) -> str:
+    found = INDEX.search(v.name)
+    assert found, v.name
+    return found.group(1)
+
+
+def _indexed(variables) -> list[tuple[str, list]]:
+    """The rows in table order, those that differ only by an index in their name
+    (`joint_1_life_rate`, `joint_2_life_rate`) and in their text and start value
+    under one name `joint_<k>_life_rate`: (shown name, rows)."""
+    groups: dict[tuple, list] = {}
+    for v in variables:
+        key = (INDEX.sub("<k>", v.name, count=1), v.causality, _unit(v), v.min, v.max)
+        groups.setdefault(key if INDEX.search(v.name) else (v.name,), []).append(v)
+    shown = []
+    for key, rows in groups.items():
+        if len(rows) == 1:
+            shown.append((f"`{rows[0].name}`", rows))
+            continue
+        name = f"`{key[0]}`, k = {', '.join(_index(v) for v in rows)}"
+        shown.append((name, rows))
+    return shown
+
+
+def _description(rows) -> str:
+    if len(rows) == 1:
+        return rows[0].description
+    pattern = r"(?<![\w.]){}(?![\w.])"
+    general = {re.sub(pattern.format(_index(v)), "k", v.description, count=1) for v in rows}
+    return general.pop() if len(general) == 1 else _one_of([v.description for v in rows])
+
+
+def _section(rows_by_name) -> list[str]:
+    """One causality's table, without the columns it leaves empty."""
+    columns = {
+        "name": lambda name, rows: name,
+        "unit (display)": lambda name, rows: _unit(rows[0]),
+        "start": lambda name, rows: _one_of([_number(v.start) for v in rows]),
+        "range": lambda name, rows: _range(rows[0]),
+        "description": lambda name, rows: _description(rows),
+    }
+    cells = [
+        [cell(*entry).replace("|", "\\|") for cell in columns.values()] for entry in rows_by_name
+    ]
+    kept = [i for i in range(len(columns)) if any(row[i] for row in cells)]
+    heads = list(columns)
+    lines = ["| " + " | ".join(heads[i] for i in kept) + " |", "|" + "---|" * len(kept)]
+    lines += ["| " + " | ".join(row[i] for i in kept) + " |" for row in cells]
+    return lines
+
+
+def _shown(v) -> tuple:
+    return tuple(getattr(v, attribute) for attribute in SHOWN)
+
+
+def bases() -> dict[str, str]:
+    """Each model whose table is for the most part another's (a compliant drive's
+    is its rigid drive's, with a spring) and that other model. Smaller tables go
+    first, and a model that refers to another is no one's base."""
+    tables = {key: spec.table() for key, spec in discover().items()}
+    found: dict[str, str] = {}
+    for key in sorted(tables, key=lambda k: (len(tables[k].VARIABLES), k)):
+        own = {_shown(v) for v in tables[key].VARIABLES}
+        shares = {
+            other: len(own & {_shown(v) for v in tables[other].VARIABLES})
+            for other in tables
+            if other != key and other not in found and len(tables[other].VARIABLES) <= len(own)
+        }
+        best = max(shares, key=lambda other: (shares[other], other), default=None)
+        if best and 2 * shares[best] >= len(own):
+            found[key] = best
+    return found
+
+
+def variables_block(spec: Model, base: Model | None = None) -> str:
+    """A model's variable tables, one per causality; the rows it shares with
+    `base` are named, with a link to the page that shows them."""
+    variables = spec.table().VARIABLES
+    lines = []
+    if base is not None:
+        ours = {_shown(v) for v in variables}
+        theirs = base.table().VARIABLES
+        shown_there = {_shown(v) for v in theirs}
+        variables = [v for v in variables if _shown(v) not in shown_there]
+        link = Path(os.path.relpath(base.page, spec.page.parent)).as_posix()
+        left = ", ".join(f"`{v.name}`" for v in theirs if _shown(v) not in ours)
+        but = f", but {left}" if left else ""
+        more = "; and:" if variables else "."
+        lines += [f"Every variable of [{base.key}]({link}) as it is there{but}{more}", ""]
+    for causality in ("input", "parameter", "output"):
+        rows = [v for v in variables if v.causality == causality]
+        if rows:
+            lines += [f"{causality.capitalize()}s:", "", *_section(_indexed(rows)), ""]
+    return "\n".join(lines[:-1]) + "\n"
+
+
+def arrays_line(groups) -> str:
+    """The FMI 3 arrays of a model (`groups`: its `fmi3_variables()`) in one line;
+    empty if it has none."""
+    arrays = [group for group in groups if len(group.rows) > 1]
+    if not arrays:
+        return ""
+    each = [f"`{g.name}[{len(g.rows)}]` = `{g.rows[0].name}` … `{g.rows[-1].name}`" for g in arrays]
+    return "FMI 3 arrays (elements in order): " + "; ".join(each) + ".\n"
 
 
 def expected() -> dict[Path, dict[str, str]]:

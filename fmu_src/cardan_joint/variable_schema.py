@@ -1,9 +1,9 @@
 """What a variable table is made of: units, variables and a model's table.
 
 Pure data types with the lookups every wrapper needs (FMI 2 and FMI 3
-registration, model descriptions, README tables); the tables themselves are
-each model folder's `variables` (`models/<name>/variables.py`). No FMI import:
-the physics reads its defaults from them.
+registration, model descriptions; tools/model_pages.py renders the pages'
+tables); the tables themselves are each model folder's `variables`
+(`models/<name>/variables.py`). No FMI import: the physics reads its defaults from them.
 """
 
 import os
@@ -62,9 +62,6 @@ class VariableTable:
     def start_values(self) -> dict:
         return start_values(self.VARIABLES)
 
-    def markdown_table(self) -> str:
-        return markdown_table(self.VARIABLES)
-
     def fmi3_variables(self) -> tuple:
         """Its FMI 3 variables: arrays where ARRAY_STEMS says, else scalars."""
         return fmi3_groups(self.VARIABLES, self.ARRAY_STEMS)
@@ -76,22 +73,6 @@ def _names(variables, causality):
 
 def start_values(variables) -> dict:
     return {v.name: v.start for v in variables if v.start is not None}
-
-
-def markdown_table(variables) -> str:
-    """A README's variable table (a test keeps each README in step with its table)."""
-    rows = [
-        "| name | causality | unit (display) | start | range | description |",
-        "|---|---|---|---|---|---|",
-    ]
-    for v in variables:
-        unit = v.unit + (f" ({v.display_unit})" if v.display_unit else "")
-        start = "" if v.start is None else f"{v.start:.6g}"
-        low = "" if v.min is None else f"{v.min:.6g}"
-        high = "" if v.max is None else f"{v.max:.6g}"
-        span = f"[{low}, {high}]" if (low or high) else ""
-        rows.append(f"| `{v.name}` | {v.causality} | {unit} | {start} | {span} | {v.description} |")
-    return "\n".join(rows) + "\n"
 
 
 @dataclass(frozen=True)
@@ -139,20 +120,3 @@ def fmi3_groups(variables: tuple, array_stems: tuple = ()) -> tuple:
         for v in variables
         if v.name in arrays or v.name not in in_array
     )
-
-
-def array_table(groups) -> str:
-    """A model page's table of its FMI 3 arrays (`groups`: its `fmi3_variables()`)
-    and the FMI 2 variables they hold; empty if it has none."""
-    arrays = [group for group in groups if len(group.rows) > 1]
-    if not arrays:
-        return ""
-    rows = [
-        "| FMI 3 array | FMI 2 variables (elements, in order) | unit (display) |",
-        "|---|---|---|",
-    ]
-    for group in arrays:
-        unit = group.unit + (f" ({group.display_unit})" if group.display_unit else "")
-        elements = ", ".join(f"`{row.name}`" for row in group.rows)
-        rows.append(f"| `{group.name}[{len(group.rows)}]` | {elements} | {unit} |")
-    return "\n".join(rows) + "\n"

@@ -165,8 +165,3 @@ def table_for(life: bool = True):
 def fmi3_variables() -> tuple:
     """The FMI 3 variables in table order: arrays where ARRAY_STEMS says, else scalars."""
     return fmi3_groups(VARIABLES, ARRAY_STEMS)
-
-
-def markdown_table() -> str:
-    """The README's variable table (a test keeps the README in step)."""
-    return _TABLE.markdown_table()
