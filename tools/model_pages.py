@@ -5,7 +5,8 @@ Each generated block sits between `<!-- key:begin -->` and `<!-- key:end -->`:
   finds (its page, FMI versions and description, from its spec);
 - `variables` on each model's page (models/<name>/README.md): its variables, one table
   per causality, indexed rows (`joint_<k>_...`) once, rows the same as a base
-  model's named with a link to its page;
+  model's named with a link to its page (and the rest too, where another model
+  adds the same rows to its own base);
 - `fmi3-arrays` on the page of a model with FMI 3 arrays: the arrays, one line.
 
     python tools/model_pages.py            # rewrite the stale blocks
@@ -157,6 +158,26 @@ def bases() -> dict[str, str]:
     return found
 
 
+def _adding(spec: Model, base: Model, variables) -> Model | None:
+    """The other model whose page shows as its own (beside its base's) exactly
+    `variables`, the rows `spec` adds to its base (a compliant propshaft adds a
+    compliant joint's spring), or None. That model's base is the smaller (so
+    two such pages never point at each other)."""
+    rows = {_shown(v) for v in variables}
+    if not rows:
+        return None
+    models = discover()
+    order = (len(base.table().VARIABLES), base.key)
+    for key, base_key in bases().items():
+        if key == spec.key or (len(models[base_key].table().VARIABLES), base_key) >= order:
+            continue
+        theirs = {_shown(v) for v in models[base_key].table().VARIABLES}
+        own = {_shown(v) for v in models[key].table().VARIABLES} - theirs
+        if own == rows:
+            return models[key]
+    return None
+
+
 def variables_block(spec: Model, base: Model | None = None) -> str:
     """A model's variable tables, one per causality; the rows it shares with
     `base` are named, with a link to the page that shows them."""
@@ -170,7 +191,12 @@ def variables_block(spec: Model, base: Model | None = None) -> str:
         link = Path(os.path.relpath(base.page, spec.page.parent)).as_posix()
         left = ", ".join(f"`{v.name}`" for v in theirs if _shown(v) not in ours)
         but = f", but {left}" if left else ""
-        more = "; and:" if variables else "."
+        donor = _adding(spec, base, variables)
+        if donor is not None:
+            there = Path(os.path.relpath(donor.page, spec.page.parent)).as_posix()
+            more, variables = f"; and those [{donor.key}]({there}) adds to its own base.", []
+        else:
+            more = "; and:" if variables else "."
         lines += [f"Every variable of [{base.key}]({link}) as it is there{but}{more}", ""]
     for causality in ("input", "parameter", "output"):
         rows = [v for v in variables if v.causality == causality]
