@@ -6,7 +6,8 @@ Each generated block sits between `<!-- key:begin -->` and `<!-- key:end -->`:
 - `variables` on each model's page (models/<name>/README.md): its variables, one table
   per causality, indexed rows (`joint_<k>_...`) once, rows the same as a base
   model's named with a link to its page (and the rest too, where another model
-  adds the same rows to its own base);
+  adds the same rows to its own base), rows copied per joint from another
+  model's table (`joint_<k>_life_rate`, "Joint k: ...") named in one line;
 - `fmi3-arrays` on the page of a model with FMI 3 arrays: the arrays, one line.
 
     python tools/model_pages.py            # rewrite the stale blocks
@@ -198,11 +199,49 @@ def variables_block(spec: Model, base: Model | None = None) -> str:
         else:
             more = "; and:" if variables else "."
         lines += [f"Every variable of [{base.key}]({link}) as it is there{but}{more}", ""]
+    donor, copied = _copied(spec, variables) if base is None else (None, [])
+    variables = [v for v in variables if v not in copied]
     for causality in ("input", "parameter", "output"):
         rows = [v for v in variables if v.causality == causality]
         if rows:
             lines += [f"{causality.capitalize()}s:", "", *_section(_indexed(rows)), ""]
+    if donor is not None:
+        there = Path(os.path.relpath(donor.page, spec.page.parent)).as_posix()
+        shown = _indexed(copied)
+        ks = {name.partition(", ")[2] for name, _ in shown} - {""}
+        one = len(ks) == 1
+        names = ", ".join(name.partition(", ")[0] if one else name for name, _ in shown)
+        each = f" ({ks.pop()})" if one else ""
+        lines += [
+            f"And as on [{donor.key}]({there}), one parameter set for every joint,"
+            f" the outputs for each joint k: {names}{each}.",
+            "",
+        ]
     return "\n".join(lines[:-1]) + "\n"
+
+
+def _copy_of(v, o) -> bool:
+    """Whether row `v` is row `o` of another table made per joint: the same but
+    for an index prefix to its name (`joint_2_life_rate`) and a prefix to its
+    description (`Joint 2: ...`, `Every joint: ...`)."""
+    prefixed = v.name == o.name or INDEX.sub("<k>", v.name, count=1).endswith(f"<k>_{o.name}")
+    same = all(getattr(v, a) == getattr(o, a) for a in SHOWN if a not in ("name", "description"))
+    return prefixed and same and v.description.endswith(f": {o.description}")
+
+
+def _copied(spec: Model, variables) -> tuple[Model | None, list]:
+    """The model, shown in full on its own page, from which `spec` copies rows
+    per joint (`_copy_of`), with the rows copied; (None, []) when fewer than 3."""
+    found: tuple[Model | None, list] = (None, [])
+    based = bases()
+    for key, other in sorted(discover().items()):
+        if key == spec.key or key in based:
+            continue
+        theirs = other.table().VARIABLES
+        rows = [v for v in variables if any(_copy_of(v, o) for o in theirs)]
+        if len(rows) >= 3 and len(rows) > len(found[1]):
+            found = (other, rows)
+    return found
 
 
 def arrays_line(groups) -> str:
