@@ -5,7 +5,9 @@ Each generated block sits between `<!-- key:begin -->` and `<!-- key:end -->`:
   finds (its page, FMI versions and description, from its spec);
 - `variables` on each model's page (models/<name>/README.md): its variables, one table
   per causality, indexed rows (`joint_<k>_...`) once, rows the same as a base
-  model's named with a link to its page;
+  model's named with a link to its page (and the rest too, where another model
+  adds the same rows to its own base), rows copied per joint from another
+  model's table (`joint_<k>_life_rate`, "Joint k: ...") named in one line;
 - `fmi3-arrays` on the page of a model with FMI 3 arrays: the arrays, one line.
 
     python tools/model_pages.py            # rewrite the stale blocks
@@ -157,6 +159,26 @@ def bases() -> dict[str, str]:
     return found
 
 
+def _adding(spec: Model, base: Model, variables) -> Model | None:
+    """The other model whose page shows as its own (beside its base's) exactly
+    `variables`, the rows `spec` adds to its base (a compliant propshaft adds a
+    compliant joint's spring), or None. That model's base is the smaller (so
+    two such pages never point at each other)."""
+    rows = {_shown(v) for v in variables}
+    if not rows:
+        return None
+    models = discover()
+    order = (len(base.table().VARIABLES), base.key)
+    for key, base_key in bases().items():
+        if key == spec.key or (len(models[base_key].table().VARIABLES), base_key) >= order:
+            continue
+        theirs = {_shown(v) for v in models[base_key].table().VARIABLES}
+        own = {_shown(v) for v in models[key].table().VARIABLES} - theirs
+        if own == rows:
+            return models[key]
+    return None
+
+
 def variables_block(spec: Model, base: Model | None = None) -> str:
     """A model's variable tables, one per causality; the rows it shares with
     `base` are named, with a link to the page that shows them."""
@@ -170,13 +192,56 @@ def variables_block(spec: Model, base: Model | None = None) -> str:
         link = Path(os.path.relpath(base.page, spec.page.parent)).as_posix()
         left = ", ".join(f"`{v.name}`" for v in theirs if _shown(v) not in ours)
         but = f", but {left}" if left else ""
-        more = "; and:" if variables else "."
+        donor = _adding(spec, base, variables)
+        if donor is not None:
+            there = Path(os.path.relpath(donor.page, spec.page.parent)).as_posix()
+            more, variables = f"; and those [{donor.key}]({there}) adds to its own base.", []
+        else:
+            more = "; and:" if variables else "."
         lines += [f"Every variable of [{base.key}]({link}) as it is there{but}{more}", ""]
+    donor, copied = _copied(spec, variables) if base is None else (None, [])
+    variables = [v for v in variables if v not in copied]
     for causality in ("input", "parameter", "output"):
         rows = [v for v in variables if v.causality == causality]
         if rows:
             lines += [f"{causality.capitalize()}s:", "", *_section(_indexed(rows)), ""]
+    if donor is not None:
+        there = Path(os.path.relpath(donor.page, spec.page.parent)).as_posix()
+        shown = _indexed(copied)
+        ks = {name.partition(", ")[2] for name, _ in shown} - {""}
+        one = len(ks) == 1
+        names = ", ".join(name.partition(", ")[0] if one else name for name, _ in shown)
+        each = f" ({ks.pop()})" if one else ""
+        lines += [
+            f"And as on [{donor.key}]({there}), one parameter set for every joint,"
+            f" the outputs for each joint k: {names}{each}.",
+            "",
+        ]
     return "\n".join(lines[:-1]) + "\n"
+
+
+def _copy_of(v, o) -> bool:
+    """Whether row `v` is row `o` of another table made per joint: the same but
+    for an index prefix to its name (`joint_2_life_rate`) and a prefix to its
+    description (`Joint 2: ...`, `Every joint: ...`)."""
+    prefixed = v.name == o.name or INDEX.sub("<k>", v.name, count=1).endswith(f"<k>_{o.name}")
+    same = all(getattr(v, a) == getattr(o, a) for a in SHOWN if a not in ("name", "description"))
+    return prefixed and same and v.description.endswith(f": {o.description}")
+
+
+def _copied(spec: Model, variables) -> tuple[Model | None, list]:
+    """The model, shown in full on its own page, from which `spec` copies rows
+    per joint (`_copy_of`), with the rows copied; (None, []) when fewer than 3."""
+    found: tuple[Model | None, list] = (None, [])
+    based = bases()
+    for key, other in sorted(discover().items()):
+        if key == spec.key or key in based:
+            continue
+        theirs = other.table().VARIABLES
+        rows = [v for v in variables if any(_copy_of(v, o) for o in theirs)]
+        if len(rows) >= 3 and len(rows) > len(found[1]):
+            found = (other, rows)
+    return found
 
 
 def arrays_line(groups) -> str:

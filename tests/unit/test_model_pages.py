@@ -29,18 +29,31 @@ def test_the_index_links_every_model_discovery_finds(page):
         assert (page.parent / index.split(f"[{key}](")[1].split(")")[0]).resolve() == model.page
 
 
+def _patterns(text: str) -> list:
+    """The `names` of `text`, as patterns (`joint_<k>_x`: any k)."""
+    return [re.compile(re.escape(n).replace("<k>", r"\d+")) for n in re.findall(r"`([^`]+)`", text)]
+
+
+def _model_at(page, link: str):
+    return next(m for m in discover().values() if m.page == (page.page.parent / link).resolve())
+
+
 def _listed(page) -> list:
-    """The names a page's variable block lists, as patterns (`joint_<k>_x`: any
-    k), with those of the page it takes rows from, but the ones it leaves out."""
+    """The names a page's variable block lists, as patterns, with those of the
+    page it takes rows from, but the ones it leaves out, and those of the page
+    whose added rows it names ("and those [Model](page) adds to its own base")."""
     block = model_pages.page_blocks(page)["variables"]
     head, _, rest = block.partition("\n\n") if block.startswith("Every") else ("", "", block)
-    shown = re.findall(r"`([^`]+)`", rest)
-    names = [re.compile(re.escape(n).replace("<k>", r"\d+")) for n in shown]
+    names = _patterns(rest)
     if head:
-        link = head.split("](")[1].split(")")[0]
-        base = next(m for m in discover().values() if m.page == (page.page.parent / link).resolve())
+        link, *donor = [part.split(")")[0] for part in head.split("](")[1:]]
         left = re.findall(r"`([^`]+)`", head.partition(" but ")[2])
-        names += [p for p in _listed(base) if not any(p.fullmatch(n) for n in left)]
+        names += [
+            p for p in _listed(_model_at(page, link)) if not any(p.fullmatch(n) for n in left)
+        ]
+        for other in donor:
+            added = model_pages.page_blocks(_model_at(page, other))["variables"]
+            names += _patterns(added.partition("\n\n")[2])
     return names
 
 
