@@ -29,6 +29,7 @@ PYENV = Path(os.environ.get("PYENV_ROOT", "/root/.pyenv"))
 VENVS = Path(os.environ.get("CARDAN_JOINT_BENCH_VENVS", Path.home() / ".cache/cardan-joint"))
 REQUIREMENTS = ("fmpy", "pythonfmu==0.7.0")
 GOALS = {"c_host": 0.6, "runtime": 1.10, "fmpy": 0.8}
+GOAL_MINOR = 11  # the CPython the issue measured and states its goals for
 
 
 def cpython(minor: int) -> Path | None:
@@ -188,10 +189,10 @@ def instruction_rows(results, sizes) -> list:
             f"docs/life.md) / without (`--no-life`) | {'; '.join(cells)}{note} | (context) | |"
         )
     for key, (title, first, second) in ROWS.items():
-        cells, worst = [], 0.0
-        for counts in measured.values():
+        cells, meeting = [], {}
+        for minor, counts in measured.items():
             ratio = ratios(counts)[key]
-            worst = max(worst, ratio)
+            meeting[minor] = ratio <= GOALS[key]
             a, b = (counts[part] / 1e3 for part in PARTS[key])
             cells.append(
                 f"{counts['version']}: {first} {a:.1f} k, {second} {b:.1f} k: **×{ratio:.2f}**"
@@ -199,6 +200,17 @@ def instruction_rows(results, sizes) -> list:
         rows.append(
             f"| 7{'abc'[list(ROWS).index(key)]}. instructions per step (callgrind, runs of "
             f"{lengths[1]:,} − {lengths[0]:,} steps): {title} | {'; '.join(cells)}{note} | "
-            f"≤ ×{GOALS[key]} | {met(bool(measured) and worst <= GOALS[key])} |"
+            f"≤ ×{GOALS[key]} | {verdict(meeting)} |"
         )
     return rows + life_rows
+
+
+def verdict(meeting: dict) -> str:
+    """Met on the goal's own interpreter (issue 24 states its figures for CPython
+    3.11), then where else it is met and where not."""
+    others = {minor: ok for minor, ok in meeting.items() if minor != GOAL_MINOR}
+    said = [f"{met(meeting.get(GOAL_MINOR, False))} on 3.{GOAL_MINOR}"]
+    for ok, how in ((True, "met"), (False, "not met")):
+        where = [f"3.{minor}" for minor, good in others.items() if good == ok]
+        said += [f"{how} on {', '.join(where)}"] if where else []
+    return "; ".join(said)
