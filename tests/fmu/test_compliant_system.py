@@ -1,7 +1,10 @@
 """Motor -> CompliantJoint -> InertiaLoad: a plain Jacobi master on FMPy's low-level
 API, FMPy's simulate_ssp and libcosim, against one monolithic ODE (tests/reference)."""
 
+import math
+import re
 import zipfile
+from pathlib import Path
 
 import numpy as np
 import pytest
@@ -16,6 +19,7 @@ from cardan_joint.models.compliant_joint.variables import COMPLIANT_JOINT
 STOP_TIME = 0.1  # about; each run stops after a whole number of its steps
 WIRING = dict(connections=system.COMPLIANT_CONNECTIONS, recorded=system.COMPLIANT_RECORDED)
 COMPARED = ("Motor.speed", "Load.speed", "Drive.twist_angle")
+COMPLIANT_JOINT_PAGE = Path(system.__file__).parents[1] / "models" / "compliant_joint" / "README.md"
 
 
 @pytest.fixture(scope="module")
@@ -57,7 +61,15 @@ def test_step_rule_keeps_a_tenth_radian_of_the_mode_per_step():
     assert system.torsional_step(1e4, 0.2, 200.0, 0.02)[2] * omega_n == pytest.approx(0.02)
 
 
-def test_jacobi_error_against_the_monolithic_ode_falls_at_first_order(compliant_ssp):
+def error_table(page=COMPLIANT_JOINT_PAGE) -> dict:
+    """The CompliantJoint page's error table: {(ratio, step): [motor, load, twist]}."""
+    rows = re.findall(r"^\| ([\d.]+) \| ([^|]+?) \| ([^|]+) \| ([^|]+) \| ([^|]+) \|$",
+                      page.read_text(), re.MULTILINE)  # fmt: skip
+    return {(float(r[0]), r[1]): [float(x) for x in r[2:]] for r in rows}
+
+
+def test_jacobi_error_against_the_monolithic_ode_falls_at_first_order(compliant_ssp, request):
+    """...and is what the CompliantJoint page's table says, to its two digits."""
     path, motor, drive, load, h = compliant_ssp
     n = round(STOP_TIME / h)
     reference = simulate_compliant_driveline(
@@ -76,6 +88,13 @@ def test_jacobi_error_against_the_monolithic_ode_falls_at_first_order(compliant_
     for key in COMPARED:
         assert 3.0 < errors[0][key] / errors[1][key] < 5.5, (key, errors)
     assert max(errors[1].values()) < 0.05, errors
+    ratio = request.node.callspec.params["compliant_ssp"]
+    table = error_table()
+    for step, measured in zip((f"{round(h * 1e6)} µs", "h/4"), errors, strict=True):
+        stated = table[ratio, step]
+        for value, key in zip(stated, COMPARED, strict=True):
+            # Two significant digits: within half a unit of the second.
+            assert abs(measured[key] - value) <= 0.5 * 10 ** (math.floor(math.log10(value)) - 1)
 
 
 def test_both_ssp_hosts_finish_and_are_the_jacobi_master_with_their_first_inputs(compliant_ssp):
