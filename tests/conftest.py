@@ -9,7 +9,7 @@ from pathlib import Path
 from types import ModuleType
 
 import pytest
-from c_host.compile import compile_host, compile_host3
+from c_host.compile import compile_concurrent, compile_host, compile_host3
 from hypothesis import settings
 
 # Local runs explore new examples each time; CI replays a fixed set so that a
@@ -95,6 +95,12 @@ def c_host(tmp_path_factory) -> Path:
 def c_host3(tmp_path_factory) -> Path:
     """tests/c_host/host3.c compiled: the same plain host for FMI 3.0."""
     return compile_host3(tmp_path_factory.mktemp("c_host3") / "host3")
+
+
+@pytest.fixture(scope="session")
+def concurrent_host(tmp_path_factory) -> Path:
+    """tests/c_host/concurrent compiled: starts FMUs from threads at once."""
+    return compile_concurrent(tmp_path_factory.mktemp("concurrent") / "concurrent")
 
 
 def session_folder(config, tmp_path_factory, name: str) -> Path:
@@ -256,7 +262,7 @@ def load_fmu_path(built) -> Path:
 
 LAYERS = {"unit": "unit", "fmu": "fmu", "system": "slow"}
 # The fixtures that build an FMU or a C host: the unit layer uses none of them.
-BUILDING = {"built", "model_fmu", "c_host", "c_host3"}
+BUILDING = {"built", "model_fmu", "c_host", "c_host3", "concurrent_host"}
 
 
 def pytest_collection_modifyitems(items):

@@ -1,7 +1,15 @@
-"""Long runs (the slow layer): the joint stepped a million revolutions stays exact."""
+"""Long runs (the slow layer): the joint stepped a million revolutions stays exact;
+the repeated or instrumented C-host runs whose quick case is in tests/fmu (thirty
+concurrent starts, the 2,000-cycle memory run of FMI 3.0, the rest of the valgrind
+matrix)."""
 
 import math
 from fractions import Fraction
+
+import pytest
+from test_concurrent_start import started_together
+from test_damaged_resources import VALGRIND_SLOW, needs_valgrind, no_invalid_access_under_valgrind
+from test_instance_memory import cycles_leave_less_than_a_kilobyte_each
 
 from cardan_joint.models.universal_joint.model import CardanJoint
 from cardan_joint.physics import cardan_error
@@ -29,3 +37,25 @@ def test_a_million_revolutions_at_constant_speed_stay_exact():
     outputs = joint.outputs()
     assert abs(float(Fraction(outputs[1]) - expected_output)) < 1e-8
     assert abs(outputs[0] - exact_input_float) <= math.ulp(exact_input_float)
+
+
+def test_different_fmus_started_at_once_thirty_of_thirty(
+    concurrent_host, unzipped_fmu, propshaft_unzipped, fmi3_unzipped
+):
+    started_together(concurrent_host, (unzipped_fmu, propshaft_unzipped, fmi3_unzipped), 30)
+
+
+def test_two_thousand_fmi3_cycles_leave_less_than_a_kilobyte_each(request):
+    cycles_leave_less_than_a_kilobyte_each(request, 3)
+
+
+@needs_valgrind
+@pytest.mark.parametrize(
+    "version, name, damage",
+    VALGRIND_SLOW,
+    ids=[f"fmi{v}-{n}-{d.__name__}" for v, n, d in VALGRIND_SLOW],
+)
+def test_under_valgrind_no_invalid_access_in_the_fmus_code(
+    request, tmp_path, version, name, damage
+):
+    no_invalid_access_under_valgrind(request, tmp_path, version, name, damage)
