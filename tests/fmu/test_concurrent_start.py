@@ -7,7 +7,6 @@ check in the developer's loop; thirty in tests/system/test_long_runs.py."""
 import subprocess
 from pathlib import Path
 
-
 QUICK_RUNS = 3
 INPUTS = {"input_speed": 12.0, "load_torque": 3.0}
 

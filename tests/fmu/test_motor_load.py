@@ -2,14 +2,11 @@
 
 import math
 import re
-import subprocess
 import sys
 from pathlib import Path
 
 import numpy as np
 from reference.multibody import simulate_multibody
-
-from cardan_joint import results
 
 ROOT = Path(__file__).resolve().parents[2]
 COSIMULATION = (ROOT / "docs" / "cosimulation.md").read_text()
@@ -55,25 +52,3 @@ def test_co_simulated_power_loop_converges_to_the_multibody_simulation(fmu_path)
     stated = float(re.search(r"measured order (\d\.\d)", COSIMULATION).group(1))
     measured = math.log2(coarse["input_torque"] / fine["input_torque"])
     assert abs(measured - stated) < 0.1, (measured, stated)
-
-
-def test_example_runs_from_the_command_line(fmu_path, tmp_path):
-    result = subprocess.run(
-        [
-            sys.executable,
-            str(ROOT / "examples" / "motor_load.py"),
-            "--fmu",
-            str(fmu_path),
-            "--out",
-            str(tmp_path),
-            "--stop-time",
-            "0.2",
-        ],
-        capture_output=True,
-        text=True,
-        timeout=300,
-    )
-    assert result.returncode == 0, result.stderr
-    assert (tmp_path / "motor_load.png").stat().st_size > 20_000
-    data = results.read_csv(tmp_path / "motor_load.csv")
-    assert len(data) == 201 and np.all(np.isfinite(data["input_torque"]))
