@@ -37,6 +37,22 @@ def cardan_joint(*args, cwd: Path = ROOT):
     )
 
 
+def cardan_joint_here(capsys, *args) -> subprocess.CompletedProcess:
+    """`cardan-joint` run by `cli.main` in this process, as a host runs it (the
+    command leaves process-wide state as found): its exit status and output. For
+    tests about what the command does, not about its process; tests/fmu/test_cli.py
+    runs each command in its own process."""
+    from cardan_joint import cli
+
+    capsys.readouterr()  # what came before is not the command's
+    try:
+        status = cli.main([str(arg) for arg in args])
+    except SystemExit as exit:  # argparse's usage errors
+        status = exit.code
+    out, err = capsys.readouterr()
+    return subprocess.CompletedProcess(args, status, out, err)
+
+
 def refused_keeping_state(model, change: dict, words, held_input: str) -> None:
     """`model` (stepped once) refuses a step after `change` with a message holding
     `words` that reads back exactly, and keeps its state but `held_input`."""
