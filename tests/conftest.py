@@ -129,6 +129,24 @@ def session_folder(config, tmp_path_factory, name: str) -> Path:
     return folder
 
 
+def shared(config, tmp_path_factory, name: str, make):
+    """make(folder) -> a picklable value (a run, a path in `folder`), made at most
+    once per test session however many xdist workers ask, as `built` builds: for a
+    module's costly fixture, whose tests the workers share out."""
+    import fcntl
+    import pickle
+
+    folder = session_folder(config, tmp_path_factory, "shared") / name
+    with open(f"{folder}.lock", "w") as lock:
+        fcntl.flock(lock, fcntl.LOCK_EX)
+        done = Path(f"{folder}.pickle")
+        if not done.exists():
+            shutil.rmtree(folder, ignore_errors=True)  # a make that failed half way
+            folder.mkdir()
+            done.write_bytes(pickle.dumps(make(folder)))
+        return pickle.loads(done.read_bytes())
+
+
 @pytest.fixture(scope="session")
 def built(pytestconfig, tmp_path_factory):
     """built(model, fmi_version, arrays, settings) -> the FMU `build_fmu.py --model

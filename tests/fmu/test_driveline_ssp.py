@@ -6,6 +6,7 @@ import zipfile
 
 import numpy as np
 import pytest
+from conftest import shared
 from jacobi import jacobi_master
 from ssp_checks import check_ssp_for_every_host
 
@@ -14,8 +15,8 @@ from cardan_joint.host.ssp import Component, write_ssp
 
 
 @pytest.fixture(scope="module")
-def driveline_ssp(motor_fmu_path, load_fmu_path, request, tmp_path_factory):
-    folder = tmp_path_factory.mktemp("ssp")
+def driveline_ssp(motor_fmu_path, load_fmu_path, request, pytestconfig, tmp_path_factory):
+    """The SSP of the session's FMUs, written once for all workers."""
     # The session's FMU of the drive model (built once for all tests).
     session_fixture = {"UniversalJoint": "fmu_path", "Propshaft": "propshaft_fmu_path"}
     drive = request.getfixturevalue(session_fixture[system.DRIVE])
@@ -24,7 +25,12 @@ def driveline_ssp(motor_fmu_path, load_fmu_path, request, tmp_path_factory):
         system.DRIVE_INSTANCE: drive,
         "Load": load_fmu_path,
     }
-    return system.write_driveline_ssp(folder / "Driveline.ssp", fmus)
+    return shared(
+        pytestconfig,
+        tmp_path_factory,
+        "driveline_ssp",
+        lambda folder: system.write_driveline_ssp(folder / "Driveline.ssp", fmus),
+    )
 
 
 # --- the SSP system --------------------------------------------------------
