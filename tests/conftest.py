@@ -208,6 +208,13 @@ def unzipped_fmu(fmu_path, tmp_path_factory):
 
 
 @pytest.fixture(scope="session")
+def fmu_without_life_path(built) -> Path:
+    """The default model built `--no-life`: for long runs about the joint's motion
+    (its other outputs are the life build's, bit for bit)."""
+    return built(settings=("--no-life",))
+
+
+@pytest.fixture(scope="session")
 def unzipped_without_life(built, tmp_path_factory):
     """The default model built `--no-life`, extracted: for long runs about the
     joint's motion, which a life integral over every step would only slow."""
