@@ -11,6 +11,7 @@ from types import ModuleType
 import pytest
 from c_host.compile import compile_concurrent, compile_host, compile_host3
 from hypothesis import settings
+from session_files import session_folder
 
 # Local runs explore new examples each time; CI replays a fixed set so that a
 # landing never hinges on a lucky draw.
@@ -117,34 +118,6 @@ def c_host3(tmp_path_factory) -> Path:
 def concurrent_host(tmp_path_factory) -> Path:
     """tests/c_host/concurrent compiled: starts FMUs from threads at once."""
     return compile_concurrent(tmp_path_factory.mktemp("concurrent") / "concurrent")
-
-
-def session_folder(config, tmp_path_factory, name: str) -> Path:
-    """A folder every process of the test session shares: pytest-xdist's workers
-    (their config has `workerinput`; a child pytest that inherited a worker's
-    environment does not) each have their own base temp below one common parent."""
-    base = tmp_path_factory.getbasetemp()
-    folder = (base.parent if hasattr(config, "workerinput") else base) / name
-    folder.mkdir(exist_ok=True)
-    return folder
-
-
-def shared(config, tmp_path_factory, name: str, make):
-    """make(folder) -> a picklable value (a run, a path in `folder`), made at most
-    once per test session however many xdist workers ask, as `built` builds: for a
-    module's costly fixture, whose tests the workers share out."""
-    import fcntl
-    import pickle
-
-    folder = session_folder(config, tmp_path_factory, "shared") / name
-    with open(f"{folder}.lock", "w") as lock:
-        fcntl.flock(lock, fcntl.LOCK_EX)
-        done = Path(f"{folder}.pickle")
-        if not done.exists():
-            shutil.rmtree(folder, ignore_errors=True)  # a make that failed half way
-            folder.mkdir()
-            done.write_bytes(pickle.dumps(make(folder)))
-        return pickle.loads(done.read_bytes())
 
 
 @pytest.fixture(scope="session")

@@ -6,7 +6,8 @@ from pathlib import Path
 
 import numpy as np
 import pytest
-from conftest import cardan_joint, shared
+from conftest import cardan_joint
+from session_files import shared
 
 from cardan_joint import cli, results
 from cardan_joint.models.universal_joint import variables as table

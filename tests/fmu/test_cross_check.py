@@ -2,11 +2,12 @@
 
 import numpy as np
 import pytest
-from conftest import build_fmu, run_build, shared
+from conftest import build_fmu, run_build
 from fmpy import simulate_fmu
 from fmpy.cross_check import validate_result
 from fmpy.cross_check.validate_vendor_repo import validate_test_fmu
 from fmpy.util import read_csv, read_ref_opt_file
+from session_files import shared
 
 from cardan_joint.build import cross_check
 

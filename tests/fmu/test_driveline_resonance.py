@@ -4,7 +4,8 @@ predicted input speed omega_n / 2, within 3 %."""
 import math
 
 import pytest
-from conftest import load_example, shared
+from conftest import load_example
+from session_files import shared
 
 resonance = load_example("driveline_resonance")
 

@@ -6,8 +6,8 @@ import zipfile
 
 import numpy as np
 import pytest
-from conftest import shared
 from jacobi import jacobi_master
+from session_files import shared
 from ssp_checks import check_ssp_for_every_host
 
 from cardan_joint.host import driveline_system as system

@@ -1,12 +1,13 @@
-"""End-to-end runs of example scripts in their own process (the slow layer): each
-script, run as a user runs it, writes what it says. Their physics is checked in
-tests/fmu (test_driveline_ssp.py, test_motor_load.py) on shorter runs in-process."""
+"""End-to-end runs of example scripts (the slow layer): each script, run as a user
+runs it (its own process, or its `main` for the driveshaft), writes what it says.
+Their physics is checked in tests/fmu (test_driveline_ssp.py, test_motor_load.py,
+test_driveshaft.py) on shorter runs in-process."""
 
 import subprocess
 import sys
 
 import numpy as np
-from conftest import ROOT
+from conftest import ROOT, load_example
 from ssp_checks import check_ssp_for_every_host
 
 from cardan_joint import results
@@ -56,3 +57,26 @@ def test_motor_load_example_runs_from_the_command_line(fmu_path, tmp_path):
     assert (tmp_path / "motor_load.png").stat().st_size > 20_000
     data = results.read_csv(tmp_path / "motor_load.csv")
     assert len(data) == 201 and np.all(np.isfinite(data["input_torque"]))
+
+
+def test_driveshaft_example_writes_its_tables_and_figure(fmu_path, tmp_path):
+    driveshaft = load_example("driveshaft")
+    driveshaft.main(
+        [
+            "--fmu",
+            str(fmu_path),
+            "--out",
+            str(tmp_path),
+            "--revolutions",
+            "1",
+            "--steps",
+            "1e-2",
+            "1e-3",
+            "--phase-errors",
+            "0",
+            "1",
+            "5",
+        ]
+    )
+    for name in ("driveshaft_steps.csv", "driveshaft_phase.csv", "driveshaft.png"):
+        assert (tmp_path / name).stat().st_size > 0
