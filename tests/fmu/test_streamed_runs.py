@@ -65,7 +65,9 @@ def test_a_result_too_large_for_memory_is_refused_before_the_first_step(fmu_path
         simulate(fmu_path, stop_time=10.0, output_interval=1e-3)
 
 
-@pytest.mark.parametrize("fixture", ["fmu_path", "fmi3_path"])
+# FMI 2.0 on the build without life: 8,292 steps of streaming, which life would
+# make four times dearer without touching what is streamed.
+@pytest.mark.parametrize("fixture", ["fmu_without_life_path", "fmi3_path"])
 def test_a_streamed_run_writes_the_csv_of_the_run_held_in_memory(request, fixture, tmp_path):
     fmu = request.getfixturevalue(fixture)
     steps = 2 * CHUNK_ROWS + 100  # chunks handed over during the run, and the rest after it
