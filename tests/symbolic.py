@@ -58,7 +58,7 @@ def _expressions():
     # 1e-40 relative at 40 digits).
     values = sp.lambdify(arguments, list(expressions.values()), "mpmath", cse=True)
     compiled = (tuple(expressions), values)
-    frame = sp.lambdify((psi, b), sp.Matrix.hstack(p1, p2, p3), "mpmath")
+    frame = sp.lambdify((psi, b), sp.Matrix.hstack(p1, p2, p3), "mpmath", cse=True)
     return compiled, frame
 
 
