@@ -9,8 +9,9 @@ from pathlib import Path
 from types import ModuleType
 
 import pytest
-from c_host.compile import compile_host, compile_host3
+from c_host.compile import compile_concurrent, compile_host, compile_host3
 from hypothesis import settings
+from session_files import session_folder
 
 # Local runs explore new examples each time; CI replays a fixed set so that a
 # landing never hinges on a lucky draw.
@@ -35,6 +36,22 @@ def cardan_joint(*args, cwd: Path = ROOT):
         text=True,
         cwd=cwd,
     )
+
+
+def cardan_joint_here(capsys, *args) -> subprocess.CompletedProcess:
+    """`cardan-joint` run by `cli.main` in this process, as a host runs it (the
+    command leaves process-wide state as found): its exit status and output. For
+    tests about what the command does, not about its process; tests/fmu/test_cli.py
+    runs each command in its own process."""
+    from cardan_joint import cli
+
+    capsys.readouterr()  # what came before is not the command's
+    try:
+        status = cli.main([str(arg) for arg in args])
+    except SystemExit as exit:  # argparse's usage errors
+        status = exit.code
+    out, err = capsys.readouterr()
+    return subprocess.CompletedProcess(args, status, out, err)
 
 
 def refused_keeping_state(model, change: dict, words, held_input: str) -> None:
@@ -97,14 +114,10 @@ def c_host3(tmp_path_factory) -> Path:
     return compile_host3(tmp_path_factory.mktemp("c_host3") / "host3")
 
 
-def session_folder(config, tmp_path_factory, name: str) -> Path:
-    """A folder every process of the test session shares: pytest-xdist's workers
-    (their config has `workerinput`; a child pytest that inherited a worker's
-    environment does not) each have their own base temp below one common parent."""
-    base = tmp_path_factory.getbasetemp()
-    folder = (base.parent if hasattr(config, "workerinput") else base) / name
-    folder.mkdir(exist_ok=True)
-    return folder
+@pytest.fixture(scope="session")
+def concurrent_host(tmp_path_factory) -> Path:
+    """tests/c_host/concurrent compiled: starts FMUs from threads at once."""
+    return compile_concurrent(tmp_path_factory.mktemp("concurrent") / "concurrent")
 
 
 @pytest.fixture(scope="session")
@@ -165,6 +178,13 @@ def unzipped_fmu(fmu_path, tmp_path_factory):
     directory = extract(str(fmu_path), unzipdir=str(tmp_path_factory.mktemp("unzipped")))
     yield directory
     shutil.rmtree(directory, ignore_errors=True)
+
+
+@pytest.fixture(scope="session")
+def fmu_without_life_path(built) -> Path:
+    """The default model built `--no-life`: for long runs about the joint's motion
+    (its other outputs are the life build's, bit for bit)."""
+    return built(settings=("--no-life",))
 
 
 @pytest.fixture(scope="session")
@@ -256,7 +276,7 @@ def load_fmu_path(built) -> Path:
 
 LAYERS = {"unit": "unit", "fmu": "fmu", "system": "slow"}
 # The fixtures that build an FMU or a C host: the unit layer uses none of them.
-BUILDING = {"built", "model_fmu", "c_host", "c_host3"}
+BUILDING = {"built", "model_fmu", "c_host", "c_host3", "concurrent_host"}
 
 
 def pytest_collection_modifyitems(items):

@@ -143,17 +143,17 @@ VALUE_MUTATIONS = (
     Mutation(
         "bend angle now (slow path)",
         MODEL,
-        "candidates = [(Reason.BEND_ANGLE, 0.0, beta)]",
-        "candidates = [(Reason.BEND_ANGLE, 0.0, 0.0)]",
+        "candidates = [(JointReason.BEND_ANGLE, 0.0, beta)]",
+        "candidates = [(JointReason.BEND_ANGLE, 0.0, 0.0)]",
         (GUARDS, "-k", "bend"),
     ),
     Mutation(
         "bend angle at step end (slow path)",
         MODEL,
-        "                    Reason.BEND_AT_STEP_END,\n"
+        "                    JointReason.BEND_AT_STEP_END,\n"
         "                    step_size,\n"
         "                    beta + step_size * (rate + 0.5 * acc * step_size),\n",
-        "                    Reason.BEND_AT_STEP_END,\n                    step_size,\n"
+        "                    JointReason.BEND_AT_STEP_END,\n                    step_size,\n"
         "                    beta,\n",
         (GUARDS, "-k", "bend"),
     ),

@@ -7,19 +7,24 @@ from pathlib import Path
 import numpy as np
 import pytest
 from conftest import cardan_joint
+from session_files import shared
 
 from cardan_joint import cli, results
 from cardan_joint.models.universal_joint import variables as table
 
 
-@pytest.fixture(scope="module")
-def built_fmu(tmp_path_factory):
-    dest = tmp_path_factory.mktemp("cli_build")
+def _build(dest):
     run = cardan_joint("build", "--dest", dest, "--name", "CliJoint", "--set", "bend_angle=0.2")
     assert run.returncode == 0, run.stderr
     fmu = dest / "CliJoint.fmu"
     assert fmu.is_file()
     return fmu
+
+
+@pytest.fixture(scope="module")
+def built_fmu(pytestconfig, tmp_path_factory):
+    """The command's own build, made once for all workers."""
+    return shared(pytestconfig, tmp_path_factory, "cli_build", _build)
 
 
 def test_console_script_is_installed():

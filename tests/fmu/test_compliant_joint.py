@@ -15,6 +15,7 @@ from cardan_joint.models.compliant_joint.refusals import CompliantReason
 from cardan_joint.models.compliant_joint.variables import COMPLIANT_JOINT
 from cardan_joint.models.inertia_load.model import InertiaLoad
 from cardan_joint.models.universal_joint.model import CardanJoint
+from cardan_joint.models.universal_joint.refusals import JointReason
 
 INERTIA = (0.02, 0.03, 0.045)
 START = dict(
@@ -103,9 +104,9 @@ def test_state_restores_exactly_and_refused_steps_change_nothing():
     [
         ({"torsional_stiffness": 0.0}, "torsional_stiffness", Reason.OUT_OF_RANGE),
         ({"torsional_damping": -1.0}, "torsional_damping", Reason.OUT_OF_RANGE),
-        ({"max_bend_angle": 2.0}, "max_bend_angle", Reason.BEND_GUARD),
+        ({"max_bend_angle": 2.0}, "max_bend_angle", JointReason.BEND_GUARD),
         ({"output_acceleration": 1e9}, "output_acceleration", Reason.OUT_OF_RANGE),
-        ({"bend_angle": 1.5, "bend_angle_rate": 0.0}, "bend_angle", Reason.BEND_ANGLE),
+        ({"bend_angle": 1.5, "bend_angle_rate": 0.0}, "bend_angle", JointReason.BEND_ANGLE),
     ],
 )
 def test_bad_parameters_and_inputs_are_refused_by_name(change, variable, reason):

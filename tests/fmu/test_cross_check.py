@@ -7,6 +7,7 @@ from fmpy import simulate_fmu
 from fmpy.cross_check import validate_result
 from fmpy.cross_check.validate_vendor_repo import validate_test_fmu
 from fmpy.util import read_csv, read_ref_opt_file
+from session_files import shared
 
 from cardan_joint.build import cross_check
 
@@ -19,9 +20,7 @@ FILES = {
 }
 
 
-@pytest.fixture(scope="module")
-def folder(tmp_path_factory):
-    dest = tmp_path_factory.mktemp("cross_check")
+def _build(dest):
     build_fmu(dest, "--cross-check")
     return (
         dest
@@ -34,6 +33,12 @@ def folder(tmp_path_factory):
         / cross_check.tool_version()
         / "UniversalJoint"
     )
+
+
+@pytest.fixture(scope="module")
+def folder(pytestconfig, tmp_path_factory):
+    """The --cross-check build's folder, made once for all workers."""
+    return shared(pytestconfig, tmp_path_factory, "cross_check", _build)
 
 
 def test_the_folder_holds_the_cross_check_files_and_passes_fmpys_validator(folder):

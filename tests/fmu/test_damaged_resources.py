@@ -99,21 +99,30 @@ def test_a_damaged_resources_file_is_a_null_instance_naming_it(
     assert name in run.stderr and "LOG 3" in run.stderr, run.stderr
 
 
-VALGRIND = [
+# Under valgrind: the quickest case here, in the developer's loop; the other three
+# (VALGRIND_SLOW, 5-25 s each under valgrind) in tests/system/test_long_runs.py.
+VALGRIND = [(3, "slavemodule.txt", another_module)]
+VALGRIND_SLOW = [
     (2, "slavemodule.txt", empty),
     (2, "variables.txt", truncated),
-    (3, "slavemodule.txt", another_module),
     (3, "variables.txt", another_size),
 ]
+needs_valgrind = pytest.mark.skipif(not shutil.which("valgrind"), reason="needs valgrind")
 
 
-@pytest.mark.skipif(not shutil.which("valgrind"), reason="needs valgrind")
+@needs_valgrind
 @pytest.mark.parametrize(
     "version, name, damage", VALGRIND, ids=[f"fmi{v}-{n}-{d.__name__}" for v, n, d in VALGRIND]
 )
 def test_under_valgrind_no_invalid_access_in_the_fmus_code(
     request, tmp_path, version, name, damage
 ):
+    no_invalid_access_under_valgrind(request, tmp_path, version, name, damage)
+
+
+def no_invalid_access_under_valgrind(request, tmp_path, version, name, damage) -> None:
+    """The damaged copy instantiated in the C host under valgrind: a NULL instance
+    and no invalid read or write in the FMU's code."""
     host, copy = damaged_copy(request, tmp_path, version, name, damage)
     run = subprocess.run(
         ["valgrind", "--error-limit=no", str(host), "instantiate", str(copy)],

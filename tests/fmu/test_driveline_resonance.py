@@ -5,16 +5,23 @@ import math
 
 import pytest
 from conftest import load_example
+from session_files import shared
 
 resonance = load_example("driveline_resonance")
 
 
 @pytest.fixture(scope="module")
-def run_up(compliant_joint_fmu_path, inertia_load_fmu_path):
+def run_up(compliant_joint_fmu_path, inertia_load_fmu_path, pytestconfig, tmp_path_factory):
     # A short run-up around the resonance at the example's rate: coarse, but the
-    # peak's position only needs the envelope near it.
+    # peak's position only needs the envelope near it. Run once for all workers.
     low, high = 0.85 * resonance.PREDICTED, 1.15 * resonance.PREDICTED
-    return resonance.run_up(str(compliant_joint_fmu_path), str(inertia_load_fmu_path), low, high)
+    joint, load = str(compliant_joint_fmu_path), str(inertia_load_fmu_path)
+    return shared(
+        pytestconfig,
+        tmp_path_factory,
+        "resonance_run_up",
+        lambda _: resonance.run_up(joint, load, low, high),
+    )
 
 
 def test_twist_peak_lies_within_three_percent_of_half_the_natural_frequency(run_up):

@@ -2,24 +2,21 @@
 Ecos, and what it carries for OMSimulator and pyssp-standard."""
 
 import math
-import subprocess
-import sys
 import zipfile
 
 import numpy as np
 import pytest
-from conftest import ROOT
 from jacobi import jacobi_master
+from session_files import shared
 from ssp_checks import check_ssp_for_every_host
 
-from cardan_joint import results
 from cardan_joint.host import driveline_system as system
 from cardan_joint.host.ssp import Component, write_ssp
 
 
 @pytest.fixture(scope="module")
-def driveline_ssp(motor_fmu_path, load_fmu_path, request, tmp_path_factory):
-    folder = tmp_path_factory.mktemp("ssp")
+def driveline_ssp(motor_fmu_path, load_fmu_path, request, pytestconfig, tmp_path_factory):
+    """The SSP of the session's FMUs, written once for all workers."""
     # The session's FMU of the drive model (built once for all tests).
     session_fixture = {"UniversalJoint": "fmu_path", "Propshaft": "propshaft_fmu_path"}
     drive = request.getfixturevalue(session_fixture[system.DRIVE])
@@ -28,7 +25,12 @@ def driveline_ssp(motor_fmu_path, load_fmu_path, request, tmp_path_factory):
         system.DRIVE_INSTANCE: drive,
         "Load": load_fmu_path,
     }
-    return system.write_driveline_ssp(folder / "Driveline.ssp", fmus)
+    return shared(
+        pytestconfig,
+        tmp_path_factory,
+        "driveline_ssp",
+        lambda folder: system.write_driveline_ssp(folder / "Driveline.ssp", fmus),
+    )
 
 
 # --- the SSP system --------------------------------------------------------
@@ -111,30 +113,6 @@ def test_ecos_applies_the_one_parameter_set_and_differs_from_fmpy_by_the_first_s
     # halving with the step. (With the drive's and load's defaults instead of the
     # set's, the torque loop ran away: -7.6e4 rad/s at 0.2 s.)
     assert 1.9 < differences[1e-3] / differences[5e-4] < 2.1, differences
-
-
-def test_example_writes_the_ssp_both_csvs_and_the_plot(tmp_path):
-    run = subprocess.run(
-        [sys.executable, str(ROOT / "examples" / "driveline_ssp.py"), "--out", str(tmp_path)],
-        capture_output=True,
-        text=True,
-        cwd=ROOT,
-    )
-    assert run.returncode == 0, run.stderr
-    for name in (
-        "Driveline.ssp",
-        "driveline_ssp_fmpy.csv",
-        "driveline_ssp_libcosim.csv",
-        "driveline_ssp_ecos.csv",
-        "driveline_ssp.png",
-    ):
-        assert (tmp_path / name).stat().st_size > 0
-    check_ssp_for_every_host(tmp_path / "Driveline.ssp")
-    for host in ("libcosim", "ecos"):
-        rows = results.read_csv(tmp_path / f"driveline_ssp_{host}.csv")
-        assert list(rows.dtype.names[:2]) == ["time", "Motor.speed"] and len(rows) == 1001
-    assert "ratio 2, step 0.0001 s: DIVERGES" in run.stdout
-    assert "ratio 0.5, step 0.001 s: bounded" in run.stdout
 
 
 def test_each_host_is_exactly_a_jacobi_master_with_its_own_first_inputs(driveline_ssp):

@@ -66,25 +66,3 @@ def test_phase_error_follows_the_closed_form_composition(driveshaft, fmu):
     error = math.radians(2)
     cosimulated = residual(driveshaft, fmu, step=1e-3, phase_error=error)
     assert cosimulated == pytest.approx(driveshaft.exact_fluctuation(BEND, error), rel=1e-3)
-
-
-def test_script_writes_its_tables_and_figure(driveshaft, fmu_path, tmp_path):
-    driveshaft.main(
-        [
-            "--fmu",
-            str(fmu_path),
-            "--out",
-            str(tmp_path),
-            "--revolutions",
-            "1",
-            "--steps",
-            "1e-2",
-            "1e-3",
-            "--phase-errors",
-            "0",
-            "1",
-            "5",
-        ]
-    )
-    for name in ("driveshaft_steps.csv", "driveshaft_phase.csv", "driveshaft.png"):
-        assert (tmp_path / name).stat().st_size > 0

@@ -1,12 +1,14 @@
 """The host tools read the FMU, not a Python table: `cardan-joint simulate` runs
-every model the build offers, and a misspelt name is refused naming the right one."""
+every model the build offers, and a misspelt name is refused naming the right one.
+The command runs in this process (`cardan_joint_here`, its `main` as a host calls
+it): its own process is tests/fmu/test_cli.py's subject."""
 
 import subprocess
 import sys
 
 import numpy as np
 import pytest
-from conftest import ROOT, cardan_joint, run_build
+from conftest import ROOT, cardan_joint_here, run_build
 
 from cardan_joint import results
 from cardan_joint.host.fmu_info import FmuInfo, build_command
@@ -25,10 +27,12 @@ REBUILT = [("UniversalJoint", 2), ("CompliantPropshaft", 3)]
 
 
 @pytest.mark.parametrize("key, version", RUNS)
-def test_simulate_writes_a_csv_and_a_png_for_every_model(built, key, version, tmp_path):
+def test_simulate_writes_a_csv_and_a_png_for_every_model(capsys, built, key, version, tmp_path):
     fmu = built(key, version)
     out = tmp_path / "run.csv"
-    run = cardan_joint("simulate", "--fmu", fmu, "--stop-time", "0.05", "--output", out)
+    run = cardan_joint_here(
+        capsys, "simulate", "--fmu", fmu, "--stop-time", "0.05", "--output", out
+    )
     assert run.returncode == 0, run.stderr
     info = FmuInfo.read(fmu)
     rows = results.read_csv(out)
@@ -44,19 +48,21 @@ def test_simulate_writes_a_csv_and_a_png_for_every_model(built, key, version, tm
         (("--plot-variables", "output_sped"), "output_sped", "output_speed"),
     ],
 )
-def test_a_misspelt_cli_name_is_refused_naming_the_right_one(built, tmp_path, args, wrong, right):
-    run = cardan_joint(
-        "simulate", "--fmu", built("UniversalJoint"), "--output", tmp_path / "x.csv", *args
+def test_a_misspelt_cli_name_is_refused_naming_the_right_one(
+    capsys, built, tmp_path, args, wrong, right
+):
+    run = cardan_joint_here(
+        capsys, "simulate", "--fmu", built("UniversalJoint"), "--output", tmp_path / "x.csv", *args
     )
     assert run.returncode == 2 and "Traceback" not in run.stderr
     assert f"{wrong!r}; did you mean {right}" in run.stderr
     assert not (tmp_path / "x.csv").exists()
 
 
-def test_a_misspelt_input_csv_column_is_refused_naming_the_right_one(built, tmp_path):
+def test_a_misspelt_input_csv_column_is_refused_naming_the_right_one(capsys, built, tmp_path):
     inputs = tmp_path / "typo.csv"
     inputs.write_text("time,load_torqe\n0,1\n1,2\n")
-    run = cardan_joint("simulate", "--fmu", built("Propshaft"), "--input", inputs)
+    run = cardan_joint_here(capsys, "simulate", "--fmu", built("Propshaft"), "--input", inputs)
     assert run.returncode == 2 and "'load_torqe'; did you mean load_torque" in run.stderr
 
 
@@ -73,18 +79,21 @@ def test_a_misspelt_build_start_value_is_refused_naming_the_right_one(tmp_path):
         ("crosspiece_inertia_1=-1", "crosspiece_inertia_1 = -1.0 kg.m2"),  # initialization
     ],
 )
-def test_a_run_refused_at_the_start_says_so_and_writes_nothing(built, tmp_path, setting, reason):
+def test_a_run_refused_at_the_start_says_so_and_writes_nothing(
+    capsys, built, tmp_path, setting, reason
+):
     out = tmp_path / "refused.csv"
     args = ("simulate", "--fmu", built("UniversalJoint"), "--output", out)
-    run = cardan_joint(*args, "--set", setting)
+    run = cardan_joint_here(capsys, *args, "--set", setting)
     assert run.returncode == 1 and "Traceback" not in run.stderr
     assert "refused the run at its start (t = 0 s)" in run.stderr
     assert reason in run.stderr  # the FMU's own, not FMPy's bare status
     assert not out.exists() and not out.with_suffix(".png").exists()
 
 
-def test_a_constant_bend_angle_with_a_nonzero_rate_is_refused(built, tmp_path):
-    run = cardan_joint(
+def test_a_constant_bend_angle_with_a_nonzero_rate_is_refused(capsys, built, tmp_path):
+    run = cardan_joint_here(
+        capsys,
         "simulate",
         "--fmu",
         built("UniversalJoint"),
@@ -100,11 +109,11 @@ def test_a_constant_bend_angle_with_a_nonzero_rate_is_refused(built, tmp_path):
 
 
 @pytest.mark.parametrize("key, version", REBUILT)
-def test_a_missing_fmu_names_the_command_that_builds_it(built, key, version, tmp_path):
+def test_a_missing_fmu_names_the_command_that_builds_it(capsys, built, key, version, tmp_path):
     """The named command, run as given, writes exactly the missing file."""
     fmu = built(key, version)
     missing = tmp_path / fmu.relative_to(fmu.parents[1 if version == 3 else 0])
-    run = cardan_joint("simulate", "--fmu", missing)
+    run = cardan_joint_here(capsys, "simulate", "--fmu", missing)
     assert run.returncode == 2 and "Traceback" not in run.stderr
     command = build_command(missing)
     assert f"build it with `{command}`" in run.stderr
@@ -192,9 +201,16 @@ def test_simulate_names_the_build_command_of_a_missing_fmu(tmp_path):
         simulate(tmp_path / "Motor.fmu")
 
 
-def test_setting_an_output_says_it_is_an_output(built, tmp_path):
-    run = cardan_joint(
-        "simulate", "--fmu", built("Motor"), "--set", "speed=3", "--output", tmp_path / "x.csv"
+def test_setting_an_output_says_it_is_an_output(capsys, built, tmp_path):
+    run = cardan_joint_here(
+        capsys,
+        "simulate",
+        "--fmu",
+        built("Motor"),
+        "--set",
+        "speed=3",
+        "--output",
+        tmp_path / "x.csv",
     )
     assert run.returncode == 2
     assert "'speed' is an output of Motor, not an input or parameter" in run.stderr

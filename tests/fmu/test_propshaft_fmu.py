@@ -2,6 +2,7 @@
 driven through FMPy's low-level API, against the independent 3-D construction
 at every communication point; its warnings, refusals and state."""
 
+import functools
 import math
 
 import mpmath
@@ -81,17 +82,35 @@ def inputs_at(case, t):
     )
 
 
-@pytest.mark.parametrize("seed, h", [(1, 1e-3), (2, 0.02), (3, 0.3)])
-@pytest.mark.parametrize("master", ["sets inputs once", "sets inputs every step"])
-def test_every_communication_point_matches_the_3d_construction(
-    description, propshaft_unzipped, seed, h, master
-):
+@functools.cache
+def reference_run(seed, h):
+    """The random case of `seed` and step `h`, its 3-D construction, and the
+    construction's exact input angle and values at every point: computed once for
+    both masters (mpmath is most of the test's time)."""
     case = random_case(seed, h)
     reference = PropshaftReference(
         case["side"], case["top"], [case["phase"]], [case["shaft"]], case["cross"]
     )
     offsets = reference.start_offsets(case["angle0"])
-    fluctuation = reference.speed_ratio_fluctuation(samples=48)
+    points = []
+    for k in range(STEPS + 1):
+        t = k * h
+        with mpmath.workdps(40):
+            angle = case["angle0"] + t * (
+                mpmath.mpf(case["speed0"]) + mpmath.mpf(case["speed_rate"]) * t / 2
+            )
+        u = inputs_at(case, t)
+        ref = reference.at(angle, u["input_speed"], u["input_acceleration"], case["load"], offsets)
+        points.append((angle, ref))
+    return case, reference, reference.speed_ratio_fluctuation(samples=48), points
+
+
+@pytest.mark.parametrize("seed, h", [(1, 1e-3), (2, 0.02), (3, 0.3)])
+@pytest.mark.parametrize("master", ["sets inputs once", "sets inputs every step"])
+def test_every_communication_point_matches_the_3d_construction(
+    description, propshaft_unzipped, seed, h, master
+):
+    case, reference, fluctuation, points = reference_run(seed, h)
     shaft = FmuInstance(
         description, propshaft_unzipped, start_values={**start_values(case), **inputs_at(case, 0.0)}
     )
@@ -102,14 +121,8 @@ def test_every_communication_point_matches_the_3d_construction(
             if master == "sets inputs every step":
                 shaft.set(**inputs_at(case, t))
             values = shaft.get_outputs()
-            with mpmath.workdps(40):
-                angle = case["angle0"] + t * (
-                    mpmath.mpf(case["speed0"]) + mpmath.mpf(case["speed_rate"]) * t / 2
-                )
+            angle, ref = points[k]
             u = inputs_at(case, t)
-            ref = reference.at(
-                angle, u["input_speed"], u["input_acceleration"], case["load"], offsets
-            )
             angles = (values["input_angle"], values["shaft_1_angle"], values["output_angle"])
             exact = (angle, *ref["angles"])
             first = first or (angles, exact)

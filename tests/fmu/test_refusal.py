@@ -19,6 +19,7 @@ from cardan_joint.models.propshaft import Propshaft
 from cardan_joint.models.propshaft.refusals import PropshaftReason
 from cardan_joint.models.universal_joint import variables as table
 from cardan_joint.models.universal_joint.model import CardanJoint
+from cardan_joint.models.universal_joint.refusals import JointReason
 
 GUARD = table.BY_NAME["max_bend_angle"].start
 # One way to meet each reason: (start values, step size).
@@ -33,12 +34,12 @@ CAUSES = {
         (dict(input_acceleration=-1.5e8), 0.1),
         (dict(crosspiece_inertia_3=-1e-300), 0.1),
     ],
-    Reason.BEND_ANGLE: [(dict(bend_angle=-1.5), 0.1)],
-    Reason.BEND_AT_STEP_END: [(dict(bend_angle=1.3, bend_angle_rate=1.0 / 3.0), 0.5)],
-    Reason.BEND_PEAK_IN_STEP: [
+    JointReason.BEND_ANGLE: [(dict(bend_angle=-1.5), 0.1)],
+    JointReason.BEND_AT_STEP_END: [(dict(bend_angle=1.3, bend_angle_rate=1.0 / 3.0), 0.5)],
+    JointReason.BEND_PEAK_IN_STEP: [
         (dict(bend_angle=-1.38, bend_angle_rate=-2.0, bend_angle_acceleration=100.0), 0.04)
     ],
-    Reason.BEND_GUARD: [(dict(max_bend_angle=1.6), 0.1), (dict(max_bend_angle=-0.0), 0.1)],
+    JointReason.BEND_GUARD: [(dict(max_bend_angle=1.6), 0.1), (dict(max_bend_angle=-0.0), 0.1)],
     Reason.STEP_SIZE: [({}, -math.inf), ({}, math.nan), ({}, -5e-324)],
     Reason.ANGLE_OVERFLOW: [(dict(input_speed=-0.1), 1e17)],
     Reason.SPEED_OVERFLOW: [(dict(input_speed=0.1 + 0.2, input_acceleration=1e8), 0.7)],
@@ -149,7 +150,7 @@ def test_simulate_raises_the_refusal_with_its_fields(fmu_path):
         1.5,
         GUARD,
         0.5,
-        Reason.BEND_ANGLE,
+        JointReason.BEND_ANGLE,
         "rad",
     )
     assert e.refusal.message in str(e)

@@ -1,4 +1,5 @@
-"""Issue 4: rollback, serialization, reset, many instances, several builds in one process."""
+"""Issue 4: rollback, serialization, reset, many instances, several builds in one process.
+Rollback after ten thousand steps: tests/system/test_long_runs.py."""
 
 import ctypes
 import sys
@@ -10,55 +11,6 @@ from robustness_support import REFUSED, all_reals
 from cardan_joint.host.instance import FmuInstance
 from cardan_joint.models.universal_joint import variables as table
 from cardan_joint.models.universal_joint.model import CardanJoint
-
-
-def test_state_rollback_is_bit_for_bit_after_ten_thousand_steps(model_description, unzipped_fmu):
-    rng = np.random.default_rng(3)
-    inputs = [
-        dict(
-            input_speed=rng.uniform(5, 50),
-            input_acceleration=rng.uniform(-5, 5),
-            bend_angle=rng.uniform(-1, 1),
-            load_torque=rng.uniform(-50, 50),
-        )
-        for _ in range(10_000)
-    ]
-    joint = FmuInstance(model_description, unzipped_fmu)
-
-    def run():
-        trace = []
-        for u in inputs:
-            joint.set(**u)
-            joint.fmu.doStep(currentCommunicationPoint=0.0, communicationStepSize=1e-3)
-            trace.append(tuple(joint.get_outputs().values()))
-        return trace
-
-    try:
-        for _ in range(7):
-            joint.step(1e-3)
-        saved = joint.get_state()
-        serialized = joint.serialize_state(saved)
-        first = run()
-        other = joint.get_state()  # a second, independent copy
-        joint.set_state(saved)
-        assert run() == first
-        joint.set_state(other)
-        assert tuple(joint.get_outputs().values()) == first[-1]
-        # A serialized state restores in a fresh instance.
-        fresh = FmuInstance(model_description, unzipped_fmu, name="fresh")
-        try:
-            state = fresh.deserialize_state(serialized)
-            fresh.set_state(state)
-            fresh.free_state(state)
-            joint, original = fresh, joint
-            assert run() == first
-            joint = original
-        finally:
-            fresh.close()
-        joint.free_state(saved)
-        joint.free_state(other)
-    finally:
-        joint.close()
 
 
 def test_a_state_serialized_into_a_larger_buffer_fills_only_its_own_bytes(

@@ -10,10 +10,11 @@ import pytest
 from pythonfmu.enums import Fmi2Status
 
 from cardan_joint.fmi.slave import ModelSlave
-from cardan_joint.framework import Reason, Refusal
+from cardan_joint.framework import Refusal
 from cardan_joint.host.instance import FmuInstance
 from cardan_joint.models.universal_joint import variables as table
 from cardan_joint.models.universal_joint.model import CardanJoint
+from cardan_joint.models.universal_joint.refusals import JointReason
 
 
 class Joint(ModelSlave):
@@ -45,7 +46,7 @@ def test_the_slave_refuses_a_step_peaking_inside_it_and_names_the_peak():
     slave.set_real([REFERENCE[n] for n in PEAK], list(PEAK.values()))
     assert slave.do_step(0.1, PEAK_STEP) is False
     refusal = Refusal.from_message(last(slave, Fmi2Status.discard))
-    assert (refusal.code, refusal.time) == (Reason.BEND_PEAK_IN_STEP, 0.1)
+    assert (refusal.code, refusal.time) == (JointReason.BEND_PEAK_IN_STEP, 0.1)
     assert (
         slave._model.time == 0.1
         and slave.get_real([REFERENCE["input_angle"]])
@@ -59,15 +60,19 @@ def test_outputs_with_invalid_inputs_are_held_and_the_warning_names_the_input():
     slave.set_real([REFERENCE["bend_angle"]], [1.5])
     assert slave.get_real(ALL)[REFERENCE["output_speed"]] == held[REFERENCE["output_speed"]]
     refusal = Refusal.from_message(last(slave, Fmi2Status.warning))
-    assert (refusal.code, refusal.variable, refusal.value) == (Reason.BEND_ANGLE, "bend_angle", 1.5)
+    assert (refusal.code, refusal.variable, refusal.value) == (
+        JointReason.BEND_ANGLE,
+        "bend_angle",
+        1.5,
+    )
 
 
 def test_bad_parameters_are_an_error_at_initialization():
     slave = initialized(max_bend_angle=1.6)
     refusal = Refusal.from_message(last(slave, Fmi2Status.error))
-    assert (refusal.code, refusal.value) == (Reason.BEND_GUARD, 1.6)
+    assert (refusal.code, refusal.value) == (JointReason.BEND_GUARD, 1.6)
     assert slave.do_step(0.0, 0.1) is False
-    assert Refusal.from_message(last(slave, Fmi2Status.discard)).code == Reason.BEND_GUARD
+    assert Refusal.from_message(last(slave, Fmi2Status.discard)).code == JointReason.BEND_GUARD
 
 
 @pytest.mark.parametrize("reference", [REFERENCE["input_angle"], len(table.VARIABLES), -1])
@@ -173,7 +178,7 @@ def test_the_fmu_refuses_a_bend_peak_inside_the_step(model_description, unzipped
         for name, value in peak.items():
             setattr(twin, name, value)
         assert refusal == twin.step(PEAK_STEP)  # the same refusal, as data
-        assert refusal.code == Reason.BEND_PEAK_IN_STEP and refusal.time == 0.1
+        assert refusal.code == JointReason.BEND_PEAK_IN_STEP and refusal.time == 0.1
         assert joint.get("input_angle") == {"input_angle": before["input_angle"]}
         joint.set(bend_angle_acceleration=0.0, bend_angle_rate=0.0)
         assert joint.try_step(PEAK_STEP) == 0  # fixed: the same step goes

@@ -6,8 +6,9 @@ import math
 import threading
 import time
 
-from cardan_joint.framework import Reason, Refusal
+from cardan_joint.framework import Refusal
 from cardan_joint.host.instance import FmuInstance
+from cardan_joint.models.universal_joint.refusals import JointReason
 
 THREADS = 8
 STEPS = 1000
@@ -83,7 +84,7 @@ def test_eight_threads_give_the_serial_results_and_messages(model_description, u
         if k % 2:
             assert len(refusals) == STEPS // 50
             # Each refusal names this instance's own bad value: no message crossed over.
-            assert {(r.code, r.value) for r in refusals} == {(Reason.BEND_ANGLE, bad_bend(k))}
+            assert {(r.code, r.value) for r in refusals} == {(JointReason.BEND_ANGLE, bad_bend(k))}
             # Held-output warnings too: this instance's bend angle, or its NaN speed.
             for _, _, text in messages:
                 refusal = Refusal.from_message(text)

@@ -9,6 +9,7 @@ import pytest
 from cardan_joint.framework import Reason
 from cardan_joint.models.universal_joint import variables as table
 from cardan_joint.models.universal_joint.model import CardanJoint
+from cardan_joint.models.universal_joint.refusals import JointReason
 
 GUARD = table.BY_NAME["max_bend_angle"].start
 TINY = 1e-9  # a step too short for anything but the input itself to matter
@@ -80,7 +81,7 @@ def test_each_non_finite_parameter_refuses_every_step(name, value):
 @pytest.mark.parametrize("value", [0.0, -0.1, table.HALF_PI, 1.6])
 def test_max_bend_angle_must_lie_strictly_inside_its_interval(value):
     joint = CardanJoint(max_bend_angle=value, bend_angle=0.0)
-    refusal = refused(joint, 1e-3, Reason.BEND_GUARD, "max_bend_angle")
+    refusal = refused(joint, 1e-3, JointReason.BEND_GUARD, "max_bend_angle")
     assert refusal.limit == (0.0 if value <= 0.0 else table.HALF_PI)
 
 
@@ -107,20 +108,20 @@ def test_a_step_ending_beyond_the_speed_range_is_refused():
 
 def test_a_bend_angle_at_the_guard_is_refused_and_its_outputs_marked_invalid():
     joint = CardanJoint(bend_angle=-GUARD)
-    assert refused(joint, 1e-3, Reason.BEND_ANGLE, "bend_angle").limit == GUARD
+    assert refused(joint, 1e-3, JointReason.BEND_ANGLE, "bend_angle").limit == GUARD
     assert joint.invalid_inputs() == {"bend_angle"}
 
 
 @pytest.mark.parametrize("sign", [1.0, -1.0])
 def test_a_bend_angle_beyond_the_guard_is_refused_even_if_it_returns_within_the_step(sign):
     joint = CardanJoint(bend_angle=sign * 1.5, bend_angle_rate=-sign * 20.0)
-    assert refused(joint, 0.01, Reason.BEND_ANGLE, "bend_angle").value == sign * 1.5
+    assert refused(joint, 0.01, JointReason.BEND_ANGLE, "bend_angle").value == sign * 1.5
 
 
 @pytest.mark.parametrize("sign", [1.0, -1.0])
 def test_a_bend_angle_reaching_the_guard_at_the_step_end_is_refused(sign):
     joint = CardanJoint(bend_angle=sign * 1.3, bend_angle_rate=sign * 20.0)
-    refusal = refused(joint, 0.01, Reason.BEND_AT_STEP_END, "bend_angle")
+    refusal = refused(joint, 0.01, JointReason.BEND_AT_STEP_END, "bend_angle")
     assert refusal.value == sign * (1.3 + 0.2) and refusal.details["after"] == 0.01
 
 
@@ -142,13 +143,13 @@ def test_a_bend_angle_peaking_over_the_guard_inside_the_step_is_refused(sign):
         joint.input_problem(PEAK_STEP),  # fast path, then the explanation
         joint._explain_input_problem(PEAK_STEP),
     ):  # the slow path on its own
-        assert problem.code == Reason.BEND_PEAK_IN_STEP
+        assert problem.code == JointReason.BEND_PEAK_IN_STEP
         assert problem.value == pytest.approx(sign * 1.40, abs=1e-15)
         assert problem.details["after"] == pytest.approx(0.02, abs=1e-15)
-    refused(joint, PEAK_STEP, Reason.BEND_PEAK_IN_STEP, "bend_angle")
+    refused(joint, PEAK_STEP, JointReason.BEND_PEAK_IN_STEP, "bend_angle")
     # A shorter step stops before the peak, a longer one is refused at its end.
     assert peaking(sign).step(0.005) is None
-    assert peaking(sign).step(0.05).code == Reason.BEND_PEAK_IN_STEP
+    assert peaking(sign).step(0.05).code == JointReason.BEND_PEAK_IN_STEP
 
 
 def test_a_peak_inside_the_step_below_the_guard_is_accepted():

@@ -3,6 +3,7 @@
 installed (non-editable) package must carry them, not only a checkout."""
 
 import fnmatch
+import functools
 
 import pytest
 from conftest import ROOT
@@ -14,11 +15,18 @@ PACKAGE = MODELS_DIR.parent
 pytestmark = pytest.mark.filterwarnings("ignore:Support for `\\[tool.setuptools\\]`")
 
 
-def _installed(path) -> bool:
+@functools.cache
+def _patterns() -> tuple:
+    """pyproject's package-data patterns, read once (setuptools validates the
+    whole file at each read)."""
     from setuptools.config.pyprojecttoml import read_configuration  # tomllib: 3.11+
 
     config = read_configuration(ROOT / "pyproject.toml")
-    patterns = config["tool"]["setuptools"]["package-data"]["cardan_joint"]
+    return tuple(config["tool"]["setuptools"]["package-data"]["cardan_joint"])
+
+
+def _installed(path) -> bool:
+    patterns = _patterns()
     relative = path.relative_to(PACKAGE).as_posix()
     return path.suffix == ".py" or any(fnmatch.fnmatch(relative, p) for p in patterns)
 

@@ -21,20 +21,11 @@ class Reason(str, Enum):
 
     NOT_FINITE = "not_finite"  # NaN or infinite input or parameter
     OUT_OF_RANGE = "out_of_range"  # outside the variable's physical range
-    BEND_ANGLE = "bend_angle"  # |bend angle| >= max_bend_angle now
-    BEND_AT_STEP_END = "bend_angle_at_step_end"  # ... at the end of the step
-    BEND_PEAK_IN_STEP = "bend_angle_peak_in_step"  # ... at the parabola's vertex inside it
-    BEND_GUARD = "max_bend_angle_invalid"  # max_bend_angle not in (0, pi/2)
     STEP_SIZE = "step_size"  # step size not finite and > 0
     ANGLE_OVERFLOW = "angle_overflow"  # input angle advancing by > 1e15 rad
     SPEED_OVERFLOW = "speed_overflow"  # input speed beyond its range at step end
 
 
-_LIMIT = "max_bend_angle = {limit} rad ({limit:deg} deg)"
-_IN_STEP = (
-    " with bend_angle_rate = {bend_angle_rate} rad/s and bend_angle_acceleration = "
-    "{bend_angle_acceleration} rad/s2: not below the limit " + _LIMIT
-)
 _OVERFLOW = (
     "input_speed = {input_speed} rad/s with input_acceleration = {input_acceleration} "
     "rad/s2 over a step of {step_size} s overflows: "
@@ -44,15 +35,6 @@ _TEMPLATES: dict[Enum, str] = {
     "(limit {limit} {unit})",
     Reason.OUT_OF_RANGE: "{kind} {variable} = {value} {unit} is outside its range "
     "[{low}, {high}] {unit} (limit {limit} {unit})",
-    Reason.BEND_ANGLE: "input bend_angle = {value} rad ({value:deg} deg) is not below the limit "
-    + _LIMIT,
-    Reason.BEND_AT_STEP_END: "input bend_angle reaches {value} rad ({value:deg} deg) at the end "
-    "of the step, {after} s on," + _IN_STEP,
-    Reason.BEND_PEAK_IN_STEP: "input bend_angle peaks at {value} rad ({value:deg} deg) {after} s "
-    "into the step," + _IN_STEP,
-    Reason.BEND_GUARD: "parameter max_bend_angle = {value} rad ({value:deg} deg) must lie "
-    "strictly between 0 and pi/2 (90 deg, where the joint locks; "
-    "limit {limit} rad)",
     Reason.STEP_SIZE: "communication step size = {value} s must be a finite number > {limit} s",
     Reason.ANGLE_OVERFLOW: _OVERFLOW + "the input angle would advance by {value} rad, beyond "
     "the limit {limit} rad per step",
@@ -61,10 +43,6 @@ _TEMPLATES: dict[Enum, str] = {
 }
 # Fixed by the reason, so not written in the message.
 _IMPLIED: dict[Enum, tuple] = {
-    Reason.BEND_ANGLE: ("bend_angle", "rad", "input"),
-    Reason.BEND_AT_STEP_END: ("bend_angle", "rad", "input"),
-    Reason.BEND_PEAK_IN_STEP: ("bend_angle", "rad", "input"),
-    Reason.BEND_GUARD: ("max_bend_angle", "rad", "parameter"),
     Reason.STEP_SIZE: ("step_size", "s", ""),
     Reason.ANGLE_OVERFLOW: ("input_angle", "rad", "output"),
     Reason.SPEED_OVERFLOW: ("input_speed", "rad/s", "input"),

@@ -10,7 +10,7 @@ FMU maps its variables onto this object.
 
 import math
 
-from ...framework.refusal import Reason, Refusal
+from ...framework.refusal import Refusal
 from ...framework.stepped import ShaftModel
 from ...framework.values import MAX_INCREMENT, Table, angle_limit_problem, set_start_values
 
@@ -27,6 +27,7 @@ from .limits import (
     SPEED_LIMIT,
     fits,
 )
+from .refusals import JointReason
 
 # After the two angles, the outputs are the kernel's leading fields, in order
 # (then, with life on, the bearing loads and life: `JointLife._with_life`).
@@ -95,7 +96,7 @@ class CardanJoint(JointLife, ShaftModel):
         if problem:
             return problem
         return angle_limit_problem(
-            Reason.BEND_GUARD, "max_bend_angle", self.max_bend_angle, self.time
+            JointReason.BEND_GUARD, "max_bend_angle", self.max_bend_angle, self.time
         )
 
     # --- stepping ----------------------------------------------------------
@@ -129,7 +130,7 @@ class CardanJoint(JointLife, ShaftModel):
         if abs(worst) >= guard:
             details = (
                 {}
-                if reason is Reason.BEND_ANGLE
+                if reason is JointReason.BEND_ANGLE
                 else {
                     "after": after,
                     "bend_angle_rate": self.bend_angle_rate,
@@ -148,13 +149,14 @@ class CardanJoint(JointLife, ShaftModel):
         return invalid
 
     def _largest_bend(self, step_size):
-        """(Reason, time into the step, bend angle) of the largest |bend angle| over the step."""
+        """(JointReason, time into the step, bend angle) of the largest |bend angle|
+        over the step."""
         beta, rate, acc = self.bend_angle, self.bend_angle_rate, self.bend_angle_acceleration
-        candidates = [(Reason.BEND_ANGLE, 0.0, beta)]
+        candidates = [(JointReason.BEND_ANGLE, 0.0, beta)]
         if step_size > 0.0:
             candidates.append(
                 (
-                    Reason.BEND_AT_STEP_END,
+                    JointReason.BEND_AT_STEP_END,
                     step_size,
                     beta + step_size * (rate + 0.5 * acc * step_size),
                 )
@@ -162,7 +164,11 @@ class CardanJoint(JointLife, ShaftModel):
             if acc != 0.0 and 0.0 < -rate / acc < step_size:
                 vertex = -rate / acc
                 candidates.append(
-                    (Reason.BEND_PEAK_IN_STEP, vertex, beta + vertex * (rate + 0.5 * acc * vertex))
+                    (
+                        JointReason.BEND_PEAK_IN_STEP,
+                        vertex,
+                        beta + vertex * (rate + 0.5 * acc * vertex),
+                    )
                 )
         return max(candidates, key=lambda c: abs(c[2]))
 

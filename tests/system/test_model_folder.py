@@ -4,7 +4,9 @@ FMUs (FMI 2.0 and 3.0) build, validate and simulate, whose reference run the
 suite's own checks regenerate and reproduce through its FMU, and which the docs
 list: `tools/model_pages.py` adds it to the generated index block of README.md,
 and no other file outside the new folder changes (no hand
-edit anywhere). Done in a copy of the project: the tree is left alone.
+edit anywhere). Done in a copy of the project: the tree is left alone. A system
+test (the slow layer): it copies the project, builds its FMUs there and runs part
+of the suite in it.
 
 Known, not this module's: after an FMI 2.0 FMU is simulated in-process, the
 FMU's own `pythonfmu` stays in sys.modules (from its deleted resources folder),
