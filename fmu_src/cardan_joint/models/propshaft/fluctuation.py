@@ -6,7 +6,7 @@ as the output speed and dr/dgamma_0 as the output acceleration, both in closed
 form. Every joint's ratio has period pi in its pin angle, and gamma_k(gamma_0 +
 pi) = gamma_k(gamma_0) + pi, so r has period pi: one half revolution holds
 every extremum. The extrema are the sign changes of dr/dgamma_0, bracketed on a
-fine grid and bisected to 1e-11 rad; r is stationary there, so its error is
+fine grid and bisected to 6e-12 rad; r is stationary there, so its error is
 quadratic in the root's (~1e-22): exact to rounding.
 """
 
