@@ -44,7 +44,10 @@ the log queue after it:
   error: a fault, logged.
 
 Slave. The runtime constructs the slave itself (both FMI versions) and uses
-that object; a slave without these methods keeps plain calls.
+that object; a slave without these methods keeps plain calls. Its `log_queue`
+list is made once (pythonfmu's `__init__`) and only appended to: the loader
+holds that list and drains it whenever it holds a message (a slave that bound
+a new list would have its messages forwarded only at its next plain call).
 
 In C. setReal of inputs only: write known, mark outputs stale. Any other
 setReal: fast_load if needed, forward to Python, fast_store. getReal: if the

@@ -35,23 +35,24 @@ void python_layout(void)
     checked = 1;
     const void *float_type = dlsym(RTLD_DEFAULT, "PyFloat_Type");
     const void *tuple_type = dlsym(RTLD_DEFAULT, "PyTuple_Type");
-    PyObject *x = p_PyFloat_FromDouble(0.3125), *t = x ? p_PyTuple_New(1) : NULL;
+    PyObject *x = float_type && tuple_type ? p_PyFloat_FromDouble(0.3125) : NULL;
+    PyObject *t = x ? p_PyTuple_New(1) : NULL;
     int holds = 0;
     if (t) {
         p_Py_IncRef(x); /* the tuple takes a reference */
-        const struct py_head *fh = (const void *)x, *th = (const void *)t;
-        /* Compared before the types are set: the readers still call the API. */
-        holds = float_type && tuple_type && !p_PyTuple_SetItem(t, 0, x) &&
-                fh->type == float_type && th->type == tuple_type;
-        py_float_type = float_type, py_tuple_type = tuple_type;
-        holds = holds && py_float_value(x) == 0.3125 && py_tuple_size(t) == 1 &&
-                py_tuple_item(t, 0) == x;
+        const struct py_float_layout *fl = (const void *)x;
+        const struct py_tuple_layout *tl = (const void *)t;
+        /* The type first: only a matching one says the fields after it are there. */
+        holds = !p_PyTuple_SetItem(t, 0, x) && fl->head.type == float_type &&
+                tl->head.type == tuple_type && fl->value == 0.3125 && tl->size == 1 &&
+                tl->items[0] == x;
         p_Py_DecRef(t);
     }
     if (x)
         p_Py_DecRef(x);
-    if (!holds)
-        py_float_type = py_tuple_type = NULL;
+    /* Published only once found: until then every reader calls the API. */
+    if (holds)
+        py_float_type = float_type, py_tuple_type = tuple_type;
     p_PyErr_Clear();
 }
 

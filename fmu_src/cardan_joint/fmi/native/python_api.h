@@ -72,6 +72,15 @@ struct py_head {
     Py_ssize_t refcount;
     const void *type;
 };
+struct py_float_layout {
+    struct py_head head;
+    double value;
+};
+struct py_tuple_layout {
+    struct py_head head;
+    Py_ssize_t size;
+    PyObject *items[]; /* `size` of them */
+};
 extern const void *py_float_type, *py_tuple_type;
 
 /* With the GIL: find whether floats and tuples are laid out as above. */
@@ -80,19 +89,18 @@ void python_layout(void);
 /* A tuple's size, or -1 (an error set) if `o` is no tuple. */
 static inline Py_ssize_t py_tuple_size(PyObject *o)
 {
-    const struct py_head *head = (const void *)o;
-    if (head->type == py_tuple_type && py_tuple_type)
-        return ((const struct { struct py_head head; Py_ssize_t size; } *)o)->size;
+    const struct py_tuple_layout *tuple = (const void *)o;
+    if (tuple->head.type == py_tuple_type && py_tuple_type)
+        return tuple->size;
     return p_PyTuple_Size(o);
 }
 
 /* The items of an exact tuple in place, or NULL (then PyTuple_GetItem). */
 static inline PyObject *const *py_tuple_items(PyObject *o)
 {
-    const struct py_head *head = (const void *)o;
-    if (head->type == py_tuple_type && py_tuple_type)
-        return (PyObject *const *)((const char *)o + sizeof(struct py_head) +
-                                   sizeof(Py_ssize_t));
+    const struct py_tuple_layout *tuple = (const void *)o;
+    if (tuple->head.type == py_tuple_type && py_tuple_type)
+        return tuple->items;
     return NULL;
 }
 
@@ -106,9 +114,9 @@ static inline PyObject *py_tuple_item(PyObject *o, Py_ssize_t i)
 /* As PyFloat_AsDouble (-1.0 with an error set when `o` converts to no float). */
 static inline double py_float_value(PyObject *o)
 {
-    const struct py_head *head = (const void *)o;
-    if (head->type == py_float_type && py_float_type)
-        return ((const struct { struct py_head head; double value; } *)o)->value;
+    const struct py_float_layout *x = (const void *)o;
+    if (x->head.type == py_float_type && py_float_type)
+        return x->value;
     return p_PyFloat_AsDouble(o);
 }
 
