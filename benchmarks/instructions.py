@@ -110,9 +110,12 @@ def count_minor(minor, host, joint, floor, lengths, life=None) -> dict | None:
     python, library = venv(prefix), prefix / "lib" / f"libpython3.{minor}.so.1.0"
     # One BLAS thread: numpy's OpenBLAS workers spin after a call, and their
     # instructions (10 k a step in some runs, none in others) are not the loop's.
+    # One hash seed in every counted process: str hashes set dict probe chains,
+    # and a random seed moved a C host's count by up to 1 k a step between runs.
+    seeded = {"PYTHONHASHSEED": "0"}
     path = {
+        **seeded,
         "PYTHONPATH": f"{ROOT}:{ROOT / 'fmu_src'}",
-        "PYTHONHASHSEED": "0",
         "OPENBLAS_NUM_THREADS": "1",
         "OMP_NUM_THREADS": "1",
     }
@@ -120,10 +123,8 @@ def count_minor(minor, host, joint, floor, lengths, life=None) -> dict | None:
     def in_host(fmu):
         return lambda steps: [host, "bench", fmu, steps]
 
-    # One hash seed in every counted process: str hashes set dict probe chains,
-    # and a random seed moved a C host's count by up to 1 k a step between runs.
-    joint_host = {"CARDAN_JOINT_FMU_PYTHON_LIBRARY": str(library), "PYTHONHASHSEED": "0"}
-    floor_host = {"LD_PRELOAD": str(library), "PYTHONHOME": str(prefix), "PYTHONHASHSEED": "0"}
+    joint_host = {**seeded, "CARDAN_JOINT_FMU_PYTHON_LIBRARY": str(library)}
+    floor_host = {**seeded, "LD_PRELOAD": str(library), "PYTHONHOME": str(prefix)}
     counts = {
         "c_host joint": per_step(in_host(joint), joint_host, lengths),
         "c_host floor": per_step(in_host(floor), floor_host, lengths),

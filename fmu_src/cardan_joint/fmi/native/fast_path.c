@@ -198,12 +198,8 @@ long fast_call(struct instance *in, enum fast_method method, double time, double
     if (method == FAST_STEP) {
         t = p_PyFloat_FromDouble(time);
         h = float_like(fast->last_step, step);
-        if (h) {
-            p_Py_IncRef(h);
-            if (fast->last_step)
-                p_Py_DecRef(fast->last_step);
-            fast->last_step = h;
-        }
+        if (h)
+            keep(&fast->last_step, h);
     }
     long status;
     if (method == FAST_STORE)

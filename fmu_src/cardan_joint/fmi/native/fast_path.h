@@ -33,6 +33,9 @@ long fast_call(struct instance *in, enum fast_method method, double time, double
 /* With the GIL: a float of `value`, `last` itself (a reference added) when it
  * holds the same bits; NULL: no memory. */
 PyObject *float_like(PyObject *last, double value);
+/* With the GIL: *slot holds `value` (a reference of its own) for the next call,
+ * the object it held before released. */
+void keep(PyObject **slot, PyObject *value);
 /* With the GIL: the inputs (known[0..inputs)) as a tuple, kept as last_inputs. */
 PyObject *inputs_tuple(struct fast_path *fast);
 /* With the GIL: the status of a method's reply, its values written into the

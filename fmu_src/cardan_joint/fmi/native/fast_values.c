@@ -47,13 +47,17 @@ PyObject *inputs_tuple(struct fast_path *fast)
             tuple = NULL;
         }
     }
-    if (tuple) {
-        p_Py_IncRef(tuple);
-        if (last)
-            p_Py_DecRef(last);
-        fast->last_inputs = tuple;
-    }
+    if (tuple)
+        keep(&fast->last_inputs, tuple);
     return tuple;
+}
+
+void keep(PyObject **slot, PyObject *value)
+{
+    p_Py_IncRef(value);
+    if (*slot)
+        p_Py_DecRef(*slot);
+    *slot = value;
 }
 
 /* Where each method's values go: `first` doubles into the outputs array, then
