@@ -12,9 +12,13 @@ from conftest import ROOT
 
 # Commands (by a part of their text) not run here, and why; the set-up steps
 # (`python3 -m venv`, `pip install`) are left out of every command, this venv
-# standing for the one they make (.ci/run makes it on a clean clone).
+# standing for the one they make (.ci/run makes it on a clean clone; the
+# README's line that installs the system packages is not a venv command).
 NOT_RUN = {
     ".venv/bin/python -m pytest": "the test suite itself",
+    ".venv/bin/python -m mypy": "the checks .ci/run runs after the tests",
+    "tests/system/debian_root.py": "about 20 min the first time (the CPython build): "
+    "test_older_linux.py lays out the same root (debian_root.prepare)",
     ".venv/bin/python -m benchmarks": "tens of minutes (benchmarks/results.md says how long)",
     "tools/gallery.py": "about 70 s per example set",
     'tools/mutation.py --only "bend"': "minutes: rebuilds and tests per mutant",

@@ -1,6 +1,8 @@
 """The README and the docs stay true: commands, size, model pages, tables, links."""
 
 import re
+import shutil
+import subprocess
 from pathlib import Path
 
 import pytest
@@ -13,16 +15,56 @@ DOCS = ROOT / "docs"
 TEST_COMMAND = (
     'python3 -m venv .venv && .venv/bin/pip install -e ".[test]" && .venv/bin/python -m pytest'
 )
+CI = ROOT / ".ci" / "run"
+
+
+def ci_block(readme: str) -> list:
+    """The README's commands between its ci marks: indented code lines, in order."""
+    block = readme.partition("<!-- ci:begin -->\n")[2].partition("<!-- ci:end -->")[0]
+    return [line[4:] for line in block.splitlines() if line.startswith("    ")]
+
+
+def ci_lists(top: Path) -> list:
+    """The commands `.ci/run` in `top` would run, as it lists them."""
+    run = subprocess.run(
+        ["bash", str(top / ".ci" / "run"), "--list"], capture_output=True, text=True, check=True
+    )
+    return run.stdout.splitlines()
 
 
 def test_the_readme_is_read_in_five_minutes():
     assert len(README.splitlines()) <= 250
 
 
-def test_ci_runs_the_readmes_test_command():
-    assert f"    {TEST_COMMAND}\n" in README
-    ci = (ROOT / ".ci" / "run").read_text()
-    assert f"\n{TEST_COMMAND}\n" in ci
+def test_the_readmes_test_set_up_names_the_system_packages_and_runs_the_tests():
+    commands = ci_block(README)
+    assert any(TEST_COMMAND in command for command in commands)
+    set_up = next(command for command in commands if TEST_COMMAND in command)
+    assert set_up.startswith("apt-get update && apt-get install -y ")
+    assert "debootstrap" in set_up.split(" && ")[1].split()  # the Debian 11 root's
+
+
+def test_ci_runs_exactly_the_readmes_commands():
+    assert ci_lists(ROOT) == ci_block(README)
+    # ... and calls no program of its own: every tool is in the README's lines.
+    code = [line for line in CI.read_text().splitlines() if not line.lstrip().startswith("#")]
+    for tool in ("apt-get", "pip", "pytest", "python", "ruff", "mypy"):
+        assert not any(re.search(rf"\b{tool}\b", line) for line in code), f".ci/run calls {tool}"
+
+
+def test_a_package_added_to_the_readme_is_one_ci_installs(tmp_path):
+    (tmp_path / ".ci").mkdir()
+    shutil.copy(CI, tmp_path / ".ci" / "run")
+    (tmp_path / "README.md").write_text(README.replace("debootstrap &&", "debootstrap gdb &&"))
+    assert ci_lists(tmp_path)[0] == ci_block(README)[0].replace("debootstrap", "debootstrap gdb")
+
+
+def test_ci_without_the_readmes_marks_fails(tmp_path):
+    (tmp_path / ".ci").mkdir()
+    shutil.copy(CI, tmp_path / ".ci" / "run")
+    (tmp_path / "README.md").write_text(README.replace("<!-- ci:begin -->", ""))
+    with pytest.raises(subprocess.CalledProcessError):
+        ci_lists(tmp_path)
 
 
 @pytest.mark.parametrize("model", sorted(discover()))
