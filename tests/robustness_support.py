@@ -1,7 +1,8 @@
 """Inputs and readers shared by the test_robustness*.py modules."""
 
-DISCARD = 2  # the status a refusal message is logged with
-REFUSED = 3  # what a refused step returns (fmi2Error/fmi3Error: docs/fmi-tools.md)
+# What a refused step returns, and the status its message is logged with
+# (fmi2Error/fmi3Error: docs/fmi-tools.md).
+REFUSED = 3
 GOOD = dict(
     input_speed=12.0,
     input_acceleration=3.0,

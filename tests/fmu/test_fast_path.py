@@ -194,7 +194,7 @@ def test_plain_calls_when_the_slave_has_no_fast_step_give_the_same_bits(extracte
     assert fast_run == plain_run
     assert fast_messages == plain_messages
     assert any(status == 1 and "held" in text for status, _, text in fast_messages)
-    assert any(status == 2 for status, _, _ in fast_messages)  # the refused step
+    assert any(status == 3 for status, _, _ in fast_messages)  # the refused step
 
 
 def test_each_input_write_reaches_the_slave_to_the_bit_and_unchanged_inputs_cross_again(

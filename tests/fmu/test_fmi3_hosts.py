@@ -81,7 +81,7 @@ def test_a_host_without_a_logger_gets_the_message_on_stderr(fmi3_path, tmp_path)
     run = subprocess.run([sys.executable, "-c", script], capture_output=True, text=True, timeout=60)
     assert run.returncode == 0, run.stderr
     assert "refused 3" in run.stdout  # a refused step: fmi3Error
-    assert "Discard: t = 0.0 s: input bend_angle = 1.5 rad" in run.stderr
+    assert "Error: t = 0.0 s: input bend_angle = 1.5 rad" in run.stderr
 
 
 def test_the_cli_writes_the_same_columns_for_either_fmu(fmu_path, fmi3_path, tmp_path):

@@ -36,7 +36,7 @@ def test_a_bad_input_is_refused_with_its_message_and_nothing_is_lost(joint3):
     joint3.set(bend_angle=1.3, bend_angle_rate=4.0, bend_angle_acceleration=-80.0)
     assert joint3.try_step(0.1) == 3  # a refused step: fmi3Error
     status, category, message = joint3.messages[-1]
-    assert (status, category) == (2, "logStatusDiscard")
+    assert (status, category) == (3, "logStatusError")  # logged at the status returned
     for words in (
         "bend_angle",
         "max_bend_angle",

@@ -111,6 +111,8 @@ def test_a_refused_step_fails_an_fmusim_style_loop_and_a_corrected_input_goes_on
     # The failure names variable, value, limit and time.
     assert "t = 0.05 s: input bend_angle = 2.0 rad" in run.stdout
     assert "max_bend_angle" in run.stdout
+    # Logged at the status returned: `fmusim --log-level error` shows it.
+    assert "LOG 3 logStatusError: t = 0.05 s: input bend_angle = 2.0 rad" in run.stderr
     assert "continued: identical" in run.stdout
 
 

@@ -80,7 +80,7 @@ def test_eight_threads_give_the_serial_results_and_messages(model_description, u
         (trace, messages), (serial_trace, serial_messages) = threaded[k], serial[k]
         assert trace == serial_trace, k  # bit for bit, every step
         assert messages == serial_messages, k
-        refusals = [Refusal.from_message(text) for status, _, text in messages if status == 2]
+        refusals = [Refusal.from_message(text) for status, _, text in messages if status == 3]
         if k % 2:
             assert len(refusals) == STEPS // 50
             # Each refusal names this instance's own bad value: no message crossed over.

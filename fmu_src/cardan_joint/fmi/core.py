@@ -111,8 +111,8 @@ class SlaveCore(FastStep):
             self._fault("exit_initialization_mode", error)
 
     def _step(self, current_time, step_size):
-        """Take the step; return the status: ok, discard (refused, the model as it
-        was), or error (an internal fault, reported)."""
+        """Take the step; return the status: ok, or error (refused, the model as
+        it was, or an internal fault; reported either way)."""
         try:
             model = self._model
             time = model.time
@@ -129,13 +129,15 @@ class SlaveCore(FastStep):
             return self._STATUS.error
 
     def _refused(self, problem, current_time, step_size):
-        """Report a refused step (the model as it was); the status to return."""
+        """Report a refused step (the model as it was); the status to return.
+        Error, not Discard (docs/fmi-tools.md, "Refused steps"), and logged at
+        the status returned: a host that shows errors only shows why."""
         self._report(
             f"{problem.message}; step of {_readable(step_size)} s refused, the "
             f"{self.owner} stays at t = {_readable(current_time)} s",
-            self._STATUS.discard,
+            self._STATUS.error,
         )
-        return self._STATUS.discard
+        return self._STATUS.error
 
     # --- values --------------------------------------------------------------
 

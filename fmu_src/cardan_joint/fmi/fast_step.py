@@ -33,9 +33,9 @@ the log queue after it:
 - fast_step(t, h, inputs) -> (ok, outputs, inputs) | status: takes the
   inputs, steps; when taken, every output and then the inputs the step moved
   (speed, bend angle and rate advance over a step: a later getReal of them, or
-  the next step, reads the moved value). On discard (refused: the slave keeps
-  its state and has logged variable, value, limit and time) or error: a bare
-  status, nothing to write.
+  the next step, reads the moved value). On error (refused: the slave keeps
+  its state and has logged variable, value, limit and time; or a fault): a
+  bare status, nothing to write.
 - fast_outputs(inputs) -> (ok | warning, outputs) | error: takes the inputs
   and gives every output without stepping. ok: the outputs are current until
   the next input write or call into the slave; warning: they are held at the

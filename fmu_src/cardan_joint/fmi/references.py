@@ -9,8 +9,9 @@ from operator import attrgetter
 def log_categories(api: str) -> dict:
     return {
         "logStatusWarning": "Warnings: outputs held at the last valid inputs.",
-        "logStatusDiscard": "Refused steps: the variable, its value, the limit and the time.",
-        "logStatusError": "Errors: invalid parameters, calls FMI does not allow, internal faults.",
+        "logStatusDiscard": f"Not used: a refused step ends in {api}Error (logStatusError).",
+        "logStatusError": "Errors: refused steps (the variable, its value, the limit and the "
+        "time), invalid parameters, calls FMI does not allow, internal faults.",
         "logStatusFatal": f"Not used: the FMU never ends in {api}Fatal on its own.",
         "logAll": "All messages.",
     }
