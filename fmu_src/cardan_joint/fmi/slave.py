@@ -5,8 +5,9 @@ both FMI versions): value references are the core's flat indices. What lives
 here is FMI 2 plumbing that pythonfmu 0.7.0 gets wrong for a robust
 component: any Python exception reaching its C layer becomes fmi2Fatal, so
 every method it calls catches everything; a refused step returns False
-(the runtime answers fmi2Error, the status its message is logged with); the typed accessors of other types refuse politely; and every
-problem is logged (the FMU's native loader makes sure it reaches the host, see
+(the runtime answers fmi2Error, the status its message is logged with); the
+typed accessors of other types refuse politely; and every problem is logged
+(the FMU's native loader makes sure it reaches the host, see
 `cardan_joint.fmi.native`).
 """
 
