@@ -99,10 +99,14 @@ def test_each_refusal_reads_back_exactly_from_its_message(reason, time):
         assert back.details == refusal.details or math.isnan(refusal.value)
 
 
-def test_a_model_declares_its_own_reasons():
+def test_a_model_declares_its_own_reasons(monkeypatch):
     from enum import Enum
 
+    from cardan_joint.framework import refusal as registry
     from cardan_joint.framework.refusal import register_reasons
+
+    for name in ("_REASONS", "_TEMPLATES", "_PATTERNS", "_IMPLIED"):
+        monkeypatch.setattr(registry, name, dict(getattr(registry, name)))
 
     class Untemplated(str, Enum):
         JAM = "jam"
@@ -110,11 +114,38 @@ def test_a_model_declares_its_own_reasons():
     with pytest.raises(ValueError, match="Untemplated.JAM has no message template"):
         register_reasons(Untemplated, {})
 
-    class Clashing(str, Enum):
-        ROTOR = "rotor_speed"
+    class Shared(str, Enum):
+        RANGE = "out_of_range"
 
-    with pytest.raises(ValueError, match="'rotor_speed' is already declared"):
-        register_reasons(Clashing, {Clashing.ROTOR: "x {value} {limit}"})
+    with pytest.raises(ValueError, match="'out_of_range' is already declared by the shared"):
+        register_reasons(Shared, {Shared.RANGE: "x {value} {limit}"})
+    # A model's codes are its own: a second enumeration of the motor's folder may
+    # not declare its code again ...
+    again = Enum("Again", {"ROTOR": "rotor_speed"}, type=str, module=MotorReason.__module__)
+    with pytest.raises(ValueError, match="'rotor_speed' is already declared by .*models.motor"):
+        register_reasons(again, {again.ROTOR: "x {value} {limit}"})
+    # ... another folder may (a copied model), with its own template.
+    copied = Enum(
+        "CopiedReason",
+        {"ROTOR_SPEED": "rotor_speed"},
+        type=str,
+        module="cardan_joint.models.copied_motor.refusals",
+    )
+    register_reasons(copied, {copied.ROTOR_SPEED: "the copy's rotor: {value} rad/s > {limit}"})
+    refusal = Refusal(copied.ROTOR_SPEED, "speed", 2.0, 1.0, 0.5, "rad/s")
+    assert refusal.message == "t = 0.5 s: the copy's rotor: 2.0 rad/s > 1.0"
+    assert Refusal.from_message(refusal.message).code is copied.ROTOR_SPEED
+    motor = Refusal(
+        MotorReason.ROTOR_SPEED,
+        "speed",
+        2.0,
+        1.0,
+        0.5,
+        "rad/s",
+        {"load_torque": 3.0, "step_size": 0.1},
+    )
+    assert "drives the rotor speed" in motor.message
+    assert Refusal.from_message(motor.message).code is MotorReason.ROTOR_SPEED
     # The motor's reason lives in its folder, not in the shared enumeration.
     assert MotorReason.ROTOR_SPEED in reasons() and "ROTOR_SPEED" not in Reason.__members__
 

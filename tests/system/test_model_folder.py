@@ -1,6 +1,8 @@
-"""A model is one folder (issues 19, 25): copying one model's folder under a new
-name and renaming the model inside that folder only gives a new model whose
-FMUs (FMI 2.0 and 3.0) build, validate and simulate, whose reference run the
+"""A model is one folder (issues 19, 25, 35): copying one model's folder under a
+new name and renaming the model inside that folder only gives a new model whose
+FMUs (FMI 2.0 and 3.0) build, validate and simulate, whose own reasons to refuse
+a step are its own (the InertiaLoad's `load_speed`, declared again by the copy
+without a clash, issue 35), whose reference run the
 suite's own checks regenerate and reproduce through its FMU, and which the docs
 list: `tools/model_pages.py` adds it to the generated index block of README.md,
 and no other file outside the new folder changes (no hand
@@ -32,6 +34,9 @@ LEFT_OUT = (".git", ".venv", "dist", "out", "results", ".pytest_cache", ".hypoth
 IGNORED = shutil.ignore_patterns(
     *LEFT_OUT, ".ruff_cache", ".mypy_cache", "*.egg-info", "__pycache__"
 )
+# The model copied (one with reasons of its own) and its new name.
+OLD_KEY, OLD_FOLDER = "InertiaLoad", "inertia_load"
+NEW_KEY, NEW_FOLDER = "FlywheelLoad", "flywheel_load"
 # The generated index blocks: the only text outside the new folder that changes.
 INDEXES = (Path("README.md"),)
 MODEL_INDEX = re.compile(r"<!-- models:begin -->\n.*?<!-- models:end -->", re.DOTALL)
@@ -42,7 +47,7 @@ def _files(tree: Path):
     for folder, subfolders, files in os.walk(tree):
         here = Path(folder)
         left_out = set(IGNORED(folder, subfolders + files))
-        subfolders[:] = [d for d in subfolders if d not in left_out and d != "brake"]
+        subfolders[:] = [d for d in subfolders if d not in left_out and d != NEW_FOLDER]
         yield from (here / name for name in sorted(files) if name not in left_out)
 
 
@@ -67,64 +72,85 @@ def _run(copy: Path, *args: str, timeout: float = 600) -> subprocess.CompletedPr
     )
 
 
-def _copy_load_as_brake(copy: Path) -> None:
-    """models/brake/: models/load/ with the model renamed `Load` -> `Brake` in its
+def _copy_the_model(copy: Path) -> None:
+    """models/flywheel_load/: models/inertia_load/ with the model renamed
+    (`InertiaLoad` -> `FlywheelLoad`, `inertia_load` -> `flywheel_load`) in its
     files and their names, nothing else touched."""
     models = copy / PACKAGE / "models"
-    shutil.copytree(models / "load", models / "brake", ignore=IGNORED)
-    for path in sorted((models / "brake").iterdir()):
-        text = path.read_text()
-        for old, new in (("models.load", "models.brake"), ("models/load", "models/brake")):
-            text = text.replace(old, new)
-        path.write_text(text.replace("Load", "Brake"))
-        if "Load" in path.name:
-            path.rename(path.with_name(path.name.replace("Load", "Brake")))
+    shutil.copytree(models / OLD_FOLDER, models / NEW_FOLDER, ignore=IGNORED)
+    for path in sorted((models / NEW_FOLDER).iterdir()):
+        text = path.read_text().replace(OLD_KEY, NEW_KEY).replace(OLD_FOLDER, NEW_FOLDER)
+        path.write_text(text)
+        if OLD_KEY in path.name:
+            path.rename(path.with_name(path.name.replace(OLD_KEY, NEW_KEY)))
 
 
 @pytest.fixture(scope="module")
-def brake_project(tmp_path_factory):
-    """A copy of the project with models/brake/, its FMUs built (FMI 2.0 and 3.0)
-    and the docs' generated blocks rewritten by their generator."""
-    copy = tmp_path_factory.mktemp("brake_project") / "project"
+def copied_project(tmp_path_factory):
+    """A copy of the project with models/flywheel_load/, its FMUs built (FMI 2.0
+    and 3.0) and the docs' generated blocks rewritten by their generator."""
+    copy = tmp_path_factory.mktemp("flywheel_project") / "project"
     shutil.copytree(ROOT, copy, ignore=IGNORED)
-    _copy_load_as_brake(copy)
+    _copy_the_model(copy)
     for version in ("2", "3"):
-        run = _run(copy, "build_fmu.py", "--model", "Brake", "--fmi-version", version)
+        run = _run(copy, "build_fmu.py", "--model", NEW_KEY, "--fmi-version", version)
         assert run.returncode == 0, run.stdout + run.stderr
     run = _run(copy, "tools/model_pages.py")
     assert run.returncode == 0, run.stdout + run.stderr
     return copy
 
 
-@pytest.mark.parametrize("fmu", ["Brake.fmu", "fmi3/Brake.fmu"])
-def test_the_copied_folder_builds_valid_fmus(brake_project, fmu):
+FMUS = [f"{NEW_KEY}.fmu", f"fmi3/{NEW_KEY}.fmu"]
+
+
+@pytest.mark.parametrize("fmu", FMUS)
+def test_the_copied_folder_builds_valid_fmus(copied_project, fmu):
     from fmpy.validation import validate_fmu
 
-    path = brake_project / "dist" / fmu
+    path = copied_project / "dist" / fmu
     assert path.is_file()
     assert validate_fmu(str(path)) == []
     with zipfile.ZipFile(path) as archive:
-        shipped = [n for n in archive.namelist() if n.endswith("/models/brake/model.py")]
-        assert len(shipped) == 1 and "class Brake(" in archive.read(shipped[0]).decode()
-        assert 'modelName="Brake"' in archive.read("modelDescription.xml").decode()
+        shipped = [n for n in archive.namelist() if n.endswith(f"/models/{NEW_FOLDER}/model.py")]
+        assert len(shipped) == 1 and f"class {NEW_KEY}(" in archive.read(shipped[0]).decode()
+        assert f'modelName="{NEW_KEY}"' in archive.read("modelDescription.xml").decode()
 
 
-@pytest.mark.parametrize("fmu", ["Brake.fmu", "fmi3/Brake.fmu"])
-def test_the_new_fmu_simulates_its_own_model(brake_project, fmu):
+@pytest.mark.parametrize("fmu", FMUS)
+def test_the_new_fmu_simulates_its_own_model(copied_project, fmu):
     from cardan_joint.simulate import simulate
 
-    start = {"inertia": 0.3, "drag": 0.2, "constant_torque": 5.0}
-    inputs = {"speed": 10.0, "acceleration": 2.0}
+    start = {"inertia": 0.5, "drag": 0.0, "constant_torque": 5.0}
     result = simulate(
-        brake_project / "dist" / fmu,
+        copied_project / "dist" / fmu,
         stop_time=0.01,
         output_interval=1e-3,
-        inputs=inputs,
+        inputs={"drive_torque": 10.0},
         start_values=start,
     )
-    expected = 0.3 * 2.0 + 0.2 * 10.0 + 5.0  # J a + c omega + T0, the Load's law
-    assert result["torque"][-1] == pytest.approx(expected, rel=1e-12)
-    assert result.dtype.names == ("time", "torque")
+    # Without drag: (T - T0) / J = 10 rad/s2 from rest, the InertiaLoad's law.
+    assert result["acceleration"][-1] == pytest.approx(10.0, rel=1e-12)
+    assert result["speed"][-1] == pytest.approx(0.1, rel=1e-12)
+    assert result["angle"][-1] == pytest.approx(0.5 * 10.0 * 0.01**2, rel=1e-12)
+
+
+@pytest.mark.parametrize("fmu", FMUS)
+def test_the_new_fmu_refuses_with_its_own_reason(copied_project, fmu):
+    """The copy declares the InertiaLoad's reason code again (no clash at build
+    or import, both models imported), and its FMU refuses a step with it."""
+    script = (
+        "from cardan_joint.models import discover\n"
+        "from cardan_joint.host.simulate import RefusalError, simulate\n"
+        f"assert {{'{OLD_KEY}', '{NEW_KEY}'}} <= set(discover())\n"
+        "try:\n"
+        f"    simulate('dist/{fmu}', stop_time=0.01, output_interval=1e-3,\n"
+        "             inputs={'drive_torque': 1e9}, start_values={'inertia': 1e-9})\n"
+        "except RefusalError as error:\n"
+        "    print('refused', error.code.value, error.variable, error.time)\n"
+    )
+    run = _run(copied_project, "-c", script)
+    assert run.returncode == 0, run.stdout + run.stderr
+    assert "refused load_speed speed 0.0" in run.stdout, run.stdout
 
 
 def _suite_module(copy: Path, name: str) -> str:
@@ -132,51 +158,52 @@ def _suite_module(copy: Path, name: str) -> str:
     return str(found.relative_to(copy))
 
 
-def test_the_suites_own_checks_take_the_new_model(brake_project):
-    """The reference run regenerated byte for byte and reproduced by the Brake
-    FMU, its page present, the docs' blocks current, no generic layer naming it:
-    the suite's checks, run in the copy, find the new model by discovery."""
+def test_the_suites_own_checks_take_the_new_model(copied_project):
+    """The reference run regenerated byte for byte and reproduced by the new
+    FMU, its page present, the docs' blocks current, no generic layer naming it,
+    every reason rendered and read back: the suite's checks, run in the copy,
+    find the new model by discovery."""
     modules = (
         "test_model_references.py",
         "test_readme.py",
         "test_model_pages.py",
         "test_generic_layers.py",
         "test_model_package_data.py",
+        "test_refusal.py",
     )
-    paths = [_suite_module(brake_project, m) for m in modules]
+    paths = [_suite_module(copied_project, m) for m in modules]
     # The other models' reference runs are the suite's to check, not this copy's.
-    only = "Brake or not test_reference_files_are_current"
+    only = f"{NEW_KEY} or not test_reference_files_are_current"
     run = _run(
-        brake_project, "-m", "pytest", "-p", "no:cacheprovider", "-q", "-rA", "-k", only, *paths
+        copied_project, "-m", "pytest", "-p", "no:cacheprovider", "-q", "-rA", "-k", only, *paths
     )
     assert run.returncode == 0, run.stdout[-4000:] + run.stderr[-2000:]
     passed = set(re.findall(r"^PASSED (\S+)", run.stdout, re.MULTILINE))
     for test in (
-        "test_reference_files_are_current_and_the_fmu_reproduces_them[Brake]",
-        "test_every_model_the_build_offers_has_its_page[Brake]",
+        f"test_reference_files_are_current_and_the_fmu_reproduces_them[{NEW_KEY}]",
+        f"test_every_model_the_build_offers_has_its_page[{NEW_KEY}]",
         "test_every_generated_block_is_current",
         "test_the_index_links_every_model_discovery_finds",
+        "test_a_model_declares_its_own_reasons",
     ):
         assert any(node.split("::")[-1].startswith(test) for node in passed), test
 
 
-def test_the_docs_index_lists_the_new_model(brake_project):
+def test_the_docs_index_lists_the_new_model(copied_project):
+    page = rf"[./]*fmu_src/cardan_joint/models/{NEW_FOLDER}/README\.md"
     for index in INDEXES:
-        text = (brake_project / index).read_text()
-        assert re.search(
-            r"\| \[Brake\]\([./]*fmu_src/cardan_joint/models/brake/README\.md\) \|", text
-        )
-        assert (
-            "# Brake:" in (brake_project / PACKAGE / "models" / "brake" / "README.md").read_text()
-        )
+        text = (copied_project / index).read_text()
+        assert re.search(rf"\| \[{NEW_KEY}\]\({page}\) \|", text)
+    readme = (copied_project / PACKAGE / "models" / NEW_FOLDER / "README.md").read_text()
+    assert f"# {NEW_KEY}:" in readme
 
 
-def test_no_file_but_the_new_folder_and_the_generated_index_differs(brake_project):
-    assert _digests(brake_project) == _digests(ROOT)
-    assert not (ROOT / PACKAGE / "models" / "brake").exists()
-    brake = brake_project / PACKAGE / "models" / "brake"
-    assert {p.name for p in brake.iterdir() if p.is_file()} == {
-        p.name.replace("Load", "Brake")
-        for p in (ROOT / PACKAGE / "models" / "load").iterdir()
+def test_no_file_but_the_new_folder_and_the_generated_index_differs(copied_project):
+    assert _digests(copied_project) == _digests(ROOT)
+    assert not (ROOT / PACKAGE / "models" / NEW_FOLDER).exists()
+    new = copied_project / PACKAGE / "models" / NEW_FOLDER
+    assert {p.name for p in new.iterdir() if p.is_file()} == {
+        p.name.replace(OLD_KEY, NEW_KEY)
+        for p in (ROOT / PACKAGE / "models" / OLD_FOLDER).iterdir()
         if p.is_file()
     }

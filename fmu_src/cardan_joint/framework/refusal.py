@@ -6,6 +6,12 @@ separately shipped copy of this package, so the fields cross the FMU boundary
 only as that sentence in the log: each reason has ONE template that both
 renders the sentence and parses it back (`Refusal.from_message`), floats
 written by `repr` so that they come back bit for bit.
+
+A model's own reasons are its own: each is known by its model's folder (the
+package of the enumeration that declares it) and its code, so a copied model
+folder declares the same codes again without a clash. Messages carry no code:
+a copy's message reads back as the reason of whichever folder registered that
+template first, equal to it by code.
 """
 
 import re
@@ -30,7 +36,7 @@ _OVERFLOW = (
     "input_speed = {input_speed} rad/s with input_acceleration = {input_acceleration} "
     "rad/s2 over a step of {step_size} s overflows: "
 )
-_TEMPLATES: dict[Enum, str] = {
+_SHARED_TEMPLATES: dict[Enum, str] = {
     Reason.NOT_FINITE: "{kind} {variable} = {value} {unit} is not a finite number "
     "(limit {limit} {unit})",
     Reason.OUT_OF_RANGE: "{kind} {variable} = {value} {unit} is outside its range "
@@ -42,11 +48,24 @@ _TEMPLATES: dict[Enum, str] = {
     "beyond the limit {limit} rad/s",
 }
 # Fixed by the reason, so not written in the message.
-_IMPLIED: dict[Enum, tuple] = {
+_SHARED_IMPLIED: dict[Enum, tuple] = {
     Reason.STEP_SIZE: ("step_size", "s", ""),
     Reason.ANGLE_OVERFLOW: ("input_angle", "rad", "output"),
     Reason.SPEED_OVERFLOW: ("input_speed", "rad/s", "input"),
 }
+
+
+def _identity(reason: Enum) -> tuple:
+    """(the package that declares the reason, its code): a model folder's codes
+    are its own (str Enum members of equal codes are equal dict keys)."""
+    return type(reason).__module__.rpartition(".")[0], reason.value
+
+
+# Every declared reason by identity: the shared ones, then the models' own.
+_REASONS = {_identity(reason): reason for reason in Reason}
+_TEMPLATES = {_identity(reason): template for reason, template in _SHARED_TEMPLATES.items()}
+_IMPLIED = {_identity(reason): fixed for reason, fixed in _SHARED_IMPLIED.items()}
+_SHARED_CODES = frozenset(reason.value for reason in Reason)
 _PREFIX = "t = {time} s: "
 _FLOAT = r"-?(?:inf|nan|[0-9][0-9.e+-]*)"
 _PLACEHOLDER = re.compile(r"\{(\w+)(?::deg)?\}")
@@ -71,7 +90,7 @@ def _pattern(template):
     return re.compile("".join(parts))
 
 
-_PATTERNS = {reason: _pattern(_PREFIX + template) for reason, template in _TEMPLATES.items()}
+_PATTERNS = {key: _pattern(_PREFIX + template) for key, template in _TEMPLATES.items()}
 
 
 def register_reasons(reasons: type[Enum], templates: dict, implied: dict | None = None) -> None:
@@ -81,19 +100,21 @@ def register_reasons(reasons: type[Enum], templates: dict, implied: dict | None 
     missing = [reason for reason in reasons if reason not in templates]
     if missing:
         raise ValueError(f"{reasons.__name__}.{missing[0].name} has no message template")
-    taken = {reason.value for reason in _TEMPLATES if not isinstance(reason, reasons)}
-    clash = [reason for reason in reasons if reason.value in taken]
-    if clash:
-        raise ValueError(f"reason code {clash[0].value!r} is already declared")
     for reason in reasons:
-        _TEMPLATES[reason] = templates[reason]
-        _PATTERNS[reason] = _pattern(_PREFIX + templates[reason])
-    _IMPLIED.update(implied or {})
+        known = _REASONS.get(_identity(reason))
+        if reason.value in _SHARED_CODES or (known is not None and known is not reason):
+            where = "the shared reasons" if reason.value in _SHARED_CODES else _identity(reason)[0]
+            raise ValueError(f"reason code {reason.value!r} is already declared by {where}")
+    for reason in reasons:
+        key = _identity(reason)
+        _REASONS[key], _TEMPLATES[key] = reason, templates[reason]
+        _PATTERNS[key] = _pattern(_PREFIX + templates[reason])
+    _IMPLIED.update({_identity(reason): fixed for reason, fixed in (implied or {}).items()})
 
 
 def reasons() -> tuple:
     """Every reason declared so far: the shared ones and the imported models'."""
-    return tuple(_TEMPLATES)
+    return tuple(_REASONS.values())
 
 
 @dataclass(frozen=True, eq=False)
@@ -114,7 +135,7 @@ class Refusal:
     kind: str = ""
 
     def __post_init__(self):
-        implied = _IMPLIED.get(self.code)
+        implied = _IMPLIED.get(_identity(self.code))
         if not self.kind and implied and implied[0] == self.variable:
             object.__setattr__(self, "kind", implied[2])
 
@@ -136,7 +157,7 @@ class Refusal:
                 return f"{value * RAD_TO_DEG:.6g}"
             return repr(float(value)) if isinstance(value, (int, float)) else value
 
-        return _PLACEHOLDER.sub(render, _TEMPLATES[self.code])
+        return _PLACEHOLDER.sub(render, _TEMPLATES[_identity(self.code)])
 
     @property
     def message(self) -> str:
@@ -179,17 +200,17 @@ class Refusal:
     def from_message(cls, text: str) -> "Refusal":
         """The refusal whose `message` appears in `text` (a log line may add to it).
         Raises ValueError if there is none."""
-        for reason, pattern in _PATTERNS.items():
+        for key, pattern in _PATTERNS.items():
             match = pattern.search(text)
             if match:
                 found = match.groupdict()
-                variable, unit, _ = _IMPLIED.get(reason, (None, None, ""))
+                variable, unit, _ = _IMPLIED.get(key, (None, None, ""))
                 variable, unit = variable or found.get("variable"), unit or found.get("unit")
                 numbers = {
                     name: float(value) for name, value in found.items() if name not in _TEXT_FIELDS
                 }
                 return cls(
-                    reason,
+                    _REASONS[key],
                     variable,
                     numbers.pop("value"),
                     numbers.pop("limit"),
