@@ -62,7 +62,7 @@ def _identity(reason: Enum) -> tuple:
 
 
 # Every declared reason by identity: the shared ones, then the models' own.
-_REASONS = {_identity(reason): reason for reason in Reason}
+_REASONS: dict[tuple, Enum] = {_identity(reason): reason for reason in Reason}
 _TEMPLATES = {_identity(reason): template for reason, template in _SHARED_TEMPLATES.items()}
 _IMPLIED = {_identity(reason): fixed for reason, fixed in _SHARED_IMPLIED.items()}
 _SHARED_CODES = frozenset(reason.value for reason in Reason)
