@@ -72,7 +72,7 @@ def test_the_fmu_ships_linux_binaries_only_and_nothing_of_the_build_machine(
     assert "generationDateAndTime" not in description
 
 
-def test_normalising_drops_bytecode_foreign_binaries_and_the_clock(tmp_path):
+def test_normalising_drops_bytecode_foreign_binaries_sources_and_the_clock(tmp_path):
     """On an archive holding what a build may leave (the tree may hold no bytecode
     when the test runs, so the FMU above cannot show that it is dropped)."""
     description = (
@@ -89,6 +89,7 @@ def test_normalising_drops_bytecode_foreign_binaries_and_the_clock(tmp_path):
             archive.writestr("binaries/win64/M.dll", b"MZ")
             archive.writestr("binaries/darwin64/M.dylib", b"mach-o")
             archive.writestr("binaries/linux64/M.so", b"ELF")
+            archive.writestr("sources/src/cppfmu/cppfmu_cs.cpp", b"// pythonfmu3's")
             archive.writestr("modelDescription.xml", description % (stamp, stamp))
         normalise(fmu, 2)
         made.append(fmu.read_bytes())

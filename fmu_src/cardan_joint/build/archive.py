@@ -13,6 +13,8 @@ rebuild: `sweep.store` keys its cases on the FMU's digest):
 - binaries for Linux x86_64 only (`linux64` in FMI 2, `x86_64-linux` in FMI 3):
   the only platform whose binary this project builds, tests and can say how
   it runs (pythonfmu's Windows binary is untested here);
+- no `sources/`: pythonfmu3 adds its C++ wrapper's sources, from which the
+  FMU's binary (this project's own C runtime) is not built;
 - no `generationDateAndTime`; the GUID (FMI 3: instantiation token) is a
   digest of everything else in the FMU, so it still changes with any content.
 """
@@ -39,6 +41,8 @@ class ArchiveError(RuntimeError):
 def _shipped(name: str, fmi_version: int) -> bool:
     parts = name.split("/")
     if name.endswith("/") or "__pycache__" in parts or name.endswith(".pyc"):
+        return False
+    if parts[0] == "sources":
         return False
     return parts[0] != "binaries" or parts[1:2] == [PLATFORMS[fmi_version]]
 

@@ -4,32 +4,35 @@ Which models exist and their start-value checks come from their folders
 (`models/<name>/spec.py`, found by `models.discover`); every model's script is
 written from the one template of its FMI version (`fmi/script<N>.py`). Every
 build ships its own copy of the runtime part of `cardan_joint` (physics, framework,
-model folders, slaves) under a name derived from a
-hash of that code and of the build's settings, and names the slave module
-after the same hash: two different FMUs of this project loaded in one process
-can then never run each other's code (Python keeps one module per name per
-process).
+slaves, and of the models its own folder and those its code imports) under a
+name derived from a hash of that code and of the build's settings, and names the
+slave module after the same hash: two different FMUs of this project loaded in
+one process can then never run each other's code (Python keeps one module per
+name per process). The model's page goes into the FMU's `documentation/`.
 """
 
+import ast
 import hashlib
 import json
 import re
 import shutil
 import sys
 import tempfile
+from importlib.util import resolve_name
 from pathlib import Path
 
 from .. import DEFAULT_MODEL
-from ..models import Model, StartValueError
+from ..models import MODELS_DIR, Model, StartValueError
 from ..models import model as find_model
 from .archive import ArchiveError, normalise
 
 PACKAGE_DIR = Path(__file__).resolve().parent.parent
-# What an FMU needs at run time: the shared layers (the equations, the
-# stepped-model framework), every model folder (a model
-# may build on another's) and the
-# slaves. The rest of the package (host, build, the native loader's sources)
-# runs in the host only.
+# What every FMU needs at run time: the shared layers (the equations, the
+# stepped-model framework), the models' registry and the slaves; of the model
+# folders, only its own and those its code imports (`_model_folders`: a model
+# may build on another's), Python only. The rest of the package (host, build,
+# the native loader's sources, the script templates, other models, pages and
+# reference runs) runs in the host only.
 RUNTIME = (
     "__init__.py",
     "names.py",
@@ -37,7 +40,7 @@ RUNTIME = (
     "variable_schema.py",
     "physics",
     "framework",
-    "models",
+    "models/__init__.py",
     "fmi",
 )
 # Host-only parts of the runtime's folders.
@@ -50,24 +53,59 @@ class BuildError(RuntimeError):
     pass
 
 
-def _runtime_files(script: Path):
-    for entry in RUNTIME:
-        path = PACKAGE_DIR / entry
-        if not path.is_dir():
-            yield path
-            continue
-        yield from sorted(
-            p
-            for p in path.rglob("*.py")
-            if p != script and not set(p.relative_to(path).parts) & set(_HOST_ONLY)
-        )
+def _python_files(path: Path) -> list:
+    """`path` itself, or the Python files under the folder `path`, host-only ones left out."""
+    if not path.is_dir():
+        return [path]
+    return sorted(
+        p
+        for p in path.rglob("*.py")
+        if p not in SCRIPTS.values() and not set(p.relative_to(path).parts) & set(_HOST_ONLY)
+    )
+
+
+def _imported_folders(path: Path) -> set:
+    """The model folders the module at `path` (under models/) imports."""
+    parts = path.relative_to(MODELS_DIR).with_suffix("").parts
+    module = ".".join((PACKAGE_DIR.name, MODELS_DIR.name, *parts))
+    package = module if path.name == "__init__.py" else module.rpartition(".")[0]
+    prefix = f"{PACKAGE_DIR.name}.{MODELS_DIR.name}."
+    named = []
+    for node in ast.walk(ast.parse(path.read_text())):
+        if isinstance(node, ast.Import):
+            named += [alias.name for alias in node.names]
+        elif isinstance(node, ast.ImportFrom):
+            base = resolve_name("." * node.level + (node.module or ""), package)
+            named += [base, *(f"{base}.{alias.name}" for alias in node.names)]
+    folders = {name[len(prefix) :].split(".")[0] for name in named if name.startswith(prefix)}
+    return {folder for folder in folders if (MODELS_DIR / folder).is_dir()}
+
+
+def _model_folders(folder: str) -> list:
+    """`folder` and every model folder its code imports, directly or not."""
+    found: set = set()
+    pending = [folder]
+    while pending:
+        current = pending.pop()
+        if current not in found:
+            found.add(current)
+            for path in _python_files(MODELS_DIR / current):
+                pending += _imported_folders(path)
+    return sorted(found)
+
+
+def _runtime_files(folder: str) -> list:
+    """What an FMU of the model in `folder` ships of the package."""
+    shared = [path for entry in RUNTIME for path in _python_files(PACKAGE_DIR / entry)]
+    own = [p for name in _model_folders(folder) for p in _python_files(MODELS_DIR / name)]
+    return shared + own
 
 
 def _fingerprint(
     script: Path, folder: str, model_name: str, start_values: dict, settings: dict, arrays: bool
 ) -> str:
     digest = hashlib.sha256()
-    for path in [script, *_runtime_files(script)]:
+    for path in [script, *_runtime_files(folder)]:
         digest.update(str(path.relative_to(PACKAGE_DIR)).encode())
         digest.update(path.read_bytes())
     digest.update(
@@ -107,13 +145,13 @@ def _stage(
     package = f"cardan_joint_{fingerprint}"
     target = workdir / package
     target.mkdir()
-    for entry in RUNTIME:
-        source = PACKAGE_DIR / entry
-        if source.is_dir():
-            # Any __pycache__ copied along is left out of the FMU by archive.normalise.
-            shutil.copytree(source, target / entry, ignore=shutil.ignore_patterns(*_HOST_ONLY))
-        else:
-            shutil.copy2(source, target / entry)
+    for source in _runtime_files(folder):
+        copy = target / source.relative_to(PACKAGE_DIR)
+        copy.parent.mkdir(parents=True, exist_ok=True)
+        shutil.copy2(source, copy)
+    # FMI's place for the model's documentation: its page.
+    (workdir / "documentation").mkdir()
+    shutil.copy2(MODELS_DIR / folder / "README.md", workdir / "documentation" / "README.md")
     script = script_template.read_text().replace("from cardan_joint.", f"from {package}.")
     base = re.search(r"^class \w+\(([\w, ]+)\):", script, flags=re.M)
     if base is None:
@@ -209,7 +247,12 @@ def build(
         )
         package_dir = script.parent / f"cardan_joint_{fingerprint}"
         try:
-            fmu = builder.build_FMU(script, dest=dest, project_files=[package_dir])
+            fmu = builder.build_FMU(
+                script,
+                dest=dest,
+                project_files=[package_dir],
+                documentation_folder=script.parent / "documentation",
+            )
         finally:
             # pythonfmu imported the staged script and package: drop them, so a
             # second build in this process cannot pick up this one's code. (Third-
