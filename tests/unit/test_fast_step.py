@@ -89,13 +89,18 @@ class Loader:
         self.fresh = status == Fmi2Status.ok
         return status
 
-    def evaluate(self):
-        return self.take(self.slave.fast_outputs(self.given()), len(self.outputs), 0)
+    def evaluate(self, indices=None):
+        reply = self.slave.fast_outputs(self.given(), indices)
+        return self.take(reply, len(self.outputs), 0)
 
-    def read(self):
+    def read(self, indices=None):
+        """getReal of flat `indices` (None: every output), as fast_get serves it."""
         if not self.fresh:
-            self.fresh = self.evaluate() == Fmi2Status.ok
-        return list(self.outputs)
+            self.fresh = self.evaluate(indices) == Fmi2Status.ok
+        first = self.slave._refs.first_output
+        values = self.known + self.outputs
+        chosen = range(first, first + len(self.outputs)) if indices is None else indices
+        return [values[i] if i < first else self.outputs[i - first] for i in chosen]
 
 
 def messages(slave):
@@ -238,3 +243,39 @@ def test_the_fmi3_slave_steps_the_same_through_the_one_call_step():
         assert bits(loader.read()) == bits(normal._get_flat(refs.all_outputs)), step
         assert messages(fast) == messages(normal), step
     assert statuses == {Fmi3Status.ok, Fmi3Status.error}
+
+
+@pytest.mark.parametrize("path", ["plain", "fast"])
+def test_only_an_output_that_depends_on_an_invalid_input_warns(path):
+    """An input out of range: a read of outputs that do not depend on it (their
+    declared dependencies) gives their values without a warning; a read that
+    holds one dependent output warns once, in either path."""
+    slave = initialized(CardanJointSlave)
+    loader = Loader(slave)
+    refs, table = slave._refs, slave.table
+    flat = {name: i for i, name in enumerate(refs.names)}
+    assert loader.step(0.0, STEP) == Fmi2Status.ok
+    bad = [0.4 if name != "load_torque" else 1e12 for name in table.INPUTS]  # beyond its range
+    slave.set_real(refs.all_inputs, bad)
+    loader.set_inputs(bad)
+    independent = [
+        flat[name] for name in table.OUTPUTS if "load_torque" not in table.BY_NAME[name].depends_on
+    ]
+    dependent = [flat["input_torque"]]
+    assert len(independent) > 10 and flat["life_consumed"] in independent
+
+    def read(indices):
+        before = len(slave.log_queue)
+        values = slave.get_real(indices) if path == "plain" else loader.read(indices)
+        return values, [m for m in slave.log_queue[before:] if m.status == Fmi2Status.warning]
+
+    values, warnings = read(independent)
+    assert warnings == []
+    # Following the valid inputs: as a slave given only those.
+    clean = initialized(CardanJointSlave)
+    assert clean.do_step(0.0, STEP)
+    clean.set_real(refs.all_inputs, [0.4 if n != "load_torque" else 0.0 for n in table.INPUTS])
+    assert bits(values) == bits(clean.get_real(independent))
+    for indices in (dependent, independent + dependent, None):
+        values, warnings = read(indices if indices is not None else refs.all_outputs)
+        assert len(warnings) == 1 and "load_torque" in warnings[0].msg

@@ -141,32 +141,40 @@ class SlaveCore(FastStep):
 
     # --- values --------------------------------------------------------------
 
-    def _current_outputs(self):
+    def _current_outputs(self, read=None):
+        """Every output; with an invalid input or parameter, held (not cached), and
+        a warning when an output `read` (flat indices; None: all) is one of the
+        held: only an output that depends on the invalid value warns."""
         model = self._model
         if not self._inputs_checked:
             problem = model.parameter_fault or model.input_problem()
             if problem:
-                self._report(
-                    f"{problem.at(model.time).message}; outputs that depend on it "
-                    f"are held at the last valid inputs",
-                    self._STATUS.warning,
-                )
-                return self._held_outputs(model)
+                outputs, held = self._held_outputs(model)
+                first = self._refs.first_output
+                if read is None or any(i - first in held for i in read):
+                    self._report(
+                        f"{problem.at(model.time).message}; outputs that depend on it "
+                        f"are held at the last valid inputs",
+                        self._STATUS.warning,
+                    )
+                return outputs
             self._inputs_checked = True
         self._outputs = self._outputs_held = model.outputs()
         self._inputs_held = model.inputs()
         return self._outputs
 
     def _held_outputs(self, model):
-        """Outputs with invalid inputs: each output that depends on an invalid input
-        keeps its last valid value, the others (and the live outputs, the state)
-        follow the valid inputs, as the declared dependencies promise."""
+        """Outputs with invalid inputs, and the positions of those held: each output
+        that depends on an invalid input keeps its last valid value, the others
+        (and the live outputs, the state) follow the valid inputs, as the declared
+        dependencies promise. With an invalid parameter every other output is held."""
+        live_count = len(self.live_outputs)
         live = (
             tuple(getattr(model, name) for name in self.live_outputs)
-            + self._outputs_held[len(self.live_outputs) :]
+            + self._outputs_held[live_count:]
         )
         if model.parameter_fault:
-            return live
+            return live, range(live_count, len(live))
         invalid = model.invalid_inputs()
         current = model.inputs()
         try:
@@ -179,14 +187,12 @@ class SlaveCore(FastStep):
             fresh = model.outputs()
         finally:
             model.set_inputs(current)
-        return tuple(
-            live[i] if dependencies & invalid else fresh[i]
-            for i, dependencies in enumerate(self._refs.output_dependencies)
-        )
+        held = {i for i, depends in enumerate(self._refs.output_dependencies) if depends & invalid}
+        return tuple(live[i] if i in held else value for i, value in enumerate(fresh)), held
 
     def _get_flat(self, indices):
         """Values at flat indices; raises IndexError for an index out of range."""
-        outputs = self._outputs or self._current_outputs()
+        outputs = self._outputs or self._current_outputs(indices)
         refs = self._refs
         if indices == refs.all_outputs:
             return list(outputs)

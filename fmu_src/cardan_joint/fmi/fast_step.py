@@ -36,12 +36,14 @@ the log queue after it:
   the next step, reads the moved value). On error (refused: the slave keeps
   its state and has logged variable, value, limit and time; or a fault): a
   bare status, nothing to write.
-- fast_outputs(inputs) -> (ok | warning, outputs) | error: takes the inputs
-  and gives every output without stepping. ok: the outputs are current until
-  the next input write or call into the slave; warning: they are held at the
-  last valid inputs and the slave has warned; getReal warns again at every
-  read, so the loader keeps them stale (and answers fmi2OK, as getReal does);
-  error: a fault, logged.
+- fast_outputs(inputs, read=None) -> (ok | warning, outputs) | error: takes
+  the inputs and gives every output without stepping; `read` is the getReal's
+  flat indices, a tuple of ints in order (None: every output). ok: the outputs
+  are current until the next input write or call into the slave; warning: an
+  input or parameter is invalid and the outputs that depend on it are held at
+  the last valid inputs; the slave has warned if `read` holds one of them, as
+  getReal warns only then, and again at every such read, so the loader keeps
+  them stale (and answers fmi2OK, as getReal does); error: a fault, logged.
 
 Slave. The runtime constructs the slave itself (both FMI versions) and uses
 that object; a slave without these methods keeps plain calls. Its `log_queue`
@@ -51,8 +53,9 @@ a new list would have its messages forwarded only at its next plain call).
 
 In C. setReal of inputs only: write known, mark outputs stale. Any other
 setReal: fast_load if needed, forward to Python, fast_store. getReal: if the
-outputs are stale, fast_outputs first (even for a read of inputs only: getReal
-evaluates the outputs, and warns, whatever it is asked); then known and
+outputs are stale, fast_outputs(inputs, read) first (even for a read of inputs
+only: getReal evaluates the outputs whatever it is asked, and warns if an output
+read is held); then known and
 outputs serve every index below first_output + outputs, anything else is
 forwarded (the slave reports it). doStep: fast_step; outputs fresh on ok,
 stale otherwise.
@@ -82,7 +85,7 @@ class FastStep:
     _inputs_held: tuple
     _step: Callable[[float, float], Any]
     _refused: Callable[[Any, float, float], Any]
-    _current_outputs: Callable[[], tuple]
+    _current_outputs: Callable[[Any], tuple]
     _fault: Callable[[str, BaseException], None]
 
     @classmethod
@@ -138,12 +141,12 @@ class FastStep:
             self._fault("fast_step", error)
             return self._STATUS.error
 
-    def fast_outputs(self, inputs):
+    def fast_outputs(self, inputs, read=None):
         """The inputs, then every output without stepping (a read after a write of
-        an input: direct feedthrough)."""
+        an input: direct feedthrough); `read`: the flat indices getReal reads."""
         try:
             self._take_inputs(inputs)
-            outputs = tuple(self._current_outputs())
+            outputs = tuple(self._current_outputs(read))
             # Held outputs are not cached (`_current_outputs`): the next read
             # re-evaluates and warns again, as getReal does.
             held = self._outputs is None
