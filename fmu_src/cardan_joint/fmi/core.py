@@ -129,9 +129,7 @@ class SlaveCore(FastStep):
             return self._STATUS.error
 
     def _refused(self, problem, current_time, step_size):
-        """Report a refused step (the model as it was); the status to return.
-        Error, not Discard (docs/fmi-tools.md, "Refused steps"), and logged at
-        the status returned: a host that shows errors only shows why."""
+        """Report a refused step (the model as it was) at the status it returns."""
         self._report(
             f"{problem.message}; step of {_readable(step_size)} s refused, the "
             f"{self.owner} stays at t = {_readable(current_time)} s",
@@ -142,16 +140,13 @@ class SlaveCore(FastStep):
     # --- values --------------------------------------------------------------
 
     def _current_outputs(self, read=None):
-        """Every output; with an invalid input or parameter, held (not cached), and
-        a warning when an output `read` (flat indices; None: all) is one of the
-        held: only an output that depends on the invalid value warns."""
+        """Every output, held while a value is invalid; warns if an output `read` is."""
         model = self._model
         if not self._inputs_checked:
             problem = model.parameter_fault or model.input_problem()
             if problem:
                 outputs, held = self._held_outputs(model)
-                first = self._refs.first_output
-                if read is None or any(i - first in held for i in read):
+                if read is None or any(i - self._refs.first_output in held for i in read):
                     self._report(
                         f"{problem.at(model.time).message}; outputs that depend on it "
                         f"are held at the last valid inputs",
@@ -164,17 +159,15 @@ class SlaveCore(FastStep):
         return self._outputs
 
     def _held_outputs(self, model):
-        """Outputs with invalid inputs, and the positions of those held: each output
-        that depends on an invalid input keeps its last valid value, the others
-        (and the live outputs, the state) follow the valid inputs, as the declared
-        dependencies promise. With an invalid parameter every other output is held."""
-        live_count = len(self.live_outputs)
+        """(outputs, positions held) with invalid values: an output that depends on an
+        invalid input (any but the live outputs, the state, for a parameter) keeps its
+        last valid value; the others follow the valid inputs, as their dependencies say."""
         live = (
             tuple(getattr(model, name) for name in self.live_outputs)
-            + self._outputs_held[live_count:]
+            + self._outputs_held[len(self.live_outputs) :]
         )
         if model.parameter_fault:
-            return live, range(live_count, len(live))
+            return live, range(len(self.live_outputs), len(live))
         invalid = model.invalid_inputs()
         current = model.inputs()
         try:
