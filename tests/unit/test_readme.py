@@ -32,6 +32,13 @@ def ci_lists(top: Path) -> list:
     return run.stdout.splitlines()
 
 
+def beside(top: Path, readme: str) -> None:
+    """A copy of `.ci/run` in `top`, with `readme` as the README it reads."""
+    (top / ".ci").mkdir()
+    shutil.copy(CI, top / ".ci" / "run")
+    (top / "README.md").write_text(readme)
+
+
 def test_the_readme_is_read_in_five_minutes():
     assert len(README.splitlines()) <= 250
 
@@ -53,16 +60,21 @@ def test_ci_runs_exactly_the_readmes_commands():
 
 
 def test_a_package_added_to_the_readme_is_one_ci_installs(tmp_path):
-    (tmp_path / ".ci").mkdir()
-    shutil.copy(CI, tmp_path / ".ci" / "run")
-    (tmp_path / "README.md").write_text(README.replace("debootstrap &&", "debootstrap gdb &&"))
+    beside(tmp_path, README.replace("debootstrap &&", "debootstrap gdb &&"))
     assert ci_lists(tmp_path)[0] == ci_block(README)[0].replace("debootstrap", "debootstrap gdb")
 
 
+def test_ci_runs_each_line_in_order_and_stops_at_the_first_failure(tmp_path):
+    lines = ["printf 'one\\n' > out", "printf 'two\\n' >> out && false", "printf 'three\\n' >> out"]
+    block = "".join(f"    {line}\n" for line in lines)
+    beside(tmp_path, f"# R\n\n<!-- ci:begin -->\n\n{block}\n<!-- ci:end -->\n")
+    run = subprocess.run(["bash", str(tmp_path / ".ci" / "run")], capture_output=True, text=True)
+    assert run.returncode != 0
+    assert (tmp_path / "out").read_text() == "one\ntwo\n"
+
+
 def test_ci_without_the_readmes_marks_fails(tmp_path):
-    (tmp_path / ".ci").mkdir()
-    shutil.copy(CI, tmp_path / ".ci" / "run")
-    (tmp_path / "README.md").write_text(README.replace("<!-- ci:begin -->", ""))
+    beside(tmp_path, README.replace("<!-- ci:begin -->", ""))
     with pytest.raises(subprocess.CalledProcessError):
         ci_lists(tmp_path)
 
