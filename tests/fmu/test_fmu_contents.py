@@ -2,6 +2,8 @@
 model's Python and its page under documentation/ (FMI's place), nothing of
 another model (no other folder's code, page or reference run)."""
 
+import subprocess
+import sys
 import zipfile
 
 import pytest
@@ -50,3 +52,32 @@ def test_the_check_finds_another_models_files():
         "resources/x/CompliantJoint_in.csv",
     ]
     assert sorted(_other_models_files(names, JOINT)) == sorted(names[1:])
+
+
+def _imported_model_folders(folder: str) -> list:
+    """The model folders in sys.modules once every module of `folder` is imported,
+    in a fresh interpreter: what the model's code needs, found by running it."""
+    script = (
+        "import importlib, pkgutil, sys\n"
+        f"package = importlib.import_module('cardan_joint.models.{folder}')\n"
+        "for module in pkgutil.iter_modules(package.__path__, package.__name__ + '.'):\n"
+        "    importlib.import_module(module.name)\n"
+        "names = [m.split('.') for m in sys.modules if m.startswith('cardan_joint.models.')]\n"
+        "print(' '.join(sorted({parts[2] for parts in names})))\n"
+    )
+    run = subprocess.run([sys.executable, "-c", script], capture_output=True, text=True, check=True)
+    return run.stdout.split()
+
+
+@pytest.mark.parametrize("fmi_version", [2, 3])
+@pytest.mark.parametrize("key", sorted(discover()))
+def test_every_fmu_ships_the_model_folders_its_code_imports_and_no_other(
+    model_fmu, key, fmi_version
+):
+    spec = discover()[key]
+    with zipfile.ZipFile(model_fmu(key, fmi_version)) as fmu:
+        names = fmu.namelist()
+        page = fmu.read("documentation/README.md")
+    shipped = sorted({n.split("/models/")[1].split("/")[0] for n in names if "/models/" in n})
+    assert shipped == sorted(["__init__.py", *_imported_model_folders(spec.folder)])
+    assert page == spec.page.read_bytes()
