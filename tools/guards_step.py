@@ -86,7 +86,7 @@ STEP_MUTATIONS = (
     ),
     # The slave: what the FMU does with a refusal, illegal calls, states.
     Mutation(
-        "slave: refused step returns Discard",
+        "slave: refused step returns Error",
         CORE,
         "            if problem:\n                model.time = time\n",
         "            if False:\n                model.time = time\n",
@@ -102,18 +102,23 @@ STEP_MUTATIONS = (
     Mutation(
         "slave: invalid inputs hold outputs",
         CORE,
-        "            if problem:\n                self._report(\n"
-        "                    f\"{problem.at(model.time).message}; outputs that depend on it \"",
-        "            if False:\n                self._report(\n"
-        "                    f\"{problem.at(model.time).message}; outputs that depend on it \"",
+        "            if problem:\n                outputs, held = self._held_outputs(model)",
+        "            if False:\n                outputs, held = self._held_outputs(model)",
         (SLAVE_GUARDS, "-k", "held"),
     ),
     Mutation(
         "slave: held outputs follow the declared dependencies",
         CORE,
-        "live[i] if dependencies & invalid else fresh[i]",
-        "fresh[i]",
+        "live[i] if i in held else value",
+        "value",
         (f"{ROBUSTNESS_CALLS}::test_invalid_load_holds_only_the_outputs_that_depend_on_it",),
+    ),
+    Mutation(
+        "slave: only a read of a held output warns",
+        CORE,
+        "if read is None or any(i - self._refs.first_output in held for i in read):",
+        "if True:",
+        (f"{FAST_STEP_TESTS}::test_only_an_output_that_depends_on_an_invalid_input_warns",),
     ),
     Mutation(
         "slave: bad parameters are an error at initialization",
