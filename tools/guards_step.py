@@ -12,8 +12,13 @@ from guards_base import (
     ROBUSTNESS_CALLS,
     SLAVE,
     SLAVE_GUARDS,
+    STATE_BYTES,
     STEPPED,
     VALUES,
+    WATCH_TESTS,
+    WATCH_UNIT_TESTS,
+    WATCHES,
+    WATCHING,
     Mutation,
 )
 
@@ -180,14 +185,14 @@ STEP_MUTATIONS = (
     ),
     Mutation(
         "slave: deserialized bytes that are no dict",
-        CORE,
+        STATE_BYTES,
         "if not isinstance(state, dict):",
         "if False:",
         (SLAVE_GUARDS, "-k", "state"),
     ),
     Mutation(
         "slave: deserialized bytes that are no JSON",
-        CORE,
+        STATE_BYTES,
         'return {"invalid_state": reason}',
         "raise",
         (SLAVE_GUARDS, "-k", "state"),
@@ -220,5 +225,27 @@ STEP_MUTATIONS = (
         "set_inputs(inputs)\n        self._outputs = None\n        self._inputs_checked = False\n",
         "set_inputs(inputs)\n        self._outputs = None\n",
         (FAST_STEP_TESTS, "-k", "normal_paths"),
+    ),
+    # The watches (framework/watches.py): each output past its limit once, the run on.
+    Mutation(
+        "watches: the one-call step checks them",
+        FAST_STEP,
+        "            if self._armed:  # a watched limit",
+        "            if False:  # a watched limit",
+        (WATCH_TESTS, "-k", "defaults"),
+    ),
+    Mutation(
+        "watches: a passed watch is disarmed",
+        WATCHES,
+        "        else:\n            still.append(entry)\n",
+        "        still.append(entry)\n",
+        (WATCH_UNIT_TESTS, WATCH_TESTS, "-k", "once"),
+    ),
+    Mutation(
+        "watches: a state brings back the watches passed then",
+        WATCHING,
+        "arm(self._watched, self._model, passed_already)",
+        "arm(self._watched, self._model)",
+        (WATCH_TESTS, "-k", "state"),
     ),
 )

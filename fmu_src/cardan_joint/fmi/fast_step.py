@@ -84,6 +84,8 @@ class FastStep:
     _refused: Callable[[Any, float, float], Any]
     _current_outputs: Callable[[], tuple]
     _fault: Callable[[str, BaseException], None]
+    _armed: tuple
+    _watch: Callable[[tuple], None]
 
     @classmethod
     def fast_layout(cls) -> dict:
@@ -133,6 +135,8 @@ class FastStep:
             self._outputs = self._outputs_held = outputs
             self._inputs_held = moved
             self._inputs_checked = True
+            if self._armed:  # a watched limit: checked here, logged once (fmi/watching.py)
+                self._watch(outputs)
             return OK, outputs, moved
         except Exception as error:
             self._fault("fast_step", error)
