@@ -65,12 +65,14 @@ def plot_report(report: LifeReport, path: str | Path) -> Path:
     for joint in report.joints:
         over.plot(time, np.concatenate(([0.0], history[f"{joint} life"])), label=joint)
     for index, part in enumerate(report.parts):
-        start = part["start"]
-        over.axvspan(start, start + part["seconds"], alpha=0.06 * (index % 2 + 1), color="grey")
+        start, end = part["start"], part["start"] + part["seconds"]
+        over.axvspan(start, end, alpha=0.06 * (index % 2 + 1), color="grey")
+        over.text(0.5 * (start + end), 0.98, part["label"], rotation=90, ha="center",
+                  va="top", fontsize=7, transform=over.get_xaxis_transform())  # fmt: skip
     over.set_xlabel("time in the cycle [s]")
     over.set_ylabel("life_consumed [1] (1 = B10 life)")
     over.set_title(f"{report.model}: damage over the duty cycle ({report.kind})")
-    over.legend(loc="upper left")
+    over.legend(loc="lower right")
     labels = [p["label"] for p in report.parts]
     width = 0.8 / len(report.joints)
     for k, joint in enumerate(report.joints):
