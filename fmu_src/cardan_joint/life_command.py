@@ -73,15 +73,13 @@ def _positive(args: argparse.Namespace) -> None:
 
 
 def life_command(args: argparse.Namespace) -> int:
-    from .host.duty_cycle import read_duty_cycle
     from .host.life_files import write_report
     from .host.life_report import life_report, report_text
     from .names import parse_assignments
 
     _positive(args)
     starts = parse_assignments(args.set)
-    cycle = read_duty_cycle(args.cycle, args.cycle_time, args.step, args.spans)
-    report = life_report(cycle, args.fmu, starts)
+    report = life_report(args.cycle, args.fmu, starts, args.cycle_time, args.step, args.spans)
     print(report_text(report))
     paths = write_report(report, args.output)
     print("wrote " + ", ".join(str(p) for p in paths.values()))

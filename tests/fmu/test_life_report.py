@@ -133,3 +133,13 @@ def test_the_propshaft_reports_each_joint_and_refuses_an_angle(propshaft_fmu_pat
     assert report.joints == ["joint 1", "joint 2"]
     assert all(report.life_used[j] > 0.0 for j in report.joints)
     assert math.isfinite(report.b10_hours[report.governing_joint])
+
+
+def test_an_input_start_value_and_a_refused_step_are_named(fmu_path, tmp_path):
+    cycle = read_time_series(_series(tmp_path / "series.csv"))
+    with pytest.raises(UsageError, match="load_torque"):
+        life_report(cycle, fmu_path, start_values={"load_torque": 5.0})
+    fast = tmp_path / "fast.csv"
+    fast.write_text("time,input_speed,torque,bend_angle\n0,1e6,1,0\n0.1,1e6,1,0\n")
+    with pytest.raises(UsageError, match=r"fast.csv: .*input_speed.*t = 0"):
+        life_report(read_time_series(fast), fmu_path)

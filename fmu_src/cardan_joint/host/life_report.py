@@ -19,7 +19,7 @@ from typing import Any
 import numpy as np
 
 from ..names import UsageError
-from .duty_cycle import DutyCycle
+from .duty_cycle import DutyCycle, read_duty_cycle
 from .fmu_info import FmuInfo
 
 NEEDED_INPUTS = ("input_speed", "load_torque")
@@ -93,10 +93,13 @@ def _check_angle(info: FmuInfo, cycle: DutyCycle) -> None:
 
 def run_cycle(fmu, cycle: DutyCycle, start_values=None) -> tuple[str, dict, dict[str, float]]:
     """(model name, the history at each step's end, the ratings) of `cycle` run
-    through `fmu` from `start_values` (inputs or parameters)."""
-    from .instance import FmuInstance
+    through `fmu` from `start_values` (parameters); a refused step is a
+    UsageError naming the cycle and the FMU's reason (variable, value, limit, time)."""
+    from .instance import FmuInstance, StepRefusedError
 
     start_values = dict(start_values or {})
+    # The cycle sets the inputs: only parameters start elsewhere than it says.
+    FmuInfo.read(fmu).check(start_values, ("parameter",), "parameter")
     with FmuInstance.open(fmu, start_values=start_values) as model:
         info = model.info
         joints = life_outputs(info)
@@ -108,7 +111,10 @@ def run_cycle(fmu, cycle: DutyCycle, start_values=None) -> tuple[str, dict, dict
         for i, (start, step) in enumerate(zip(cycle.times, cycle.steps)):
             model.set(**{n: float(c[i]) for n, c in zip(names, columns)})
             model.time = float(start)
-            model.step(float(step))
+            try:
+                model.step(float(step))
+            except StepRefusedError as refused:
+                raise UsageError(f"{cycle.source}: {refused}") from None
             rows[i] = model.values(*recorded)
         ratings = model.get("rated_torque", "bearing_radius")
         history = {"time": cycle.times + cycle.steps, "part": cycle.part}
@@ -116,8 +122,19 @@ def run_cycle(fmu, cycle: DutyCycle, start_values=None) -> tuple[str, dict, dict
         return info.model_name, {"joints": joints, **history}, ratings
 
 
-def life_report(cycle: DutyCycle, fmu, start_values=None) -> LifeReport:
-    """The cycle run through `fmu` and what it uses of each joint's life."""
+def life_report(
+    cycle: DutyCycle | str | Path,
+    fmu,
+    start_values=None,
+    cycle_time: float = 10.0,
+    step: float = 1e-3,
+    spans: int = 10,
+) -> LifeReport:
+    """The cycle (a `DutyCycle`, or a file `read_duty_cycle` reads with
+    `cycle_time`, `step` and `spans`) run through `fmu` from `start_values`
+    (parameters), and what it uses of each joint's life."""
+    if not isinstance(cycle, DutyCycle):
+        return life_report(read_duty_cycle(cycle, cycle_time, step, spans), fmu, start_values)
     model, history, ratings = run_cycle(fmu, cycle, start_values)
     joints = history.pop("joints")
     used = {j: float(history[life][-1]) for j, (life, _, _) in joints.items()}
