@@ -230,16 +230,23 @@ STEP_MUTATIONS = (
     Mutation(
         "watches: the one-call step checks them",
         FAST_STEP,
-        "            if self._armed:  # a watched limit",
-        "            if False:  # a watched limit",
+        "if armed and any_passed(armed, outputs):",
+        "if False:",
         (WATCH_TESTS, "-k", "defaults"),
     ),
     Mutation(
         "watches: a passed watch is disarmed",
         WATCHES,
-        "        else:\n            still.append(entry)\n",
-        "        still.append(entry)\n",
+        "        else:\n            kept.append((watch, limit))\n",
+        "        kept.append((watch, limit))\n",
         (WATCH_UNIT_TESTS, WATCH_TESTS, "-k", "once"),
+    ),
+    Mutation(
+        "watches: an output is compared by its magnitude",
+        WATCHES,
+        "if abs(outputs[slot]) > limit:",
+        "if outputs[slot] > limit:",
+        (WATCH_UNIT_TESTS, "-k", "magnitude"),
     ),
     Mutation(
         "watches: a state brings back the watches passed then",

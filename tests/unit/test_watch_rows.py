@@ -43,28 +43,29 @@ def _outputs(table, **values):
 def test_each_output_past_its_limit_is_warned_of_once_by_magnitude():
     table, armed = _armed()
     armed, messages = passed(armed, _outputs(table, input_torque=-999.0), 0.1)
-    assert messages == [] and len(armed) == 3
+    assert messages == [] and len(armed.watches) == 3
     armed, messages = passed(armed, _outputs(table, input_torque=-1500.0), 0.2)
     assert messages == [
         "input_torque = -1500 N.m at t = 0.2 s is past rated_torque = 1000 N.m: past the "
         "rating (warned once; the run goes on)"
     ]
     armed, messages = passed(armed, _outputs(table, input_torque=-2000.0), 0.3)
-    assert messages == [] and len(armed) == 2
+    assert messages == [] and len(armed.watches) == 2
     armed, messages = passed(armed, _outputs(table, joint_2_life_consumed=1.5), 0.4)
     assert messages == [
         "joint_2_life_consumed = 1.5 at t = 0.4 s is past 1: life used up (warned once; "
         "the run goes on)"
     ]
-    assert [w.name for _, _, w in armed] == ["joint_1_life_consumed"]
+    assert [w.name for w in armed.watches] == ["joint_1_life_consumed"]
+    armed, messages = passed(armed, _outputs(table, joint_1_life_consumed=2.0), 0.5)
+    assert armed == () and len(messages) == 1
+    assert passed(armed, _outputs(table, joint_1_life_consumed=3.0), 0.6) == ((), [])
 
 
 def test_a_limit_is_read_when_armed_and_a_passed_watch_stays_quiet():
     table, armed = _armed(rated=2000.0, fired=("joint_1_life_consumed",))
-    assert [(w.name, limit) for _, limit, w in armed] == [
-        ("input_torque", 2000.0),
-        ("joint_2_life_consumed", 1.0),
-    ]
+    assert [w.name for w in armed.watches] == ["input_torque", "joint_2_life_consumed"]
+    assert [limit for _, limit in armed.checks] == [2000.0, 1.0]
     assert (
         passed(armed, _outputs(table, input_torque=1500.0, joint_1_life_consumed=9.0), 1.0)[1] == []
     )
@@ -72,7 +73,7 @@ def test_a_limit_is_read_when_armed_and_a_passed_watch_stays_quiet():
 
 def test_a_nan_limit_watches_nothing_and_a_nan_value_passes_nothing():
     table, armed = _armed(rated=math.nan)
-    assert [w.name for _, _, w in armed] == ["joint_1_life_consumed", "joint_2_life_consumed"]
+    assert [w.name for w in armed.watches] == ["joint_1_life_consumed", "joint_2_life_consumed"]
     assert passed(armed, _outputs(table, joint_1_life_consumed=math.nan), 0.0)[1] == []
 
 

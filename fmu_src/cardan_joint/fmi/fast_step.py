@@ -62,6 +62,7 @@ from collections.abc import Callable
 from typing import Any
 
 from ..framework.api import Stepped
+from ..framework.watches import any_passed
 from .references import References
 
 # ok in both versions' status enumerations, as a plain int for the taken step:
@@ -84,7 +85,7 @@ class FastStep:
     _refused: Callable[[Any, float, float], Any]
     _current_outputs: Callable[[], tuple]
     _fault: Callable[[str, BaseException], None]
-    _armed: tuple
+    _armed: Any
     _watch: Callable[[tuple], None]
 
     @classmethod
@@ -135,7 +136,8 @@ class FastStep:
             self._outputs = self._outputs_held = outputs
             self._inputs_held = moved
             self._inputs_checked = True
-            if self._armed:  # a watched limit: checked here, logged once (fmi/watching.py)
+            armed = self._armed  # watched limits, checked here, logged once (fmi/watching.py)
+            if armed and any_passed(armed, outputs):
                 self._watch(outputs)
             return OK, outputs, moved
         except Exception as error:

@@ -12,7 +12,7 @@ got: a run taken back to before a warning warns again if it passes again.
 from collections.abc import Callable
 from typing import Any
 
-from ..framework.watches import arm, compile_watches, passed
+from ..framework.watches import arm, armed_names, compile_watches, passed
 from .references import WATCH_CATEGORY
 
 
@@ -22,7 +22,7 @@ class Watching:
     table: Any
     watches: tuple = ()  # the model's `framework.watches.Watch` rows (its spec's)
     _watched: tuple = ()  # compiled for the table: output slots
-    _armed: tuple = ()  # (slot, limit, watch) not yet passed; none before initialization
+    _armed: Any = ()  # `framework.watches.Armed`: not yet passed; () before initialization
     _initialized: bool
     _model: Any
     _STATUS: Any
@@ -43,7 +43,8 @@ class Watching:
         self._armed = arm(self._watched, self._model, passed_already) if self._watching() else ()
 
     def _watch(self, outputs) -> None:
-        """After a taken step: warn once of each watched output past its limit."""
+        """After a taken step (with watches armed): warn once of each watched
+        output past its limit."""
         self._armed, messages = passed(self._armed, outputs, self._model.time)
         for message in messages:
             self._report(message, self._STATUS.warning, WATCH_CATEGORY)
@@ -55,5 +56,5 @@ class Watching:
 
     def _watches_passed(self) -> list[str]:
         """The watched outputs already warned of, for the FMU state."""
-        armed = {watch.name for _, _, watch in self._armed}
+        armed = armed_names(self._armed)
         return [w.name for w in self._watched if w.name not in armed] if self._watching() else []

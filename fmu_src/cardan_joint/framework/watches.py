@@ -13,6 +13,7 @@ read as well.
 import math
 from dataclasses import dataclass
 from fnmatch import fnmatchcase
+from typing import NamedTuple
 
 
 @dataclass(frozen=True)
@@ -47,35 +48,59 @@ def compile_watches(watches, table) -> tuple[WatchedOutput, ...]:
     return tuple(compiled)
 
 
-def arm(watched, model, fired=()) -> tuple:
-    """(slot, limit value, watch) of each watched output not in `fired` (names),
-    its limit read from `model`'s parameters now (they are fixed after
-    initialization). A limit that is not a number watches nothing."""
-    armed = []
+class Armed(NamedTuple):
+    """The watches not yet passed: (output slot, limit) of each, and its row."""
+
+    checks: tuple[tuple[int, float], ...]
+    watches: tuple[WatchedOutput, ...]
+
+
+def arm(watched, model, fired=()) -> "Armed | tuple[()]":
+    """The watched outputs not in `fired` (names), each limit read from `model`'s
+    parameters now (they are fixed after initialization); () when none is left.
+    A limit that is not a number watches nothing."""
+    kept = []
     for watch in watched:
         limit = watch.limit
         value = float(getattr(model, limit) if isinstance(limit, str) else limit)
         if watch.name not in fired and not math.isnan(value):
-            armed.append((watch.slot, value, watch))
-    return tuple(armed)
+            kept.append((watch, value))
+    return _armed(kept)
 
 
-def passed(armed, outputs, time: float) -> tuple[tuple, list[str]]:
-    """(the watches still armed, a message for each output past its limit now)."""
-    for slot, limit, _ in armed:
+def _armed(kept) -> "Armed | tuple[()]":
+    """Armed of (watch, limit) pairs; () for none (falsy: the step skips the check)."""
+    if not kept:
+        return ()
+    return Armed(tuple((w.slot, v) for w, v in kept), tuple(w for w, _ in kept))
+
+
+def any_passed(armed: Armed, outputs) -> bool:
+    """Whether an armed output is past its limit: the check after every step
+    (a plain loop: CPython runs it faster than map and any)."""
+    for slot, limit in armed.checks:
         if abs(outputs[slot]) > limit:
-            break
-    else:  # the common case: nothing passed, nothing made
+            return True
+    return False
+
+
+def passed(armed, outputs, time: float) -> "tuple[Armed | tuple[()], list[str]]":
+    """(the watches still armed, a message for each output past its limit now)."""
+    if not armed or not any_passed(armed, outputs):
         return armed, []
-    still, messages = [], []
-    for entry in armed:
-        slot, limit, watch = entry
+    messages, kept = [], []
+    for (slot, limit), watch in zip(armed.checks, armed.watches):
         value = outputs[slot]
         if abs(value) > limit:
             messages.append(_message(watch, value, limit, time))
         else:
-            still.append(entry)
-    return tuple(still), messages
+            kept.append((watch, limit))
+    return _armed(kept), messages
+
+
+def armed_names(armed) -> set[str]:
+    """The names of the watches `armed` still holds."""
+    return {watch.name for watch in armed.watches} if armed else set()
 
 
 def _message(watch: WatchedOutput, value: float, limit: float, time: float) -> str:
