@@ -249,6 +249,13 @@ STEP_MUTATIONS = (
         (WATCH_UNIT_TESTS, "-k", "magnitude"),
     ),
     Mutation(
+        "watches: a state's passed watches are read before the model is restored",
+        CORE,
+        'tuple(map(str, state.get("watches_passed", ())))',
+        'state.get("watches_passed", ())',
+        (WATCH_TESTS, "-k", "malformed"),
+    ),
+    Mutation(
         "watches: a state brings back the watches passed then",
         WATCHING,
         "arm(self._watched, self._model, passed_already)",

@@ -5,7 +5,7 @@ and 3.0 alike."""
 
 import pytest
 
-from cardan_joint.host.instance import FmuInstance
+from cardan_joint.host.instance import FmuInstance, status_of
 
 WARNING = 1
 
@@ -110,3 +110,23 @@ def test_fmpys_simulate_runs_on_past_the_warnings(built, fmi_version, capfd, tmp
     # FMI 3.0 logger prints them; each once.
     text = "".join(capfd.readouterr())
     assert text.count("input_torque = ") == 1 and text.count("life_consumed = ") == 1, text
+
+
+def test_a_state_with_malformed_watches_is_refused_whole(compliant_joint_fmu_path):
+    import json
+
+    messages: list = []
+    with FmuInstance.open(compliant_joint_fmu_path, messages=messages) as model:
+        model.step(1e-3)
+        state = model.get_state()
+        data = json.loads(model.serialize_state(state))
+        model.free_state(state)
+        data["watches_passed"] = 5
+        data["model"]["lag"] = 123.0
+        bad = model.deserialize_state(json.dumps(data).encode())
+        before = model.get("twist_angle")
+        messages.clear()
+        assert status_of(model.set_state, bad) == 3  # Error: the state is not taken
+        model.free_state(bad)
+        assert any("ignored, the joint keeps its state" in text for _, _, text in messages)
+        assert model.get("twist_angle") == before

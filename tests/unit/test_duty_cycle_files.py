@@ -84,7 +84,9 @@ def test_a_block_table_with_no_unit_on_its_speed_is_refused(tmp_path):
 def test_a_parquet_series_reads_as_its_csv(tmp_path):
     pd = pytest.importorskip("pandas")
     pytest.importorskip("pyarrow")
-    text = "time,input_speed [rpm],load_torque,bend_angle [deg]\n0,0,10,1\n0.5,600,20,2\n1,600,5,2\n"
+    text = (
+        "time,input_speed [rpm],load_torque,bend_angle [deg]\n0,0,10,1\n0.5,600,20,2\n1,600,5,2\n"
+    )
     csv = _file(tmp_path, text)
     pd.read_csv(csv).to_parquet(tmp_path / "cycle.parquet")
     from_csv, from_parquet = read_time_series(csv), read_duty_cycle(tmp_path / "cycle.parquet")

@@ -266,11 +266,12 @@ class SlaveCore(Watching, StateBytes, FastStep):
                 or len(held_inputs) != len(self.table.INPUTS)
             ):
                 raise ValueError("the state is from another version of the FMU")
+            passed_then = tuple(map(str, state.get("watches_passed", ())))
             self._model.restore(state["model"])  # all or nothing
             self._start_time = float(state["start_time"])
             self._initialized = bool(state["initialized"])
             self._outputs_held, self._inputs_held = held_outputs, held_inputs
-            self._rearm(state.get("watches_passed", ()))
+            self._rearm(passed_then)
         except Exception as error:
             self._report(
                 f"{self._API}SetFMU{self._STATE} ignored, the {self.owner} keeps its "
