@@ -118,10 +118,16 @@ def test_the_command_writes_the_report_and_its_figure(capsys, fmu_path, tmp_path
         assert output.with_suffix(suffix).stat().st_size > 0
 
 
-def test_a_compliant_drive_is_refused_by_name(compliant_joint_fmu_path, tmp_path):
-    cycle = read_time_series(_series(tmp_path / "series.csv"))
+def test_a_compliant_drive_is_refused_by_name(capsys, compliant_joint_fmu_path, tmp_path):
+    series = _series(tmp_path / "series.csv")
     with pytest.raises(UsageError, match="CompliantJoint cannot run a duty cycle.*load_torque"):
-        life_report(cycle, compliant_joint_fmu_path)
+        life_report(read_time_series(series), compliant_joint_fmu_path)
+    output = tmp_path / "life.csv"
+    result = cardan_joint_here(
+        capsys, "life", series, "--fmu", compliant_joint_fmu_path, "--output", output
+    )
+    assert result.returncode == 2 and "CompliantJoint cannot run" in result.stderr
+    assert not output.exists()
 
 
 def test_the_propshaft_reports_each_joint_and_refuses_an_angle(propshaft_fmu_path, tmp_path):
