@@ -47,7 +47,11 @@ class Example:
 EXAMPLES = (
     Example("demo", ("demo.png",)),
     Example("motor_load", ("motor_load.png",)),
-    Example("duty_cycle", ("duty_cycle.png",)),
+    Example(
+        "duty_cycle",
+        ("duty_cycle.png",),
+        sources=("examples/duty_cycle_blocks.csv", f"{PACKAGE}/host/life_files.py"),
+    ),
     Example("driveshaft", ("driveshaft.png",), sources=("examples/_driveshaft_support.py",)),
     Example("propshaft_layout", ("propshaft_layout.png",), model="Propshaft"),
     Example(

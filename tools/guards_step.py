@@ -12,8 +12,13 @@ from guards_base import (
     ROBUSTNESS_CALLS,
     SLAVE,
     SLAVE_GUARDS,
+    STATE_BYTES,
     STEPPED,
     VALUES,
+    WATCH_TESTS,
+    WATCH_UNIT_TESTS,
+    WATCHES,
+    WATCHING,
     Mutation,
 )
 
@@ -185,14 +190,14 @@ STEP_MUTATIONS = (
     ),
     Mutation(
         "slave: deserialized bytes that are no dict",
-        CORE,
+        STATE_BYTES,
         "if not isinstance(state, dict):",
         "if False:",
         (SLAVE_GUARDS, "-k", "state"),
     ),
     Mutation(
         "slave: deserialized bytes that are no JSON",
-        CORE,
+        STATE_BYTES,
         'return {"invalid_state": reason}',
         "raise",
         (SLAVE_GUARDS, "-k", "state"),
@@ -225,5 +230,41 @@ STEP_MUTATIONS = (
         "set_inputs(inputs)\n        self._outputs = None\n        self._inputs_checked = False\n",
         "set_inputs(inputs)\n        self._outputs = None\n",
         (FAST_STEP_TESTS, "-k", "normal_paths"),
+    ),
+    # The watches (framework/watches.py): each output past its limit once, the run on.
+    Mutation(
+        "watches: the one-call step checks them",
+        FAST_STEP,
+        "if armed and any_passed(armed, outputs):",
+        "if False:",
+        (WATCH_TESTS, "-k", "defaults"),
+    ),
+    Mutation(
+        "watches: a passed watch is disarmed",
+        WATCHES,
+        "        else:\n            kept.append((watch, limit))\n",
+        "        kept.append((watch, limit))\n",
+        (WATCH_UNIT_TESTS, WATCH_TESTS, "-k", "once"),
+    ),
+    Mutation(
+        "watches: an output is compared by its magnitude",
+        WATCHES,
+        "if abs(outputs[slot]) > limit:",
+        "if outputs[slot] > limit:",
+        (WATCH_UNIT_TESTS, "-k", "magnitude"),
+    ),
+    Mutation(
+        "watches: a state's passed watches are read before the model is restored",
+        CORE,
+        'tuple(map(str, state.get("watches_passed", ())))',
+        'state.get("watches_passed", ())',
+        (WATCH_TESTS, "-k", "malformed"),
+    ),
+    Mutation(
+        "watches: a state brings back the watches passed then",
+        WATCHING,
+        "arm(self._watched, self._model, passed_already)",
+        "arm(self._watched, self._model)",
+        (WATCH_TESTS, "-k", "state"),
     ),
 )

@@ -23,6 +23,8 @@ import sys
 
 from . import results
 from .host.fmu_info import MissingFMUError
+from .life_command import add_parser as add_life_parser
+from .life_command import life_command
 from .names import UsageError
 from .simulate_command import PROG, PROGRESS_MIN_STEPS, simulate_command
 
@@ -110,6 +112,7 @@ def _parser():
         help=f"always show a progress bar (default: from {PROGRESS_MIN_STEPS} steps on)",
     )
     progress.add_argument("--no-progress", action="store_true", help="no progress bar")
+    add_life_parser(commands)
     return parser
 
 
@@ -128,6 +131,8 @@ def main(argv=None) -> int:
             return sweep_main(rest, prog=f"{PROG} sweep", default_name=SWEEP_NAME)
         if rest:
             parser.error(f"unrecognized arguments: {' '.join(rest)}")
+        if args.command == "life":
+            return life_command(args)
         return simulate_command(args)
     except (UsageError, MissingFMUError, results.ResultFileError) as error:
         print(f"{PROG} {args.command}: {error}", file=sys.stderr)

@@ -1,5 +1,6 @@
-"""examples/duty_cycle.py: for blocks of constant torque, speed and angle the
-FMU's life_consumed is the catalogue's block sum (issue 27)."""
+"""examples/duty_cycle.py: its block table run through the FMU (`life_report`);
+for blocks of constant torque, speed and angle the FMU's life_consumed is the
+catalogue's block sum (issue 27)."""
 
 import pytest
 from conftest import load_example
@@ -13,8 +14,8 @@ def example():
 def test_constant_blocks_give_the_catalogues_block_sum(example, fmu_path):
     # Every angle at 0: the torque at the joint is the load, constant in each block,
     # and the rule takes its 3-degree floor.
-    rows = example.run(fmu_path, cycle=2.0, straight=True)
-    assert rows["life_consumed"][-1] == pytest.approx(
+    report = example.run(fmu_path, cycle=2.0, straight=True)
+    assert report.life_used["joint"] == pytest.approx(
         example.block_sum(cycle=2.0, straight=True), rel=1e-9, abs=0.0
     )
 
@@ -24,7 +25,7 @@ def test_at_the_working_angles_the_fluctuation_raises_each_blocks_damage_as_the_
 ):
     # Blocks long enough for whole turns to dominate: each block's damage over
     # the hand method's approaches the mean of (cos b / D)^p over a turn.
-    rows = example.run(fmu_path, cycle=20.0)
-    for name, _, _, ratio, factor in example.block_table(rows, cycle=20.0):
+    report = example.run(fmu_path, cycle=20.0)
+    for name, _, _, ratio, factor in example.block_table(report, cycle=20.0):
         assert ratio == pytest.approx(factor, rel=2e-3), name
-    assert rows["life_consumed"][-1] > example.block_sum(cycle=20.0)
+    assert report.life_used["joint"] > example.block_sum(cycle=20.0)

@@ -60,3 +60,25 @@ def test_the_figure_check_names_a_figure_not_in_the_results():
     results = "| joint 28.3 µs, floor 21.9 µs: **×1.29** |"
     text = "The joint takes 28.3 µs (×1.29, goal ≤ ×1.3); the C host 6.2 µs, ×1.06."
     assert unsourced_figures(text, results) == ["6.2 µs", "×1.06"]
+
+
+# A user page states what holds; where it is tested is contributing.md's table.
+TEST_PATH = re.compile(r"(?<![\w/.])tests/|\btest_\w+\.py\b")
+
+
+def test_no_user_page_names_a_test_file():
+    pages = [p for p in doc_commands.pages() if p.name != "contributing.md"]
+    assert len(pages) > 10  # an empty scan would pass
+    named = [
+        f"{page.relative_to(ROOT)}:{number}: {line.strip()}"
+        for page in pages
+        for number, line in enumerate(page.read_text().splitlines(), 1)
+        if TEST_PATH.search(line)
+    ]
+    assert named == [], "move these to docs/contributing.md's table:\n" + "\n".join(named)
+
+
+def test_the_test_path_check_sees_a_path_and_a_bare_test_file():
+    assert TEST_PATH.search("checked (`tests/fmu/test_x.py`)")
+    assert TEST_PATH.search("see `test_life.py`")
+    assert not TEST_PATH.search("the tests pass; contests/ latest")

@@ -27,7 +27,7 @@ class ModelBinding:
             cls._spec, cls.build_settings = spec, settings
             cls.table = spec.table_for(settings)
             cls.live_outputs, cls.owner = spec.live_outputs, spec.owner
-            cls.description = spec.description
+            cls.description, cls.watches = spec.description, spec.watches
         super().__init_subclass__(**kwargs)
 
     def _new_model(self):

@@ -15,12 +15,13 @@ before its pythonfmu base and provides `_STATUS` (its status enumeration),
 `_API` and `_STATE` (for messages naming FMI functions) and `_report`.
 """
 
-import json
 from typing import Any
 
 from .. import __version__
 from .fast_step import FastStep
 from .references import References
+from .state_bytes import StateBytes
+from .watching import Watching
 
 
 def _readable(seconds: float) -> str:
@@ -29,7 +30,7 @@ def _readable(seconds: float) -> str:
     return repr(float(f"{seconds:.12g}"))
 
 
-class SlaveCore(FastStep):
+class SlaveCore(Watching, StateBytes, FastStep):
     author = "Cardan joint FMU team"
     license = "MIT"
     version = __version__
@@ -51,7 +52,7 @@ class SlaveCore(FastStep):
     _API: str
     _STATE: str
 
-    def _report(self, message: str, status) -> None:
+    def _report(self, message: str, status, category: str | None = None) -> None:
         """Log `message` with `status` (each FMI version's slave says how)."""
         raise NotImplementedError
 
@@ -99,6 +100,7 @@ class SlaveCore(FastStep):
         try:
             self._restart()
             self._initialized = True
+            self._rearm()
             problem = self._model.parameter_fault
             if problem:
                 self._report(
@@ -123,6 +125,7 @@ class SlaveCore(FastStep):
                 return self._refused(problem, current_time, step_size)
             self._outputs = None
             self._inputs_checked = True
+            self._watch_step()
             return self._STATUS.ok
         except Exception as error:
             self._fault("do_step", error)
@@ -245,6 +248,7 @@ class SlaveCore(FastStep):
                 "initialized": self._initialized,
                 "outputs_held": list(self._outputs_held),
                 "inputs_held": list(self._inputs_held),
+                "watches_passed": self._watches_passed(),
             }
         except Exception as error:
             self._fault(f"{self._API}GetFMU{self._STATE}", error)
@@ -263,10 +267,12 @@ class SlaveCore(FastStep):
                 or len(held_inputs) != len(self.table.INPUTS)
             ):
                 raise ValueError("the state is from another version of the FMU")
+            passed_then = tuple(map(str, state.get("watches_passed", ())))
             self._model.restore(state["model"])  # all or nothing
             self._start_time = float(state["start_time"])
             self._initialized = bool(state["initialized"])
             self._outputs_held, self._inputs_held = held_outputs, held_inputs
+            self._rearm(passed_then)
         except Exception as error:
             self._report(
                 f"{self._API}SetFMU{self._STATE} ignored, the {self.owner} keeps its "
@@ -276,23 +282,3 @@ class SlaveCore(FastStep):
         finally:
             self._outputs = None
             self._inputs_checked = False
-
-    # Class methods: both loaders call these on the class, not on an instance.
-    @classmethod
-    def _fmu_state_to_bytes(cls, state):
-        try:
-            return json.dumps(state).encode("utf-8")
-        except Exception as error:
-            return json.dumps({"invalid_state": f"serialization failed: {error}"}).encode()
-
-    @classmethod
-    def _fmu_state_from_bytes(cls, data):
-        # Returning a marked state instead of raising: the set-state call then says why.
-        try:
-            state = json.loads(data.decode("utf-8"))
-            if not isinstance(state, dict):
-                raise ValueError("not a serialized FMU state of this project")
-            return state
-        except Exception as error:
-            reason = f"{cls._API}DeSerializeFMU{cls._STATE} got no valid state: {error}"
-            return {"invalid_state": reason}

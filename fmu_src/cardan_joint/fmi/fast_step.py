@@ -65,6 +65,7 @@ from collections.abc import Callable
 from typing import Any
 
 from ..framework.api import Stepped
+from ..framework.watches import any_passed
 from .references import References
 
 # ok in both versions' status enumerations, as a plain int for the taken step:
@@ -87,6 +88,8 @@ class FastStep:
     _refused: Callable[[Any, float, float], Any]
     _current_outputs: Callable[[Any], tuple]
     _fault: Callable[[str, BaseException], None]
+    _armed: Any
+    _watch: Callable[[tuple], None]
 
     @classmethod
     def fast_layout(cls) -> dict:
@@ -136,6 +139,9 @@ class FastStep:
             self._outputs = self._outputs_held = outputs
             self._inputs_held = moved
             self._inputs_checked = True
+            armed = self._armed  # watched limits, checked here, logged once (fmi/watching.py)
+            if armed and any_passed(armed, outputs):
+                self._watch(outputs)
             return OK, outputs, moved
         except Exception as error:
             self._fault("fast_step", error)

@@ -5,10 +5,15 @@ every FMU of this project declares."""
 import math
 from operator import attrgetter
 
+# A watched output past its rating or margin (fmi/watching.py).
+WATCH_CATEGORY = "logWatch"
+
 
 def log_categories(api: str) -> dict:
     return {
         "logStatusWarning": "Warnings: outputs held at the last valid inputs.",
+        WATCH_CATEGORY: "Warnings, once each: an output past its rating or margin "
+        "(torque, life, critical speed, twist); the run goes on.",
         "logStatusDiscard": f"Not used: a refused step ends in {api}Error (logStatusError).",
         "logStatusError": "Errors: refused steps (the variable, its value, the limit and the "
         "time), invalid parameters, calls FMI does not allow, internal faults.",

@@ -62,11 +62,11 @@ class ModelSlave(ModelBinding, SlaveCore, Fmi2Slave):
         starts = {name: getattr(self._model, name) for name in self._refs.known}
         return complete(super().to_xml(options), self.table, starts)
 
-    def _report(self, message: str, status: Fmi2Status) -> None:
+    def _report(self, message: str, status: Fmi2Status, category: str | None = None) -> None:
         # No stderr here: the FMU's native loader hands every message to the host's
         # logger (warnings and refusals even with debug logging off), or to stderr
         # when the host gave no logger or $CARDAN_JOINT_FMU_STDERR asks for it.
-        self.log(message, status)
+        self.log(message, status, category)
 
     # --- life cycle ----------------------------------------------------------
 

@@ -116,9 +116,9 @@ class ModelSlave3(ModelBinding, SlaveCore, Fmi3Slave):
 
     # --- messages ------------------------------------------------------------
 
-    def _report(self, message: str, status: Fmi3Status) -> None:
+    def _report(self, message: str, status: Fmi3Status, category: str | None = None) -> None:
         # The runtime hands every message to the host's logger, or to stderr.
-        self.log(message, status)
+        self.log(message, status, category)
 
     # --- life cycle ----------------------------------------------------------
 

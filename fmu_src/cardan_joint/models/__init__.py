@@ -72,6 +72,8 @@ class Model:
     name_for: Callable[[Mapping], str] | None = None
     # The physics object's `warnings()` are logged when initialization ends.
     warns: bool = False
+    # Outputs to warn of, once each, past a limit (`framework.watches.Watch` rows).
+    watches: tuple = ()
     # Its reference run, if it has one (files in its folder, checked by the tests).
     reference: ReferenceRun | None = None
     # Build settings' choices and help (`--joints N`): the build command offers

@@ -54,6 +54,7 @@ class CompliantDrive(ValueChecks):
     twist_angle_start: float
     torsional_stiffness: float
     torsional_damping: float
+    twist_angle_warning: float  # read by the slave's watches only (spec.py)
 
     def __init__(self, rigid, table, what: str, **values: float) -> None:
         self.rigid = rigid

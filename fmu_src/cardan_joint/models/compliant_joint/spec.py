@@ -1,8 +1,15 @@
 """The CompliantJoint FMU: the exact joint with a torsional spring-damper at its output."""
 
+from ...framework.watches import Watch
 from .. import Model, ReferenceRun, stepped
+from ..universal_joint.spec import LIFE_WATCH, TORQUE_WATCH
 from .model import CompliantJoint
 from .variables import COMPLIANT_JOINT
+
+# Every compliant drive's spring: wound past the twist its maker states.
+TWIST_WATCH = Watch(
+    "twist_angle", "twist_angle_warning", "the spring is wound past its stated twist"
+)
 
 MODEL = Model(
     key="CompliantJoint",
@@ -14,6 +21,7 @@ MODEL = Model(
     make=stepped(CompliantJoint),
     live_outputs=("input_angle", "output_angle"),
     owner="joint",
+    watches=(TORQUE_WATCH, LIFE_WATCH, TWIST_WATCH),
     # The input shaft as the UniversalJoint's; the output shaft a little slower
     # and faster in turn, so the spring winds up and back.
     reference=ReferenceRun(

@@ -29,6 +29,10 @@ _SPRING = (
     Variable("torsional_damping", _PAR, "N.m.s/rad", "Torsional damping c in parallel with the "
              "spring", 5.0, None, 0.0, 1e9),
 )
+# The twist the spring's maker states: past it the FMU warns once (a watch, see
+# spec.py); the default lies beyond any wind-up a run reaches, so it never warns.
+_STATED_TWIST = Variable("twist_angle_warning", _PAR, "rad", "Largest |twist_angle| without "
+                         "a warning (the spring's stated twist)", 1e6, "deg", 0.0, 1e15)
 # fmt: on
 _KINEMATIC = ("output_speed", "output_acceleration", "output_angle")
 
@@ -63,6 +67,7 @@ def compliant_table(rigid=joint_table) -> VariableTable:
         parameters.append(by_name[name])
         if name == "input_angle_start":
             parameters.extend(_SPRING)
+    parameters.append(_STATED_TWIST)  # last: the rigid drive's references stay as they were
     # The spring's torque follows the kinematic output (its angle and speed) and
     # the output shaft's speed; so does all that took the load torque.
     kinematic = [i for i in rigid.INPUTS if i in by_name["output_speed"].depends_on]

@@ -1,7 +1,8 @@
 """The CompliantPropshaft FMU: the Propshaft (N joints) with the compliant layer."""
 
 from .. import Model
-from ..propshaft.spec import check_joints, joints_namer
+from ..compliant_joint.spec import TWIST_WATCH
+from ..propshaft.spec import PROPSHAFT_WATCHES, check_joints, joints_namer
 from ..propshaft.variables import JOINTS
 from .model import CompliantPropshaft
 from .variables import compliant_propshaft_table
@@ -16,6 +17,7 @@ MODEL = Model(
     make=lambda settings, **values: CompliantPropshaft(settings.get("joints", 2), **values),
     live_outputs=("input_angle", "output_angle"),
     owner="joint",
+    watches=(*PROPSHAFT_WATCHES, TWIST_WATCH),
     default_settings={"joints": 2},
     setting_choices={"joints": JOINTS},
     setting_help={"joints": "number of joints"},

@@ -2,7 +2,9 @@
 
 from collections.abc import Mapping
 
+from ...framework.watches import Watch
 from .. import Model, StartValueError
+from ..universal_joint.spec import TORQUE_WATCH
 from .model import Propshaft
 from .variables import JOINTS, propshaft_table
 
@@ -30,6 +32,17 @@ def joints_namer(key: str):
     return name_for
 
 
+# The input torque is joint 1's; every joint's life; every tube's critical speed.
+PROPSHAFT_WATCHES = (
+    TORQUE_WATCH,
+    Watch("joint_*_life_consumed", 1.0, "this joint's catalogue B10 life is used up"),
+    Watch(
+        "shaft_*_critical_speed_ratio",
+        "critical_speed_margin",
+        "the tube runs too near its first bending critical speed (shorten or widen it)",
+    ),
+)
+
 MODEL = Model(
     key="Propshaft",
     description=(
@@ -41,6 +54,7 @@ MODEL = Model(
     make=lambda settings, **values: Propshaft(settings.get("joints", 2), **values),
     live_outputs=("input_angle",),
     owner="joint",
+    watches=PROPSHAFT_WATCHES,
     default_settings={"joints": 2},
     setting_choices={"joints": JOINTS},
     setting_help={"joints": "number of joints"},

@@ -1,8 +1,19 @@
 """The UniversalJoint FMU: one exact Cardan joint."""
 
+from ...framework.watches import Watch
 from .. import Model, ReferenceRun
 from . import variables
 from .model import CardanJoint
+
+# What a joint's engineer wants to hear of, once (a build without life has none).
+TORQUE_WATCH = Watch(
+    "input_torque",
+    "rated_torque",
+    "the joint is loaded past its rating, where the catalogue life rule no longer holds",
+)
+LIFE_WATCH = Watch(
+    "life_consumed", 1.0, "the catalogue B10 life is used up (90 % of bearings reach it)"
+)
 
 MODEL = Model(
     key="UniversalJoint",
@@ -14,6 +25,7 @@ MODEL = Model(
     make=lambda settings, **values: CardanJoint(settings.get("life", True), **values),
     live_outputs=("input_angle",),
     owner="joint",
+    watches=(TORQUE_WATCH, LIFE_WATCH),
     # `life`: the bearing loads and catalogue life (docs/life.md); off measures
     # the joint's step without them.
     default_settings={"life": True},
