@@ -24,6 +24,8 @@ import tempfile
 import zipfile
 from pathlib import Path
 
+from ...codegen import FLOAT_FLAGS
+
 # Shared by both FMI versions: logger routing, state machine entry, finding Python.
 _COMMON = (
     "report.c",
@@ -144,6 +146,24 @@ def runtime_record() -> str:
     return "\n".join(lines) + "\n"
 
 
+# How the runtime is compiled, generated steps included (codegen.FLOAT_FLAGS: each
+# floating-point operation rounds as CPython's does).
+C_FLAGS = (
+    "-std=gnu11",
+    "-O2",
+    "-fPIC",
+    # The version script keeps every symbol but the exports local, so nothing
+    # can interpose on them: let the compiler inline across them (the value
+    # calls' per-variable helpers cost a call each otherwise).
+    "-fno-semantic-interposition",
+    "-shared",
+    "-pthread",
+    "-Wall",
+    *FLOAT_FLAGS,
+    *GLIBC_FLOOR_COMPILE,
+)
+
+
 def compile_loader(model_identifier: str, output: Path, fmi_version: int = 2) -> Path:
     exports = output.parent / "exports.map"
     # Only the fmi functions, and the process-wide start object every copy of the
@@ -152,17 +172,7 @@ def compile_loader(model_identifier: str, output: Path, fmi_version: int = 2) ->
     headers = [f"-I{fmi3_headers()}"] if fmi_version == 3 else []
     command = [
         *compiler(),
-        "-std=gnu11",
-        "-O2",
-        "-fPIC",
-        # The version script keeps every symbol but the exports local, so nothing
-        # can interpose on them: let the compiler inline across them (the value
-        # calls' per-variable helpers cost a call each otherwise).
-        "-fno-semantic-interposition",
-        "-shared",
-        "-pthread",
-        "-Wall",
-        *GLIBC_FLOOR_COMPILE,
+        *C_FLAGS,
         f"-DMODEL_IDENTIFIER=\"{model_identifier}\"",
         *headers,
         *(str(_HERE / source) for source in SOURCES[fmi_version]),

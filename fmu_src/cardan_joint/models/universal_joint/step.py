@@ -1,0 +1,100 @@
+"""The joint's step, written once: the definition `CardanJoint.run` runs and the
+build translates into the FMU's C runtime (docs/codegen.md), so both give the
+same bits. Pure functions of floats: the inputs held over the step, the
+parameters, the input angle and yoke phase as exact revolutions
+(`physics.revolutions`); the life consumed is added around it (`life.py`).
+"""
+
+import math
+
+from ...framework.values import MAX_INCREMENT
+from ...physics.response import JointResponse, kernel
+from ...physics.revolutions import Turns, advanced, angle_value
+from . import variables as table
+from .limits import SPEED_LIMIT, fits
+
+# After the two angles, the outputs are the kernel's leading fields, in order
+# (then, with life on, the bearing loads and life: `JointLife._with_life`).
+KINEMATIC_OUTPUTS = len(table.WITHOUT_LIFE.OUTPUTS) - 2
+assert JointResponse._fields[:KINEMATIC_OUTPUTS] == table.WITHOUT_LIFE.OUTPUTS[2:], (
+    "kernel's field order"
+)
+_CARDAN_ERROR = JointResponse._fields.index("cardan_error")
+# A taken step's tuple: the clock and the input angle (turns, fraction, error),
+# the inputs after the step (the table's order), then the outputs without life.
+STATE = 4
+MOVED = STATE + len(table.INPUTS)
+
+
+def joint_outputs(
+    angle: Turns,
+    phase: Turns,
+    beta: float,
+    speed: float,
+    acceleration: float,
+    rate: float,
+    bend_acceleration: float,
+    load: float,
+    I1: float,
+    I2: float,
+    I3: float,
+) -> tuple:
+    """The outputs without life, in the table's order, at input angle `angle`."""
+    turns, fraction, error = angle
+    phase_turns, phase_fraction, phase_error = phase
+    # The quaternion has period 4 pi: its sign is (-1)^(whole turns of psi).
+    sign = -1.0 if (turns + phase_turns) & 1 == 1 else 1.0
+    psi = fraction + (phase_fraction + (error + phase_error))
+    r = kernel(
+        math, psi, beta, speed, acceleration, rate, bend_acceleration, I1, I2, I3, load, sign
+    )
+    input_angle = angle_value(angle)
+    # Two roundings at most: within one ulp of gamma2 however many turns.
+    return (input_angle, input_angle + r[_CARDAN_ERROR]) + r[:KINEMATIC_OUTPUTS]
+
+
+def joint_step(
+    time: float,
+    h: float,
+    speed: float,
+    acceleration: float,
+    beta: float,
+    rate: float,
+    bend_acceleration: float,
+    load: float,
+    turns: int,
+    fraction: float,
+    fraction_error: float,
+    phase_turns: int,
+    phase_fraction: float,
+    phase_error: float,
+    I1: float,
+    I2: float,
+    I3: float,
+    max_bend_angle: float,
+    parameters_valid: bool,
+) -> tuple | None:
+    """A step of `h` s from `time` with the inputs held (speed and bend angle at
+    constant acceleration): the tuple described at `STATE`, or None when the step
+    is not taken here (the model's checks then name the refusal)."""
+    increment = h * (speed + 0.5 * acceleration * h)
+    end_speed = speed + acceleration * h
+    # NaN fails every comparison, so a NaN anywhere is never taken here.
+    if not (
+        0.0 < h < math.inf
+        and parameters_valid
+        and fits(speed, acceleration, beta, rate, bend_acceleration, load, max_bend_angle, h)
+        and abs(increment) <= MAX_INCREMENT
+        and abs(end_speed) <= SPEED_LIMIT
+    ):
+        return None
+    angle = advanced((turns, fraction, fraction_error), increment)
+    end_beta = beta + h * (rate + 0.5 * bend_acceleration * h)
+    end_rate = rate + bend_acceleration * h
+    moved = (end_speed, acceleration, end_beta, end_rate, bend_acceleration, load)
+    phase = (phase_turns, phase_fraction, phase_error)
+    outputs = joint_outputs(
+        angle, phase, end_beta, end_speed, acceleration, end_rate, bend_acceleration, load,
+        I1, I2, I3,
+    )  # fmt: skip
+    return (time + h,) + angle + moved + outputs
