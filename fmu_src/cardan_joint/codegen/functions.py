@@ -133,7 +133,9 @@ class FunctionTranslator(Calls):
             raise self.refuse(node, "a module is not a value C keeps")
         known = self.locals.setdefault(name, kind)
         if known != kind:
-            raise self.refuse(node, f"{name} was a {known}, C keeps one type per variable")
+            raise self.refuse(
+                node, f"{name} holds {known} values, not {kind}: C keeps one type per name"
+            )
         return f"{name}_ = {text};"
 
     def _Assign(self, node: ast.Assign, depth: int) -> list[str]:
