@@ -190,27 +190,35 @@ class CardanJoint(JointLife, ShaftModel):
         generated from; a step it does not take goes through the checks of the
         generic `run`, which name the refusal."""
         self.set_inputs(inputs)
-        speed, acceleration, beta, rate, bend_acceleration, load = inputs
-        taken = joint_step(
-            time, h, speed, acceleration, beta, rate, bend_acceleration, load,
-            *self._angle, *self._phase,
-            self.crosspiece_inertia_1, self.crosspiece_inertia_2, self.crosspiece_inertia_3,
-            self.max_bend_angle, self.parameter_fault is None,
-        )  # fmt: skip
+        taken = joint_step(time, h, *self.step_state(), *inputs, *self._step_parameters())
         if taken is None:
             return ShaftModel.run(self, time, h, inputs)
         start = self._life_start() if self.life else None  # from before the step
-        self._angle = taken[1:STATE]
-        moved = taken[STATE:MOVED]
+        self._angle = taken[:3]
+        moved = taken[len(STATE) : MOVED]
         self.set_inputs(moved)
         if start is not None:
             self._add_damage(h, start)
-        self.time = taken[0]
+        self.time = time + h
         outputs = taken[MOVED:]
         if self.life:
-            end_speed, end_beta = moved[0], moved[2]
+            end_speed, end_beta, load = moved[0], moved[2], moved[5]
             return self._with_life(outputs, outputs[2:], load, end_speed, end_beta), moved
         return outputs, moved
+
+    def step_state(self) -> tuple:
+        """The values of `step.STATE`: what the step advances beside the inputs."""
+        return (*self._angle, *self._phase, self.parameter_fault is None)
+
+    def set_step_state(self, state) -> None:
+        """Take a state a generated step advanced (`step_state`'s values); only the
+        angle moves over a step, the rest follows the parameters."""
+        turns, fraction, fraction_error = state[:3]
+        self._angle = (int(turns), float(fraction), float(fraction_error))
+
+    def _step_parameters(self) -> tuple:
+        # The parameters without life, the step's last arguments (the table's order).
+        return tuple(getattr(self, name) for name in table.WITHOUT_LIFE.PARAMETERS)
 
     # --- outputs -----------------------------------------------------------
 

@@ -20,10 +20,16 @@ assert JointResponse._fields[:KINEMATIC_OUTPUTS] == table.WITHOUT_LIFE.OUTPUTS[2
     "kernel's field order"
 )
 _CARDAN_ERROR = JointResponse._fields.index("cardan_error")
-# A taken step's tuple: the clock and the input angle (turns, fraction, error),
-# the inputs after the step (the table's order), then the outputs without life.
-STATE = 4
-MOVED = STATE + len(table.INPUTS)
+# The state the step advances beside the inputs: the input angle and the yoke
+# phase as exact revolutions, and whether the parameters let it run (both fixed
+# at `start`). A generated step takes (time, h, state, inputs, parameters) and
+# gives (state, the inputs after the step, outputs): the FMU's runtime keeps
+# these values in C (docs/codegen.md).
+STATE = (
+    "turns", "fraction", "fraction_error", "phase_turns", "phase_fraction", "phase_error",
+    "parameters_valid",
+)  # fmt: skip
+MOVED = len(STATE) + len(table.INPUTS)
 
 
 def joint_outputs(
@@ -56,27 +62,33 @@ def joint_outputs(
 def joint_step(
     time: float,
     h: float,
-    speed: float,
-    acceleration: float,
-    beta: float,
-    rate: float,
-    bend_acceleration: float,
-    load: float,
     turns: int,
     fraction: float,
     fraction_error: float,
     phase_turns: int,
     phase_fraction: float,
     phase_error: float,
-    I1: float,
-    I2: float,
-    I3: float,
-    max_bend_angle: float,
     parameters_valid: bool,
+    input_speed: float,
+    input_acceleration: float,
+    bend_angle: float,
+    bend_angle_rate: float,
+    bend_angle_acceleration: float,
+    load_torque: float,
+    yoke_phase: float,
+    input_angle_start: float,
+    crosspiece_inertia_1: float,
+    crosspiece_inertia_2: float,
+    crosspiece_inertia_3: float,
+    max_bend_angle: float,
 ) -> tuple | None:
     """A step of `h` s from `time` with the inputs held (speed and bend angle at
-    constant acceleration): the tuple described at `STATE`, or None when the step
-    is not taken here (the model's checks then name the refusal)."""
+    constant acceleration): the state, the inputs after the step and the outputs
+    without life (`STATE`), or None when the step is not taken here (the model's
+    checks then name the refusal). The yoke phase and start angle enter through
+    the state (`start` reduces them), not as parameters."""
+    speed, acceleration, load = input_speed, input_acceleration, load_torque
+    beta, rate, bend_acceleration = bend_angle, bend_angle_rate, bend_angle_acceleration
     increment = h * (speed + 0.5 * acceleration * h)
     end_speed = speed + acceleration * h
     # NaN fails every comparison, so a NaN anywhere is never taken here.
@@ -93,8 +105,9 @@ def joint_step(
     end_rate = rate + bend_acceleration * h
     moved = (end_speed, acceleration, end_beta, end_rate, bend_acceleration, load)
     phase = (phase_turns, phase_fraction, phase_error)
+    inertia = (crosspiece_inertia_1, crosspiece_inertia_2, crosspiece_inertia_3)
     outputs = joint_outputs(
         angle, phase, end_beta, end_speed, acceleration, end_rate, bend_acceleration, load,
-        I1, I2, I3,
+        inertia[0], inertia[1], inertia[2],
     )  # fmt: skip
-    return (time + h,) + angle + moved + outputs
+    return angle + phase + (parameters_valid,) + moved + outputs
