@@ -221,9 +221,10 @@ def build(
     fmu = Path(fmu)
     # --- native loader (issue 11): C hosts run the FMU without any set-up ---
     from ..fmi.native import NativeBuildError, install_loader
+    from .step_source import generated_step
 
     try:
-        install_loader(fmu, model_name, fmi_version)
+        install_loader(fmu, model_name, fmi_version, generated_step(spec, settings, model_name))
     except NativeBuildError as error:
         fmu.unlink()
         raise BuildError(str(error)) from None

@@ -1,6 +1,7 @@
 """A translation unit: the entry function and every function it calls, the
 module constants and tuple structs they use, and the entry's flat C interface
-`int <name>(const double *arguments, double *results)`."""
+`int <name>(const double *arguments, double *results)` and its sizes,
+`const long <name>_sizes[2]` (arguments read, results written)."""
 
 import inspect
 import types
@@ -106,7 +107,9 @@ class Unit:
         else:
             lines.append(f"    result = {call[: -len(', &result)')]});")
         lines += [f"    results[{k}] = (double)result{f};" for k, f in enumerate(fields)]
-        return lines + ["    return 1;", "}"]
+        # How many arguments it reads and results it writes, for a caller to check.
+        sizes = f"const long {name}_sizes[2] = {{{len(signature.parameters)}, {len(items)}}};"
+        return lines + ["    return 1;", "}", "", sizes]
 
     def source(self, origin: str, name: str, entry: Signature) -> str:
         parts = [HEADER.format(origin=origin)]

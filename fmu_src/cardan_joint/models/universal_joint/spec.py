@@ -3,6 +3,7 @@
 from .. import Model, ReferenceRun
 from . import variables
 from .model import CardanJoint
+from .step import joint_step
 
 MODEL = Model(
     key="UniversalJoint",
@@ -19,6 +20,8 @@ MODEL = Model(
     default_settings={"life": True},
     setting_choices={"life": (True, False)},
     setting_help={"life": "bearing loads and catalogue life (--no-life: UniversalJointNoLife)"},
+    # The step in C without life; life's step stays in Python for now.
+    step=lambda settings: None if settings.get("life", True) else joint_step,
     name_for=lambda settings: (
         "UniversalJoint" if settings.get("life", True) else "UniversalJointNoLife"
     ),
