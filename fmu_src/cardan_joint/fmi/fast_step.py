@@ -179,9 +179,8 @@ class FastStep:
             self._outputs = self._outputs_held = outputs
             self._inputs_held = moved
             self._inputs_checked = True
-            if self._state_exchange:
-                return OK, outputs, moved, tuple(model.step_state())
-            return OK, outputs, moved
+            state = (tuple(model.step_state()),) if self._state_exchange else ()
+            return OK, outputs, moved, *state
         except Exception as error:
             self._fault("fast_step", error)
             return self._STATUS.error
