@@ -18,7 +18,8 @@ def _scaled(xp, x, factor=SCALE):
 
 def loops(x: float, n: int) -> tuple[float, int, float]:
     """while with a condition that calls, for over range with a step, augmented
-    assignment, a swap, int arithmetic and bit operations."""
+    assignment, a swap, int arithmetic, true division of two ints and bit
+    operations."""
     total = 0.0
     count = 0
     while _pair(total, x)[0] < 10.0 and count < 50:
@@ -28,7 +29,7 @@ def loops(x: float, n: int) -> tuple[float, int, float]:
         total = total - k * SCALE
     a, b = total, x
     a, b = b, a
-    return a + b / 3.0, (count * 7 + n) & 5 ^ 3 | (count << 2) >> 1, float(count) / 7
+    return a + b / 3.0, (count * 7 + n) & 5 ^ 3 | (count << 2) >> 1, (count + n) / 7
 
 
 def choices(x: float, y: float) -> tuple:
@@ -45,6 +46,27 @@ def choices(x: float, y: float) -> tuple:
 def extremes(x: float, y: float) -> tuple[float, float, float, float]:
     """Python keeps the first of equals and a NaN only where it comes first."""
     return max(x, y), min(x, y), max(y, x), min(y, x)
+
+
+def misordered(
+    time: float,
+    h: float,
+    turns: int,
+    fraction: float,
+    fraction_error: float,
+    phase_turns: int,
+    phase_fraction: float,
+    phase_error: float,
+    parameters_valid: bool,
+    input_acceleration: float,
+    input_speed: float,
+    bend_angle: float,
+    bend_angle_rate: float,
+    bend_angle_acceleration: float,
+    load_torque: float,
+) -> tuple[float, float]:
+    """A joint step's parameters with two inputs swapped: off the runtime's order."""
+    return input_speed, input_acceleration
 
 
 def with_list(x: float) -> float:

@@ -35,10 +35,13 @@ def test_an_untranslatable_step_stays_in_python_and_the_build_says_why(capsys):
     assert "`[x, x]` at " in said and "codegen_samples.py:" in said
 
 
-def test_a_step_off_the_runtimes_convention_stays_in_python(capsys):
-    copied = replace(JOINT, step=lambda settings: samples.loops)
+@pytest.mark.parametrize("step", [samples.loops, samples.misordered], ids=lambda f: f.__name__)
+def test_a_step_off_the_runtimes_convention_stays_in_python(capsys, step):
+    copied = replace(JOINT, step=lambda settings: step)
     assert generated_step(copied, {"life": False}, "CopiedJoint") is None
-    assert "('x', 'n') are not (time, h, the 7 values of step_state()" in capsys.readouterr().err
+    said = capsys.readouterr().err
+    assert "CopiedJoint's step runs in Python" in said
+    assert "are not (time, h, the 7 values of step_state(), then ('input_speed'," in said
 
 
 HARNESS = """

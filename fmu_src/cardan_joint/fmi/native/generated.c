@@ -16,10 +16,12 @@ int generated_step(const double *arguments, double *results);
 extern const long generated_step_sizes[2];
 #endif
 
+/* $CARDAN_JOINT_FMU_PYTHON_STEP=1 keeps every step in Python, to compare. */
 int generated_compiled(void)
 {
 #ifdef GENERATED_STEP
-    return 1;
+    const char *python_step = getenv(ENV_PYTHON_STEP);
+    return !(python_step && *python_step && strcmp(python_step, "0") != 0);
 #else
     return 0;
 #endif
