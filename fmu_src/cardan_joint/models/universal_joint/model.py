@@ -9,6 +9,7 @@ FMU maps its variables onto this object.
 """
 
 import math
+from operator import attrgetter
 
 from ...framework.refusal import Refusal
 from ...framework.stepped import ShaftModel
@@ -27,6 +28,10 @@ from .limits import (
 )
 from .refusals import JointReason
 from .step import MOVED, STATE, joint_outputs, joint_step
+
+_INPUTS = attrgetter(*table.INPUTS)
+# The parameters without life, the step's last arguments (the table's order).
+_STEP_PARAMETERS = attrgetter(*table.WITHOUT_LIFE.PARAMETERS)
 
 
 class CardanJoint(JointLife, ShaftModel):
@@ -92,15 +97,13 @@ class CardanJoint(JointLife, ShaftModel):
 
     # --- stepping ----------------------------------------------------------
 
-    def inputs(self) -> tuple[float, ...]:  # the generic one costs 3 k instructions a step
-        return (
-            self.input_speed,
-            self.input_acceleration,
-            self.bend_angle,
-            self.bend_angle_rate,
-            self.bend_angle_acceleration,
-            self.load_torque,
-        )
+    def inputs(self) -> tuple[float, ...]:
+        return _INPUTS(self)
+
+    def set_inputs(self, values) -> None:
+        # Plain attributes, all or none (strict): one call where a loop over
+        # setattr costs thousands of instructions, once or twice a step.
+        self.__dict__.update(zip(table.INPUTS, values, strict=True))
 
     def input_problem(self, step_size: float = 0.0) -> Refusal | None:
         """The Refusal of the inputs over [time, time + step_size], or None."""
@@ -190,7 +193,7 @@ class CardanJoint(JointLife, ShaftModel):
         generated from; a step it does not take goes through the checks of the
         generic `run`, which name the refusal."""
         self.set_inputs(inputs)
-        taken = joint_step(time, h, *self.step_state(), *inputs, *self._step_parameters())
+        taken = joint_step(time, h, *self.step_state(), *inputs, *_STEP_PARAMETERS(self))
         if taken is None:
             return ShaftModel.run(self, time, h, inputs)
         start = self._life_start() if self.life else None  # from before the step
@@ -215,10 +218,6 @@ class CardanJoint(JointLife, ShaftModel):
         angle moves over a step, the rest follows the parameters."""
         turns, fraction, fraction_error = state[:3]
         self._angle = (int(turns), float(fraction), float(fraction_error))
-
-    def _step_parameters(self) -> tuple:
-        # The parameters without life, the step's last arguments (the table's order).
-        return tuple(getattr(self, name) for name in table.WITHOUT_LIFE.PARAMETERS)
 
     # --- outputs -----------------------------------------------------------
 
