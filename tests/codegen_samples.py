@@ -6,6 +6,9 @@ import math
 
 SCALE = 0.75
 STEPS = 3
+# A quadrature rule's constants: tables read by a loop's index.
+NODES = (-0.7745966692414834, 0.0, 0.7745966692414834)
+WEIGHTS = (0.5555555555555556, 0.8888888888888888, 0.5555555555555556)
 
 
 def _pair(a: float, b: float) -> tuple[float, float]:
@@ -41,6 +44,16 @@ def choices(x: float, y: float) -> tuple:
     both = pair + (first, second)
     sign = -1.0 if math.floor(x) & 1 == 0 and x < y else 1.0
     return both[1:] + (both[-4], sign * _scaled(math, x), math.isfinite(y), math.trunc(y))
+
+
+def quadrature(a: float, b: float) -> float:
+    """Constant tables indexed by a loop's int, len() of a table, ** of an int."""
+    half = 0.5 * (b - a)
+    total = 0.0
+    for k in range(len(NODES)):
+        x = a + half * (1.0 + NODES[k])
+        total += WEIGHTS[k] * math.sin(x) * x**k
+    return half * total + WEIGHTS[-1]
 
 
 def extremes(x: float, y: float) -> tuple[float, float, float, float]:

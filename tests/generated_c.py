@@ -40,4 +40,6 @@ def bits(values) -> bytes | None:
     """The exact bits of a result (ints as the doubles C hands back), None for None."""
     if values is None:
         return None
+    if not isinstance(values, tuple):  # a function of one result
+        values = (values,)
     return struct.pack(f"{len(values)}d", *(float(v) for v in values))

@@ -8,9 +8,9 @@ import types
 from typing import Any
 
 from .expressions import MATH_CALLS, MATH_REFUSED, Expressions
-from .types import BOOL, FLOAT, INT, Module, Scalar, Tuple, Type
+from .types import BOOL, FLOAT, INT, Module, Scalar, Table, Tuple, Type
 
-BUILTINS = ("abs", "float", "int", "min", "max")
+BUILTINS = ("abs", "float", "int", "min", "max", "len")
 
 
 def accepts(parameter: Scalar | Tuple, argument: Type) -> bool:
@@ -63,6 +63,12 @@ class Calls(Expressions):
             raise self.refuse(node, f"{name}() with these arguments")
         if name in ("min", "max"):
             return self.extreme(node, name)
+        if name == "len":
+            _, sized = self.value_of(node.args[0])
+            if isinstance(sized, Table | Tuple):
+                size = sized.size if isinstance(sized, Table) else len(sized.items)
+                return f"INT64_C({size})", INT
+            raise self.refuse(node, "len() of a tuple or a constant table")
         text, kind = self.scalar(node.args[0])
         if name == "float":
             return f"((double){text})", FLOAT

@@ -13,11 +13,13 @@ from .types import (
     INT,
     Module,
     Scalar,
+    Table,
     Tuple,
     Type,
     Untranslatable,
     arithmetic,
     literal,
+    table_of,
 )
 
 # Python operator -> C operator, for operands of matching type (the test of the
@@ -93,7 +95,7 @@ class Expressions:
     def simple(self, node: ast.expr) -> tuple[str, Type]:
         """An operand C may read twice: a name, a constant, or a temporary."""
         text, kind = self.value_of(node)
-        if isinstance(node, ast.Name | ast.Constant) or isinstance(kind, Module):
+        if isinstance(kind, Module | Table) or isinstance(node, ast.Name | ast.Constant):
             return text, kind
         return self.hoist(text, kind), kind
 
@@ -102,7 +104,7 @@ class Expressions:
             return self.namespace[name]
         if hasattr(builtins, name):
             raise self.refuse(
-                node, f"the builtin {name} is only callable here (abs, float, int, min, max)"
+                node, f"the builtin {name} is only callable here (abs, float, int, min, max, len)"
             )
         raise self.refuse(node, f"{name} is not defined")
 
@@ -114,6 +116,9 @@ class Expressions:
             return self.unit.constant(name, value, self.where(node)), literal(
                 value, self.where(node)
             )[1]
+        table = table_of(value, self.where(node)) if type(value) is tuple else None
+        if table:
+            return self.unit.table(name, *table), table[1]
         raise self.refuse(
             node, f"{name} is a {type(value).__name__}; C takes numbers, tuples and calls"
         )
@@ -238,6 +243,10 @@ class Expressions:
         return self.built([text for text, _ in items], tuple(kind for _, kind in items))
 
     def _Subscript(self, node: ast.Subscript) -> tuple[str, Type]:
+        if isinstance(node.value, ast.Name | ast.Attribute):
+            text, table = self.value_of(node.value)
+            if isinstance(table, Table):
+                return self.entry(node, text, table)
         items, kind = self.fields(node.value)
         n = len(items)
         bound = node.slice
@@ -251,6 +260,22 @@ class Expressions:
         if not -n <= k < n:
             raise self.refuse(node, f"index {k} is beyond the tuple's {n} items")
         return items[k], kind.items[k]
+
+    def entry(self, node: ast.Subscript, name: str, table: Table) -> tuple[str, Type]:
+        """A constant table's item: by a constant (checked here) or by an int, which
+        the caller keeps in 0..size-1 (Python's negative indices are not C's)."""
+        if isinstance(node.slice, ast.Slice):
+            raise self.refuse(node, "a constant table is read an item at a time")
+        try:
+            k = self.index(node.slice, node)
+        except Untranslatable:
+            position, kind = self.scalar(node.slice)
+            if kind is not INT:
+                raise self.refuse(node, "a table's index is an int") from None
+            return f"{name}[{position}]", table.item
+        if not -table.size <= k < table.size:
+            raise self.refuse(node, f"index {k} is beyond the table's {table.size} items")
+        return f"{name}[{k % table.size}]", table.item
 
     def index(self, node: ast.expr, whole: ast.AST) -> int:
         """A constant index (C's struct fields are named, not computed)."""

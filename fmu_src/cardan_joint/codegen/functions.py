@@ -130,7 +130,7 @@ class FunctionTranslator(Calls):
 
     def assign(self, name: str, text: str, kind: Any, node: ast.AST) -> str:
         if not isinstance(kind, Scalar | Tuple):
-            raise self.refuse(node, "a module is not a value C keeps")
+            raise self.refuse(node, f"{name} would hold {kind}: C keeps numbers and tuples")
         known = self.locals.setdefault(name, kind)
         if known != kind:
             raise self.refuse(

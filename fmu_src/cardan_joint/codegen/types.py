@@ -59,13 +59,25 @@ class Tuple:
 
 
 @dataclass(frozen=True)
+class Table:
+    """A module constant tuple of numbers of one type (Gauss nodes, weights): a
+    static C array, indexed by a constant or by an int in its range."""
+
+    item: Scalar
+    size: int
+
+    def __str__(self) -> str:
+        return f"a constant table of {self.size} {self.item}s"
+
+
+@dataclass(frozen=True)
 class Module:
     """A Python module as a value (`math`, or a parameter bound to it)."""
 
     module: typing.Any
 
 
-Type = Scalar | Tuple | Module
+Type = Scalar | Tuple | Table | Module
 
 
 def arithmetic(left: Scalar, right: Scalar) -> Scalar:
@@ -83,6 +95,15 @@ def type_of_annotation(annotation: object, where: str) -> Scalar | Tuple:
             return Tuple(tuple(SCALARS[i.__name__] for i in items))
     raise Untranslatable(f"annotation {annotation!r} at {where}: C takes float, int, bool "
                          f"or a tuple of them")  # fmt: skip
+
+
+def table_of(value: tuple, where: str) -> tuple[list[str], Table] | None:
+    """The items' C texts and the table type of a tuple of numbers of one type."""
+    items = [literal(item, where) for item in value]
+    kinds = {kind for _, kind in items}
+    if not items or len(kinds) != 1:
+        return None
+    return [text for text, _ in items], Table(kinds.pop(), len(items))
 
 
 def literal(value: object, where: str) -> tuple[str, Scalar]:
