@@ -100,10 +100,17 @@ class CardanJoint(JointLife, ShaftModel):
     def inputs(self) -> tuple[float, ...]:
         return _INPUTS(self)
 
-    def set_inputs(self, values) -> None:
-        # Plain attributes, all or none (strict): one call where a loop over
-        # setattr costs thousands of instructions, once or twice a step.
-        self.__dict__.update(zip(table.INPUTS, values, strict=True))
+    def set_inputs(self, values) -> None:  # once or twice a step: the generic loop
+        # of setattr costs thousands of instructions (and writing __dict__ unspecializes
+        # every attribute read of the object)
+        (
+            self.input_speed,
+            self.input_acceleration,
+            self.bend_angle,
+            self.bend_angle_rate,
+            self.bend_angle_acceleration,
+            self.load_torque,
+        ) = values
 
     def input_problem(self, step_size: float = 0.0) -> Refusal | None:
         """The Refusal of the inputs over [time, time + step_size], or None."""
