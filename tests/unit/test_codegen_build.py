@@ -10,9 +10,10 @@ from pathlib import Path
 import codegen_samples as samples
 import pytest
 
-from cardan_joint.build.step_source import generated_step
+from cardan_joint.build import step_source
+from cardan_joint.build.step_source import generated_step, install_runtime
 from cardan_joint.fmi import native
-from cardan_joint.fmi.native import C_FLAGS, GENERATED_STEP, compiler
+from cardan_joint.fmi.native import C_FLAGS, GENERATED_STEP, NativeBuildError, compiler
 from cardan_joint.models import discover
 
 JOINT = discover()["UniversalJoint"]
@@ -42,6 +43,32 @@ def test_a_step_off_the_runtimes_convention_stays_in_python(capsys, step):
     said = capsys.readouterr().err
     assert "CopiedJoint's step runs in Python" in said
     assert "are not (time, h, the 7 values of step_state(), then ('input_speed'," in said
+
+
+def test_a_generated_step_that_does_not_compile_stays_in_python(monkeypatch, capsys):
+    installed = []
+
+    def install(fmu, model_name, fmi_version, step=None):
+        installed.append(step)
+        if step is not None:
+            raise NativeBuildError("compiling the loader failed: generated_step.c:1: error")
+
+    monkeypatch.setattr(step_source, "install_loader", install)
+    step = generated_step(JOINT, {"life": False}, "UniversalJointNoLife")
+    install_runtime("joint.fmu", "UniversalJointNoLife", 2, step)
+    assert installed == [step, None]
+    said = capsys.readouterr().err
+    assert "UniversalJointNoLife's step runs in Python: its C did not compile" in said
+    assert "generated_step.c:1: error" in said
+
+
+def test_a_runtime_that_does_not_compile_fails_the_build(monkeypatch):
+    def install(fmu, model_name, fmi_version, step=None):
+        raise NativeBuildError("no C compiler")
+
+    monkeypatch.setattr(step_source, "install_loader", install)
+    with pytest.raises(NativeBuildError, match="no C compiler"):
+        install_runtime("joint.fmu", "UniversalJointNoLife", 2, None)
 
 
 HARNESS = """

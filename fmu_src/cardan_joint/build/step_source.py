@@ -6,7 +6,7 @@ import sys
 from collections.abc import Mapping
 
 from ..codegen import Generated, Untranslatable, generate
-from ..fmi.native import GENERATED_STEP
+from ..fmi.native import GENERATED_STEP, NativeBuildError, install_loader
 from ..models import Model
 
 
@@ -44,3 +44,17 @@ def generated_step(spec: Model, settings: Mapping, model_name: str) -> Generated
     except (Untranslatable, ConventionError) as error:
         print(f"build_fmu: {model_name}'s step runs in Python: {error}", file=sys.stderr)
         return None
+
+
+def install_runtime(fmu, model_name: str, fmi_version: int, step: Generated | None) -> None:
+    """The runtime into the FMU, with the generated step if it compiles; a step
+    C does not compile (a generator's fault) leaves the step in Python, said on
+    stderr; a runtime that does not compile raises NativeBuildError."""
+    if step is not None:
+        try:
+            install_loader(fmu, model_name, fmi_version, step)
+            return
+        except NativeBuildError as error:
+            print(f"build_fmu: {model_name}'s step runs in Python: its C did not compile: "
+                  f"{error}", file=sys.stderr)  # fmt: skip
+    install_loader(fmu, model_name, fmi_version)
