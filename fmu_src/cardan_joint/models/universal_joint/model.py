@@ -27,7 +27,7 @@ from .limits import (
     fits,
 )
 from .refusals import JointReason
-from .step import MOVED, STATE, joint_outputs, joint_step
+from .step import ANGLE, MOVED, STATE, joint_outputs, joint_step
 
 _INPUTS = attrgetter(*table.INPUTS)
 # The parameters without life, the step's last arguments (the table's order).
@@ -204,7 +204,7 @@ class CardanJoint(JointLife, ShaftModel):
         if taken is None:
             return ShaftModel.run(self, time, h, inputs)
         start = self._life_start() if self.life else None  # from before the step
-        self._angle = taken[:3]
+        self._angle = taken[:ANGLE]
         moved = taken[len(STATE) : MOVED]
         self.set_inputs(moved)
         if start is not None:
@@ -223,7 +223,7 @@ class CardanJoint(JointLife, ShaftModel):
     def set_step_state(self, state) -> None:
         """Take a state a generated step advanced (`step_state`'s values); only the
         angle moves over a step, the rest follows the parameters."""
-        turns, fraction, fraction_error = state[:3]
+        turns, fraction, fraction_error = state[:ANGLE]
         self._angle = (int(turns), float(fraction), float(fraction_error))
 
     # --- outputs -----------------------------------------------------------

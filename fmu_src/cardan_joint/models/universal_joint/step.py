@@ -29,6 +29,7 @@ STATE = (
     "turns", "fraction", "fraction_error", "phase_turns", "phase_fraction", "phase_error",
     "parameters_valid",
 )  # fmt: skip
+ANGLE = STATE.index("phase_turns")  # the input angle's values lead the state
 MOVED = len(STATE) + len(table.INPUTS)
 
 
