@@ -6,11 +6,12 @@ once, so a refactor cannot orphan a guard."""
 # The parts are top-level modules of tools/, as this one is (tools/mutation.py
 # puts tools/ on the path).
 from guards_base import ROOT, Mutation
+from guards_generated import GENERATED_MUTATIONS
 from guards_plumbing import PLUMBING_MUTATIONS
 from guards_step import STEP_MUTATIONS
 from guards_values import VALUE_MUTATIONS
 
 COPIED = ("fmu_src", "tests", "build_fmu.py", "pyproject.toml", "README.md")
-MUTATIONS = (*VALUE_MUTATIONS, *STEP_MUTATIONS, *PLUMBING_MUTATIONS)
+MUTATIONS = (*VALUE_MUTATIONS, *STEP_MUTATIONS, *PLUMBING_MUTATIONS, *GENERATED_MUTATIONS)
 
 __all__ = ["COPIED", "MUTATIONS", "ROOT", "Mutation"]

@@ -34,6 +34,7 @@ def test_a_build_leaves_no_module_of_its_staged_copy_behind(tmp_path):
     ("fixture", "option"),
     [
         ("fmu_path", ()),
+        ("fmu_without_life_path", ("--no-life",)),  # with its generated step
         ("fmi3_path", ("--fmi-version=3", "--fmi3-arrays")),
         ("fmi3_scalar_path", ("--fmi-version=3",)),
     ],

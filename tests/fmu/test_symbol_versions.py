@@ -12,7 +12,9 @@ from pathlib import Path
 
 import pytest
 
-from cardan_joint.fmi.native import GLIBC_FLOOR, compile_loader
+from cardan_joint.codegen import generate
+from cardan_joint.fmi.native import GENERATED_STEP, GLIBC_FLOOR, compile_loader
+from cardan_joint.models.universal_joint.step import joint_step
 
 C_RUNTIME = ("GLIBCXX_", "CXXABI_", "libstdc++", "libgcc_s")
 
@@ -69,10 +71,13 @@ def test_the_reading_sees_what_a_new_glibc_binds_by_default(tmp_path):
     assert above_the_floor(binary) == ["libc.so.6: GLIBC_2.34"]
 
 
+@pytest.mark.parametrize("generated", [False, True], ids=["python-step", "generated-step"])
 @pytest.mark.parametrize("fmi_version", [2, 3])
-def test_the_runtime_needs_nothing_above_glibc_2_17(tmp_path, fmi_version):
-    """The runtime as the build compiles it (the FMU's own C layer)."""
-    binary = compile_loader("UniversalJoint", tmp_path / "runtime.so", fmi_version)
+def test_the_runtime_needs_nothing_above_glibc_2_17(tmp_path, fmi_version, generated):
+    """The runtime as the build compiles it (the FMU's own C layer), with a
+    generated step (its math from libm) and without."""
+    step = generate(joint_step, GENERATED_STEP) if generated else None
+    binary = compile_loader("UniversalJoint", tmp_path / "runtime.so", fmi_version, step)
     assert above_the_floor(binary) == []
     # An older glibc has dlopen and pthread_key_create in these, not in libc.so.6.
     assert {"libdl.so.2", "libpthread.so.0"} <= set(needs(binary)["NEEDED"])

@@ -1,8 +1,8 @@
 """Physics apart from plumbing, and the layers of the package.
 
 Layers, each importing only its own and lower ones: the equations and shared data
-(`physics/`, `units`, `variable_schema`, `names`, `extras`, `results`) <- the
-stepped-model runtime (`framework/`) <- the model folders
+(`physics/`, the C generator `codegen/`, `units`, `variable_schema`, `names`,
+`extras`, `results`) <- the stepped-model runtime (`framework/`) <- the model folders
 (`models/<name>/`: a model's table, physics and spec; one model may build on
 another) <- `fmi/` (the slaves) <- `build/` <- `host/` <- the commands (`sweep/`,
 `cli`, the `simulate` entry point). Checked on the source, statically.
@@ -17,6 +17,7 @@ PACKAGE = Path(__file__).resolve().parents[2] / "fmu_src" / "cardan_joint"
 LAYERS = {"shared": 0, "framework": 1, "models": 2, "fmi": 3, "build": 4, "host": 5, "commands": 6}
 TOP = {
     "physics": "shared",
+    "codegen": "shared",
     "framework": "framework",
     "models": "models",
     "fmi": "fmi",

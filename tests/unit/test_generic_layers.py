@@ -1,7 +1,8 @@
-"""No generic layer names a model: fmi/, host/, build/ and the stepped-model
-framework (framework/) work from what discovery finds, so a model added as a folder needs
-nothing there. The names are discovery's own (each model's key, folder and
-physics class), so a new model is checked as soon as its folder exists."""
+"""No generic layer names a model: fmi/, host/, build/, the stepped-model
+framework (framework/) and the C generator (codegen/) work from what discovery
+finds, so a model added as a folder needs nothing there. The names are
+discovery's own (each model's key, folder and physics class), so a new model is
+checked as soon as its folder exists."""
 
 import re
 
@@ -11,7 +12,7 @@ from conftest import ROOT
 from cardan_joint.models import discover
 
 PACKAGE = ROOT / "fmu_src" / "cardan_joint"
-LAYERS = ("fmi", "host", "build", "framework")
+LAYERS = ("fmi", "host", "build", "framework", "codegen")
 FRAMEWORK = (
     "__init__.py",
     "models/__init__.py",

@@ -263,10 +263,11 @@ def build(
                 del sys.modules[name]
     fmu = Path(fmu)
     # --- native loader (issue 11): C hosts run the FMU without any set-up ---
-    from ..fmi.native import NativeBuildError, install_loader
+    from ..fmi.native import NativeBuildError
+    from .step_source import generated_step, install_runtime
 
     try:
-        install_loader(fmu, model_name, fmi_version)
+        install_runtime(fmu, model_name, fmi_version, generated_step(spec, settings, model_name))
     except NativeBuildError as error:
         fmu.unlink()
         raise BuildError(str(error)) from None

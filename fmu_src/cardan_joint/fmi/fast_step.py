@@ -17,12 +17,21 @@ tuple in place (any other object through the C API), and passes an input the
 host left as it was (bit for bit) as the same object again (benchmarks,
 section 7).
 
+Generated step (docs/codegen.md). A runtime built with the model's step in C
+calls fast_state_size() once: from then on the slave hands over, after every
+value of `known`, the model's step state (`step_state()`: state_size floats),
+and takes it back with fast_sync. The runtime takes each step it can in C:
+arguments (t, h, state, known), results (state, the moved inputs, outputs).
+A step C does not take goes to fast_step, as without the generated step.
+
 Calls return a status (ok 0, warning 1, discard 2, error 3: the FMI version's
 own IntEnum, or a plain int) or a tuple (status, values, ...) of a status and
 tuples of floats, whose values, in order, the loader writes into its arrays.
 Each call logs through the slave as any other call does; the loader forwards
 the log queue after it:
-- fast_store() -> (ok, known): every input and parameter. Call it after
+- fast_state_size() -> int: the step state's size (0: the model has none);
+  from then on fast_store and fast_step give the state after their values.
+- fast_store() -> (ok, known[, state]): every input and parameter. Call it after
   instantiation and after every call into the slave that can change them: a
   setReal forwarded to Python, exitInitializationMode, set or deserialized FMU
   state, reset.
@@ -30,7 +39,11 @@ the log queue after it:
   setReal of every input would. Call it before every other call into the
   slave when an input was written since the last fast_* call (FMU state get,
   a forwarded setReal, terminate...), so the slave sees the host's inputs.
-- fast_step(t, h, inputs) -> (ok, outputs, inputs) | status: takes the
+- fast_sync(t, state, inputs, outputs) -> status: the model as the generated
+  steps left it: clock t, its step state, the inputs and outputs of the last
+  step (held for getReal, as fast_step holds them). Call it before any other
+  call into the slave once a step was taken in C.
+- fast_step(t, h, inputs) -> (ok, outputs, inputs[, state]) | status: takes the
   inputs, steps; when taken, every output and then the inputs the step moved
   (speed, bend angle and rate advance over a step: a later getReal of them, or
   the next step, reads the moved value). On error (refused: the slave keeps
@@ -90,6 +103,8 @@ class FastStep:
     _fault: Callable[[str, BaseException], None]
     _armed: Any
     _watch: Callable[[tuple], None]
+    # fast_state_size() was called: replies carry the model's step state.
+    _state_exchange = False
 
     @classmethod
     def fast_layout(cls) -> dict:
@@ -114,11 +129,42 @@ class FastStep:
     def fast_store(self):
         """Every input and parameter, for the loader's known array: at
         instantiation and after anything that changes them in Python (a
-        parameter set, an FMU state set, a reset)."""
+        parameter set, an FMU state set, a reset); then the step state."""
         try:
-            return self._STATUS.ok, self._refs.known_of(self._model)
+            known = self._refs.known_of(self._model)
+            if self._state_exchange:
+                return self._STATUS.ok, known, tuple(self._model.step_state())
+            return self._STATUS.ok, known
         except Exception as error:
             self._fault("fast_store", error)
+            return self._STATUS.error
+
+    def fast_state_size(self) -> int:
+        """The model's step state's size, handed over from now on (0: none)."""
+        try:
+            step_state = getattr(self._model, "step_state", None)
+            size = len(step_state()) if step_state else 0
+            self._state_exchange = size > 0
+            return size
+        except Exception as error:
+            self._fault("fast_state_size", error)
+            return 0
+
+    def fast_sync(self, current_time, state, inputs, outputs):
+        """The model where the generated steps left it: `fast_step`'s taken path
+        with the step's results (so every later call sees what a step in Python
+        would have left)."""
+        try:
+            model: Any = self._model
+            model.set_step_state(state)
+            model.set_inputs(inputs)
+            model.time = current_time
+            self._outputs = self._outputs_held = outputs
+            self._inputs_held = inputs
+            self._inputs_checked = True
+            return OK
+        except Exception as error:
+            self._fault("fast_sync", error)
             return self._STATUS.error
 
     def fast_step(self, current_time, step_size, inputs):
@@ -142,7 +188,8 @@ class FastStep:
             armed = self._armed  # watched limits, checked here, logged once (fmi/watching.py)
             if armed and any_passed(armed, outputs):
                 self._watch(outputs)
-            return OK, outputs, moved
+            state = (tuple(model.step_state()),) if self._state_exchange else ()
+            return OK, outputs, moved, *state
         except Exception as error:
             self._fault("fast_step", error)
             return self._STATUS.error

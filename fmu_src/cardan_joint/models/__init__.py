@@ -80,6 +80,10 @@ class Model:
     # `--<setting>` for every setting a model declares in `default_settings`.
     setting_choices: Mapping[str, tuple] = field(default_factory=dict)
     setting_help: Mapping[str, str] = field(default_factory=dict)
+    # The function the build translates into the FMU's runtime for these settings
+    # (docs/codegen.md: it takes (time, h, the model's step_state(), inputs,
+    # parameters) by the table's names), or None: the step runs in Python.
+    step: Callable[[Mapping], Callable | None] | None = None
     folder: str = ""  # the model's folder under models/ (set by discovery)
 
     @property

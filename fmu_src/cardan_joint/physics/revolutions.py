@@ -34,50 +34,37 @@ class RevolutionAngle(NamedTuple):
 def angle_value(angle: Turns) -> float:
     """The angle as the float nearest to it (two roundings at most)."""
     turns, fraction, fraction_error = angle
-    # A dict's get, not a cached function: this runs once per step, and a call
-    # through lru_cache costs about a thousand instructions (CPython 3.11).
-    product, product_error, low = _WHOLE_TURNS.get(turns) or _whole_turns(turns)
-    # _two_sum(product, fraction), inlined: this runs once per step.
-    total = product + fraction
-    bb = total - product
-    sum_error = (product - (total - bb)) + (fraction - bb)
-    return total + (sum_error + product_error + fraction_error + low)
-
-
-# turns -> `_whole_turns(turns)`: changes once a revolution, read every step.
-_WHOLE_TURNS: dict[int, tuple[float, float, float]] = {}
-_WHOLE_TURNS_KEPT = 8
-
-
-def _whole_turns(turns):
-    """turns * 2 pi as (product, its rounding error, turns * TWO_PI_LO), kept."""
     product, product_error = _two_product(float(turns), TWO_PI_HI)
-    if len(_WHOLE_TURNS) >= _WHOLE_TURNS_KEPT:
-        _WHOLE_TURNS.clear()
-    whole = _WHOLE_TURNS[turns] = product, product_error, turns * TWO_PI_LO
-    return whole
+    total, sum_error = _two_sum(product, fraction)
+    return total + (sum_error + product_error + fraction_error + turns * TWO_PI_LO)
 
 
-def _two_sum(a, b):
+# The error-free transformations (Knuth's two-sum, Dekker's split and product):
+# each result pair is the exact sum or product. Their exactness rests on every
+# operation rounding once, as written: C generated from them keeps that order
+# (docs/codegen.md).
+
+
+def _two_sum(a: float, b: float) -> tuple[float, float]:
     s = a + b
     bb = s - a
     return s, (a - (s - bb)) + (b - bb)
 
 
-def _split(a):
+def _split(a: float) -> tuple[float, float]:
     t = _SPLITTER * a
     hi = t - (t - a)
     return hi, a - hi
 
 
-def _two_product(a, b):
+def _two_product(a: float, b: float) -> tuple[float, float]:
     p = a * b
     a_hi, a_lo = _split(a)
     b_hi, b_lo = _split(b)
     return p, ((a_hi * b_hi - p) + a_hi * b_lo + a_lo * b_hi) + a_lo * b_lo
 
 
-def _shift(turns, fraction, error, whole):
+def _shift(turns: int, fraction: float, error: float, whole: int) -> Turns:
     """Move `whole` turns from the fraction to the counter, exactly."""
     product, product_error = _two_product(float(whole), TWO_PI_HI)
     fraction, sum_error = _two_sum(fraction, -product)
@@ -85,12 +72,10 @@ def _shift(turns, fraction, error, whole):
 
 
 def _normalized(turns: int, fraction: float, error: float) -> Turns:
-    # Invariant: 0 <= fraction <= TWO_PI_HI, the error term carrying the rest
-    # (a true value just below 2 pi may round its leading part up to TWO_PI_HI).
-    # _two_sum(fraction, error), inlined: this runs once per step.
-    total = fraction + error
-    bb = total - fraction
-    fraction, error = total, (fraction - (total - bb)) + (error - bb)
+    """(turns, fraction, error) with 0 <= fraction <= TWO_PI_HI, the error term
+    carrying the rest (a true value just below 2 pi may round its leading part
+    up to TWO_PI_HI)."""
+    fraction, error = _two_sum(fraction, error)
     if not 0.0 <= fraction <= TWO_PI_HI:
         turns, fraction, error = _shift(turns, fraction, error, math.floor(fraction / TWO_PI_HI))
         fraction, error = _two_sum(fraction, error)
@@ -115,16 +100,7 @@ def advance(angle: Turns, increment: float) -> RevolutionAngle:
 
 
 def advanced(angle: Turns, increment: float) -> Turns:
-    """`advance` on a stepped model's plain tuple (once per step)."""
-    # _two_sum(fraction, increment), then `_normalized`'s common case (no turn
-    # crossed), inlined: this runs once per step, and a call costs about a
-    # thousand instructions.
+    """`advance` on a stepped model's plain tuple."""
     turns, fraction, fraction_error = angle
-    total = fraction + increment
-    bb = total - fraction
-    error = fraction_error + ((fraction - (total - bb)) + (increment - bb))
-    fraction = total + error
-    bb = fraction - total
-    if 0.0 <= fraction <= TWO_PI_HI:
-        return turns, fraction, (total - (fraction - bb)) + (error - bb)
-    return _normalized(turns, total, error)
+    total, sum_error = _two_sum(fraction, increment)
+    return _normalized(turns, total, fraction_error + sum_error)

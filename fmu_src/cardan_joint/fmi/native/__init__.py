@@ -24,12 +24,15 @@ import tempfile
 import zipfile
 from pathlib import Path
 
+from ...codegen import FLOAT_FLAGS, Generated
+
 # Shared by both FMI versions: logger routing, state machine entry, finding Python.
 _COMMON = (
     "report.c",
     "calls.c",
     "fast_path.c",
     "fast_values.c",
+    "generated.c",
     "state_book.c",
     "slave_object.c",
     "slave_values.c",
@@ -144,28 +147,53 @@ def runtime_record() -> str:
     return "\n".join(lines) + "\n"
 
 
-def compile_loader(model_identifier: str, output: Path, fmi_version: int = 2) -> Path:
+# How the runtime is compiled, generated steps included (codegen.FLOAT_FLAGS: each
+# floating-point operation rounds as CPython's does).
+C_FLAGS = (
+    "-std=gnu11",
+    "-O2",
+    "-fPIC",
+    # The version script keeps every symbol but the exports local, so nothing
+    # can interpose on them: let the compiler inline across them (the value
+    # calls' per-variable helpers cost a call each otherwise).
+    "-fno-semantic-interposition",
+    "-shared",
+    "-pthread",
+    "-Wall",
+    *FLOAT_FLAGS,
+    *GLIBC_FLOOR_COMPILE,
+)
+
+
+# The generated step's entry in the runtime (generated.c).
+GENERATED_STEP = "generated_step"
+
+
+def compile_loader(
+    model_identifier: str, output: Path, fmi_version: int = 2, step: Generated | None = None
+) -> Path:
+    """The runtime, with the model's generated `step` (named generated_step) when
+    there is one (docs/codegen.md)."""
     exports = output.parent / "exports.map"
+    generated = []
+    if step is not None:
+        if step.name != GENERATED_STEP:
+            raise NativeBuildError(f"the runtime calls the step {GENERATED_STEP}, not {step.name}")
+        source = output.parent / "generated_step.c"
+        source.write_text(step.source)
+        # The C library's math (libm.so.6: the same soname since glibc 2.1).
+        generated = ["-DGENERATED_STEP", str(source), "-l:libm.so.6"]
     # Only the fmi functions, and the process-wide start object every copy of the
     # runtime must find (python_runtime.c): nothing else may interpose in the host.
     exports.write_text(f"{{ global: fmi{fmi_version}*; {PROCESS_OBJECT}; local: *; }};\n")
     headers = [f"-I{fmi3_headers()}"] if fmi_version == 3 else []
     command = [
         *compiler(),
-        "-std=gnu11",
-        "-O2",
-        "-fPIC",
-        # The version script keeps every symbol but the exports local, so nothing
-        # can interpose on them: let the compiler inline across them (the value
-        # calls' per-variable helpers cost a call each otherwise).
-        "-fno-semantic-interposition",
-        "-shared",
-        "-pthread",
-        "-Wall",
-        *GLIBC_FLOOR_COMPILE,
+        *C_FLAGS,
         f"-DMODEL_IDENTIFIER=\"{model_identifier}\"",
         *headers,
         *(str(_HERE / source) for source in SOURCES[fmi_version]),
+        *generated,
         "-Wl,-z,nodelete",
         f"-Wl,--version-script={exports}",
         *GLIBC_FLOOR_LINK,
@@ -206,13 +234,16 @@ def variables_record(model_description: bytes) -> str:
     return "\n".join(lines) + "\n"
 
 
-def install_loader(fmu_path, model_identifier: str, fmi_version: int = 2) -> None:
-    """Rewrite the .fmu in place: the runtime as the FMU's one binary, the records."""
+def install_loader(
+    fmu_path, model_identifier: str, fmi_version: int = 2, step: Generated | None = None
+) -> None:
+    """Rewrite the .fmu in place: the runtime (with the model's generated `step`,
+    if any) as the FMU's one binary, the records."""
     fmu_path = Path(fmu_path)
     folder = BINARY_FOLDER[fmi_version]
     binary = f"{folder}/{model_identifier}.so"
     with tempfile.TemporaryDirectory(prefix="cardan_joint_loader_") as workdir:
-        loader = compile_loader(model_identifier, Path(workdir) / "loader.so", fmi_version)
+        loader = compile_loader(model_identifier, Path(workdir) / "loader.so", fmi_version, step)
         rewritten = Path(workdir) / fmu_path.name
         with (
             zipfile.ZipFile(fmu_path) as source,

@@ -24,6 +24,9 @@ static const char CLAIM[] =
     "found = int(len(sizes) == 4 and 0 < sizes[0] <= sizes[1] == sizes[2] and sizes[3] > 0)\n"
     "if found:\n"
     "    inputs, known_size, first_output, outputs = sizes\n"
+    "    # The step state, handed over only to a runtime with the model's step in C.\n"
+    "    state_size = int(slave.fast_state_size()) if generated and hasattr(slave, "
+    "'fast_state_size') and hasattr(slave, 'fast_sync') else 0\n"
     "    # FMI 3: value reference -> flat indices (slave3._FLAT), as int64s: the\n"
     "    # count of references, each one's first index, the end, then the indices.\n"
     "    refs = getattr(slave, 'fast_flat', None)\n"
@@ -35,18 +38,19 @@ static const char CLAIM[] =
     ").tobytes() if refs else b''\n";
 
 /* In the order of enum fast_method. */
-static const char *const METHODS[] = {"fast_step", "fast_outputs", "fast_load", "fast_store"};
+static const char *const METHODS[] = {"fast_step", "fast_outputs", "fast_load", "fast_store",
+                                      "fast_sync"};
 
 /* One call into the slave with the GIL held; its status (an FMI status number). */
 static long call(struct instance *in, enum fast_method method, PyObject *a, PyObject *b,
-                 PyObject *c)
+                 PyObject *c, PyObject *d)
 {
     struct fast_path *fast = in->fast;
-    PyObject *const arguments[] = {a, b, c};
-    size_t count = !a ? 0 : !b ? 1 : !c ? 2 : 3;
+    PyObject *const arguments[] = {a, b, c, d};
+    size_t count = !a ? 0 : !b ? 1 : !c ? 2 : !d ? 3 : 4;
     PyObject *reply = p_PyObject_Vectorcall
                           ? p_PyObject_Vectorcall(fast->methods[method], arguments, count, NULL)
-                          : p_PyObject_CallFunctionObjArgs(fast->methods[method], a, b, c, NULL);
+                          : p_PyObject_CallFunctionObjArgs(fast->methods[method], a, b, c, d, NULL);
     long status = reply ? take_reply(fast, method, reply) : -1;
     if (reply)
         p_Py_DecRef(reply);
@@ -64,8 +68,8 @@ static long call(struct instance *in, enum fast_method method, PyObject *a, PyOb
 static void forget(struct fast_path *fast)
 {
     PyObject **owned[] = {&fast->slave,      &fast->methods[0], &fast->methods[1],
-                          &fast->methods[2], &fast->methods[3], &fast->queue,
-                          &fast->last_inputs, &fast->last_step};
+                          &fast->methods[2], &fast->methods[3], &fast->methods[4],
+                          &fast->queue,      &fast->last_inputs, &fast->last_step};
     for (size_t i = 0; i < sizeof owned / sizeof *owned; i++) {
         if (*owned[i])
             p_Py_DecRef(*owned[i]);
@@ -92,8 +96,13 @@ static int read_flat_table(struct fast_path *fast, PyObject *table)
 static int claim(struct instance *in, struct fast_path *fast)
 {
     PyObject *globals = p_PyDict_New(), *result = NULL;
-    if (globals && in->object && !p_PyDict_SetItemString(globals, "slave", in->object))
+    PyObject *generated = p_PyLong_FromLong(generated_compiled());
+    if (globals && generated && in->object &&
+        !p_PyDict_SetItemString(globals, "slave", in->object) &&
+        !p_PyDict_SetItemString(globals, "generated", generated))
         result = run_with(CLAIM, globals);
+    if (generated)
+        p_Py_DecRef(generated);
     int found = result && global_long(globals, "found") == 1;
     if (found) {
         fast->slave = p_PyDict_GetItemString(globals, "slave");
@@ -102,7 +111,8 @@ static int claim(struct instance *in, struct fast_path *fast)
         fast->known_size = global_long(globals, "known_size");
         fast->first_output = global_long(globals, "first_output");
         fast->outputs = global_long(globals, "outputs");
-        found = read_flat_table(fast, p_PyDict_GetItemString(globals, "flat_table"));
+        fast->state_size = global_long(globals, "state_size");
+        found = fast->state_size >= 0 && read_flat_table(fast, p_PyDict_GetItemString(globals, "flat_table"));
     }
     if (result)
         p_Py_DecRef(result);
@@ -126,13 +136,17 @@ static int set_up(struct instance *in, struct fast_path *fast)
     if (values)
         fast->values = values;
     /* A reply converts here first: a malformed one writes nothing. */
-    double *scratch =
-        values ? realloc(fast->scratch, (fast->outputs + fast->known_size) * sizeof *scratch)
-               : NULL;
-    if (!scratch)
+    long reply_size = fast->outputs + fast->known_size + fast->state_size;
+    double *scratch = values ? realloc(fast->scratch, reply_size * sizeof *scratch) : NULL;
+    if (scratch)
+        fast->scratch = scratch;
+    double *state = scratch ? realloc(fast->state, (fast->state_size + 1) * sizeof *state) : NULL;
+    if (!state)
         return 0;
-    fast->scratch = scratch;
-    for (int m = 0; m < 4; m++)
+    fast->state = state;
+    fast->generated = fast->state_size > 0 && generated_attach(fast);
+    int methods = fast->state_size > 0 ? FAST_METHODS : FAST_SYNC;
+    for (int m = 0; m < methods; m++)
         fast->methods[m] = p_PyObject_GetAttrString(fast->slave, METHODS[m]);
     /* pythonfmu's slaves make the list once, in __init__, and only append to
      * it; one that is no list is drained by name at every call. */
@@ -142,11 +156,11 @@ static int set_up(struct instance *in, struct fast_path *fast)
         fast->queue = NULL;
     }
     int ok = 1;
-    for (int m = 0; m < 4; m++)
+    for (int m = 0; m < methods; m++)
         ok = ok && fast->methods[m];
     p_PyErr_Clear();
-    fast->stale = 1, fast->inputs_written = 0;
-    return ok && call(in, FAST_STORE, NULL, NULL, NULL) == fmi2OK;
+    fast->stale = 1, fast->inputs_written = 0, fast->behind = 0;
+    return ok && call(in, FAST_STORE, NULL, NULL, NULL, NULL) == fmi2OK;
 }
 
 static void drop(struct instance *in)
@@ -157,6 +171,10 @@ static void drop(struct instance *in)
     free(fast->values);
     free(fast->scratch);
     free(fast->table);
+    free(fast->state);
+    free(fast->arguments);
+    free(fast->results);
+    free(fast->held);
     free(fast);
     in->fast = NULL;
 }
@@ -187,35 +205,58 @@ static void renew(struct instance *in, int again)
 void fast_detach(struct instance *in) { renew(in, 0); }
 void fast_reset(struct instance *in) { renew(in, 1); }
 
+/* Before any call into the slave once steps were taken in C: the slave takes
+ * the state, clock, inputs and outputs they left (fast_sync).  A slave that
+ * cannot (a fault, reported) is stepped in Python from then on. */
+void catch_up(struct instance *in)
+{
+    struct fast_path *fast = in->fast;
+    if (!fast->behind)
+        return;
+    fast->behind = 0;
+    if (fast_call(in, FAST_SYNC, fast->behind_time, 0) != fmi2OK)
+        fast->generated = 0;
+}
+
 /* One call into the slave, the GIL taken for it: fast_step(time, step, inputs),
- * fast_outputs(inputs), fast_load(inputs) or fast_store(). */
+ * fast_outputs(inputs), fast_load(inputs), fast_store() or fast_sync(time,
+ * state, held inputs, outputs). */
 long fast_call(struct instance *in, enum fast_method method, double time, double step)
 {
     struct fast_path *fast = in->fast;
+    if (method != FAST_SYNC)
+        catch_up(in);
     PyGILState_STATE gil = p_PyGILState_Ensure();
-    PyObject *inputs = method == FAST_STORE ? NULL : inputs_tuple(fast);
-    PyObject *t = NULL, *h = NULL;
-    if (method == FAST_STEP) {
-        t = p_PyFloat_FromDouble(time);
-        h = float_like(fast->last_step, step);
-        if (h)
-            keep(&fast->last_step, h);
+    PyObject *arguments[4] = {NULL, NULL, NULL, NULL};
+    int made = 1;
+    if (method == FAST_SYNC) {
+        arguments[0] = p_PyFloat_FromDouble(time);
+        arguments[1] = tuple_of(fast->state, fast->state_size);
+        arguments[2] = tuple_of(fast->held, fast->inputs);
+        arguments[3] = tuple_of(fast->values, fast->outputs);
+        made = arguments[0] && arguments[1] && arguments[2] && arguments[3];
+    } else if (method == FAST_STEP) {
+        arguments[0] = p_PyFloat_FromDouble(time);
+        arguments[1] = float_like(fast->last_step, step);
+        if (arguments[1])
+            keep(&fast->last_step, arguments[1]);
+        arguments[2] = inputs_tuple(fast);
+        made = arguments[0] && arguments[1] && arguments[2];
+    } else if (method != FAST_STORE) {
+        arguments[0] = inputs_tuple(fast);
+        made = arguments[0] != NULL;
     }
     long status;
-    if (method == FAST_STORE)
-        status = call(in, method, NULL, NULL, NULL);
-    else if (!inputs || (method == FAST_STEP && !(t && h))) {
+    if (made)
+        status = call(in, method, arguments[0], arguments[1], arguments[2], arguments[3]);
+    else {
         reportf(in, fmi2Error, "the slave's %s failed: no memory for its arguments",
                 METHODS[method]);
         status = fmi2Error;
-    } else if (method == FAST_STEP)
-        status = call(in, method, t, h, inputs);
-    else
-        status = call(in, method, inputs, NULL, NULL);
-    PyObject *owned[] = {inputs, t, h};
-    for (size_t i = 0; i < 3; i++)
-        if (owned[i])
-            p_Py_DecRef(owned[i]);
+    }
+    for (size_t i = 0; i < 4; i++)
+        if (arguments[i])
+            p_Py_DecRef(arguments[i]);
     p_PyErr_Clear();
     p_PyGILState_Release(gil);
     return status;

@@ -6,10 +6,10 @@
 #include "instance.h"
 
 /* The slave's methods, in the order fast_path.c looks them up. */
-enum fast_method { FAST_STEP, FAST_OUTPUTS, FAST_LOAD, FAST_STORE };
+enum fast_method { FAST_STEP, FAST_OUTPUTS, FAST_LOAD, FAST_STORE, FAST_SYNC, FAST_METHODS };
 
 struct fast_path {
-    PyObject *slave, *methods[4];
+    PyObject *slave, *methods[FAST_METHODS];
     PyObject *queue; /* the slave's log_queue: drained only when it holds a message */
     /* The last call's inputs tuple and step size: a value a host leaves as it
      * was (a steady input, a fixed step) crosses again as the same object. */
@@ -18,7 +18,16 @@ struct fast_path {
     int stale;          /* the outputs array is not current */
     int inputs_written; /* the slave has not taken the host's latest inputs yet */
     double *known, *values;
-    double *scratch; /* outputs + known_size: a reply converted before it is written */
+    double *scratch; /* outputs + known_size + state_size: a reply converted before it is written */
+    /* The generated step (generated_step.c, docs/codegen.md), when the build
+     * compiled one in and the slave hands over its step state: state_size
+     * doubles of state; arguments (t, h, state, known) and results (state,
+     * moved inputs, outputs); `held` the last step's moved inputs.  `behind`:
+     * steps were taken in C since the slave last saw the state (fast_sync), the
+     * last one ending at behind_time. */
+    int generated, behind;
+    long state_size;
+    double *state, *arguments, *results, *held, behind_time;
     /* FMI 3 (NULL for FMI 2, whose value references are the flat indices):
      * {n, start[0..n], indices...}: value reference vr < n holds the flat
      * indices indices[start[vr]] to indices[start[vr + 1] - 1]. */
@@ -30,12 +39,24 @@ int fast_table(struct fast_path *fast, const char *bytes, size_t size);
 long long flat_of(const struct fast_path *fast, unsigned vr, const long long **indices,
                   long long *own);
 long fast_call(struct instance *in, enum fast_method method, double time, double step);
+/* The generated step: 1 when it took the step (the arrays written), 0 when the
+ * slave must (generated_step.c, compiled in only with the model's step). */
+int generated_take(struct fast_path *fast, double time, double step);
+/* Sizes the arrays of the generated step; 0 (none used) when its sizes do not
+ * match the slave's layout. */
+int generated_attach(struct fast_path *fast);
+/* 1 when the build compiled the model's step in (the slave is asked for its state). */
+int generated_compiled(void);
+/* Before any call into the slave: it takes what the steps taken in C left. */
+void catch_up(struct instance *in);
 /* With the GIL: a float of `value`, `last` itself (a reference added) when it
  * holds the same bits; NULL: no memory. */
 PyObject *float_like(PyObject *last, double value);
 /* With the GIL: *slot holds `value` (a reference of its own) for the next call,
  * the object it held before released. */
 void keep(PyObject **slot, PyObject *value);
+/* With the GIL: n doubles as a new tuple of floats (NULL: no memory). */
+PyObject *tuple_of(const double *values, long n);
 /* With the GIL: the inputs (known[0..inputs)) as a tuple, kept as last_inputs. */
 PyObject *inputs_tuple(struct fast_path *fast);
 /* With the GIL: the status of a method's reply, its values written into the

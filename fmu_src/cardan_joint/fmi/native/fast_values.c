@@ -52,6 +52,19 @@ PyObject *inputs_tuple(struct fast_path *fast)
     return tuple;
 }
 
+PyObject *tuple_of(const double *values, long n)
+{
+    PyObject *tuple = p_PyTuple_New(n);
+    for (long i = 0; tuple && i < n; i++) {
+        PyObject *item = p_PyFloat_FromDouble(values[i]);
+        if (!item || p_PyTuple_SetItem(tuple, i, item)) {
+            p_Py_DecRef(tuple);
+            tuple = NULL;
+        }
+    }
+    return tuple;
+}
+
 void keep(PyObject **slot, PyObject *value)
 {
     p_Py_IncRef(value);
@@ -60,13 +73,26 @@ void keep(PyObject **slot, PyObject *value)
     *slot = value;
 }
 
-/* Where each method's values go: `first` doubles into the outputs array, then
- * `second` into the known array (the protocol: fmi/fast_step.py). */
-static void destinations(const struct fast_path *fast, enum fast_method method, long *first,
-                         long *second)
+/* Where a method's values go, in order (the protocol: fmi/fast_step.py): the
+ * outputs, the inputs or every known value, then the step state when the
+ * slave hands it over; how many parts. */
+struct part {
+    double *into;
+    long count;
+};
+
+static int destinations(const struct fast_path *fast, enum fast_method method, struct part part[3])
 {
-    *first = method == FAST_STEP || method == FAST_OUTPUTS ? fast->outputs : 0;
-    *second = method == FAST_STEP ? fast->inputs : method == FAST_STORE ? fast->known_size : 0;
+    int n = 0;
+    if (method == FAST_STEP || method == FAST_OUTPUTS)
+        part[n++] = (struct part){fast->values, fast->outputs};
+    if (method == FAST_STEP)
+        part[n++] = (struct part){fast->known, fast->inputs};
+    if (method == FAST_STORE)
+        part[n++] = (struct part){fast->known, fast->known_size};
+    if ((method == FAST_STEP || method == FAST_STORE) && fast->state_size > 0)
+        part[n++] = (struct part){fast->state, fast->state_size};
+    return n;
 }
 
 /* The status of a reply (a status, or (status, values, ...): tuples of
@@ -79,12 +105,15 @@ long take_reply(struct fast_path *fast, enum fast_method method, PyObject *reply
         p_PyErr_Clear();
         return p_PyLong_AsLong(reply);
     }
-    long first, second, taken = 0;
-    destinations(fast, method, &first, &second);
-    for (Py_ssize_t part = 1; part < size; part++) {
-        PyObject *values = py_tuple_item(reply, part);
+    struct part part[3];
+    int parts = destinations(fast, method, part);
+    long expected = 0, taken = 0;
+    for (int k = 0; k < parts; k++)
+        expected += part[k].count;
+    for (Py_ssize_t item = 1; item < size; item++) {
+        PyObject *values = py_tuple_item(reply, item);
         Py_ssize_t count = py_tuple_size(values);
-        if (count < 0 || count > first + second - taken)
+        if (count < 0 || count > expected - taken)
             return -1;
         PyObject *const *items = py_tuple_items(values);
         double *scratch = fast->scratch + taken;
@@ -95,10 +124,10 @@ long take_reply(struct fast_path *fast, enum fast_method method, PyObject *reply
         }
         taken += count;
     }
-    if (size < 2 || taken != first + second)
+    if (size < 2 || taken != expected)
         return -1;
-    memcpy(fast->values, fast->scratch, (size_t)first * sizeof(double));
-    memcpy(fast->known, fast->scratch + first, (size_t)second * sizeof(double));
+    for (int k = 0, at = 0; k < parts; at += part[k].count, k++)
+        memcpy(part[k].into, fast->scratch + at, (size_t)part[k].count * sizeof(double));
     return p_PyLong_AsLong(py_tuple_item(reply, 0));
 }
 
@@ -125,7 +154,10 @@ int fast_table(struct fast_path *fast, const char *bytes, size_t size)
 void fast_before(struct instance *in)
 {
     struct fast_path *fast = in->fast;
-    if (!fast || !fast->inputs_written)
+    if (!fast)
+        return;
+    catch_up(in);
+    if (!fast->inputs_written)
         return;
     fast_call(in, FAST_LOAD, 0, 0);
     fast->inputs_written = 0;
@@ -224,12 +256,20 @@ fmi2Status fast_get(struct instance *in, const unsigned vr[], size_t n, double v
     return status == fmi2Warning ? fmi2OK : (fmi2Status)status;
 }
 
-/* doStep in one call into Python; -1 when the instance has no fast path. */
+/* doStep: in C when the generated step takes it (the slave catches up at its
+ * next call), else in one call into Python; -1 when the instance has no fast
+ * path. */
 int fast_step(struct instance *in, double time, double step)
 {
     struct fast_path *fast = in->fast;
     if (!fast)
         return -1;
+    if (fast->generated && generated_take(fast, time, step)) {
+        in->last_successful_time = fast->behind_time = time + step;
+        fast->behind = 1;
+        fast->inputs_written = fast->stale = 0;
+        return fmi2OK;
+    }
     long status = fast_call(in, FAST_STEP, time, step);
     /* pythonfmu: the step's end when taken, its start when not (NaN before any). */
     in->last_successful_time = status == fmi2OK ? time + step : time;

@@ -11,6 +11,7 @@
 #define ENV_HOME "CARDAN_JOINT_FMU_PYTHON_HOME"
 #define ENV_PATH "CARDAN_JOINT_FMU_PYTHON_PATH"
 #define ENV_STDERR "CARDAN_JOINT_FMU_STDERR"
+#define ENV_PYTHON_STEP "CARDAN_JOINT_FMU_PYTHON_STEP"
 /* The CPython minors the loader looks for on a machine, newest first after the
  * build's own; a Python host of any 3.x from the record's minimum is used. */
 #define NEWEST_MINOR 13

@@ -9,14 +9,13 @@ FMU maps its variables onto this object.
 """
 
 import math
+from operator import attrgetter
 
 from ...framework.refusal import Refusal
 from ...framework.stepped import ShaftModel
-from ...framework.values import MAX_INCREMENT, Table, angle_limit_problem, set_start_values
-
-# The kernel itself: the FMU's once-per-step call on floats skips the array dispatch.
+from ...framework.values import Table, angle_limit_problem, set_start_values
 from ...physics.response import JointResponse, kernel
-from ...physics.revolutions import advanced, angle_value, split_turns
+from ...physics.revolutions import split_turns
 from ...variable_schema import Variable
 from . import variables as table
 from .life import JointLife
@@ -28,14 +27,11 @@ from .limits import (
     fits,
 )
 from .refusals import JointReason
+from .step import ANGLE, MOVED, STATE, joint_outputs, joint_step
 
-# After the two angles, the outputs are the kernel's leading fields, in order
-# (then, with life on, the bearing loads and life: `JointLife._with_life`).
-_KINEMATIC_OUTPUTS = len(table.WITHOUT_LIFE.OUTPUTS) - 2
-assert JointResponse._fields[:_KINEMATIC_OUTPUTS] == table.WITHOUT_LIFE.OUTPUTS[2:], (
-    "kernel's field order"
-)
-_CARDAN_ERROR = JointResponse._fields.index("cardan_error")
+_INPUTS = attrgetter(*table.INPUTS)
+# The parameters without life, the step's last arguments (the table's order).
+_STEP_PARAMETERS = attrgetter(*table.WITHOUT_LIFE.PARAMETERS)
 
 
 class CardanJoint(JointLife, ShaftModel):
@@ -101,15 +97,20 @@ class CardanJoint(JointLife, ShaftModel):
 
     # --- stepping ----------------------------------------------------------
 
-    def inputs(self) -> tuple[float, ...]:  # the generic one costs 3 k instructions a step
-        return (
+    def inputs(self) -> tuple[float, ...]:
+        return _INPUTS(self)
+
+    def set_inputs(self, values) -> None:  # once or twice a step: the generic loop
+        # of setattr costs thousands of instructions (and writing __dict__ unspecializes
+        # every attribute read of the object)
+        (
             self.input_speed,
             self.input_acceleration,
             self.bend_angle,
             self.bend_angle_rate,
             self.bend_angle_acceleration,
             self.load_torque,
-        )
+        ) = values
 
     def input_problem(self, step_size: float = 0.0) -> Refusal | None:
         """The Refusal of the inputs over [time, time + step_size], or None."""
@@ -191,50 +192,39 @@ class CardanJoint(JointLife, ShaftModel):
     # --- the FMU's step ------------------------------------------------------
 
     def run(self, time: float, h: float, inputs) -> "tuple | Refusal":
-        """The FMU's step, top to bottom: take `inputs` (the table's order), advance
-        `h` s from `time` and return the outputs and the inputs after it (the
-        table's orders), or the Refusal of the step (then only the inputs have
-        changed).
+        """The FMU's step: take `inputs` (the table's order), advance `h` s from
+        `time` and return the outputs and the inputs after it (the table's
+        orders), or the Refusal of the step (then only the inputs have changed).
 
-        The common case inline, once per FMU step: the checks of `step_problem`
-        and `_advance` at once (the inputs' through `_fits`, as `input_problem`),
-        the same arithmetic as theirs, so that state and outputs are theirs to the
-        bit; anything else (a refusal to name) takes the generic `run`."""
-        speed, acceleration, beta, rate, bend_acceleration, load = inputs
-        (
-            self.input_speed,
-            self.input_acceleration,
-            self.bend_angle,
-            self.bend_angle_rate,
-            self.bend_angle_acceleration,
-            self.load_torque,
-        ) = inputs
-        increment = h * (speed + 0.5 * acceleration * h)
-        end_speed = speed + acceleration * h
-        if not (
-            0.0 < h < math.inf
-            and self.parameter_fault is None
-            and fits(
-                speed, acceleration, beta, rate, bend_acceleration, load, self.max_bend_angle, h
-            )
-            and abs(increment) <= MAX_INCREMENT
-            and abs(end_speed) <= SPEED_LIMIT
-        ):
+        The step is `step.joint_step`, the definition the FMU's C runtime is
+        generated from; a step it does not take goes through the checks of the
+        generic `run`, which name the refusal."""
+        self.set_inputs(inputs)
+        taken = joint_step(time, h, *self.step_state(), *inputs, *_STEP_PARAMETERS(self))
+        if taken is None:
             return ShaftModel.run(self, time, h, inputs)
-        # The life hooks are called only with life on: a call costs a few hundred
-        # instructions a step, as much as the runtime's whole budget.
-        start = self._life_start() if self.life else None  # as `_advance`
-        self._angle = angle = advanced(self._angle, increment)
-        self.input_speed = end_speed
-        self.bend_angle = end_beta = beta + h * (rate + 0.5 * bend_acceleration * h)
-        self.bend_angle_rate = end_rate = rate + bend_acceleration * h
+        start = self._life_start() if self.life else None  # from before the step
+        self._angle = taken[:ANGLE]
+        moved = taken[len(STATE) : MOVED]
+        self.set_inputs(moved)
         if start is not None:
             self._add_damage(h, start)
         self.time = time + h
-        outputs = self._outputs(
-            angle, end_beta, end_speed, acceleration, end_rate, bend_acceleration, load
-        )
-        return outputs, (end_speed, acceleration, end_beta, end_rate, bend_acceleration, load)
+        outputs = taken[MOVED:]
+        if self.life:
+            end_speed, end_beta, load = moved[0], moved[2], moved[5]
+            return self._with_life(outputs, outputs[2:], load, end_speed, end_beta), moved
+        return outputs, moved
+
+    def step_state(self) -> tuple:
+        """The values of `step.STATE`: what the step advances beside the inputs."""
+        return (*self._angle, *self._phase, self.parameter_fault is None)
+
+    def set_step_state(self, state) -> None:
+        """Take a state a generated step advanced (`step_state`'s values); only the
+        angle moves over a step, the rest follows the parameters."""
+        turns, fraction, fraction_error = state[:ANGLE]
+        self._angle = (int(turns), float(fraction), float(fraction_error))
 
     # --- outputs -----------------------------------------------------------
 
@@ -272,23 +262,9 @@ class CardanJoint(JointLife, ShaftModel):
         )
 
     def _outputs(self, angle, beta, speed, acceleration, rate, bend_acceleration, load) -> tuple:
-        turns, fraction, error = angle
-        phase_turns, phase_fraction, phase_error = self._phase
-        r = kernel(
-            math,
-            fraction + (phase_fraction + (error + phase_error)),
-            beta,
-            speed,
-            acceleration,
-            rate,
-            bend_acceleration,
-            self.crosspiece_inertia_1,
-            self.crosspiece_inertia_2,
-            self.crosspiece_inertia_3,
-            load,
-            -1.0 if (turns + phase_turns) & 1 else 1.0,
-        )
-        input_angle = angle_value(angle)
-        # Two roundings at most: within one ulp of gamma2 however many turns.
-        values = (input_angle, input_angle + r[_CARDAN_ERROR]) + r[:_KINEMATIC_OUTPUTS]
-        return self._with_life(values, r, load, speed, beta) if self.life else values
+        values = joint_outputs(
+            angle, self._phase, beta, speed, acceleration, rate, bend_acceleration, load,
+            self.crosspiece_inertia_1, self.crosspiece_inertia_2, self.crosspiece_inertia_3,
+        )  # fmt: skip
+        # The kernel's fields follow the two angles (`step.KINEMATIC_OUTPUTS`).
+        return self._with_life(values, values[2:], load, speed, beta) if self.life else values

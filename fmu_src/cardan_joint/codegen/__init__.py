@@ -1,0 +1,16 @@
+"""C from Python: a model's step, written once in Python, translated into C
+that performs the same IEEE operations in the same order (docs/codegen.md).
+
+`generate(function, name)` gives the C source of `function` and every function
+it calls; a construct outside the subset raises `Untranslatable`, naming the
+construct and its file:line. `FLOAT_FLAGS` are the compiler flags the
+generated C needs to give CPython's bits.
+"""
+
+from .types import Untranslatable
+from .unit import Generated, generate
+
+# No fused multiply-add, no reassociation: each operation rounds as CPython's does.
+FLOAT_FLAGS = ("-ffp-contract=off", "-fno-fast-math")
+
+__all__ = ["FLOAT_FLAGS", "Generated", "Untranslatable", "generate"]

@@ -1,0 +1,256 @@
+"""One Python function as one C function: its parameters and locals typed
+(annotations, else float; a local takes the type of its first value), its
+statements in order, temporaries for values Python evaluates once."""
+
+import ast
+import inspect
+import textwrap
+import types
+from dataclasses import dataclass, field
+from typing import Any
+
+from .calls import Calls, accepts
+from .types import FLOAT, INT, Module, Scalar, Tuple, Untranslatable, type_of_annotation
+
+
+@dataclass
+class Signature:
+    c_name: str
+    parameters: list[tuple[str, Scalar | Tuple]]
+    returns: Any = None  # Scalar | Tuple once known
+    optional: bool = False  # the function may return None (the step refused)
+    text: list[str] = field(default_factory=list)
+
+    def prototype(self) -> str:
+        parameters = [f"{kind.c} {name}_" for name, kind in self.parameters]
+        if self.optional:
+            parameters.append(f"{self.returns.c} *result_")
+        returns = "int" if self.optional else self.returns.c
+        return f"static {returns} {self.c_name}({', '.join(parameters) or 'void'})"
+
+
+def source_of(function: types.FunctionType) -> tuple[ast.FunctionDef, str, int]:
+    """The function's tree, its file and the line its tree's line 1 is."""
+    try:
+        lines, first = inspect.getsourcelines(function)
+    except (OSError, TypeError) as error:
+        raise Untranslatable(f"{function.__qualname__}: no source to translate ({error})") from None
+    tree = ast.parse(textwrap.dedent("".join(lines))).body[0]
+    assert isinstance(tree, ast.FunctionDef)
+    return tree, inspect.getsourcefile(function) or "?", first
+
+
+class FunctionTranslator(Calls):
+    def __init__(self, unit: Any, function: types.FunctionType, modules: dict, c_name: str) -> None:
+        self.unit = unit
+        self.tree, self.file, self.first = source_of(function)
+        self.namespace = function.__globals__
+        self.bound = {name: Module(module) for name, module in modules.items()}
+        self.locals: dict[str, Scalar | Tuple] = {}
+        self.temporaries: list[tuple[str, Scalar | Tuple]] = []
+        self.pending: list[str] = []
+        self.body: list[str] = []
+        if function.__code__.co_freevars:
+            raise self.refuse(self.tree, "a closure's variables have no C")
+        arguments = self.tree.args
+        if arguments.vararg or arguments.kwarg or arguments.kwonlyargs:
+            raise self.refuse(self.tree, "C takes positional parameters only")
+        parameters = []
+        for argument in arguments.posonlyargs + arguments.args:
+            if argument.arg in modules:
+                continue
+            kind = self.annotated(argument.annotation, argument) if argument.annotation else FLOAT
+            self.locals[argument.arg] = kind
+            parameters.append((argument.arg, kind))
+        self.signature = Signature(c_name, parameters)
+        self.returns_annotated(self.tree.returns)
+
+    def where(self, node: ast.AST) -> str:
+        return f"{self.file}:{self.first + getattr(node, 'lineno', 1) - 1}"
+
+    def annotated(self, annotation: ast.expr, node: ast.AST) -> Scalar | Tuple:
+        try:
+            value = eval(compile(ast.Expression(annotation), self.file, "eval"), self.namespace)
+        except Exception as error:
+            raise self.refuse(annotation, f"its annotation does not evaluate ({error})") from None
+        return type_of_annotation(value, self.where(node))
+
+    def returns_annotated(self, annotation: ast.expr | None) -> None:
+        """The return type, or None to take it from the first return; `X | None`:
+        the function may refuse (the step itself only)."""
+        if isinstance(annotation, ast.BinOp) and isinstance(annotation.op, ast.BitOr):
+            if isinstance(annotation.right, ast.Constant) and annotation.right.value is None:
+                self.signature.optional = True
+                annotation = annotation.left
+        inferred = annotation is None or (
+            ast.unparse(annotation) == "tuple"
+            or (isinstance(annotation, ast.Subscript) and "..." in ast.unparse(annotation.slice))
+        )
+        if not inferred:
+            assert annotation is not None
+            self.signature.returns = self.annotated(annotation, annotation)
+
+    def hoist(self, text: str, kind: Scalar | Tuple) -> str:
+        name = f"tmp_{len(self.temporaries)}"
+        self.temporaries.append((name, kind))
+        self.pending.append(f"{name} = {text};")
+        return name
+
+    # --- statements ---------------------------------------------------------
+
+    def translate(self) -> Signature:
+        self.block(self.tree.body, 1)
+        if self.signature.returns is None:
+            raise self.refuse(self.tree, "it returns no value")
+        declarations = [f"    {kind.c} {name}_;" for name, kind in self.locals.items()
+                        if name not in dict(self.signature.parameters)]  # fmt: skip
+        declarations += [f"    {kind.c} {name};" for name, kind in self.temporaries]
+        self.signature.text = [self.signature.prototype(), "{", *declarations, *self.body, "}"]
+        return self.signature
+
+    def block(self, statements: list[ast.stmt], depth: int) -> None:
+        for statement in statements:
+            if isinstance(statement, ast.Expr) and isinstance(statement.value, ast.Constant):
+                continue  # a docstring
+            method = getattr(self, "_" + type(statement).__name__, None)
+            if method is None:
+                raise self.refuse(
+                    statement, f"no C for a Python {type(statement).__name__} statement"
+                )
+            self.pending = []
+            lines = method(statement, depth)
+            pad = "    " * depth
+            self.body += [pad + line for line in self.pending] + lines
+
+    def nested(self, statements: list[ast.stmt], depth: int) -> list[str]:
+        outer, pending, self.body = self.body, self.pending, []
+        self.block(statements, depth)
+        inner, self.body, self.pending = self.body, outer, pending
+        return inner
+
+    def assign(self, name: str, text: str, kind: Any, node: ast.AST) -> str:
+        if not isinstance(kind, Scalar | Tuple):
+            raise self.refuse(node, f"{name} would hold {kind}: C keeps numbers and tuples")
+        known = self.locals.setdefault(name, kind)
+        if known != kind:
+            raise self.refuse(
+                node, f"{name} holds {known} values, not {kind}: C keeps one type per name"
+            )
+        return f"{name}_ = {text};"
+
+    def _Assign(self, node: ast.Assign, depth: int) -> list[str]:
+        pad = "    " * depth
+        if len(node.targets) != 1:
+            raise self.refuse(node, "one target per assignment")
+        target = node.targets[0]
+        if isinstance(target, ast.Name):
+            text, kind = self.value_of(node.value)
+            return [pad + self.assign(target.id, text, kind, node)]
+        if not isinstance(target, ast.Tuple) or not all(
+            isinstance(t, ast.Name) for t in target.elts
+        ):
+            raise self.refuse(node, "targets are names or a tuple of names")
+        names = [t.id for t in target.elts]  # type: ignore[attr-defined]
+        if isinstance(node.value, ast.Tuple) and len(node.value.elts) == len(names):
+            # Every value first, as Python's a, b = b, a.
+            items = [self.scalar(element) for element in node.value.elts]
+            values = [(self.hoist(text, kind), kind) for text, kind in items]
+        else:
+            texts, whole = self.fields(node.value)
+            if len(texts) != len(names):
+                raise self.refuse(node, f"{len(names)} names for a tuple of {len(texts)}")
+            values = list(zip(texts, whole.items, strict=True))
+        return [pad + self.assign(n, t, k, node) for n, (t, k) in zip(names, values, strict=True)]
+
+    def _AnnAssign(self, node: ast.AnnAssign, depth: int) -> list[str]:
+        if node.value is None or not isinstance(node.target, ast.Name):
+            raise self.refuse(node, "an annotated assignment gives a name a value")
+        kind = self.annotated(node.annotation, node)
+        text, given = self.value_of(node.value)
+        if not accepts(kind, given):
+            raise self.refuse(node, f"a {given} value for a {kind} name")
+        return ["    " * depth + self.assign(node.target.id, text, kind, node)]
+
+    def _AugAssign(self, node: ast.AugAssign, depth: int) -> list[str]:
+        if not isinstance(node.target, ast.Name):
+            raise self.refuse(node, "only a name is updated in place")
+        value = ast.BinOp(ast.Name(id=node.target.id), node.op, node.value)
+        text, kind = self.value_of(ast.copy_location(value, node))
+        return ["    " * depth + self.assign(node.target.id, text, kind, node)]
+
+    def _If(self, node: ast.If, depth: int) -> list[str]:
+        pad = "    " * depth
+        lines = [f"{pad}if ({self.truth(node.test)}) {{", *self.nested(node.body, depth + 1)]
+        if node.orelse:
+            # An elif's test is evaluated only once the if's has failed.
+            lines += [f"{pad}}} else {{", *self.nested(node.orelse, depth + 1)]
+        return lines + [f"{pad}}}"]
+
+    def _While(self, node: ast.While, depth: int) -> list[str]:
+        pad = "    " * depth
+        if node.orelse:
+            raise self.refuse(node, "a while loop's else")
+        test = self.truth(node.test)
+        before, self.pending = self.pending, []
+        inner = "    " * (depth + 1)
+        head = [f"{pad}for (;;) {{", *(inner + line for line in before), f"{inner}if (!{test})",
+                f"{inner}    break;"]  # fmt: skip
+        return head + self.nested(node.body, depth + 1) + [f"{pad}}}"]
+
+    def _For(self, node: ast.For, depth: int) -> list[str]:
+        pad = "    " * depth
+        call = node.iter
+        if (
+            node.orelse
+            or not isinstance(node.target, ast.Name)
+            or not (
+                isinstance(call, ast.Call)
+                and isinstance(call.func, ast.Name)
+                and call.func.id == "range"
+            )
+            or call.keywords
+            or not 1 <= len(call.args) <= 3
+        ):
+            raise self.refuse(node, "a for loop runs over range(...) with a name, no else")
+        bounds = [self.scalar(a) for a in call.args]
+        if any(kind is not INT for _, kind in bounds):
+            raise self.refuse(node, "range() takes ints")
+        step = self.index(call.args[2], node) if len(call.args) == 3 else 1
+        if step == 0:
+            raise self.refuse(node, "range() with a step of 0")
+        start = bounds[0][0] if len(bounds) > 1 else "0"
+        stop = self.hoist(bounds[-1 if len(bounds) == 1 else 1][0], INT)
+        self.assign(node.target.id, start, INT, node)  # the loop variable is a count
+        name = node.target.id + "_"
+        test = "<" if step > 0 else ">"
+        head = f"{pad}for ({name} = {start}; {name} {test} {stop}; {name} += {step}) {{"
+        return [head, *self.nested(node.body, depth + 1), f"{pad}}}"]
+
+    def _Return(self, node: ast.Return, depth: int) -> list[str]:
+        pad = "    " * depth
+        signature = self.signature
+        if node.value is None or (
+            isinstance(node.value, ast.Constant) and node.value.value is None
+        ):
+            if not signature.optional:
+                raise self.refuse(
+                    node, "a return of None from a function not annotated `... | None`"
+                )
+            return [f"{pad}return 0;"]
+        text, kind = self.value_of(node.value)
+        if signature.returns is None and isinstance(kind, Scalar | Tuple):
+            signature.returns = kind
+        if not accepts(signature.returns, kind):
+            raise self.refuse(node, f"returns a {kind} where it returns a {signature.returns}")
+        if signature.optional:
+            return [f"{pad}*result_ = {text};", f"{pad}return 1;"]
+        return [f"{pad}return {text};"]
+
+    def _Break(self, node: ast.Break, depth: int) -> list[str]:
+        return ["    " * depth + "break;"]
+
+    def _Continue(self, node: ast.Continue, depth: int) -> list[str]:
+        return ["    " * depth + "continue;"]
+
+    def _Pass(self, node: ast.Pass, depth: int) -> list[str]:
+        return []

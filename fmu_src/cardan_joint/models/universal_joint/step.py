@@ -1,0 +1,114 @@
+"""The joint's step, written once: the definition `CardanJoint.run` runs and the
+build translates into the FMU's C runtime (docs/codegen.md), so both give the
+same bits. Pure functions of floats: the inputs held over the step, the
+parameters, the input angle and yoke phase as exact revolutions
+(`physics.revolutions`); the life consumed is added around it (`life.py`).
+"""
+
+import math
+
+from ...framework.values import MAX_INCREMENT
+from ...physics.response import JointResponse, kernel
+from ...physics.revolutions import Turns, advanced, angle_value
+from . import variables as table
+from .limits import SPEED_LIMIT, fits
+
+# After the two angles, the outputs are the kernel's leading fields, in order
+# (then, with life on, the bearing loads and life: `JointLife._with_life`).
+KINEMATIC_OUTPUTS = len(table.WITHOUT_LIFE.OUTPUTS) - 2
+assert JointResponse._fields[:KINEMATIC_OUTPUTS] == table.WITHOUT_LIFE.OUTPUTS[2:], (
+    "kernel's field order"
+)
+_CARDAN_ERROR = JointResponse._fields.index("cardan_error")
+# The state the step advances beside the inputs: the input angle and the yoke
+# phase as exact revolutions, and whether the parameters let it run (both fixed
+# at `start`). A generated step takes (time, h, state, inputs, parameters) and
+# gives (state, the inputs after the step, outputs): the FMU's runtime keeps
+# these values in C (docs/codegen.md).
+STATE = (
+    "turns", "fraction", "fraction_error", "phase_turns", "phase_fraction", "phase_error",
+    "parameters_valid",
+)  # fmt: skip
+ANGLE = STATE.index("phase_turns")  # the input angle's values lead the state
+MOVED = len(STATE) + len(table.INPUTS)
+
+
+def joint_outputs(
+    angle: Turns,
+    phase: Turns,
+    beta: float,
+    speed: float,
+    acceleration: float,
+    rate: float,
+    bend_acceleration: float,
+    load: float,
+    I1: float,
+    I2: float,
+    I3: float,
+) -> tuple:
+    """The outputs without life, in the table's order, at input angle `angle`."""
+    turns, fraction, error = angle
+    phase_turns, phase_fraction, phase_error = phase
+    # The quaternion has period 4 pi: its sign is (-1)^(whole turns of psi).
+    sign = -1.0 if (turns + phase_turns) & 1 == 1 else 1.0
+    psi = fraction + (phase_fraction + (error + phase_error))
+    r = kernel(
+        math, psi, beta, speed, acceleration, rate, bend_acceleration, I1, I2, I3, load, sign
+    )
+    input_angle = angle_value(angle)
+    # Two roundings at most: within one ulp of gamma2 however many turns.
+    return (input_angle, input_angle + r[_CARDAN_ERROR]) + r[:KINEMATIC_OUTPUTS]
+
+
+def joint_step(
+    time: float,
+    h: float,
+    turns: int,
+    fraction: float,
+    fraction_error: float,
+    phase_turns: int,
+    phase_fraction: float,
+    phase_error: float,
+    parameters_valid: bool,
+    input_speed: float,
+    input_acceleration: float,
+    bend_angle: float,
+    bend_angle_rate: float,
+    bend_angle_acceleration: float,
+    load_torque: float,
+    yoke_phase: float,
+    input_angle_start: float,
+    crosspiece_inertia_1: float,
+    crosspiece_inertia_2: float,
+    crosspiece_inertia_3: float,
+    max_bend_angle: float,
+) -> tuple | None:
+    """A step of `h` s from `time` with the inputs held (speed and bend angle at
+    constant acceleration): the state, the inputs after the step and the outputs
+    without life (`STATE`), or None when the step is not taken here (the model's
+    checks then name the refusal). The yoke phase and start angle enter through
+    the state (`start` reduces them), not as parameters."""
+    speed, acceleration, load = input_speed, input_acceleration, load_torque
+    beta, rate, bend_acceleration = bend_angle, bend_angle_rate, bend_angle_acceleration
+    increment = h * (speed + 0.5 * acceleration * h)
+    end_speed = speed + acceleration * h
+    # NaN fails every comparison, so a NaN anywhere is never taken here.
+    if not (
+        0.0 < h < math.inf
+        and parameters_valid
+        and fits(speed, acceleration, beta, rate, bend_acceleration, load, max_bend_angle, h)
+        and abs(increment) <= MAX_INCREMENT
+        and abs(end_speed) <= SPEED_LIMIT
+    ):
+        return None
+    angle = advanced((turns, fraction, fraction_error), increment)
+    end_beta = beta + h * (rate + 0.5 * bend_acceleration * h)
+    end_rate = rate + bend_acceleration * h
+    moved = (end_speed, acceleration, end_beta, end_rate, bend_acceleration, load)
+    phase = (phase_turns, phase_fraction, phase_error)
+    inertia = (crosspiece_inertia_1, crosspiece_inertia_2, crosspiece_inertia_3)
+    outputs = joint_outputs(
+        angle, phase, end_beta, end_speed, acceleration, end_rate, bend_acceleration, load,
+        inertia[0], inertia[1], inertia[2],
+    )  # fmt: skip
+    return angle + phase + (parameters_valid,) + moved + outputs

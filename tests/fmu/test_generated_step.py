@@ -1,0 +1,108 @@
+"""The generated step in the FMU's runtime (docs/codegen.md): a build whose
+model step the generator translates (the joint without life) takes every step
+it can in C, without entering Python, and gives the same bits, statuses and
+messages as the same FMU stepping in Python, FMI 2.0 and 3.0: over every kind
+of call the one-call step serves (test_fast_path's scenario) and over random
+runs with refusals, FMU states set back and long steps."""
+
+import math
+import random
+
+import pytest
+from test_fast_path import bits, count_entries, model_class, scenario, slave_classes
+
+from cardan_joint.host.instance import ExtractedFMU
+from cardan_joint.models.universal_joint import variables as table
+
+NO_LIFE = ("--no-life",)
+COUNTED = ("fast_sync", "fast_step")
+
+
+@pytest.fixture(scope="module", params=[2, 3], ids=["fmi2", "fmi3"])
+def extracted(request, built):
+    with ExtractedFMU(built(fmi_version=request.param, settings=NO_LIFE)) as fmu:
+        fmu.version = request.param
+        with fmu.instance("warm-up"):  # pythonfmu imports the script
+            pass
+        yield fmu
+
+
+def both(extracted, monkeypatch, run):
+    """run(instance) with the generated step and with every step in Python (the
+    slave then offers no step state, so the runtime keeps its step in Python):
+    (results, messages, calls of the model's run and of the slave's methods)."""
+    slave_class, fast_step = slave_classes(extracted)
+    outcomes = []
+    for generated in (True, False):
+        if not generated:
+            monkeypatch.delattr(fast_step, "fast_state_size")
+        counts = count_entries(monkeypatch, slave_class, COUNTED)
+        count_entries(monkeypatch, model_class(slave_class), ("run",), counts)
+        messages: list = []
+        with extracted.instance("same", exit_initialization=False, messages=messages) as instance:
+            outcomes.append((run(instance), messages, dict(counts)))
+    return outcomes
+
+
+def test_every_kind_of_call_gives_the_python_steps_bits_and_messages(extracted, monkeypatch):
+    (c_run, c_messages, c_counts), (python_run, python_messages, python_counts) = both(
+        extracted, monkeypatch, scenario
+    )
+    assert c_run == python_run
+    assert c_messages == python_messages
+    # In C: every taken step (the refused one goes to the slave, which says why);
+    # the slave caught up before each call that needs its state.
+    assert python_counts == {"run": 24, "fast_sync": 0, "fast_step": 24}
+    assert c_counts["run"] == c_counts["fast_step"] == 1 and c_counts["fast_sync"] >= 3
+
+
+def random_inputs(rng: random.Random) -> dict:
+    """Speeds to 1000 rad/s both ways, loads of both signs, a bend that crosses
+    3 deg or reaches its guard (0.7 rad by default), speed reversals, and now
+    and then a value out of range or not a number."""
+    speed = rng.choice([rng.uniform(-1000.0, 1000.0), rng.uniform(-2.0, 2.0), 0.0])
+    values = {
+        "input_speed": speed,
+        "input_acceleration": rng.choice([0.0, rng.uniform(-1e4, 1e4), -2e3 * speed]),
+        "bend_angle": rng.choice([rng.uniform(-0.75, 0.75), -math.radians(3.0)]),
+        "bend_angle_rate": rng.choice([0.0, rng.uniform(-2.0, 2.0), 2 * math.radians(3.0)]),
+        "bend_angle_acceleration": rng.uniform(-20.0, 20.0),
+        "load_torque": rng.choice([rng.uniform(-3000.0, 3000.0), -50.0]),
+    }
+    if rng.random() < 0.05:
+        values[rng.choice(list(values))] = rng.choice([math.nan, math.inf, 2e9])
+    return values
+
+
+def random_run(seed: int):
+    def run(instance):
+        rng = random.Random(seed)
+        seen = [instance.exit_initialization_mode()]
+        states = []
+        for _ in range(300):
+            instance.set(**random_inputs(rng))
+            seen.append(instance.try_step(rng.choice([1e-4, 1e-3, 1e-3, 0.01, 0.5])))
+            if rng.random() < 0.5:  # a read after the step, or the next step at once
+                seen.append(bits(instance.values(*table.WITHOUT_LIFE.INPUTS, *instance.outputs)))
+            draw = rng.random()
+            if draw < 0.05:
+                states.append(instance.get_state())
+            elif draw < 0.08 and states:
+                instance.set_state(rng.choice(states))
+                seen.append(bits(instance.values(*instance.outputs)))
+        for state in states:
+            instance.free_state(state)
+        return seen
+
+    return run
+
+
+@pytest.mark.parametrize("seed", [1, 2])
+def test_random_runs_give_the_python_steps_bits_and_messages(extracted, monkeypatch, seed):
+    (c_run, c_messages, c_counts), (python_run, python_messages, python_counts) = both(
+        extracted, monkeypatch, random_run(seed)
+    )
+    assert c_run == python_run
+    assert c_messages == python_messages
+    assert c_counts["run"] < python_counts["run"] / 2, (c_counts, python_counts)
+    assert any(status == 2 for status, _, _ in c_messages)  # some steps were refused

@@ -1,0 +1,67 @@
+"""The mutation table's guards of the generated step (tools/guards.py,
+docs/codegen.md): the generator's operation-for-operation translation, the
+build's check of the runtime's convention, and the runtime keeping the slave in
+step with the steps it takes in C."""
+
+from guards_base import Mutation
+
+EXPRESSIONS = "fmu_src/cardan_joint/codegen/expressions.py"
+STEP_SOURCE = "fmu_src/cardan_joint/build/step_source.py"
+FAST_PATH = "fmu_src/cardan_joint/fmi/native/fast_path.c"
+FAST_VALUES = "fmu_src/cardan_joint/fmi/native/fast_values.c"
+GENERATED = "fmu_src/cardan_joint/fmi/native/generated.c"
+BIT_TEST = ("tests/unit/test_codegen_joint.py", "-k", "python_steps_bits")
+BUILD_TESTS = "tests/unit/test_codegen_build.py"
+RUNTIME_TESTS = "tests/fmu/test_generated_step.py"
+
+GENERATED_MUTATIONS = (
+    Mutation(
+        "generated step: Python's grouping kept",
+        EXPRESSIONS,
+        'return f"({text})"',
+        "return text",
+        BIT_TEST,
+    ),
+    Mutation(
+        "generated step: a true division of two counts",
+        EXPRESSIONS,
+        'left = f"(double){left}"',
+        "pass",
+        ("tests/unit/test_codegen.py", "-k", "gives_pythons_bits"),
+    ),
+    Mutation(
+        "generated step: the runtime's argument order checked",
+        STEP_SOURCE,
+        'names[:2] != ("time", "h") or given != known[: len(given)]',
+        'names[:2] != ("time", "h")',
+        (BUILD_TESTS, "-k", "convention"),
+    ),
+    Mutation(
+        "generated step: its sizes are the slave's",
+        GENERATED,
+        "generated_step_sizes[1] != fast->state_size + fast->inputs + fast->outputs",
+        "0",
+        (BUILD_TESTS, "-k", "sizes"),
+    ),
+    Mutation(
+        "generated step: a step in C leaves the slave behind",
+        FAST_VALUES,
+        "fast->behind = 1;",
+        "fast->behind = 0;",
+        (RUNTIME_TESTS,),
+    ),
+    Mutation(
+        "generated step: the slave catches up before any other call",
+        FAST_VALUES,
+        "    catch_up(in);\n    if (!fast->inputs_written)",
+        "    if (!fast->inputs_written)",
+        (RUNTIME_TESTS,),
+    ),
+    Mutation(
+        "generated step: the slave catches up before it steps or evaluates",
+        FAST_PATH,
+        "    if (method != FAST_SYNC)\n        catch_up(in);",
+        "",
+        (RUNTIME_TESTS,),
+    ),
+)
