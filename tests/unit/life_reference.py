@@ -16,6 +16,27 @@ from cardan_joint.physics.response import JointResponse, joint_response
 _T1 = JointResponse._fields.index("input_torque")
 
 
+def random_fast_step(rng):
+    """(a joint's start values, a step size): 200-1000 rad/s either way, a
+    massive cross, a load of either sign, the bend and speed ramped."""
+
+    def signed(low, high):
+        return rng.choice((-1.0, 1.0)) * rng.uniform(low, high)
+
+    return dict(
+        input_angle_start=rng.uniform(-4.0, 4.0),
+        input_speed=signed(200.0, 1000.0),
+        input_acceleration=rng.uniform(-2e3, 2e3),
+        bend_angle=signed(0.02, 0.9),
+        bend_angle_rate=rng.uniform(-2.0, 2.0),
+        bend_angle_acceleration=rng.uniform(-50.0, 50.0),
+        crosspiece_inertia_1=rng.uniform(0.01, 0.1),
+        crosspiece_inertia_2=rng.uniform(0.01, 0.1),
+        crosspiece_inertia_3=rng.uniform(0.01, 0.1),
+        load_torque=signed(10.0, 2000.0),
+    ), 10.0 ** rng.uniform(-4.5, -2.5)
+
+
 def case_of(joint):
     """A joint's inputs now as the reference takes them (its public attributes)."""
     psi = joint.input_angle + joint.yoke_phase

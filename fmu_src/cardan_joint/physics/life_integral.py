@@ -148,8 +148,9 @@ def step_integral(torque_at, step, h, w1, a1, b, rb, ab, min_angle, p, reach):
     end, zero_end = next_kink(0.0, h, w1, a1, b, rb, ab, min_angle), False
     length, points = h, 0
     # What the bound is asked against: the step's integral, from below (a
-    # quarter of the first panel's estimate over the step, then what the
-    # accepted panels sum). A panel that adds little may err more against its own.
+    # quarter of the first panel's value, then what the accepted panels sum;
+    # every panel's part is positive). A panel that adds little to it may err
+    # more against its own.
     scale = -1.0
     for _ in range(_MAX_ATTEMPTS):
         if t >= h:
@@ -172,7 +173,7 @@ def step_integral(torque_at, step, h, w1, a1, b, rb, ab, min_angle, p, reach):
             torque_at, step, t, hi, zero, q, n, b, rb, ab, min_angle, p
         )
         if scale < 0.0:
-            scale = 0.25 * value * h / (hi - t)
+            scale = 0.25 * value
         scale = max(scale, total)
         share = math.log(scale / value) if scale > value > 0.0 else 0.0
         needed = points_for(min(singular, low, top), budget - share, degree)
