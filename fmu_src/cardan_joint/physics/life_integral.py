@@ -19,12 +19,16 @@ import math
 
 from .life_panel import (
     error_budget,
+    log_rho_required,
     longest_panel,
+    may_vanish,
     node_time,
     panel,
     points_for,
     singular_log_rho,
     substitution_power,
+    zero_free_log_rho,
+    zero_free_on,
 )
 from .quadrature import GAUSS_NODES, MAX_POINTS
 
@@ -169,15 +173,19 @@ def step_integral(torque_at, step, h, w1, a1, b, rb, ab, min_angle, p, reach):
             stretch, degree = (q, gamma) if zero else (1.0, 0.0)
         singular = singular_log_rho(hi - t, tau, stretch)
         n = min(max(points, points_for(singular, budget, degree)), MAX_POINTS)
-        value, low, top, change, may_vanish = panel(
+        value, coefficients, change = panel(
             torque_at, step, t, hi, zero, q, n, b, rb, ab, min_angle, p
         )
         if scale < 0.0:
             scale = 0.25 * value
         scale = max(scale, total)
         share = math.log(scale / value) if scale > value > 0.0 else 0.0
-        needed = points_for(min(singular, low, top), budget - share, degree)
-        if hi - t <= _SHORTEST * h or (change == 0 and needed <= n):
+        required = log_rho_required(n, budget - share, degree)
+        if (
+            change == 0
+            and required <= singular
+            and (value == 0.0 or zero_free_on(required, coefficients, n, zero != 0))
+        ) or hi - t <= _SHORTEST * h:
             total += value
             # The next panel starts from this one's points and twice its
             # length: a piece's panels are alike.
@@ -188,18 +196,19 @@ def step_integral(torque_at, step, h, w1, a1, b, rb, ab, min_angle, p, reach):
                 length, points = h, 0
             continue
         if change == 0 and n < MAX_POINTS:
-            # T's own zeros allow the rule: more points, as many as the highest
-            # coefficient asks or twice as many.
+            # The points T's zeros and its resolution ask for: if its zeros
+            # allow the largest rule, as many as they ask, or twice as many
+            # while the highest coefficient is not yet resolved.
+            low, top = zero_free_log_rho(coefficients, n, zero != 0)
             own = points_for(min(singular, low), budget - share, degree)
             if own <= MAX_POINTS:
-                length, points = (
-                    hi - t,
-                    min(MAX_POINTS, max(own, needed if needed <= MAX_POINTS else 2 * n)),
-                )
+                needed = points_for(min(singular, low, top), budget - share, degree)
+                resolved = needed if needed <= MAX_POINTS else 2 * n
+                length, points = hi - t, min(MAX_POINTS, max(own, resolved, n + 1))
                 continue
-        root = (
-            _zero_in(torque_at, step, t, hi, zero, q, n, change) if change or may_vanish else -1.0
-        )
+        root = -1.0
+        if change or may_vanish(coefficients):
+            root = _zero_in(torque_at, step, t, hi, zero, q, n, change)
         if root > t:
             end, zero_end = root, True
         else:

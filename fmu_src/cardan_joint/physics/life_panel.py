@@ -84,6 +84,11 @@ def points_for(log_rho, budget, gamma):
     return max(MIN_POINTS, math.ceil(need))
 
 
+def log_rho_required(points, budget, gamma):
+    """The log rho with which `points` points meet the bound (`points_for`'s inverse)."""
+    return (budget + math.log(gamma + 1.0)) / (2.0 * (points - 0.5 * gamma))
+
+
 def longest_panel(tau, budget, gamma, stretch):
     """The longest panel the largest rule covers as far as the singularities go."""
     if tau == math.inf:
@@ -92,18 +97,34 @@ def longest_panel(tau, budget, gamma, stretch):
     return 2.0 * tau / (stretch * math.sinh(per_point / _TOWARDS_SINGULARITY))
 
 
-def zero_free_log_rho(a0, a1, a2, a3, a_last, points, substituted):
-    """(log rho of the ellipse on which a_1..a_3 keep |T - a_0| <= 0.8 |a_0|,
-    log rho on which a_(n-1)'s term stays below 0.1 |a_0|), T's Legendre
-    coefficients on the panel; 0.0 where there is none. The first is T's own
-    (its zeros'), the second grows with the points (how well they resolve T).
+def _low_spread(x, c1, c2, c3):
+    """|a_1| P_1(x) + |a_2| P_2(x) + |a_3| P_3(x), given the |a_k|."""
+    return c1 * x + c2 * (1.5 * x * x - 0.5) + c3 * (2.5 * x * x - 1.5) * x
 
-    On E_rho, x = cosh(log rho), |P_k| is at most P_k(x) <= rho^k. For a_1..a_3
-    the cubic in x is solved by Newton's method, which from x = 1 approaches
-    its root from above (the cubic is convex and increasing there) and ends
-    on it. A substituted panel skips a_(n-1): dividing out u^q magnifies the
-    rounding of T next to its zero, which the highest coefficient feels first,
-    while a_1..a_3 see a zero inside E_rho all the same."""
+
+def zero_free_on(log_rho, coefficients, points, substituted):
+    """Whether T, with these Legendre coefficients (a_0..a_3, a_(n-1)) on the
+    panel, keeps |T - a_0| <= 0.9 |a_0| on E_rho (rho = exp(`log_rho`)): there
+    |P_k| is at most P_k(x) <= rho^k, x = cosh(log rho); a_1..a_3 take 0.8
+    |a_0|, a_(n-1) the last 0.1 |a_0|. A substituted panel skips a_(n-1):
+    dividing out u^q magnifies the rounding of T next to its zero, which the
+    highest coefficient feels first, while a_1..a_3 see a zero inside E_rho
+    all the same."""
+    a0, a1, a2, a3, a_last = coefficients
+    size = abs(a0)
+    if _low_spread(math.cosh(log_rho), abs(a1), abs(a2), abs(a3)) > _LOW_TERMS * size:
+        return False
+    return substituted or abs(a_last) * math.exp((points - 1.0) * log_rho) <= _TOP_TERM * size
+
+
+def zero_free_log_rho(coefficients, points, substituted):
+    """(the largest log rho on which a_1..a_3 keep to `zero_free_on`'s share,
+    the largest on which a_(n-1) does); 0.0 where there is none. The first is
+    T's own (its zeros'), the second grows with the points (how well they
+    resolve T). The cubic in x = cosh(log rho) is solved by Newton's method,
+    which from x = 1 approaches its root from above (the cubic is convex and
+    increasing there) and ends on it."""
+    a0, a1, a2, a3, a_last = coefficients
     size = abs(a0)
     c1, c2, c3 = abs(a1), abs(a2), abs(a3)
     if c1 + c2 + c3 >= _LOW_TERMS * size:
@@ -112,9 +133,8 @@ def zero_free_log_rho(a0, a1, a2, a3, a_last, points, substituted):
     if c1 or c2 or c3:
         x = 1.0
         for _ in range(_NEWTON_STEPS):
-            excess = c1 * x + c2 * (1.5 * x * x - 0.5) + c3 * (2.5 * x * x - 1.5) * x
             slope = c1 + 3.0 * c2 * x + c3 * (7.5 * x * x - 1.5)
-            x -= (excess - _LOW_TERMS * size) / slope
+            x -= (_low_spread(x, c1, c2, c3) - _LOW_TERMS * size) / slope
         low = math.acosh(x)
     if substituted or a_last == 0.0:
         return low, math.inf
@@ -123,8 +143,9 @@ def zero_free_log_rho(a0, a1, a2, a3, a_last, points, substituted):
     return low, (math.log(_TOP_TERM * size) - math.log(abs(a_last))) / (points - 1.0)
 
 
-def may_vanish(a0, a1, a2, a3, a_last):
+def may_vanish(coefficients):
     """Whether T's interpolant may reach zero on the panel (|P_k| <= 1 there)."""
+    a0, a1, a2, a3, a_last = coefficients
     return abs(a1) + abs(a2) + abs(a3) + abs(a_last) >= abs(a0)
 
 
@@ -139,9 +160,9 @@ def node_time(lo, hi, u, zero, q):
 
 
 def panel(torque_at, step, lo, hi, zero, q, points, b, rb, ab, min_angle, p):
-    """(the integral over [lo, hi], the two log rho T's coefficients allow
-    (`zero_free_log_rho`), the index i of the first node whose torque's sign
-    differs from node i - 1's or 0, whether T may vanish on the panel): the
+    """(the integral over [lo, hi], T's Legendre coefficients a_0..a_3, a_(n-1)
+    on it, the index i of the first node whose torque's sign differs from node
+    i - 1's or 0): the
     `points`-point rule, substituted at the zero end (`zero` as `node_time`).
     The integrand is A |w| |T|^p, A = max(|b + rb t + ab t^2 / 2|, `min_angle`),
     (T, w) = `torque_at(t, step)`."""
@@ -170,7 +191,4 @@ def panel(torque_at, step, lo, hi, zero, q, points, b, rb, ab, min_angle, p):
         a2 += second[i] * value
         a3 += third[i] * value
         a_last += last[i] * value
-    low, top = zero_free_log_rho(a0, a1, a2, a3, a_last, points, zero != 0)
-    if total == 0.0:  # no torque or no speed over the panel: nothing to bound
-        low = top = math.inf
-    return total * (hi - lo), low, top, change, may_vanish(a0, a1, a2, a3, a_last)
+    return total * (hi - lo), (a0, a1, a2, a3, a_last), change
