@@ -13,7 +13,11 @@ and rho^2 - 1 > 1 wherever the bound is met. Two things limit rho:
 - the torque's complex zeros, where |T|^p branches. The Legendre coefficients
   a_k of T, exact from the panel's own values, bound |T - a_0| on E_rho: held
   within 0.9 |a_0|, T has no zero there and |T|^p <= 1.9^p |a_0|^p <= 1.9^p
-  mean |T|^p (Jensen, p >= 1).
+  mean |T|^p (Jensen, p >= 1). The coefficients are those of T's
+  interpolant through the n values: the bound is T's as far as that
+  interpolant stands for T on E_rho, which the highest coefficient's share
+  and the singularities' reach see to (not a proof: the tests measure the
+  rest, below 1e-13 of a step).
 
 At a torque zero t0 the panel substitutes t = t0 + L u^q: |T|^p ~ |t - t0|^p
 becomes u^gamma (gamma = q (p + 1) - 1 >= 10) times a smooth factor. That
