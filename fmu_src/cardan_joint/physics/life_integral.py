@@ -1,108 +1,98 @@
-"""The life rate's integral over any step (docs/life.md, "Exact over each step").
+"""The life rate's integral over one step (docs/life.md, "Exact over each step").
 
-Split where the rate has kinks (the speed's zero, the bend crossing +-A_min,
-the torque's sign changes, found from the sampled nodes and located to the
-last bits), each piece integrated by Gauss-Lobatto panels whose number and
-order follow from how far the torque's singularities lie from the step in
-time; next to a torque zero a panel substitutes t = t0 + L u^q, which makes
-|T|^p smooth. `life.step_damage` sends here the steps its one-panel rule
-cannot take. Pure Python, standard library only.
+The integrand A(t) |w(t)| |T(t)|^p is smooth except at the step's events: the
+speed's zero and the bend crossing +-A_min (closed forms) and the torque's
+zeros (located to the last bits as the panels meet them). The step is cut at
+each event and every piece between them is covered by Gauss-Legendre panels
+(`life_panel`), marching from its start: a panel whose error bound asks for
+more points than it has is taken again with them, or cut at the torque's
+sign change it shows, or halved. So a piece costs one panel unless it is
+longer than the torque's singularities' reach, and each event costs its
+location and a few panels more.
+
+Pure Python over floats and tuples, no state; the torque is a module-level
+function `torque_at(t, step)` -> (T, w), the torque and the speed t s into
+the step.
 """
 
 import math
 
-from .quadrature import lobatto_rule, panel_nodes
+from .life_panel import (
+    error_budget,
+    log_rho_required,
+    longest_panel,
+    may_vanish,
+    node_time,
+    panel,
+    points_for,
+    singular_log_rho,
+    substitution_power,
+    zero_free_log_rho,
+    zero_free_on,
+)
+from .quadrature import GAUSS_NODES, MAX_POINTS
 
-# Relative accuracy each panel is sized for (the contract asks 1e-9 per step).
-_TARGET_DIGITS = 13.0 * math.log(10.0)
-_MAX_NODES = 9
-# The inertia's torque changes sign about twice a turn: panels short enough
-# (in imaginary input angle) that their nodes see each sign change.
-_INERTIA_REACH = 0.5
-# A step over thousands of turns (far beyond any co-simulation step) is
-# integrated with this many panels at most, then less exactly (docs/life.md).
-_MAX_PANELS = 1024
-_MAX_ZEROS = 256
-# Substitution t = a + L u^q at a torque zero: |T|^p ~ |t - a|^p becomes
-# u^(q (p + 1) - 1), smooth enough for the panel's rule with `_ZERO_NODES` more
-# nodes than the smooth part asks (the power is no polynomial: 3.9e-9 relative
-# without them in a compliant joint's step whose spring torque crosses zero;
-# tests/unit/test_compliant_life.py).
-_SMOOTH_POWER = 8.0
-_ZERO_NODES = 4
 # Below 1 mrad of bend the torque's singularities are practically out of reach.
 FLAT_REACH = math.acosh(1e3)
+# Panels tried per step and root-finder steps per zero: a step over thousands
+# of turns ends with one panel for what is left, less exactly (docs/life.md).
+_MAX_ATTEMPTS = 4096
+_ROOT_STEPS = 200
+# A panel this short against the step is taken as it is.
+_SHORTEST = 1e-13
 
 
-def _roots_in(c0, c1, c2, h):
-    """Roots of c0 + c1 t + c2 t^2 strictly inside (0, h)."""
+def _first_root_after(t, limit, c0, c1, c2):
+    """The smallest root of c0 + c1 x + c2 x^2 in (t, limit), else `limit`."""
     if c2 == 0.0:
-        roots = (-c0 / c1,) if c1 else ()
+        if c1 == 0.0:
+            return limit
+        first, second = -c0 / c1, limit
     else:
         disc = c1 * c1 - 4.0 * c2 * c0
         if disc < 0.0:
-            return ()
+            return limit
         q = -0.5 * (c1 + math.copysign(math.sqrt(disc), c1))
-        roots = (q / c2, c0 / q) if q else (0.0,)
-    return tuple(t for t in roots if 0.0 < t < h)
+        if q == 0.0:
+            first, second = 0.0, limit
+        else:
+            first, second = q / c2, c0 / q
+    if t < first < limit:
+        limit = first
+    if t < second < limit:
+        limit = second
+    return limit
 
 
-def _kinks(h, w1, a1, b, rb, ab, min_angle):
-    """Where the rate is not smooth: the speed's zero and the bend crossing +-A_min."""
-    points = {0.0, h}
-    if a1:
-        points.update(_roots_in(w1, a1, 0.0, h))
-    for level in (min_angle, -min_angle):
-        points.update(_roots_in(b - level, rb, 0.5 * ab, h))
-    return sorted(points)
+def next_kink(t, h, w1, a1, b, rb, ab, min_angle):
+    """The first point after t where the angle or the speed factor has a kink:
+    the speed's zero, the bend crossing +-A_min; else the step's end h."""
+    end = _first_root_after(t, h, w1, a1, 0.0)
+    end = _first_root_after(t, end, b - min_angle, rb, 0.5 * ab)
+    return _first_root_after(t, end, b + min_angle, rb, 0.5 * ab)
 
 
-def _nodes_for(a, b, w1, a1, reach):
-    """(panels, Lobatto points) for [a, b] (no speed reversal inside): the torque's
-    singularities lie `reach` away in imaginary input angle, so `tau` s away in
-    time where the speed is highest (|w| tau + |a1| tau^2 / 2 = reach); the
-    Bernstein-ellipse bound then gives the points for 1e-12."""
-    fastest = max(abs(w1 + a1 * a), abs(w1 + a1 * b))
+def singularity_time(w1, a1, h, reach):
+    """How far in time the torque's singularities lie from any point of the
+    step: |w| tau + |a1| tau^2 / 2 = reach at the fastest speed of the step."""
+    fastest = max(abs(w1), abs(w1 + a1 * h))
     acc = abs(a1)
     if acc:
-        tau = 2.0 * reach / (fastest + math.sqrt(fastest * fastest + 2.0 * acc * reach))
-    else:
-        tau = reach / fastest if fastest else math.inf
-    panels = 1
-    while True:
-        ratio = 0.5 * (b - a) / (panels * tau)
-        # log(rho), rho = 1/ratio + sqrt(1/ratio^2 + 1) the ellipse's parameter.
-        log_rho = math.asinh(1.0 / ratio) if ratio else math.inf
-        points = 2 + math.ceil(0.5 * _TARGET_DIGITS / log_rho) if log_rho < math.inf else 3
-        if points <= _MAX_NODES or panels >= _MAX_PANELS:
-            return panels, min(max(points, 3), _MAX_NODES)
-        panels *= 2
+        return 2.0 * reach / (fastest + math.sqrt(fastest * fastest + 2.0 * acc * reach))
+    if fastest:
+        return reach / fastest
+    return math.inf
 
 
-class _Integrand:
-    """rate(t) / scale: A(t) |w(t)| |T(t)|^p over one step."""
-
-    def __init__(self, torque_at, w1, a1, b, rb, ab, min_angle, exponent, speed_at=None):
-        self.torque_at = torque_at
-        self.w1, self.a1, self.b, self.rb, self.ab = w1, a1, b, rb, ab
-        self.min_angle, self.p = min_angle, exponent
-        self.speed = speed_at or (lambda t: w1 + a1 * t)
-
-    def parts(self, t):
-        torque = self.torque_at(t)
-        angle = max(abs(self.b + t * (self.rb + 0.5 * self.ab * t)), self.min_angle)
-        return torque, angle * abs(self.speed(t)) * abs(torque) ** self.p
-
-
-def _root(torque_at, a, b, fa, fb):
+def _root(torque_at, step, a, b, fa, fb):
     """A sign change of the torque in (a, b), to the last bits (Illinois)."""
-    for _ in range(200):
+    for _ in range(_ROOT_STEPS):
         if b - a <= 4e-16 * max(abs(a), abs(b)) or fa == 0.0 or fb == 0.0:
             break
         m = (a * fb - b * fa) / (fb - fa)
         if not a < m < b:
             m = 0.5 * (a + b)
-        fm = torque_at(m)
+        fm = torque_at(m, step)[0]
         if (fm < 0.0) == (fa < 0.0):
             a, fa = m, fm
             fb *= 0.5
@@ -112,105 +102,118 @@ def _root(torque_at, a, b, fa, fb):
     return b if abs(fb) < abs(fa) else a
 
 
-def _panel(f, a, b, points, zero_at):
-    """The rule on [a, b], substituted at an end where the torque vanishes."""
-    length = b - a
-    if zero_at is None:
-        nodes, weights = lobatto_rule(points)
-        return 0.5 * length * sum(w * f.parts(t)[1] for t, w in panel_nodes(nodes, weights, a, b))
-    nodes, weights = lobatto_rule(points + _ZERO_NODES)
-    q = max(2.0, math.ceil(_SMOOTH_POWER / (f.p + 1.0)))
-    total = 0.0
-    for x, w in zip(nodes, weights):
-        u = 0.5 * (x + 1.0)
-        if u == 0.0:
-            continue
-        t = zero_at + math.copysign(length * u**q, (b + a) - 2.0 * zero_at)
-        total += w * q * u ** (q - 1.0) * f.parts(t)[1]
-    return 0.5 * length * total
+def _root_by(torque_at, step, a, fa, b):
+    """The zero between a (T = fa there) and b, if T's sign differs at b; else -1."""
+    fb = torque_at(b, step)[0]
+    if fa and fb and (fa < 0.0) != (fb < 0.0):
+        if a > b:
+            return _root(torque_at, step, b, a, fb, fa)
+        return _root(torque_at, step, a, b, fa, fb)
+    return -1.0
 
 
-def _from_samples(f, times, values, panels, points, width):
-    """Lobatto panels summed from the torque already sampled at their nodes
-    (panel ends shared), so a step without a torque zero evaluates it once per node."""
-    _, weights = lobatto_rule(points)
-    per, last = points - 1, len(times) - 1
-    total = 0.0
-    for i, (t, torque) in enumerate(zip(times, values)):
-        k = i % per
-        w = weights[k] if i and i != last else weights[0]
-        if k == 0 and 0 < i < last:
-            w = weights[0] + weights[-1]
-        angle = max(abs(f.b + t * (f.rb + 0.5 * f.ab * t)), f.min_angle)
-        total += w * angle * abs(f.speed(t)) * abs(torque) ** f.p
-    return 0.5 * width * total
+def _zero_in(torque_at, step, lo, hi, zero, q, points, change):
+    """A zero of T in (lo, hi), the panel's: between nodes change - 1 and
+    `change` if they differ in sign, else between an end (not a known zero) and
+    its nearest node; -1.0 if neither shows one."""
+    nodes = GAUSS_NODES[points]
+    first = node_time(lo, hi, nodes[0], zero, q)
+    if change:
+        before = node_time(lo, hi, nodes[change - 1], zero, q)
+        return _root_by(
+            torque_at, step, before, torque_at(before, step)[0],
+            node_time(lo, hi, nodes[change], zero, q),
+        )  # fmt: skip
+    last = node_time(lo, hi, nodes[points - 1], zero, q)
+    # The node nearest each end: the first in u, except on a panel substituted at hi.
+    near_lo, near_hi = (last, first) if zero < 0 else (first, last)
+    if zero <= 0:
+        found = _root_by(torque_at, step, lo, torque_at(lo, step)[0], near_lo)
+        if found >= 0.0:
+            return found
+    if zero >= 0:
+        return _root_by(torque_at, step, hi, torque_at(hi, step)[0], near_hi)
+    return -1.0
 
 
-def _segment(f, a, b, reach, massless):
-    """The integral over [a, b], a stretch without kinks of the angle and speed:
-    the torque's sign changes located first (each panel's nodes seen), then
-    the stretches between them integrated."""
-    cuts = [a, b]
-    if not massless:  # T = T_L cos b / D keeps its sign: no zero to find
-        panels, points = _nodes_for(a, b, f.w1, f.a1, reach)
-        nodes, _ = lobatto_rule(points)
-        times, values = [a], [f.torque_at(a)]
-        for k in range(panels):
-            lo, hi = a + (b - a) * k / panels, a + (b - a) * (k + 1) / panels
-            for t, _ in panel_nodes(nodes, nodes, lo, hi)[1:]:
-                times.append(t)
-                values.append(f.torque_at(t))
-        times[-1] = b
-        changes = [
-            (t0, t1, v0, v1)
-            for t0, t1, v0, v1 in zip(times, times[1:], values, values[1:])
-            if (v0 < 0.0) != (v1 < 0.0) and v0 and v1
-        ]
-        # No sign change, or more than a step of any co-simulation meets (a step
-        # over thousands of turns): the sampled torques are the rule's nodes.
-        if not changes or len(changes) > _MAX_ZEROS:
-            return _from_samples(f, times, values, panels, points, (b - a) / panels)
-        cuts += [_root(f.torque_at, *change) for change in changes]
-        cuts.sort()
-    total = 0.0
-    for k, (lo, hi) in enumerate(zip(cuts, cuts[1:])):
-        zero_lo, zero_hi = k > 0, k < len(cuts) - 2
-        # The substitution at a zero halves the smooth part's reach in u.
-        near = reach * 0.5 if zero_lo or zero_hi else reach
-        panels, points = _nodes_for(lo, hi, f.w1, f.a1, near)
-        edges = [lo + (hi - lo) * j / panels for j in range(panels)] + [hi]
-        for j, (x0, x1) in enumerate(zip(edges, edges[1:])):
-            first, last = j == 0 and zero_lo, j == panels - 1 and zero_hi
-            if first and last:
-                mid = 0.5 * (x0 + x1)
-                total += _panel(f, x0, mid, points, x0) + _panel(f, mid, x1, points, x1)
-            else:
-                total += _panel(f, x0, x1, points, x0 if first else x1 if last else None)
-    return total
-
-
-def life_increment(
-    torque_at, h, w1, a1, b, rb, ab, inertia, min_angle, exponent, speed_at=None, peak=0.0
-) -> float:
+def step_integral(torque_at, step, h, w1, a1, b, rb, ab, min_angle, p, reach):
     """The integral over a step of `h` s of A(t) |w(t)| |T(t)|^p, A = max(|b(t)|,
     `min_angle`): the life rate's variable part (`life.step_damage` scales it).
 
-    `torque_at(t)`: T t s into the step (`life_torque.torque_over_step`); the
-    bend b + rb t + ab t^2 / 2 as the joint steps it; the speed w1 + a1 t, or
-    `speed_at(t)` for a joint behind others (a propshaft's: its sign is the
-    input's, w1 + a1 t still sizes the panels). `peak`: a larger bend whose
-    singularities the torque also has (a propshaft's other joints); `inertia`:
-    every inertia that can turn the torque over (all zero: T keeps its sign)."""
-    f = _Integrand(torque_at, w1, a1, b, rb, ab, min_angle, exponent, speed_at)
-    peak = max(peak, abs(b), abs(b + h * (rb + 0.5 * ab * h)))
-    if ab and 0.0 < -rb / ab < h:
-        peak = max(peak, abs(b - 0.5 * rb * rb / ab))
-    # D = 0 at cos(psi) = +-1 / sin(b): an imaginary input angle acosh(1/|sin b|) away.
-    reach = math.acosh(1.0 / math.sin(peak)) if peak > 1e-3 else FLAT_REACH
-    massless = not any(inertia)
-    if not massless:
-        # The inertia's torque changes sign about twice a turn: panels short
-        # enough that their nodes see each sign change.
-        reach = min(reach, _INERTIA_REACH)
-    cuts = _kinks(h, w1, a1, b, rb, ab, min_angle)
-    return sum(_segment(f, lo, hi, reach, massless) for lo, hi in zip(cuts, cuts[1:]))
+    `torque_at(t, step)`: (T, w) t s into the step; the bend b + rb t + ab t^2 / 2
+    as the joint steps it; w1 + a1 t the input speed, which places the speed's
+    zero and, with `reach` (the torque's singularities' imaginary input angle,
+    `life.singularity_reach`), sizes the panels."""
+    tau = singularity_time(w1, a1, h, reach)
+    q = substitution_power(p)
+    gamma = q * (p + 1.0) - 1.0
+    budget = error_budget(p)
+    total, t, zero_lo = 0.0, 0.0, False
+    end, zero_end = next_kink(0.0, h, w1, a1, b, rb, ab, min_angle), False
+    length, points = h, 0
+    # What the bound is asked against: the step's integral, from below (a
+    # quarter of the first panel's value, then what the accepted panels sum;
+    # every panel's part is positive). A panel that adds little to it may err
+    # more against its own.
+    scale = -1.0
+    for _ in range(_MAX_ATTEMPTS):
+        if t >= h:
+            return total
+        hi = t + length
+        if hi >= end or end - hi < 0.25 * length:
+            hi = end
+        zero = 1 if zero_lo else -1 if zero_end and hi == end else 0
+        if zero_lo and zero_end and hi == end:
+            hi = 0.5 * (t + end)  # a panel substitutes at one end only
+        stretch, degree = (q, gamma) if zero else (1.0, 0.0)
+        longest = longest_panel(tau, budget, degree, stretch)
+        if hi - t > longest:
+            hi = t + longest
+            zero = 1 if zero_lo else 0
+            stretch, degree = (q, gamma) if zero else (1.0, 0.0)
+        singular = singular_log_rho(hi - t, tau, stretch)
+        n = min(max(points, points_for(singular, budget, degree)), MAX_POINTS)
+        value, coefficients, change = panel(
+            torque_at, step, t, hi, zero, q, n, b, rb, ab, min_angle, p
+        )
+        if scale < 0.0:
+            scale = 0.25 * value
+        scale = max(scale, total)
+        share = math.log(scale / value) if scale > value > 0.0 else 0.0
+        required = log_rho_required(n, budget - share, degree)
+        if (
+            change == 0
+            and required <= singular
+            and (value == 0.0 or zero_free_on(required, coefficients, n, zero != 0))
+        ) or hi - t <= _SHORTEST * h:
+            total += value
+            # The next panel starts from this one's points and twice its
+            # length: a piece's panels are alike.
+            length = 2.0 * (hi - t)
+            t, zero_lo = hi, zero < 0
+            if t == end:  # a new piece: its panels start from the longest again
+                end, zero_end = next_kink(t, h, w1, a1, b, rb, ab, min_angle), False
+                length, points = h, 0
+            continue
+        if change == 0 and n < MAX_POINTS:
+            # The points T's zeros and its resolution ask for: if its zeros
+            # allow the largest rule, as many as they ask, or twice as many
+            # while the highest coefficient is not yet resolved.
+            low, top = zero_free_log_rho(coefficients, n, zero != 0)
+            own = points_for(min(singular, low), budget - share, degree)
+            if own <= MAX_POINTS:
+                needed = points_for(min(singular, low, top), budget - share, degree)
+                resolved = needed if needed <= MAX_POINTS else 2 * n
+                length, points = hi - t, min(MAX_POINTS, max(own, resolved, n + 1))
+                continue
+        root = -1.0
+        if change or may_vanish(coefficients):
+            root = _zero_in(torque_at, step, t, hi, zero, q, n, change)
+        if root > t:
+            end, zero_end = root, True
+        else:
+            length = 0.5 * (hi - t)
+    # A step over thousands of turns: what is left in one panel, less exactly.
+    if t < h:
+        total += panel(torque_at, step, t, h, 0, q, MAX_POINTS, b, rb, ab, min_angle, p)[0]
+    return total

@@ -1,11 +1,17 @@
-"""Gauss-Lobatto rules on [-1, 1], computed once at import (standard library).
+"""Gauss-Legendre rules on [0, 1] and the Legendre coefficients they give,
+tabulated once at import (standard library): the life integral's panels
+(`life_integral`) read them as constants.
 
-An n-point rule is exact for polynomials of degree 2n - 3 and includes both
-ends, which the life integral samples anyway to see the torque change sign.
+An n-point rule is exact for polynomials of degree 2n - 1. From the same n
+values the coefficients a_k of the interpolating polynomial in Legendre
+polynomials P_k(2u - 1) follow exactly (the rule integrates the product of
+two degree n - 1 polynomials): a_k = (2k + 1) sum_i w_i P_k(x_i) v_i.
 """
 
 import math
-from functools import cache
+
+MIN_POINTS = 4
+MAX_POINTS = 20
 
 
 def _legendre(n, x):
@@ -16,39 +22,18 @@ def _legendre(n, x):
     return p1, n * (x * p1 - p0) / (x * x - 1.0)
 
 
-@cache
-def lobatto_rule(points: int) -> tuple[tuple[float, ...], tuple[float, ...]]:
-    """(nodes, weights) of the `points`-point Gauss-Lobatto rule, nodes ascending."""
-    n = points - 1
-    inner = []
-    for k in range(1, n):
-        # Interior nodes: the roots of P_n', by Newton from Chebyshev-Gauss-Lobatto points.
-        x = -math.cos(math.pi * k / n)
-        for _ in range(100):
-            p, dp = _legendre(n, x)
-            # P_n'' from Legendre's equation: (1 - x^2) P'' = 2 x P' - n (n + 1) P.
-            d2p = (2.0 * x * dp - n * (n + 1) * p) / (1.0 - x * x)
-            step = dp / d2p
-            x -= step
-            if abs(step) < 1e-17:
-                break
-        inner.append(x)
-    nodes = (-1.0, *inner, 1.0)
-    weights = tuple(
-        2.0 / (n * (n + 1) * _legendre(n, x)[0] ** 2) if abs(x) < 1 else 2.0 / (n * (n + 1))
-        for x in nodes
-    )
-    return nodes, weights
+def _legendre_value(k, x):
+    if k == 0:
+        return 1.0
+    return _legendre(k, x)[0]
 
 
-@cache
-def gauss_unit_rule(points: int) -> tuple[tuple[float, float], ...]:
-    """((u, w), ...) of the `points`-point Gauss-Legendre rule on [0, 1] (exact
-    for degree 2 points - 1; weights summing to 1): the one-panel step, which
-    needs no ends."""
-    rule = []
+def gauss_rule(points: int) -> tuple[tuple[float, ...], tuple[float, ...]]:
+    """(nodes, weights) of the `points`-point Gauss-Legendre rule on [0, 1],
+    nodes ascending, weights summing to 1."""
+    nodes, weights = [], []
     for k in range(points):
-        x = math.cos(math.pi * (k + 0.75) / (points + 0.5))  # Tricomi's first guess
+        x = -math.cos(math.pi * (k + 0.75) / (points + 0.5))  # Tricomi's first guess
         for _ in range(100):
             p, dp = _legendre(points, x)
             step = p / dp
@@ -56,15 +41,30 @@ def gauss_unit_rule(points: int) -> tuple[tuple[float, float], ...]:
             if abs(step) < 1e-17:
                 break
         p, dp = _legendre(points, x)
-        rule.append((0.5 * (1.0 - x), 1.0 / ((1.0 - x * x) * dp * dp)))
-    return tuple(rule)
+        nodes.append(0.5 * (1.0 + x))
+        weights.append(1.0 / ((1.0 - x * x) * dp * dp))
+    return tuple(nodes), tuple(weights)
 
 
-def panel_nodes(nodes, weights, a, b):
-    """(t, w) pairs of a rule's nodes mapped onto [a, b] (ends exact)."""
-    half, mid = 0.5 * (b - a), 0.5 * (a + b)
-    last = len(nodes) - 1
-    return [
-        (a if i == 0 else b if i == last else mid + half * x, w)
-        for i, (x, w) in enumerate(zip(nodes, weights))
-    ]
+def _coefficient_weights(points: int, degree: int) -> tuple[float, ...]:
+    """c_i with a_degree = sum_i c_i v_i for the `points`-point rule's values v_i."""
+    nodes, weights = gauss_rule(points)
+    return tuple(
+        (2 * degree + 1) * w * _legendre_value(degree, 2.0 * u - 1.0)
+        for u, w in zip(nodes, weights)
+    )
+
+
+def _table(make):
+    return tuple(make(n) if n >= MIN_POINTS else () for n in range(MAX_POINTS + 1))
+
+
+# Indexed by the number of points n (empty below MIN_POINTS).
+GAUSS_NODES = _table(lambda n: gauss_rule(n)[0])
+GAUSS_WEIGHTS = _table(lambda n: gauss_rule(n)[1])
+# The weights giving the Legendre coefficients a_1, a_2, a_3 and a_(n-1) (the
+# highest the rule resolves) from the values at the nodes.
+FIRST_COEFFICIENT = _table(lambda n: _coefficient_weights(n, 1))
+SECOND_COEFFICIENT = _table(lambda n: _coefficient_weights(n, 2))
+THIRD_COEFFICIENT = _table(lambda n: _coefficient_weights(n, 3))
+LAST_COEFFICIENT = _table(lambda n: _coefficient_weights(n, n - 1))

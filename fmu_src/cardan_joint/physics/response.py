@@ -2,8 +2,10 @@
 
 This one function is the single home of the equations: the FMU calls it once
 per step on floats (through `math`), design sweeps call it on numpy arrays, and
-the single-quantity functions of `quantities` pick from it. Written over local
-variables because the FMU's step cost is dominated by Python overhead.
+the single-quantity functions of `quantities` pick from it. Its parts the
+input torque alone needs (`pose`, `crosspiece_motion`, `euler_moments`,
+`yoke_reactions`) are functions of their own, which the life integral's
+torque (`life_torque`) calls too.
 
 Notation: psi = input angle + yoke phase (input-pin angle), b = bend angle,
 D = 1 - sin^2 b cos^2 psi (>= cos^2 b, so nothing is singular below 90 deg).
@@ -132,54 +134,19 @@ def kernel(
     for floats (the FMU, once per step), numpy for arrays."""
     w1, a1 = input_speed, input_acceleration
     rb, ab = bend_angle_rate, bend_angle_acceleration
-
-    # Pose. Half angles first: the quaternion needs them, and sin/cos psi follow
-    # from them without two more trigonometric calls.
-    sh = xp.sin(0.5 * psi)
-    ch = xp.cos(0.5 * psi)
-    s = 2.0 * sh * ch
-    c = (ch - sh) * (ch + sh)
-    sb = xp.sin(bend_angle)
-    cb = xp.cos(bend_angle)
+    sh, ch, s, c, sb, cb, D, rD = pose(xp, psi, bend_angle)
     sc = s * c
     sbc = sb * c  # p1 . z2
     sbs = sb * s
-    # D = 1 - (sin b cos psi)^2, written as a sum of squares: no cancellation
-    # near the lock-up, where D -> cos^2 b.
-    D = cb * cb + sbs * sbs
-    rD = xp.sqrt(D)
-    # Products several terms share, each computed once (the same roundings:
-    # IEEE multiplication is commutative, so w1 sbs is sbs w1 to the bit).
     ccb = cb * c
-    w1cb = w1 * cb
-    w1sbs = w1 * sbs
-    a1cb = a1 * cb
-    w1rbsb = w1 * rb * sb
 
     # Kinematics. 1 - cos b is written sin^2 b / (1 + cos b) for full relative
     # precision at small bend; the atan's denominator stays positive below
     # 90 deg, so the cardan error never jumps branch.
     cardan_error = xp.atan(sb * sb / (1.0 + cb) * sc / (ccb * c + s * s))
     speed_ratio = cb / D
-    w2 = (w1cb + rb * sb * sc) / D
-    D_rate = 2.0 * sbc * (w1sbs - ccb * rb)
-    a2 = (
-        a1cb - w1rbsb + ab * sb * sc + rb * rb * cb * sc + w1rbsb * (c - s) * (c + s) - w2 * D_rate
-    ) / D
-
-    # Crosspiece angular velocity and its rate, components in C.
-    W1 = w2 * sbc + rb * s
-    W2 = w1sbs / rD
-    W3 = w1cb / rD
-    half_log_rate = 0.5 * D_rate / D
-    dW1 = a2 * sbc + w2 * (cb * rb * c - w1sbs) + ab * s + rb * c * w1
-    dW2 = (a1 * sbs + w1cb * rb * s + w1 * w1 * sbc) / rD - W2 * half_log_rate
-    dW3 = (a1cb - w1 * sb * rb) / rD - W3 * half_log_rate
-
-    # Euler's equations and kinetic energy.
-    M1 = I1 * dW1 + (I3 - I2) * W2 * W3
-    M2 = I2 * dW2 + (I1 - I3) * W3 * W1
-    M3 = I3 * dW3 + (I2 - I1) * W1 * W2
+    w2, a2, W1, W2, W3, dW1, dW2, dW3 = crosspiece_motion(s, c, sb, cb, D, rD, w1, a1, rb, ab)
+    M1, M2, M3 = euler_moments(I1, I2, I3, W1, W2, W3, dW1, dW2, dW3)
     energy = 0.5 * (I1 * W1 * W1 + I2 * W2 * W2 + I3 * W3 * W3)
 
     # Quaternion of Rz(psi) Rx(rho); |rho| < 90 deg, so the half-angle formulas
@@ -190,9 +157,7 @@ def kernel(
     qs = quaternion_sign * sh
 
     # Yoke reactions.
-    Dd = -(load_torque + M1 * sbc) / rD
-    B = M3 - Dd
-    input_torque = (M2 * sbs + B * cb) / rD
+    Dd, B, input_torque = yoke_reactions(M1, M2, M3, s, c, sb, cb, rD, load_torque)
     input_moment = abs(B * sbs - M2 * cb) / rD
     output_moment = abs(Dd * sbc - M1 * rD)
     hinge_torque = M1 * s - Dd * sb * sc / rD
@@ -221,3 +186,64 @@ def kernel(
         dW2,
         dW3,
     )
+
+
+def pose(xp, psi, bend_angle):
+    """(sin psi/2, cos psi/2, sin psi, cos psi, sin b, cos b, D, sqrt D). Half
+    angles first: the quaternion needs them, and sin/cos psi follow from them
+    without two more trigonometric calls."""
+    sh = xp.sin(0.5 * psi)
+    ch = xp.cos(0.5 * psi)
+    s = 2.0 * sh * ch
+    c = (ch - sh) * (ch + sh)
+    sb = xp.sin(bend_angle)
+    cb = xp.cos(bend_angle)
+    sbs = sb * s
+    # D = 1 - (sin b cos psi)^2, written as a sum of squares: no cancellation
+    # near the lock-up, where D -> cos^2 b.
+    D = cb * cb + sbs * sbs
+    return sh, ch, s, c, sb, cb, D, xp.sqrt(D)
+
+
+def crosspiece_motion(s, c, sb, cb, D, rD, w1, a1, rb, ab):
+    """(omega2, its rate, the crosspiece's angular velocity Omega and its rate
+    dOmega/dt, components in C) at the pose `pose` gives."""
+    sc = s * c
+    sbc = sb * c
+    sbs = sb * s
+    ccb = cb * c
+    # Products several terms share, each computed once (the same roundings:
+    # IEEE multiplication is commutative, so w1 sbs is sbs w1 to the bit).
+    w1cb = w1 * cb
+    w1sbs = w1 * sbs
+    a1cb = a1 * cb
+    w1rbsb = w1 * rb * sb
+    w2 = (w1cb + rb * sb * sc) / D
+    D_rate = 2.0 * sbc * (w1sbs - ccb * rb)
+    a2 = (
+        a1cb - w1rbsb + ab * sb * sc + rb * rb * cb * sc + w1rbsb * (c - s) * (c + s) - w2 * D_rate
+    ) / D
+    W1 = w2 * sbc + rb * s
+    W2 = w1sbs / rD
+    W3 = w1cb / rD
+    half_log_rate = 0.5 * D_rate / D
+    dW1 = a2 * sbc + w2 * (cb * rb * c - w1sbs) + ab * s + rb * c * w1
+    dW2 = (a1 * sbs + w1cb * rb * s + w1 * w1 * sbc) / rD - W2 * half_log_rate
+    dW3 = (a1cb - w1 * sb * rb) / rD - W3 * half_log_rate
+    return w2, a2, W1, W2, W3, dW1, dW2, dW3
+
+
+def euler_moments(I1, I2, I3, W1, W2, W3, dW1, dW2, dW3):
+    """The moments (M1, M2, M3) the yokes exert on the cross: Euler's equations."""
+    return (
+        I1 * dW1 + (I3 - I2) * W2 * W3,
+        I2 * dW2 + (I1 - I3) * W3 * W1,
+        I3 * dW3 + (I2 - I1) * W1 * W2,
+    )
+
+
+def yoke_reactions(M1, M2, M3, s, c, sb, cb, rD, load_torque):
+    """(Dd, B, T1): tau2's and tau1's p3 parts and the input torque tau1 . z."""
+    Dd = -(load_torque + M1 * (sb * c)) / rD
+    B = M3 - Dd
+    return Dd, B, (M2 * (sb * s) + B * cb) / rD

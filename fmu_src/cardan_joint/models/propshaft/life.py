@@ -4,15 +4,21 @@ shaft speed, torque T_k and load L_k from the chain (`chain.ChainState`).
 
 Over a step the input shaft is polynomial, so every shaft's speed and every
 joint's torque are closed forms of the time (the chain at the input angle of
-that instant): each joint's damage is `life_integral.life_increment` of them,
-the chain evaluated once per node for all joints."""
+that instant): each joint's damage is `life_integral.step_integral` of them,
+the chain evaluated once per node for all joints where their nodes coincide."""
 
 import math
 from typing import Any
 
 from ...framework.stepped import ShaftModel
-from ...physics.life import bearing_forces, compensated_add, life_rate, rate_scale
-from ...physics.life_integral import life_increment
+from ...physics.life import (
+    bearing_forces,
+    compensated_add,
+    life_rate,
+    rate_scale,
+    singularity_reach,
+)
+from ...physics.life_integral import step_integral
 from ...physics.response import JointResponse, kernel
 from .chain import chain
 
@@ -37,35 +43,35 @@ def joint_outputs(rule, radius, state, working_angles, speed, acceleration, cros
     return values
 
 
-def step_damages(rule, h, chain_at, working_angles, speed, acceleration, inertias):
+def _chain_torque(t, step):
+    """(T_k, joint k's input shaft speed) t s into the step: `step` = (the chain
+    at t, k, the input speed and acceleration at the step's start)."""
+    state_at, k, speed, acceleration = step
+    state = state_at(t)
+    return state.torques[k], state.speeds[k - 1] if k else speed + acceleration * t
+
+
+def step_damages(rule, h, chain_at, working_angles, speed, acceleration):
     """Each joint's Miner damage over a step of `h` s: `chain_at(t)` the chain
-    t s into it, the input shaft at `speed` and constant `acceleration`;
-    `inertias` every inertia of the driveline (all zero: no torque reversal)."""
+    t s into it, the input shaft at `speed` and constant `acceleration`. The
+    torques share the singularities of the largest working angle."""
     states: dict = {}
 
-    def state(t):
+    def state(t):  # the joints' panels meet at the same nodes where no event parts them
         found = states.get(t)
         if found is None:
             found = states[t] = chain_at(t)
         return found
 
-    peak = max(working_angles)
+    reach = singularity_reach(max(working_angles))
     scale = rate_scale(rule) / 3600.0
-    damages = []
-    for k, beta in enumerate(working_angles):
-
-        def torque_at(t, k=k):
-            return state(t).torques[k]
-
-        def speed_at(t, k=k):
-            return state(t).speeds[k - 1] if k else speed + acceleration * t
-
-        total = life_increment(
-            torque_at, h, speed, acceleration, beta, 0.0, 0.0, inertias,
-            rule.min_angle, rule.exponent, speed_at, peak,
-        )  # fmt: skip
-        damages.append(total * scale)
-    return damages
+    return [
+        scale * step_integral(
+            _chain_torque, (state, k, speed, acceleration), h, speed, acceleration, beta,
+            0.0, 0.0, rule.min_angle, rule.exponent, reach,
+        )
+        for k, beta in enumerate(working_angles)
+    ]  # fmt: skip
 
 
 def added(sums, damages):
@@ -140,7 +146,6 @@ class PropshaftLife:
             offset = free.offsets[-1] - self._shifts[-1]
             return chain_at(t, spring(t, offset, free.speeds[-1]))
 
-        inertias = (*self._crosspiece, *self._inertia, 0.0 if spring is None else 1.0)
         damages = step_damages(
             self._life_rule,
             h,
@@ -148,7 +153,6 @@ class PropshaftLife:
             self.layout.working_angles,
             speed,
             acceleration,
-            inertias,
         )
         self._life = added(self._life, damages)
         return None

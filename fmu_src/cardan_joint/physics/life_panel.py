@@ -1,0 +1,198 @@
+"""One Gauss-Legendre panel of the life integral and the bound on its error
+(`life_integral` marches them over a step; docs/life.md, "Exact over each step").
+
+The bound (Bernstein ellipse): with the integrand analytic and at most M
+inside the ellipse E_rho about a panel (foci at its ends, rho the sum of its
+semi-axes over the half-length), n points err by at most
+(32/15) M rho^-2n / (rho^2 - 1) times the half-length; against the panel's
+integral (the mean times the length), (32/15) (M / mean) rho^-2n / (rho^2 - 1),
+and rho^2 - 1 > 1 wherever the bound is met. Two things limit rho:
+
+- the torque's singularities (D = 0), `tau` s away in time: the ellipse
+  reaches `_TOWARDS_SINGULARITY` of the way to them (in log rho);
+- the torque's complex zeros, where |T|^p branches. The Legendre coefficients
+  a_k of T, exact from the panel's own values, bound |T - a_0| on E_rho: held
+  within 0.9 |a_0|, T has no zero there and |T|^p <= 1.9^p |a_0|^p <= 1.9^p
+  mean |T|^p (Jensen, p >= 1). The coefficients are those of T's
+  interpolant through the n values: the bound is T's as far as that
+  interpolant stands for T on E_rho, which the highest coefficient's share
+  and the singularities' reach see to (not a proof: the tests measure the
+  rest, below 1e-13 of a step).
+
+At a torque zero t0 the panel substitutes t = t0 + L u^q: |T|^p ~ |t - t0|^p
+becomes u^gamma (gamma = q (p + 1) - 1 >= 10) times a smooth factor. That
+factor is T / u^q, whose coefficients the check reads; u^gamma adds its
+degree to the points and (gamma + 1) to M / mean. In u the far end moves q
+times faster: the singularities lie q times nearer.
+"""
+
+import math
+
+from .quadrature import (
+    FIRST_COEFFICIENT,
+    GAUSS_NODES,
+    GAUSS_WEIGHTS,
+    LAST_COEFFICIENT,
+    MAX_POINTS,
+    MIN_POINTS,
+    SECOND_COEFFICIENT,
+    THIRD_COEFFICIENT,
+)
+
+# Each panel's error bound, relative to its integral (the contract asks 1e-9
+# per step; the bound is far from tight).
+_TARGET = 1e-12
+# The bound's factors besides rho^-2n, 1.9^p and (gamma + 1): 32/15, and 4 for
+# the angle's and the speed's variation over the ellipse against their mean.
+_BOUND_FACTOR = 32.0 / 15.0 * 4.0
+# |T - a_0| on the ellipse: a_1..a_3 take 0.8 |a_0|, a_(n-1) the last 0.1 |a_0|.
+_LOW_TERMS = 0.8
+_TOP_TERM = 0.1
+_GROWTH = 1.0 + _LOW_TERMS + _TOP_TERM
+_NEWTON_STEPS = 8
+# How far (in log rho) a panel's ellipse reaches towards the D = 0 singularities.
+_TOWARDS_SINGULARITY = 0.75
+# The substituted power at a torque zero: gamma = q (p + 1) - 1 at least this.
+_SMOOTH_POWER = 10.0
+
+
+def substitution_power(p):
+    """q of the substitution at a torque zero: the least whole q with
+    q (p + 1) - 1 >= `_SMOOTH_POWER` (q = 3, gamma = 12 for p = 10/3)."""
+    return float(math.ceil((_SMOOTH_POWER + 1.0) / (p + 1.0)))
+
+
+def error_budget(p):
+    """log of the bound's factors for exponent p (all but rho and gamma's)."""
+    return math.log(_BOUND_FACTOR / _TARGET) + p * math.log(_GROWTH)
+
+
+def singular_log_rho(length, tau, stretch):
+    """log rho of the ellipse about a panel of `length` s that reaches
+    `_TOWARDS_SINGULARITY` of the way to singularities `tau` s away; `stretch`
+    q for a substituted panel, else 1."""
+    if tau == math.inf:
+        return math.inf
+    return _TOWARDS_SINGULARITY * math.asinh(2.0 * tau / (stretch * length))
+
+
+def points_for(log_rho, budget, gamma):
+    """The points that bring the bound below `_TARGET` on E_rho (rho =
+    exp(`log_rho`)), gamma the substituted power (0 if none); MAX_POINTS + 1
+    if more than the largest rule."""
+    if log_rho <= 0.0:
+        return MAX_POINTS + 1
+    need = (budget + math.log(gamma + 1.0)) / (2.0 * log_rho) + 0.5 * gamma
+    if need > MAX_POINTS:
+        return MAX_POINTS + 1
+    return max(MIN_POINTS, math.ceil(need))
+
+
+def log_rho_required(points, budget, gamma):
+    """The log rho with which `points` points meet the bound (`points_for`'s inverse)."""
+    return (budget + math.log(gamma + 1.0)) / (2.0 * (points - 0.5 * gamma))
+
+
+def longest_panel(tau, budget, gamma, stretch):
+    """The longest panel the largest rule covers as far as the singularities go."""
+    if tau == math.inf:
+        return math.inf
+    per_point = (budget + math.log(gamma + 1.0)) / (2.0 * (MAX_POINTS - 0.5 * gamma))
+    return 2.0 * tau / (stretch * math.sinh(per_point / _TOWARDS_SINGULARITY))
+
+
+def _low_spread(x, c1, c2, c3):
+    """|a_1| P_1(x) + |a_2| P_2(x) + |a_3| P_3(x), given the |a_k|."""
+    return c1 * x + c2 * (1.5 * x * x - 0.5) + c3 * (2.5 * x * x - 1.5) * x
+
+
+def zero_free_on(log_rho, coefficients, points, substituted):
+    """Whether T, with these Legendre coefficients (a_0..a_3, a_(n-1)) on the
+    panel, keeps |T - a_0| <= 0.9 |a_0| on E_rho (rho = exp(`log_rho`)): there
+    |P_k| is at most P_k(x) <= rho^k, x = cosh(log rho); a_1..a_3 take 0.8
+    |a_0|, a_(n-1) the last 0.1 |a_0|. A substituted panel skips a_(n-1):
+    dividing out u^q magnifies the rounding of T next to its zero, which the
+    highest coefficient feels first, while a_1..a_3 see a zero inside E_rho
+    all the same."""
+    a0, a1, a2, a3, a_last = coefficients
+    size = abs(a0)
+    if _low_spread(math.cosh(log_rho), abs(a1), abs(a2), abs(a3)) > _LOW_TERMS * size:
+        return False
+    return substituted or abs(a_last) * math.exp((points - 1.0) * log_rho) <= _TOP_TERM * size
+
+
+def zero_free_log_rho(coefficients, points, substituted):
+    """(the largest log rho on which a_1..a_3 keep to `zero_free_on`'s share,
+    the largest on which a_(n-1) does); 0.0 where there is none. The first is
+    T's own (its zeros'), the second grows with the points (how well they
+    resolve T). The cubic in x = cosh(log rho) is solved by Newton's method,
+    which from x = 1 approaches its root from above (the cubic is convex and
+    increasing there) and ends on it."""
+    a0, a1, a2, a3, a_last = coefficients
+    size = abs(a0)
+    c1, c2, c3 = abs(a1), abs(a2), abs(a3)
+    if c1 + c2 + c3 >= _LOW_TERMS * size:
+        return 0.0, 0.0
+    low = math.inf
+    if c1 or c2 or c3:
+        x = 1.0
+        for _ in range(_NEWTON_STEPS):
+            slope = c1 + 3.0 * c2 * x + c3 * (7.5 * x * x - 1.5)
+            x -= (_low_spread(x, c1, c2, c3) - _LOW_TERMS * size) / slope
+        low = math.acosh(x)
+    if substituted or a_last == 0.0:
+        return low, math.inf
+    if _TOP_TERM * size <= abs(a_last):
+        return low, 0.0
+    return low, (math.log(_TOP_TERM * size) - math.log(abs(a_last))) / (points - 1.0)
+
+
+def may_vanish(coefficients):
+    """Whether T's interpolant may reach zero on the panel (|P_k| <= 1 there)."""
+    a0, a1, a2, a3, a_last = coefficients
+    return abs(a1) + abs(a2) + abs(a3) + abs(a_last) >= abs(a0)
+
+
+def node_time(lo, hi, u, zero, q):
+    """The time of unit node u on [lo, hi]: plain, or substituted at the zero
+    end (`zero` 1 at lo, -1 at hi, else 0)."""
+    if zero > 0:
+        return lo + (hi - lo) * u**q
+    if zero < 0:
+        return hi - (hi - lo) * u**q
+    return lo + (hi - lo) * u
+
+
+def panel(torque_at, step, lo, hi, zero, q, points, b, rb, ab, min_angle, p):
+    """(the integral over [lo, hi], T's Legendre coefficients a_0..a_3, a_(n-1)
+    on it, the index i of the first node whose torque's sign differs from node
+    i - 1's or 0): the
+    `points`-point rule, substituted at the zero end (`zero` as `node_time`).
+    The integrand is A |w| |T|^p, A = max(|b + rb t + ab t^2 / 2|, `min_angle`),
+    (T, w) = `torque_at(t, step)`."""
+    nodes, weights = GAUSS_NODES[points], GAUSS_WEIGHTS[points]
+    first, second = FIRST_COEFFICIENT[points], SECOND_COEFFICIENT[points]
+    third, last = THIRD_COEFFICIENT[points], LAST_COEFFICIENT[points]
+    total = a0 = a1 = a2 = a3 = a_last = 0.0
+    change, before = 0, 0.0
+    for i in range(points):
+        u = nodes[i]
+        t = node_time(lo, hi, u, zero, q)
+        torque, speed = torque_at(t, step)
+        if change == 0 and before and torque and (before < 0.0) != (torque < 0.0):
+            change = i
+        before = torque
+        angle = max(abs(b + t * (rb + 0.5 * ab * t)), min_angle)
+        rate = angle * abs(speed) * abs(torque) ** p
+        value = torque
+        if zero:
+            power = u ** (q - 1.0)
+            rate *= q * power
+            value = torque / (power * u)
+        total += weights[i] * rate
+        a0 += weights[i] * value
+        a1 += first[i] * value
+        a2 += second[i] * value
+        a3 += third[i] * value
+        a_last += last[i] * value
+    return total * (hi - lo), (a0, a1, a2, a3, a_last), change
