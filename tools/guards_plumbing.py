@@ -97,6 +97,27 @@ PLUMBING_MUTATIONS = (
         ("tests/fmu/test_damaged_resources.py", "-k", "getter"),
     ),
     Mutation(
+        "runtime: a string that is not UTF-8 is refused by name, never a NULL item",
+        "fmu_src/cardan_joint/fmi/native/slave_values.c",
+        "        if (!one) {",
+        "        if (0) {",
+        ("tests/fmu/test_honest_statuses.py", "-k", "utf8"),
+    ),
+    Mutation(
+        "runtime: bytes the slave refuses make no FMU state",
+        "fmu_src/cardan_joint/fmi/native/slave_values.c",
+        "    if (result == py_none) {",
+        "    if (0) {",
+        ("tests/fmu/test_honest_statuses.py", "-k", "deserialize"),
+    ),
+    Mutation(
+        "runtime: a state passed where its address belongs is named, never read",
+        "fmu_src/cardan_joint/fmi/native/state_book.c",
+        "    if (find_state(in, (fmi2FMUstate)state) != (size_t)-1) {",
+        "    if (0) {",
+        ("tests/fmu/test_honest_statuses.py", "-k", "address"),
+    ),
+    Mutation(
         "runtime: FMI 3.0 accessors of types the slave has not refuse every reference",
         "fmu_src/cardan_joint/fmi/native/fmi3_calls.c",
         "        if (nvr == 0)" + " " * 72 + "\\\n",  # in a macro

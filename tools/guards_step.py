@@ -7,6 +7,7 @@ from guards_base import (
     FAST_STEP,
     FAST_STEP_TESTS,
     GUARDS,
+    HONEST,
     MODEL,
     RESTORED,
     ROBUSTNESS_CALLS,
@@ -186,11 +187,22 @@ STEP_MUTATIONS = (
         (SLAVE_GUARDS, "-k", "state"),
     ),
     Mutation(
-        "slave: deserialized bytes that are no JSON",
+        "slave: deserialized bytes are checked as a set state would be",
         CORE,
-        'return {"invalid_state": reason}',
-        "raise",
-        (SLAVE_GUARDS, "-k", "state"),
+        "            self._new_model().restore(self._checked_state(state)[0])\n",
+        "",
+        (HONEST, "-k", "deserialize"),
+    ),
+    Mutation(
+        "slave: a state is checked whole before any of it is applied",
+        CORE,
+        "            model_state, start_time, initialized, outputs, inputs = "
+        "self._checked_state(state)\n"
+        "            self._model.restore(model_state)",
+        '            self._model.restore(state["model"])\n'
+        "            model_state, start_time, initialized, outputs, inputs = "
+        "self._checked_state(state)",
+        (SLAVE_GUARDS, "-k", "start_time"),
     ),
     # The one-call step (issue 21): what the native loader may keep of its buffers.
     Mutation(

@@ -46,6 +46,8 @@ struct record_row {
 };
 int read_variable_record(const char *resources, int (*keep)(const struct record_row *, void *),
                          void *kept, int most, char *error, size_t size);
+/* For messages: the name of the variable with value reference vr (0), else -1. */
+int variable_name(const char *resources, unsigned vr, char *name, size_t size);
 
 #define MAX_FIXED 64
 struct fixed_parameters {
