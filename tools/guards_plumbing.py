@@ -118,6 +118,27 @@ PLUMBING_MUTATIONS = (
         ("tests/fmu/test_honest_statuses.py", "-k", "address"),
     ),
     Mutation(
+        "runtime: a call after the host finalized Python is an error, not a signal",
+        "fmu_src/cardan_joint/fmi/native/calls.c",
+        "    if (enter_python_thread()) {",
+        "    if (0) {",
+        ("tests/fmu/test_finalized_python.py",),
+    ),
+    Mutation(
+        "runtime: an instantiate after the host finalized Python is NULL, not a signal",
+        "fmu_src/cardan_joint/fmi/native/python_runtime.c",
+        "    if (python_ready && !p_Py_IsInitialized()) {",
+        "    if (0) {",
+        ("tests/fmu/test_finalized_python.py",),
+    ),
+    Mutation(
+        "runtime: a host thread's Python state ends while CPython's slot still names it",
+        "fmu_src/cardan_joint/fmi/native/python_runtime.c",
+        "    if (main_thread || !at_thread_exit ||",
+        "    if (1 ||",
+        ("tests/system/test_debug_python.py",),
+    ),
+    Mutation(
         "runtime: FMI 3.0 accessors of types the slave has not refuse every reference",
         "fmu_src/cardan_joint/fmi/native/fmi3_calls.c",
         "        if (nvr == 0)" + " " * 72 + "\\\n",  # in a macro

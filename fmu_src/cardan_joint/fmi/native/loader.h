@@ -71,7 +71,8 @@ int find_python(const struct runtime_record *record, struct python_location *fou
                 char *error, size_t size);
 /* FMI-version-neutral: find or start the Python, enter it on this thread. */
 int start_python(const struct runtime_record *record, char *error, size_t size);
-void enter_python_thread(void);
+/* 0, or -1 when the process's Python is not running any more (the host finalized it). */
+int enter_python_thread(void);
 /* Py_InitializeFromConfig with that home and path (python_start.c): 0, -1 when it
  * was not tried (the process can try another Python), -2 when it failed. */
 int start_interpreter(void *library, int minor, const struct python_location *python,

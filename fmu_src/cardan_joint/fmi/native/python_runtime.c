@@ -31,6 +31,7 @@
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+#include <sys/syscall.h>
 #include <unistd.h>
 
 typedef struct _ts PyThreadState;
@@ -142,10 +143,18 @@ static int load_and_start(const struct runtime_record *record, char *error, size
 
 /* A host thread without a Python thread state keeps the one it gets here until
  * it exits: pythonfmu's PyGILState_Ensure/Release on every call would otherwise
- * create and destroy one each time, which costs more than the step itself. */
-/* At thread exit glibc has already emptied Python's own thread-specific slot
- * (its key is older), so PyGILState_Release would not find the state: end it
- * by hand. */
+ * create and destroy one each time, which costs more than the step itself.
+ *
+ * At thread exit the state is ended by hand (PyGILState_Release would not find
+ * it), and while CPython's own thread-specific slot still names it: a debug
+ * build's allocator checks the GIL through that slot (PyGILState_Check), and
+ * glibc empties every slot of a key older than ours, CPython's included, before
+ * it calls our key's destructor.  glibc >= 2.18 runs the destructors registered
+ * with __cxa_thread_atexit_impl (C++'s thread_local) before it touches any slot:
+ * those end the state.  Looked up, not linked (glibc 2.17 has none: there the
+ * key's destructor does it, which a release build does not check).  Not for the
+ * process's main thread: exit() runs them too, while other threads may hold the
+ * GIL. */
 static void release_thread_state(void *thread_state)
 {
     if (p_Py_IsInitialized && p_Py_IsInitialized()) {
@@ -155,23 +164,39 @@ static void release_thread_state(void *thread_state)
     }
 }
 
-void enter_python_thread(void)
+typedef int (*thread_atexit)(void (*)(void *), void *, void *);
+static thread_atexit at_thread_exit; /* set with python_ready */
+extern void *__dso_handle;           /* this library, for glibc's count of its users */
+
+int enter_python_thread(void)
 {
     static __thread int entered;
+    /* Every call: a host may finalize the Python the slaves live in. */
+    if (!p_Py_IsInitialized || !p_Py_IsInitialized())
+        return -1;
     if (entered)
-        return;
+        return 0;
     entered = 1;
     if (p_PyGILState_GetThisThreadState())
-        return;  /* a Python thread, or the one that started Python */
+        return 0;  /* a Python thread, or the one that started Python */
     p_PyGILState_Ensure();
-    pthread_setspecific(thread_state_key, p_PyEval_SaveThread());
+    PyThreadState *state = p_PyEval_SaveThread();
+    int main_thread = syscall(SYS_gettid) == getpid();
+    if (main_thread || !at_thread_exit ||
+        at_thread_exit(release_thread_state, state, &__dso_handle) != 0)
+        pthread_setspecific(thread_state_key, state);
+    return 0;
 }
 
 int start_python(const struct runtime_record *record, char *error, size_t size)
 {
     int result = 0;
     pthread_mutex_lock(&process->lock);
-    if (python_ready) {
+    if (python_ready && !p_Py_IsInitialized()) {
+        snprintf(error, size, "%s is not running any more: the host finalized it, and the "
+                 "slaves' modules cannot be started again in this process", python_in_use());
+        result = -1;
+    } else if (python_ready) {
         result = check_version(record, "already running in this process", error, size);
     } else if (process->state < 0) {
         /* A failed Py_InitializeFromConfig is not tried again: the runtime is half set up. */
@@ -198,6 +223,7 @@ int start_python(const struct runtime_record *record, char *error, size_t size)
         }
         if (result == 0) {
             pthread_key_create(&thread_state_key, release_thread_state);
+            *(void **)&at_thread_exit = dlsym(RTLD_DEFAULT, "__cxa_thread_atexit_impl");
             python_ready = 1;
         }
     }
