@@ -9,22 +9,15 @@
  * after: ok|NULL", "free after: done"; the runtime's messages go to stderr.
  * A signal instead of these lines is the failure under test. */
 #define _GNU_SOURCE
+#include "fmi2.h"
+
 #include <dlfcn.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
 
-typedef void (*logger2)(void *, const char *, int, const char *, const char *, ...);
-struct callbacks2 {
-    logger2 logger;
-    void *(*allocate)(size_t, size_t);
-    void (*release)(void *);
-    void *step_finished;
-    void *environment;
-};
-
-static void log2(void *env, const char *name, int status, const char *category,
-                 const char *message, ...)
+static void log2(fmi2ComponentEnvironment env, fmi2String name, fmi2Status status,
+                 fmi2String category, fmi2String message, ...)
 {
     (void)env, (void)name, (void)category;
     fprintf(stderr, "LOG %d %s\n", status, message);
@@ -40,13 +33,13 @@ static void log3(void *env, int status, const char *category, const char *messag
 static void *so;
 static int version;
 static const char *uri, *token;
-static const struct callbacks2 callbacks = {log2, calloc, free, NULL, NULL};
+static const fmi2CallbackFunctions callbacks = {log2, calloc, free, NULL, NULL};
 
 static void *instantiate(void)
 {
     if (version == 2)
         return SYMBOL(void *(*)(const char *, int, const char *, const char *,
-                                const struct callbacks2 *, int, int),
+                                const fmi2CallbackFunctions *, int, int),
                       "fmi2Instantiate")("fmu", 1, token, uri, &callbacks, 0, 0);
     return SYMBOL(void *(*)(const char *, const char *, const char *, int, int, int, int,
                             const unsigned *, size_t, void *, void *, void *),
