@@ -139,6 +139,13 @@ PLUMBING_MUTATIONS = (
         ("tests/system/test_debug_python.py",),
     ),
     Mutation(
+        "runtime: a process-wide start object of another layout is refused, never used",
+        "fmu_src/cardan_joint/fmi/native/process_object.c",
+        "        found == mine)",
+        "        1)",
+        ("tests/fmu/test_process_layout.py",),
+    ),
+    Mutation(
         "runtime: FMI 3.0 accessors of types the slave has not refuse every reference",
         "fmu_src/cardan_joint/fmi/native/fmi3_calls.c",
         "        if (nvr == 0)" + " " * 72 + "\\\n",  # in a macro

@@ -7,16 +7,9 @@
  * isolated from the environment with that home and search path
  * (python_start.c).
  *
- * Every copy of this runtime in a process (several FMUs, FMI 2.0 and 3.0,
- * each its own .so loaded RTLD_LOCAL, first instantiated from threads at the
- * same moment) must agree on one start.  Separate copies share no statics, so
- * the lock and the outcome live in one object the dynamic linker unifies:
- * a symbol of binding STB_GNU_UNIQUE (the mechanism that gives C++ inline
- * statics one instance across RTLD_LOCAL libraries) resolves, in every copy
- * that references it through its GOT, to the first loaded definition.  Its
- * name carries the layout's version: a build with another layout gets another
- * object.  (flock would need a file; scanning loaded objects with
- * dl_iterate_phdr races with a concurrent dlopen.)
+ * Every copy of this runtime in a process (several FMUs, FMI 2.0 and 3.0)
+ * agrees on one start through one process-wide object (process_object.c),
+ * under its lock.
  *
  * No Python headers: every function is looked up with dlsym and declared here,
  * so that one binary starts CPython 3.10 to 3.13 and any machine with a C
@@ -24,6 +17,7 @@
  */
 #define _GNU_SOURCE
 #include "loader.h"
+#include "process_object.h"
 
 #include <dlfcn.h>
 #include <limits.h>
@@ -49,33 +43,14 @@ typedef int PyGILState_STATE;  /* an enum in Python.h */
 #define DECLARE(result, name, parameters) static result(*p_##name) parameters;
 PY_FUNCTIONS(DECLARE)
 
-/* The process's one start, shared by every copy of the runtime (see above). */
-struct process_python {
-    pthread_mutex_t lock;
-    int state;            /* 0: not started by any copy; 1: running; -1: its start failed */
-    char failure[2048];   /* why it failed, for every later instance */
-    char in_use[1600];    /* for messages: which Python runs the slaves */
-};
-#define PROCESS_PYTHON "cardan_joint_fmu_process_python_v1"
-#define PROCESS_PYTHON_SIZE 4096
-__asm__(".globl " PROCESS_PYTHON "\n"
-        ".pushsection .bss." PROCESS_PYTHON ",\"aw\",@nobits\n"
-        ".balign 64\n"
-        ".type " PROCESS_PYTHON ", @gnu_unique_object\n"
-        ".size " PROCESS_PYTHON ", 4096\n" PROCESS_PYTHON ":\n"
-        ".zero 4096\n"
-        ".popsection\n");
-extern struct process_python cardan_joint_fmu_process_python_v1;
-_Static_assert(sizeof(struct process_python) <= PROCESS_PYTHON_SIZE, "the unique object's size");
-/* All zero bytes are an unlocked mutex (glibc's PTHREAD_MUTEX_INITIALIZER) and state 0. */
-#define process (&cardan_joint_fmu_process_python_v1)
-
+static struct process_python *process; /* the process's, once its layout is this copy's */
 static int python_ready;   /* this copy has resolved its functions; under process->lock */
 static pthread_key_t thread_state_key;
 
 const char *python_in_use(void)
 {
-    return process->in_use[0] ? process->in_use : "no Python";
+    const struct process_python *shared = __atomic_load_n(&process, __ATOMIC_ACQUIRE);
+    return shared && shared->in_use[0] ? shared->in_use : "no Python";
 }
 
 static void describe(const char *where)
@@ -191,6 +166,10 @@ int enter_python_thread(void)
 int start_python(const struct runtime_record *record, char *error, size_t size)
 {
     int result = 0;
+    struct process_python *shared = process_object(error, size);
+    if (!shared)
+        return -1;
+    __atomic_store_n(&process, shared, __ATOMIC_RELEASE); /* the same from every thread */
     pthread_mutex_lock(&process->lock);
     if (python_ready && !p_Py_IsInitialized()) {
         snprintf(error, size, "%s is not running any more: the host finalized it, and the "
