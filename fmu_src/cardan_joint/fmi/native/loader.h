@@ -11,12 +11,11 @@
 #define ENV_HOME "CARDAN_JOINT_FMU_PYTHON_HOME"
 #define ENV_PATH "CARDAN_JOINT_FMU_PYTHON_PATH"
 #define ENV_STDERR "CARDAN_JOINT_FMU_STDERR"
-/* The CPython minors the loader looks for on a machine, newest first after the
- * build's own; a Python host of any 3.x from the record's minimum is used. */
-#define NEWEST_MINOR 13
+/* The CPython minors the loader starts are config_layout.h's table; a Python
+ * host of any 3.x from the record's minimum is joined. */
 #define FIX_HINT                                                                    \
-    "install a CPython 3.10 to 3.13 with its shared library (e.g. Debian's "       \
-    "libpython3.11), or point the FMU at one: $" ENV_LIBRARY "=<its libpython3.X.so.1.0>, " \
+    "install a CPython 3 with its shared library (e.g. Debian's libpython3.11), "   \
+    "or point the FMU at one: $" ENV_LIBRARY "=<its libpython3.X.so.1.0>, "         \
     "and if its standard library is not at <prefix>/lib/python3.X, $" ENV_HOME     \
     "=<prefix> and $" ENV_PATH "=<':'-separated module search path>"
 

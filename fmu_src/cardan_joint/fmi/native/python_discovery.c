@@ -9,6 +9,7 @@
  * host's dlopen or fmi2Instantiate must not spawn processes (no ldconfig -p).
  */
 #define _GNU_SOURCE
+#include "config_layout.h"
 #include "loader.h"
 
 #include <dlfcn.h>

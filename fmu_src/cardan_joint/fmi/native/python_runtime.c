@@ -12,8 +12,8 @@
  * under its lock.
  *
  * No Python headers: every function is looked up with dlsym and declared here,
- * so that one binary starts CPython 3.10 to 3.13 and any machine with a C
- * compiler builds it.
+ * so that one binary starts every CPython of config_layout.h's table and any
+ * machine with a C compiler builds it.
  */
 #define _GNU_SOURCE
 #include "loader.h"
@@ -62,7 +62,7 @@ static void describe(const char *where)
 
 #define RESOLVE(result, name, parameters)                                                \
     if (!(*(void **)&p_##name = dlsym(library, #name))) {                                \
-        snprintf(error, size, "%s has no %s: not a CPython 3.10 to 3.13", where, #name); \
+        snprintf(error, size, "%s has no %s: not a CPython 3", where, #name);            \
         return -1;                                                                       \
     }
 
