@@ -6,6 +6,7 @@ from guards_base import (
     CORE,
     FAST_STEP,
     FAST_STEP_TESTS,
+    FMU_STATE,
     GUARDS,
     HONEST,
     MODEL,
@@ -163,14 +164,14 @@ STEP_MUTATIONS = (
     ),
     Mutation(
         "slave: a marked invalid state",
-        CORE,
+        FMU_STATE,
         'if "invalid_state" in state:',
         "if False:",
         (SLAVE_GUARDS, "-k", "state"),
     ),
     Mutation(
         "slave: a state of another version",
-        CORE,
+        FMU_STATE,
         "if (\n"
         '                "model" not in state\n'
         "                or len(held_outputs) != len(self.table.OUTPUTS)\n"
@@ -181,21 +182,21 @@ STEP_MUTATIONS = (
     ),
     Mutation(
         "slave: deserialized bytes that are no dict",
-        CORE,
+        FMU_STATE,
         "if not isinstance(state, dict):",
         "if False:",
         (SLAVE_GUARDS, "-k", "state"),
     ),
     Mutation(
         "slave: deserialized bytes are checked as a set state would be",
-        CORE,
+        FMU_STATE,
         "            self._new_model().restore(self._checked_state(state)[0])\n",
         "",
         (HONEST, "-k", "deserialize"),
     ),
     Mutation(
         "slave: a state is checked whole before any of it is applied",
-        CORE,
+        FMU_STATE,
         "            model_state, start_time, initialized, outputs, inputs = "
         "self._checked_state(state)\n"
         "            self._model.restore(model_state)",
