@@ -3,15 +3,11 @@
 each minor's root is a copy of it (cp -a --one-file-system) with Debian's
 libpython3.X installed by apt. Cached like tests/system/debian_root.py's root
 (same cache folder, same completion mark, same chroot helper), named by a hash
-of this recipe.
-
-    python tests/system/sid_roots.py [CACHE]    lay them out (or reuse them); print their paths
-"""
+of this recipe."""
 
 import hashlib
 import shutil
 import subprocess
-import sys
 import time
 from pathlib import Path
 
@@ -87,14 +83,3 @@ def prepare(minor: int, cache: Path = CACHE, log=print) -> Path:
     (root / DONE).write_text(f"{time.monotonic() - began:.0f} s\n")
     log(f"sid root with CPython 3.{minor} ready in {time.monotonic() - began:.0f} s: {root}")
     return root
-
-
-if __name__ == "__main__":
-    arguments = sys.argv[1:]
-    if len(arguments) > 1:
-        sys.exit("usage: python tests/system/sid_roots.py [CACHE]")
-    try:
-        for minor in MINORS:
-            print(prepare(minor, Path(arguments[0]) if arguments else CACHE))
-    except RootUnavailable as error:
-        sys.exit(str(error))

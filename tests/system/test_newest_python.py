@@ -11,11 +11,10 @@ import tempfile
 from pathlib import Path
 
 import pytest
-from c_host.compile import compile_command, host_files
 from debian_root import RootUnavailable, in_root
 from sid_roots import MINORS, prepare
 from test_c_host import HOST_RUN
-from test_older_linux import FMUS, assert_equals_fmpy
+from test_older_linux import FMUS, assert_equals_fmpy, host_in_root
 
 pytestmark = pytest.mark.slow
 
@@ -32,26 +31,10 @@ def sid(request):
     shutil.rmtree(here, ignore_errors=True)
 
 
-def host_there(sid, fmi: int) -> Path:
-    """tests/c_host's FMI 2.0 or 3.0 host, compiled inside the root by its gcc."""
-    root, here, there = sid
-    include, sources = host_files(fmi3=fmi == 3)
-    folder = here / f"host{fmi}"
-    shutil.copytree(include, folder / "include")
-    for source in [*sources, *Path(sources[0]).parent.glob("*.h")]:
-        shutil.copy(source, folder)
-    inside = there / f"host{fmi}"
-    sources_there = [inside / Path(source).name for source in sources]
-    command = compile_command(inside / "host", inside / "include", sources_there, cc=["gcc"])
-    run = in_root(root, " ".join(map(str, command)), timeout=300)
-    assert run.returncode == 0, run.stderr
-    return inside / "host"
-
-
 @pytest.mark.parametrize("fmi", [2, 3])
 def test_a_c_host_in_sid_runs_the_fmu_with_the_roots_only_cpython(request, sid, fmi):
     root, here, there = sid
-    host = host_there(sid, fmi)
+    host = host_in_root(root, here, there, fmi)
     shutil.copytree(request.getfixturevalue(FMUS[fmi][0]), here / f"fmu{fmi}")
     command = ["env -i PATH=/usr/bin:/bin", host, HOST_RUN[0], there / f"fmu{fmi}", *HOST_RUN[1:]]
     run = in_root(root, " ".join(map(str, command)), timeout=900)
