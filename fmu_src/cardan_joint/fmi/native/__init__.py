@@ -38,6 +38,7 @@ _COMMON = (
     "process_object.c",
     "python_start.c",
     "python_discovery.c",
+    "python_present.c",
     "runtime_record.c",
     "record_check.c",
     "slave_module.c",

@@ -68,6 +68,13 @@ int read_runtime_record(const char *resources, struct runtime_record *record,
  * there, else the machine's (python_discovery.c). 0, or -1 with what was looked at. */
 int find_python(const struct runtime_record *record, struct python_location *found,
                 char *error, size_t size);
+/* The Python already loaded at `library` (the one in the process, not running):
+ * with the user's home and path, else those beside it; 0, or -1 and why. */
+int locate_loaded(const struct runtime_record *record, const char *library,
+                  struct python_location *found, char *error, size_t size);
+/* How many libpython3.X are loaded in this process, in any scope: the first's
+ * path in `one`, all of them in `names` (python_present.c). */
+int loaded_pythons(char *one, size_t one_size, char *names, size_t names_size);
 /* FMI-version-neutral: find or start the Python, enter it on this thread. */
 int start_python(const struct runtime_record *record, char *error, size_t size);
 /* 0, or -1 when the process's Python is not running any more (the host finalized it). */

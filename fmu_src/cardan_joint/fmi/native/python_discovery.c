@@ -215,3 +215,18 @@ int find_python(const struct runtime_record *record, struct python_location *fou
         snprintf(found->path, sizeof found->path, "%s", record->user.path);
     return 0;
 }
+
+int locate_loaded(const struct runtime_record *record, const char *library,
+                  struct python_location *found, char *error, size_t size)
+{
+    memset(found, 0, sizeof *found);
+    snprintf(found->library, sizeof found->library, "%s", library);
+    snprintf(found->home, sizeof found->home, "%s", record->user.home);
+    snprintf(found->path, sizeof found->path, "%s", record->user.path);
+    if ((found->home[0] && found->path[0]) || beside_library(found) == 0)
+        return 0;
+    snprintf(error, size, "this process already holds %s, not running: the one Python the "
+             "runtime may start here, but its standard library is not beside it (<prefix>/lib/"
+             "python3.X with os.py): set $" ENV_HOME " and $" ENV_PATH, library);
+    return -1;
+}

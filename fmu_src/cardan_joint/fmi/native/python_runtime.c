@@ -88,10 +88,13 @@ static int check_version(const struct runtime_record *record, const char *whose,
     return -1;
 }
 
-static int load_and_start(const struct runtime_record *record, char *error, size_t size)
+/* `loaded`: the libpython the process holds already (not running), else NULL. */
+static int load_and_start(const struct runtime_record *record, const char *loaded,
+                          char *error, size_t size)
 {
     struct python_location python;
-    if (find_python(record, &python, error, size))
+    if (loaded ? locate_loaded(record, loaded, &python, error, size)
+               : find_python(record, &python, error, size))
         return -1;
     void *library = dlopen(python.library, RTLD_NOW | RTLD_GLOBAL);
     if (!library) {
@@ -112,6 +115,34 @@ static int load_and_start(const struct runtime_record *record, char *error, size
     p_PyEval_SaveThread();  /* the GIL is free; this thread keeps its main thread state */
     char where[sizeof python.library + 8];
     snprintf(where, sizeof where, "from %s", python.library);
+    describe(where);
+    return 0;
+}
+
+/* A Python the process holds that is not running in the global scope: one
+ * libpython loaded in any scope is joined if it runs (a plugin's RTLD_LOCAL
+ * Python, made global for the slave's calls and its extension modules), else
+ * started (loaded and never started, or finalized by the host); several are
+ * refused by name; none: the one discovery finds.  Never a second libpython. */
+static int join_or_start(const struct runtime_record *record, char *error, size_t size)
+{
+    char loaded[PATH_MAX], names[1024];
+    int n = loaded_pythons(loaded, sizeof loaded, names, sizeof names);
+    if (n > 1) {
+        snprintf(error, size, "this process already holds %d Python libraries (%s), none "
+                 "running: the FMU's runtime loads no other beside them and cannot tell which "
+                 "to start; run it in a process with one", n, names);
+        return -1;
+    }
+    void *library = n ? dlopen(loaded, RTLD_NOW | RTLD_NOLOAD | RTLD_GLOBAL) : NULL;
+    int (*running)(void) = library ? (int (*)(void))dlsym(library, "Py_IsInitialized") : NULL;
+    if (!running || !running())
+        return load_and_start(record, n ? loaded : NULL, error, size);
+    if (resolve(library, loaded, error, size) ||
+        check_version(record, "of this process", error, size))
+        return -1;
+    char where[PATH_MAX + 32];
+    snprintf(where, sizeof where, "(the host's, from %s)", loaded);
     describe(where);
     return 0;
 }
@@ -193,7 +224,7 @@ int start_python(const struct runtime_record *record, char *error, size_t size)
                      "running any more");
             result = -1;
         } else {
-            result = load_and_start(record, error, size);
+            result = join_or_start(record, error, size);
             if (result == -2) {
                 process->state = -1;
                 snprintf(process->failure, sizeof process->failure, "%s", error);
