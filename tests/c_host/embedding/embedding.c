@@ -23,14 +23,14 @@
 #include <stdlib.h>
 #include <string.h>
 
-static void log2(fmi2ComponentEnvironment env, fmi2String name, fmi2Status status,
+static void log_fmi2(fmi2ComponentEnvironment env, fmi2String name, fmi2Status status,
                  fmi2String category, fmi2String message, ...)
 {
     (void)env, (void)name, (void)category;
     fprintf(stderr, "LOG %d %s\n", status, message);
 }
 
-static void log3(void *env, int status, const char *category, const char *message)
+static void log_fmi3(void *env, int status, const char *category, const char *message)
 {
     (void)env, (void)category;
     fprintf(stderr, "LOG %d %s\n", status, message);
@@ -40,7 +40,7 @@ static void log3(void *env, int status, const char *category, const char *messag
 static void *so;
 static int version;
 static const char *uri, *token;
-static const fmi2CallbackFunctions callbacks = {log2, calloc, free, NULL, NULL};
+static const fmi2CallbackFunctions callbacks = {log_fmi2, calloc, free, NULL, NULL};
 
 static void *instantiate(void)
 {
@@ -51,7 +51,7 @@ static void *instantiate(void)
     return SYMBOL(void *(*)(const char *, const char *, const char *, int, int, int, int,
                             const unsigned *, size_t, void *, void *, void *),
                   "fmi3InstantiateCoSimulation")("fmu", token, uri, 0, 0, 0, 0, NULL, 0, NULL,
-                                                 (void *)log3, NULL);
+                                                 (void *)log_fmi3, NULL);
 }
 
 static int initialize(void *c)
