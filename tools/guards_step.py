@@ -6,13 +6,14 @@ from guards_base import (
     CORE,
     FAST_STEP,
     FAST_STEP_TESTS,
+    FMU_STATE,
     GUARDS,
+    HONEST,
     MODEL,
     RESTORED,
     ROBUSTNESS_CALLS,
     SLAVE,
     SLAVE_GUARDS,
-    STATE_BYTES,
     STEPPED,
     VALUES,
     WATCH_TESTS,
@@ -172,14 +173,14 @@ STEP_MUTATIONS = (
     ),
     Mutation(
         "slave: a marked invalid state",
-        CORE,
+        FMU_STATE,
         'if "invalid_state" in state:',
         "if False:",
         (SLAVE_GUARDS, "-k", "state"),
     ),
     Mutation(
         "slave: a state of another version",
-        CORE,
+        FMU_STATE,
         "if (\n"
         '                "model" not in state\n'
         "                or len(held_outputs) != len(self.table.OUTPUTS)\n"
@@ -190,17 +191,28 @@ STEP_MUTATIONS = (
     ),
     Mutation(
         "slave: deserialized bytes that are no dict",
-        STATE_BYTES,
+        FMU_STATE,
         "if not isinstance(state, dict):",
         "if False:",
         (SLAVE_GUARDS, "-k", "state"),
     ),
     Mutation(
-        "slave: deserialized bytes that are no JSON",
-        STATE_BYTES,
-        'return {"invalid_state": reason}',
-        "raise",
-        (SLAVE_GUARDS, "-k", "state"),
+        "slave: deserialized bytes are checked as a set state would be",
+        FMU_STATE,
+        "            self._new_model().restore(self._checked_state(state)[0])\n",
+        "",
+        (HONEST, "-k", "deserialize"),
+    ),
+    Mutation(
+        "slave: a state is checked whole before any of it is applied",
+        FMU_STATE,
+        "            model_state, start_time, initialized, outputs, inputs, passed = "
+        "self._checked_state(state)\n"
+        "            self._model.restore(model_state)",
+        '            self._model.restore(state["model"])\n'
+        "            model_state, start_time, initialized, outputs, inputs, passed = "
+        "self._checked_state(state)",
+        (SLAVE_GUARDS, "-k", "start_time"),
     ),
     # The one-call step (issue 21): what the native loader may keep of its buffers.
     Mutation(
@@ -255,7 +267,7 @@ STEP_MUTATIONS = (
     ),
     Mutation(
         "watches: a state's passed watches are read before the model is restored",
-        CORE,
+        FMU_STATE,
         'tuple(map(str, state.get("watches_passed", ())))',
         'state.get("watches_passed", ())',
         (WATCH_TESTS, "-k", "malformed"),

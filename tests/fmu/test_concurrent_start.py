@@ -43,10 +43,11 @@ def fmu_argument(folder) -> str:
     )
 
 
-def started_together(concurrent_host, folders, runs: int) -> None:
-    """`runs` starts of the FMUs in `folders` at once each equal the serial run."""
+def started_together(concurrent_host, folders, runs: int, python: dict | None = None) -> None:
+    """`runs` starts of the FMUs in `folders` at once each equal the serial run;
+    `python`: the $CARDAN_JOINT_FMU_PYTHON_* variables naming the Python to start."""
     arguments = [fmu_argument(folder) for folder in folders]
-    environment = {"PATH": "/usr/bin:/bin"}
+    environment = {"PATH": "/usr/bin:/bin", **(python or {})}
     serial = subprocess.run(
         [str(concurrent_host), "serial", *arguments],
         env=environment,

@@ -133,9 +133,20 @@ def restored(slave, state, words):
 )
 def test_a_serialized_state_that_is_no_state_is_refused(data, words):
     slave = initialized()
-    state = ModelSlave._fmu_state_from_bytes(data)
-    assert "invalid_state" in state
-    restored(slave, state, words)
+    before = slave._get_fmu_state()
+    assert slave._fmu_state_from_bytes(data) is None
+    assert "fmi2DeSerializeFMUstate refused the bytes" in last(slave, Fmi2Status.error)
+    assert slave._get_fmu_state() == before
+    restored(slave, json.loads(data) if data.startswith(b"[") else {"invalid_state": words}, words)
+
+
+def test_a_state_without_its_start_time_changes_nothing():
+    """The whole state is checked before any of it is applied."""
+    slave, other = initialized(), initialized(input_speed=77.0)
+    other.do_step(0.0, 0.3)
+    state = other._get_fmu_state()
+    del state["start_time"]
+    restored(slave, state, "start_time")
 
 
 def test_a_state_of_another_fmu_version_is_refused():

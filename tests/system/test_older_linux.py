@@ -39,29 +39,31 @@ def scratch(bullseye):
     shutil.rmtree(here, ignore_errors=True)
 
 
+def host_in_root(root: Path, here: Path, there: Path, fmi: int) -> Path:
+    """tests/c_host's FMI 2.0 or 3.0 host, compiled inside `root` by its gcc in the
+    scratch folder (`here` outside, `there` inside); its path in the root."""
+    include, sources = host_files(fmi3=fmi == 3)
+    folder = here / f"host{fmi}"
+    shutil.copytree(include, folder / "include")
+    for source in [*sources, *Path(sources[0]).parent.glob("*.h")]:
+        shutil.copy(source, folder)
+    inside = there / f"host{fmi}"
+    command = compile_command(
+        inside / "host",
+        inside / "include",
+        [inside / Path(source).name for source in sources],
+        cc=["gcc"],
+    )
+    run = in_root(root, " ".join(map(str, command)), timeout=300)
+    assert run.returncode == 0, run.stderr
+    return inside / "host"
+
+
 @pytest.fixture(scope="session")
 def hosts_there(bullseye, scratch):
     """tests/c_host's FMI 2.0 and 3.0 hosts, compiled inside the root by its gcc:
     {fmi version: the host's path in the root}."""
-    here, there = scratch
-    hosts = {}
-    for fmi in (2, 3):
-        include, sources = host_files(fmi3=fmi == 3)
-        folder = here / f"host{fmi}"
-        shutil.copytree(include, folder / "include")
-        for source in [*sources, *Path(sources[0]).parent.glob("*.h")]:
-            shutil.copy(source, folder)
-        inside = there / f"host{fmi}"
-        command = compile_command(
-            inside / "host",
-            inside / "include",
-            [inside / Path(source).name for source in sources],
-            cc=["gcc"],
-        )
-        run = in_root(bullseye, " ".join(map(str, command)), timeout=300)
-        assert run.returncode == 0, run.stderr
-        hosts[fmi] = inside / "host"
-    return hosts
+    return {fmi: host_in_root(bullseye, *scratch, fmi) for fmi in (2, 3)}
 
 
 def fmu_there(request, scratch, fmi: int) -> Path:

@@ -19,8 +19,8 @@ from typing import Any
 
 from .. import __version__
 from .fast_step import FastStep
+from .fmu_state import FmuStates
 from .references import References
-from .state_bytes import StateBytes
 from .watching import Watching
 
 
@@ -30,7 +30,7 @@ def _readable(seconds: float) -> str:
     return repr(float(f"{seconds:.12g}"))
 
 
-class SlaveCore(Watching, StateBytes, FastStep):
+class SlaveCore(Watching, FmuStates, FastStep):
     author = "Cardan joint FMU team"
     license = "MIT"
     version = __version__
@@ -237,48 +237,3 @@ class SlaveCore(Watching, StateBytes, FastStep):
     def _name_of(self, index):
         names = self._refs.names
         return names[index] if 0 <= index < len(names) else f"value reference {index}"
-
-    # --- FMU state -----------------------------------------------------------
-
-    def _get_fmu_state(self):
-        try:
-            return {
-                "model": self._model.state(),
-                "start_time": self._start_time,
-                "initialized": self._initialized,
-                "outputs_held": list(self._outputs_held),
-                "inputs_held": list(self._inputs_held),
-                "watches_passed": self._watches_passed(),
-            }
-        except Exception as error:
-            self._fault(f"{self._API}GetFMU{self._STATE}", error)
-            return {"invalid_state": f"{self._API}GetFMU{self._STATE} failed: {error}"}
-
-    def _set_fmu_state(self, state):
-        try:
-            if "invalid_state" in state:
-                raise ValueError(state["invalid_state"])
-            held_outputs = tuple(float(v) for v in state["outputs_held"])
-            held_inputs = tuple(float(v) for v in state["inputs_held"])
-            # Before 1.1 the model's values were kept under "joint", in another format.
-            if (
-                "model" not in state
-                or len(held_outputs) != len(self.table.OUTPUTS)
-                or len(held_inputs) != len(self.table.INPUTS)
-            ):
-                raise ValueError("the state is from another version of the FMU")
-            passed_then = tuple(map(str, state.get("watches_passed", ())))
-            self._model.restore(state["model"])  # all or nothing
-            self._start_time = float(state["start_time"])
-            self._initialized = bool(state["initialized"])
-            self._outputs_held, self._inputs_held = held_outputs, held_inputs
-            self._rearm(passed_then)
-        except Exception as error:
-            self._report(
-                f"{self._API}SetFMU{self._STATE} ignored, the {self.owner} keeps its "
-                f"state: {type(error).__name__}: {error}",
-                self._STATUS.error,
-            )
-        finally:
-            self._outputs = None
-            self._inputs_checked = False

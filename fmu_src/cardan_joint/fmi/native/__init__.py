@@ -38,8 +38,10 @@ _COMMON = (
     "slave_values.c",
     "python_api.c",
     "python_runtime.c",
+    "process_object.c",
     "python_start.c",
     "python_discovery.c",
+    "python_present.c",
     "runtime_record.c",
     "record_check.c",
     "slave_module.c",
@@ -70,7 +72,7 @@ RECORD = "resources/python_runtime.txt"
 VARIABLES = "resources/variables.txt"
 _HERE = Path(__file__).resolve().parent
 # The STB_GNU_UNIQUE object through which every copy of the runtime in a process
-# agrees on one interpreter start (python_runtime.c).
+# agrees on one interpreter start (process_object.c).
 PROCESS_OBJECT = "cardan_joint_fmu_process_python_v1"
 
 

@@ -20,7 +20,11 @@ struct instance *enter(fmi2Component c, unsigned allowed, const char *function)
                 where(in->state));
         return NULL;
     }
-    enter_python_thread();
+    if (enter_python_thread()) {
+        reportf(in, fmi2Error, "%s: %s is not running any more (the host finalized it): the "
+                "instance's slave is gone; the call was ignored", function, python_in_use());
+        return NULL;
+    }
     return in;
 }
 

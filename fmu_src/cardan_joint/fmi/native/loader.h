@@ -12,12 +12,11 @@
 #define ENV_PATH "CARDAN_JOINT_FMU_PYTHON_PATH"
 #define ENV_STDERR "CARDAN_JOINT_FMU_STDERR"
 #define ENV_PYTHON_STEP "CARDAN_JOINT_FMU_PYTHON_STEP"
-/* The CPython minors the loader looks for on a machine, newest first after the
- * build's own; a Python host of any 3.x from the record's minimum is used. */
-#define NEWEST_MINOR 13
+/* The CPython minors the loader starts are config_layout.h's table; a Python
+ * host of any 3.x from the record's minimum is joined. */
 #define FIX_HINT                                                                    \
-    "install a CPython 3.10 to 3.13 with its shared library (e.g. Debian's "       \
-    "libpython3.11), or point the FMU at one: $" ENV_LIBRARY "=<its libpython3.X.so.1.0>, " \
+    "install a CPython 3 with its shared library (e.g. Debian's libpython3.11), "   \
+    "or point the FMU at one: $" ENV_LIBRARY "=<its libpython3.X.so.1.0>, "         \
     "and if its standard library is not at <prefix>/lib/python3.X, $" ENV_HOME     \
     "=<prefix> and $" ENV_PATH "=<':'-separated module search path>"
 
@@ -47,6 +46,8 @@ struct record_row {
 };
 int read_variable_record(const char *resources, int (*keep)(const struct record_row *, void *),
                          void *kept, int most, char *error, size_t size);
+/* For messages: the name of the variable with value reference vr (0), else -1. */
+int variable_name(const char *resources, unsigned vr, char *name, size_t size);
 
 #define MAX_FIXED 64
 struct fixed_parameters {
@@ -68,9 +69,17 @@ int read_runtime_record(const char *resources, struct runtime_record *record,
  * there, else the machine's (python_discovery.c). 0, or -1 with what was looked at. */
 int find_python(const struct runtime_record *record, struct python_location *found,
                 char *error, size_t size);
+/* The Python already loaded at `library` (the one in the process, not running):
+ * with the user's home and path, else those beside it; 0, or -1 and why. */
+int locate_loaded(const struct runtime_record *record, const char *library,
+                  struct python_location *found, char *error, size_t size);
+/* How many libpython3.X are loaded in this process, in any scope: the first's
+ * path in `one`, all of them in `names` (python_present.c). */
+int loaded_pythons(char *one, size_t one_size, char *names, size_t names_size);
 /* FMI-version-neutral: find or start the Python, enter it on this thread. */
 int start_python(const struct runtime_record *record, char *error, size_t size);
-void enter_python_thread(void);
+/* 0, or -1 when the process's Python is not running any more (the host finalized it). */
+int enter_python_thread(void);
 /* Py_InitializeFromConfig with that home and path (python_start.c): 0, -1 when it
  * was not tried (the process can try another Python), -2 when it failed. */
 int start_interpreter(void *library, int minor, const struct python_location *python,

@@ -9,6 +9,7 @@
  * host's dlopen or fmi2Instantiate must not spawn processes (no ldconfig -p).
  */
 #define _GNU_SOURCE
+#include "config_layout.h"
 #include "loader.h"
 
 #include <dlfcn.h>
@@ -213,4 +214,19 @@ int find_python(const struct runtime_record *record, struct python_location *fou
     if (record->user.path[0])
         snprintf(found->path, sizeof found->path, "%s", record->user.path);
     return 0;
+}
+
+int locate_loaded(const struct runtime_record *record, const char *library,
+                  struct python_location *found, char *error, size_t size)
+{
+    memset(found, 0, sizeof *found);
+    snprintf(found->library, sizeof found->library, "%s", library);
+    snprintf(found->home, sizeof found->home, "%s", record->user.home);
+    snprintf(found->path, sizeof found->path, "%s", record->user.path);
+    if ((found->home[0] && found->path[0]) || beside_library(found) == 0)
+        return 0;
+    snprintf(error, size, "this process already holds %s, not running: the one Python the "
+             "runtime may start here, but its standard library is not beside it (<prefix>/lib/"
+             "python3.X with os.py): set $" ENV_HOME " and $" ENV_PATH, library);
+    return -1;
 }

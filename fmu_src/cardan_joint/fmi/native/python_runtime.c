@@ -7,23 +7,17 @@
  * isolated from the environment with that home and search path
  * (python_start.c).
  *
- * Every copy of this runtime in a process (several FMUs, FMI 2.0 and 3.0,
- * each its own .so loaded RTLD_LOCAL, first instantiated from threads at the
- * same moment) must agree on one start.  Separate copies share no statics, so
- * the lock and the outcome live in one object the dynamic linker unifies:
- * a symbol of binding STB_GNU_UNIQUE (the mechanism that gives C++ inline
- * statics one instance across RTLD_LOCAL libraries) resolves, in every copy
- * that references it through its GOT, to the first loaded definition.  Its
- * name carries the layout's version: a build with another layout gets another
- * object.  (flock would need a file; scanning loaded objects with
- * dl_iterate_phdr races with a concurrent dlopen.)
+ * Every copy of this runtime in a process (several FMUs, FMI 2.0 and 3.0)
+ * agrees on one start through one process-wide object (process_object.c),
+ * under its lock.
  *
  * No Python headers: every function is looked up with dlsym and declared here,
- * so that one binary starts CPython 3.10 to 3.13 and any machine with a C
- * compiler builds it.
+ * so that one binary starts every CPython of config_layout.h's table and any
+ * machine with a C compiler builds it.
  */
 #define _GNU_SOURCE
 #include "loader.h"
+#include "process_object.h"
 
 #include <dlfcn.h>
 #include <limits.h>
@@ -31,6 +25,7 @@
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+#include <sys/syscall.h>
 #include <unistd.h>
 
 typedef struct _ts PyThreadState;
@@ -48,33 +43,14 @@ typedef int PyGILState_STATE;  /* an enum in Python.h */
 #define DECLARE(result, name, parameters) static result(*p_##name) parameters;
 PY_FUNCTIONS(DECLARE)
 
-/* The process's one start, shared by every copy of the runtime (see above). */
-struct process_python {
-    pthread_mutex_t lock;
-    int state;            /* 0: not started by any copy; 1: running; -1: its start failed */
-    char failure[2048];   /* why it failed, for every later instance */
-    char in_use[1600];    /* for messages: which Python runs the slaves */
-};
-#define PROCESS_PYTHON "cardan_joint_fmu_process_python_v1"
-#define PROCESS_PYTHON_SIZE 4096
-__asm__(".globl " PROCESS_PYTHON "\n"
-        ".pushsection .bss." PROCESS_PYTHON ",\"aw\",@nobits\n"
-        ".balign 64\n"
-        ".type " PROCESS_PYTHON ", @gnu_unique_object\n"
-        ".size " PROCESS_PYTHON ", 4096\n" PROCESS_PYTHON ":\n"
-        ".zero 4096\n"
-        ".popsection\n");
-extern struct process_python cardan_joint_fmu_process_python_v1;
-_Static_assert(sizeof(struct process_python) <= PROCESS_PYTHON_SIZE, "the unique object's size");
-/* All zero bytes are an unlocked mutex (glibc's PTHREAD_MUTEX_INITIALIZER) and state 0. */
-#define process (&cardan_joint_fmu_process_python_v1)
-
+static struct process_python *process; /* the process's, once its layout is this copy's */
 static int python_ready;   /* this copy has resolved its functions; under process->lock */
 static pthread_key_t thread_state_key;
 
 const char *python_in_use(void)
 {
-    return process->in_use[0] ? process->in_use : "no Python";
+    const struct process_python *shared = __atomic_load_n(&process, __ATOMIC_ACQUIRE);
+    return shared && shared->in_use[0] ? shared->in_use : "no Python";
 }
 
 static void describe(const char *where)
@@ -86,7 +62,7 @@ static void describe(const char *where)
 
 #define RESOLVE(result, name, parameters)                                                \
     if (!(*(void **)&p_##name = dlsym(library, #name))) {                                \
-        snprintf(error, size, "%s has no %s: not a CPython 3.10 to 3.13", where, #name); \
+        snprintf(error, size, "%s has no %s: not a CPython 3", where, #name);            \
         return -1;                                                                       \
     }
 
@@ -112,10 +88,13 @@ static int check_version(const struct runtime_record *record, const char *whose,
     return -1;
 }
 
-static int load_and_start(const struct runtime_record *record, char *error, size_t size)
+/* `loaded`: the libpython the process holds already (not running), else NULL. */
+static int load_and_start(const struct runtime_record *record, const char *loaded,
+                          char *error, size_t size)
 {
     struct python_location python;
-    if (find_python(record, &python, error, size))
+    if (loaded ? locate_loaded(record, loaded, &python, error, size)
+               : find_python(record, &python, error, size))
         return -1;
     void *library = dlopen(python.library, RTLD_NOW | RTLD_GLOBAL);
     if (!library) {
@@ -140,12 +119,48 @@ static int load_and_start(const struct runtime_record *record, char *error, size
     return 0;
 }
 
+/* A Python the process holds that is not running in the global scope: one
+ * libpython loaded in any scope is joined if it runs (a plugin's RTLD_LOCAL
+ * Python, made global for the slave's calls and its extension modules), else
+ * started (loaded and never started, or finalized by the host); several are
+ * refused by name; none: the one discovery finds.  Never a second libpython. */
+static int join_or_start(const struct runtime_record *record, char *error, size_t size)
+{
+    char loaded[PATH_MAX], names[1024];
+    int n = loaded_pythons(loaded, sizeof loaded, names, sizeof names);
+    if (n > 1) {
+        snprintf(error, size, "this process already holds %d Python libraries (%s), none "
+                 "running: the FMU's runtime loads no other beside them and cannot tell which "
+                 "to start; run it in a process with one", n, names);
+        return -1;
+    }
+    void *library = n ? dlopen(loaded, RTLD_NOW | RTLD_NOLOAD | RTLD_GLOBAL) : NULL;
+    int (*running)(void) = library ? (int (*)(void))dlsym(library, "Py_IsInitialized") : NULL;
+    if (!running || !running())
+        return load_and_start(record, n ? loaded : NULL, error, size);
+    if (resolve(library, loaded, error, size) ||
+        check_version(record, "of this process", error, size))
+        return -1;
+    char where[PATH_MAX + 32];
+    snprintf(where, sizeof where, "(the host's, from %s)", loaded);
+    describe(where);
+    return 0;
+}
+
 /* A host thread without a Python thread state keeps the one it gets here until
  * it exits: pythonfmu's PyGILState_Ensure/Release on every call would otherwise
- * create and destroy one each time, which costs more than the step itself. */
-/* At thread exit glibc has already emptied Python's own thread-specific slot
- * (its key is older), so PyGILState_Release would not find the state: end it
- * by hand. */
+ * create and destroy one each time, which costs more than the step itself.
+ *
+ * At thread exit the state is ended by hand (PyGILState_Release would not find
+ * it), and while CPython's own thread-specific slot still names it: a debug
+ * build's allocator checks the GIL through that slot (PyGILState_Check), and
+ * glibc empties every slot of a key older than ours, CPython's included, before
+ * it calls our key's destructor.  glibc >= 2.18 runs the destructors registered
+ * with __cxa_thread_atexit_impl (C++'s thread_local) before it touches any slot:
+ * those end the state.  Looked up, not linked (glibc 2.17 has none: there the
+ * key's destructor does it, which a release build does not check).  Not for the
+ * process's main thread: exit() runs them too, while other threads may hold the
+ * GIL. */
 static void release_thread_state(void *thread_state)
 {
     if (p_Py_IsInitialized && p_Py_IsInitialized()) {
@@ -155,23 +170,43 @@ static void release_thread_state(void *thread_state)
     }
 }
 
-void enter_python_thread(void)
+typedef int (*thread_atexit)(void (*)(void *), void *, void *);
+static thread_atexit at_thread_exit; /* set with python_ready */
+extern void *__dso_handle;           /* this library, for glibc's count of its users */
+
+int enter_python_thread(void)
 {
     static __thread int entered;
+    /* Every call: a host may finalize the Python the slaves live in. */
+    if (!p_Py_IsInitialized || !p_Py_IsInitialized())
+        return -1;
     if (entered)
-        return;
+        return 0;
     entered = 1;
     if (p_PyGILState_GetThisThreadState())
-        return;  /* a Python thread, or the one that started Python */
+        return 0;  /* a Python thread, or the one that started Python */
     p_PyGILState_Ensure();
-    pthread_setspecific(thread_state_key, p_PyEval_SaveThread());
+    PyThreadState *state = p_PyEval_SaveThread();
+    int main_thread = syscall(SYS_gettid) == getpid();
+    if (main_thread || !at_thread_exit ||
+        at_thread_exit(release_thread_state, state, &__dso_handle) != 0)
+        pthread_setspecific(thread_state_key, state);
+    return 0;
 }
 
 int start_python(const struct runtime_record *record, char *error, size_t size)
 {
     int result = 0;
+    struct process_python *shared = process_object(error, size);
+    if (!shared)
+        return -1;
+    __atomic_store_n(&process, shared, __ATOMIC_RELEASE); /* the same from every thread */
     pthread_mutex_lock(&process->lock);
-    if (python_ready) {
+    if (python_ready && !p_Py_IsInitialized()) {
+        snprintf(error, size, "%s is not running any more: the host finalized it, and the "
+                 "slaves' modules cannot be started again in this process", python_in_use());
+        result = -1;
+    } else if (python_ready) {
         result = check_version(record, "already running in this process", error, size);
     } else if (process->state < 0) {
         /* A failed Py_InitializeFromConfig is not tried again: the runtime is half set up. */
@@ -189,7 +224,7 @@ int start_python(const struct runtime_record *record, char *error, size_t size)
                      "running any more");
             result = -1;
         } else {
-            result = load_and_start(record, error, size);
+            result = join_or_start(record, error, size);
             if (result == -2) {
                 process->state = -1;
                 snprintf(process->failure, sizeof process->failure, "%s", error);
@@ -198,6 +233,7 @@ int start_python(const struct runtime_record *record, char *error, size_t size)
         }
         if (result == 0) {
             pthread_key_create(&thread_state_key, release_thread_state);
+            *(void **)&at_thread_exit = dlsym(RTLD_DEFAULT, "__cxa_thread_atexit_impl");
             python_ready = 1;
         }
     }

@@ -1,10 +1,12 @@
-/* Starting CPython in a process that has none, through the config API.
+/* Starting CPython in a process that has none, isolated, with the home and
+ * search path discovery found, UTF-8 mode on, no site import and no signal
+ * handlers: through the API its minor has (config_layout.h, one entry per minor).
  *
  * Py_InitializeEx prints a fatal error and exits the process when the
- * standard library is broken (encodings unimportable); Py_InitializeFromConfig
- * returns that as a PyStatus, which becomes the instance's message instead.
+ * standard library is broken (encodings unimportable); both configuration APIs
+ * return that as a status, which becomes the instance's message instead.
  * No Python headers (see python_runtime.c): PyStatus and PyWideStringList have
- * one ABI in 3.10-3.13, PyConfig's fields are found through config_layout.h.
+ * one ABI in 3.10-3.13; PEP 741's functions take names and C strings.
  */
 #define _GNU_SOURCE
 #include "config_layout.h"
@@ -13,6 +15,7 @@
 #include <dlfcn.h>
 #include <limits.h>
 #include <stdalign.h>
+#include <stdint.h>
 #include <stdio.h>
 #include <string.h>
 #include <unistd.h>
@@ -55,35 +58,73 @@ static int has_standard_library(const char *path)
     return 0;
 }
 
-static const struct config_layout *layout_of(int minor)
+static const struct cpython_minor *minor_entry(int minor)
 {
-    for (size_t i = 0; i < N_CONFIG_LAYOUTS; i++)
-        if (CONFIG_LAYOUTS[i].minor == minor)
-            return &CONFIG_LAYOUTS[i];
+    for (size_t i = 0; i < N_CPYTHON_MINORS; i++)
+        if (CPYTHON_MINORS[i].minor == minor)
+            return &CPYTHON_MINORS[i];
     return NULL;
 }
 
-int start_interpreter(void *library, int minor, const struct python_location *python,
-                      char *error, size_t size)
-{
-    const struct config_layout *layout = layout_of(minor);
-    if (!layout) {
-        snprintf(error, size, "%s is CPython 3.%d; this FMU starts CPython 3.10 to 3.%d",
-                 python->library, minor, NEWEST_MINOR);
-        return -1;
-    }
-    if (!has_standard_library(python->path)) {
-        snprintf(error, size, "the search path '%s' for Python %s has no standard library "
-                 "(encodings/__init__.py); " FIX_HINT, python->path, python->library);
-        return -1;
-    }
+#define INIT_CONFIG_FUNCTIONS(X)                                                         \
+    X(void *, PyInitConfig_Create, (void)) X(void, PyInitConfig_Free, (void *))          \
+    X(int, PyInitConfig_GetError, (void *, const char **))                               \
+    X(int, PyInitConfig_SetInt, (void *, const char *, int64_t))                         \
+    X(int, PyInitConfig_SetStr, (void *, const char *, const char *))                    \
+    X(int, PyInitConfig_SetStrList, (void *, const char *, size_t, char *const *))       \
+    X(int, Py_InitializeFromInitConfig, (void *))
+
 #define DECLARE(result, name, parameters)                                                \
     result(*name) parameters = (result(*) parameters)dlsym(library, #name);              \
     if (!name) {                                                                         \
-        snprintf(error, size, "%s has no %s: not a CPython 3.10 to 3.13", python->library, \
-                 #name);                                                                 \
+        snprintf(error, size, "%s has no %s: not the CPython 3.%d it says it is",        \
+                 python->library, #name, minor);                                         \
         return -1;                                                                       \
     }
+
+/* PEP 741 (3.14 on): options by name, strings as UTF-8 (UTF-8 mode is on). */
+static int start_by_names(void *library, int minor, const struct python_location *python,
+                          char *error, size_t size)
+{
+    INIT_CONFIG_FUNCTIONS(DECLARE)
+    void *config = PyInitConfig_Create(); /* the isolated configuration */
+    if (!config) {
+        snprintf(error, size, "Python %s: no memory for its configuration", python->library);
+        return -1;
+    }
+    char entries[sizeof python->path], *items[256];
+    size_t n = 0;
+    snprintf(entries, sizeof entries, "%s", python->path);
+    for (char *save, *entry = strtok_r(entries, ":", &save); entry && n < 256;
+         entry = strtok_r(NULL, ":", &save))
+        items[n++] = entry;
+    const char *failed = PyInitConfig_SetInt(config, "utf8_mode", 1) ? "utf8_mode"
+        : PyInitConfig_SetInt(config, "site_import", 0) ? "site_import"
+        : PyInitConfig_SetInt(config, "install_signal_handlers", 0) ? "install_signal_handlers"
+        : PyInitConfig_SetStr(config, "home", python->home) ? "home"
+        : PyInitConfig_SetStrList(config, "module_search_paths", n, items)
+            ? "module_search_paths"
+        : PyInitConfig_SetInt(config, "module_search_paths_set", 1) ? "module_search_paths_set"
+        : NULL;
+    int started = failed ? -1 : Py_InitializeFromInitConfig(config);
+    const char *message = NULL;
+    if (failed || started < 0)
+        PyInitConfig_GetError(config, &message);
+    if (failed)
+        snprintf(error, size, "Python %s refused the option %s: %s", python->library, failed,
+                 message ? message : "no reason given");
+    else if (started < 0)
+        snprintf(error, size, "Python %s did not start with home '%s' and path '%s': %s; "
+                 FIX_HINT, python->library, python->home, python->path,
+                 message ? message : "exit requested");
+    PyInitConfig_Free(config);
+    return failed ? -1 : started < 0 ? -2 : 0;
+}
+
+/* Up to 3.13: a PyConfig struct, its fields at the table's offsets. */
+static int start_by_offsets(void *library, int minor, const struct cpython_minor *layout,
+                            const struct python_location *python, char *error, size_t size)
+{
     CONFIG_FUNCTIONS(DECLARE)
 #undef DECLARE
     /* UTF-8 mode: a C-locale host (no LANG) would otherwise give Python ASCII file
@@ -129,4 +170,25 @@ int start_interpreter(void *library, int minor, const struct python_location *py
         return -2;
     }
     return 0;
+}
+
+int start_interpreter(void *library, int minor, const struct python_location *python,
+                      char *error, size_t size)
+{
+    const struct cpython_minor *entry = minor_entry(minor);
+    if (!entry) {
+        snprintf(error, size, "%s is CPython 3.%d; this FMU's runtime starts CPython 3.%d to "
+                 "3.%d (a minor it does not know is not started: rebuild the FMU with a newer "
+                 "release of the project)", python->library, minor, OLDEST_MINOR,
+                 NEWEST_MINOR);
+        return -1;
+    }
+    if (!has_standard_library(python->path)) {
+        snprintf(error, size, "the search path '%s' for Python %s has no standard library "
+                 "(encodings/__init__.py); " FIX_HINT, python->path, python->library);
+        return -1;
+    }
+    if (entry->api == INIT_CONFIG)
+        return start_by_names(library, minor, python, error, size);
+    return start_by_offsets(library, minor, entry, python, error, size);
 }

@@ -197,3 +197,29 @@ int read_fixed_parameters(const char *resources, struct fixed_parameters *fixed,
     fixed->count = 0;
     return read_variable_record(resources, keep_fixed, fixed, MAX_FIXED, error, size);
 }
+
+struct named {
+    unsigned vr;
+    char *name;
+    size_t size;
+    int found;
+};
+
+static int keep_name(const struct record_row *row, void *kept)
+{
+    struct named *named = kept;
+    if (row->vr == named->vr && !named->found) {
+        snprintf(named->name, named->size, "%s", row->name);
+        named->found = 1;
+    }
+    return 1;
+}
+
+/* For messages: the name of the variable with value reference vr; 0 if found. */
+int variable_name(const char *resources, unsigned vr, char *name, size_t size)
+{
+    char error[512];
+    struct named named = {vr, name, size, 0};
+    int read = read_variable_record(resources, keep_name, &named, 1 << 20, error, sizeof error);
+    return read == 0 && named.found ? 0 : -1;
+}

@@ -5,6 +5,7 @@
  * _fmu_state_to_bytes / _fmu_state_from_bytes), FMI 2.0 and 3.0 alike. */
 #include "python_api.h"
 
+#include <stdio.h>
 #include <string.h>
 
 static PyObject *references(const unsigned vr[], size_t n)
@@ -69,14 +70,47 @@ static PyObject *item(char kind, const void *value, size_t i)
     return p_PyUnicode_FromString(text ? text : "");
 }
 
-/* set_<type>(vrs, values) (kind as for slave_get). */
+/* Value i could not become a Python object: a string that is not UTF-8 (or no
+ * memory).  Named, so that the host sees which value of the call was bad. */
+static void refuse_value(struct instance *in, char kind, const unsigned vr[], size_t n,
+                         const void *value, size_t i, size_t n_values)
+{
+    p_PyErr_Clear();
+    char name[64] = "", bytes[3 * 8 + 4] = "";
+    unsigned reference = vr[n == n_values ? i : 0];
+    if (variable_name(in->resources, reference, name, sizeof name))
+        snprintf(name, sizeof name, "no variable");
+    if (kind != 's') {
+        reportf(in, fmi2Error, "value %zu, for %s (value reference %u), could not be passed "
+                "to the slave (out of memory); the call was ignored", i, name, reference);
+        return;
+    }
+    const unsigned char *text = ((const unsigned char *const *)value)[i];
+    for (size_t k = 0, used = 0; text[k] && k < 8; k++, used = strlen(bytes))
+        snprintf(bytes + used, sizeof bytes - used, "%s%02x", k ? " " : "", text[k]);
+    reportf(in, fmi2Error, "the String value %zu, for %s (value reference %u), is not UTF-8 "
+            "text (it begins with the bytes %s%s); the call was ignored, nothing was set", i,
+            name, reference, bytes, strlen((const char *)text) > 8 ? " ..." : "");
+}
+
+/* set_<type>(vrs, values) (kind as for slave_get); a value that cannot be made a
+ * Python object is refused by name before the slave is called. */
 fmi2Status slave_set(struct instance *in, const char *method, char kind, const unsigned vr[],
                      size_t n, const void *value, size_t n_values)
 {
     PyGILState_STATE gil = p_PyGILState_Ensure();
     PyObject *vrs = references(vr, n), *values = p_PyList_New((Py_ssize_t)n_values);
-    for (size_t i = 0; values && i < n_values; i++)
-        p_PyList_SetItem(values, (Py_ssize_t)i, item(kind, value, i));
+    for (size_t i = 0; vrs && values && i < n_values; i++) {
+        PyObject *one = item(kind, value, i);
+        if (!one) { /* never a NULL item, nor a call with an exception set */
+            refuse_value(in, kind, vr, n, value, i, n_values);
+            p_Py_DecRef(vrs);
+            p_Py_DecRef(values);
+            p_PyGILState_Release(gil);
+            return fmi2Error;
+        }
+        p_PyList_SetItem(values, (Py_ssize_t)i, one);
+    }
     PyObject *result =
         vrs && values ? p_PyObject_CallMethod(in->object, method, "(OO)", vrs, values) : NULL;
     fmi2Status status = slave_finish(in, result, method);
@@ -151,6 +185,13 @@ fmi2Status slave_state_from_bytes(struct instance *in, const char *bytes, size_t
     PyObject *result =
         data ? p_PyObject_CallMethod(in->object, "_fmu_state_from_bytes", "(O)", data) : NULL;
     fmi2Status status = slave_finish(in, result, "_fmu_state_from_bytes");
+    if (result == py_none) { /* refused: the slave has logged why, at Error */
+        p_Py_DecRef(result);
+        result = NULL;
+        if (in->worst < fmi2Error)
+            report(in, fmi2Error, NULL, "the slave refused the serialized FMU state");
+        status = fmi2Error;
+    }
     *state = result;
     if (data)
         p_Py_DecRef(data);

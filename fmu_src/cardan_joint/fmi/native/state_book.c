@@ -19,7 +19,7 @@ int known_state(struct instance *in, fmi2FMUstate state, const char *function)
     if (find_state(in, state) != (size_t)-1)
         return 1;
     reportf(in, fmi2Error, "%s got FMU state %p, which this instance did not create or has "
-            "already freed; the call was ignored", function, state);
+            "already freed; the call was ignored", function, (void *)state);
     return 0;
 }
 
@@ -92,6 +92,15 @@ fmi2Status state_free(void *c, fmi2FMUstate *state, unsigned allowed, const char
     struct instance *in = enter(c, allowed, function);
     if (!in)
         return fmi2Error;
+    /* Before *state is read: a host that passes the state where its address
+     * belongs (fmusim 0.0.39's Free*FMUState(S, FMUState)) hands us our own
+     * Python object, whose first word is no state. */
+    if (find_state(in, (fmi2FMUstate)state) != (size_t)-1) {
+        reportf(in, fmi2Error, "%s got the FMU state %p itself where the address of the "
+                "host's state variable belongs (state passed, not &state, as fmusim 0.0.39 "
+                "does); the state was not freed", function, (void *)state);
+        return fmi2Error;
+    }
     if (!state || !*state)
         return fmi2OK;  /* the standard makes freeing NULL a no-op */
     if (!known_state(in, *state, function))
