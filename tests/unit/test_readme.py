@@ -60,8 +60,10 @@ def test_ci_runs_exactly_the_readmes_commands():
 
 
 def test_a_package_added_to_the_readme_is_one_ci_installs(tmp_path):
-    beside(tmp_path, README.replace("debootstrap &&", "debootstrap gdb &&"))
-    assert ci_lists(tmp_path)[0] == ci_block(README)[0].replace("debootstrap", "debootstrap gdb")
+    beside(tmp_path, README.replace("python3-venv ", "python3-venv gdb "))
+    assert ci_lists(tmp_path)[0] == ci_block(README)[0].replace(
+        "python3-venv ", "python3-venv gdb "
+    )
 
 
 def test_ci_runs_each_line_in_order_and_stops_at_the_first_failure(tmp_path):
