@@ -96,8 +96,14 @@ def step_damage(rule: LifeRule, h, psi, b, w1, a1, rb, ab, inertia, load) -> flo
     """Miner's damage of a joint over a step of `h` s from input-pin angle `psi`
     (the joint's inputs held or ramped over the step as it steps them)."""
     step = (psi, b, w1, a1, rb, ab, inertia[0], inertia[1], inertia[2], load)
+    return _damage(rule, joint_torque, step, h, b, w1, a1, rb, ab)
+
+
+def _damage(rule: LifeRule, torque_at, step, h, b, w1, a1, rb, ab) -> float:
+    """Miner's damage over a step of `h` s of the torque `torque_at(t, step)`
+    (`life_integral.step_integral`'s arguments)."""
     total = step_integral(
-        joint_torque, step, h, w1, a1, b, rb, ab, rule.min_angle, rule.exponent,
+        torque_at, step, h, w1, a1, b, rb, ab, rule.min_angle, rule.exponent,
         singularity_reach(peak_bend(h, b, rb, ab)),
     )  # fmt: skip
     return total * rate_scale(rule) / 3600.0
@@ -129,11 +135,7 @@ def step_damage_loaded(rule: LifeRule, h, psi, b, w1, a1, rb, ab, inertia, load_
     """`step_damage` with a load that follows the joint's motion over the step (a
     spring at the output): `load_at(t, cardan_error, output_speed)`, N.m."""
     step = (psi, b, w1, a1, rb, ab, inertia[0], inertia[1], inertia[2], load_at)
-    total = step_integral(
-        loaded_torque, step, h, w1, a1, b, rb, ab, rule.min_angle, rule.exponent,
-        singularity_reach(peak_bend(h, b, rb, ab)),
-    )  # fmt: skip
-    return total * rate_scale(rule) / 3600.0
+    return _damage(rule, loaded_torque, step, h, b, w1, a1, rb, ab)
 
 
 def life_outputs(
