@@ -17,6 +17,7 @@ import pytest
 from pythonfmu.enums import Fmi2Status
 
 from cardan_joint.fmi import fast_step
+from cardan_joint.fmi.references import FIRST_VALUE_REFERENCE
 from cardan_joint.fmi.slave import ModelSlave
 from cardan_joint.fmi.slave3 import ModelSlave3
 
@@ -118,6 +119,11 @@ def random_inputs(rng, table):
     return values
 
 
+def references(flat):
+    """The FMI 2 value references of flat indices (value reference = 1-based position)."""
+    return [i + FIRST_VALUE_REFERENCE for i in flat]
+
+
 def initialized(cls):
     slave = cls(instance_name="fast")
     slave.setup_experiment(0.0)
@@ -131,23 +137,23 @@ def test_the_one_call_step_gives_the_normal_paths_outputs_statuses_and_messages(
     normal, fast = initialized(cls), initialized(cls)
     loader = Loader(fast)
     refs, table = normal._refs, normal.table
-    known = list(range(refs.first_output))
+    known = references(range(refs.first_output))
     assert bits(loader.known) == bits(normal.get_real(known))
-    parameter = refs.first_output - 1  # set after initialization: ignored with an error
+    (parameter,) = references([refs.first_output - 1])  # set after initialization: ignored
     saved = {}
     time = 0.0
     outcomes = {True: 0, False: 0}
     for step in range(120):
         inputs = random_inputs(rng, table)
-        normal.set_real(refs.all_inputs, inputs)
+        normal.set_real(references(refs.all_inputs), inputs)
         loader.set_inputs(inputs)
         if step % 7 == 3:  # a read between the write and the step: direct feedthrough
-            assert bits(loader.read()) == bits(normal.get_real(refs.all_outputs))
+            assert bits(loader.read()) == bits(normal.get_real(references(refs.all_outputs)))
         taken = normal.do_step(time, STEP)
         assert loader.step(time, STEP) == (Fmi2Status.ok if taken else Fmi2Status.discard)
         outcomes[taken] += 1
         time += STEP if taken else 0.0
-        assert bits(loader.read()) == bits(normal.get_real(refs.all_outputs)), step
+        assert bits(loader.read()) == bits(normal.get_real(references(refs.all_outputs))), step
         if step == 40:
             saved = {"normal": normal._get_fmu_state(), "fast": fast._get_fmu_state()}
         if step == 60:
@@ -161,7 +167,7 @@ def test_the_one_call_step_gives_the_normal_paths_outputs_statuses_and_messages(
             loader.fresh = False
             time = normal._model.time
         assert messages(fast) == messages(normal), step
-    assert bits(loader.known) == bits(normal.get_real(list(range(refs.first_output))))
+    assert bits(loader.known) == bits(normal.get_real(known))
     # The run went through taken and refused steps, held outputs and the ignored parameter.
     logged = {status for status, _ in messages(normal)}
     assert outcomes[True] > 50 and outcomes[False] > 5, outcomes
