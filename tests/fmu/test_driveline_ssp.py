@@ -63,8 +63,8 @@ def system_ssp(pytestconfig, tmp_path_factory):
 def test_ssp_holds_the_three_fmus_connections_and_parameter_sets(driveline_ssp):
     from fmpy.ssp.ssd import read_ssd
 
-    # Valid for pyssp-standard, every bound parameter a parameter connector, one set
-    # name for Ecos, OMSimulator's annotations.
+    # Valid for pyssp-standard (no warning), each connector of its FMU causality's kind,
+    # bound parameters no connectors, one set name for Ecos, OMSimulator's annotations.
     assert check_ssp_for_every_host(driveline_ssp) == {
         "Motor": system.MOTOR_PARAMETERS,
         system.DRIVE_INSTANCE: system.DRIVE_PARAMETERS[system.DRIVE],
