@@ -50,7 +50,8 @@ def host_convergence(ssp, steps=(1e-3, 5e-4, 2.5e-4), stop_time=0.5):
 
 def loop_stability(fmus, drive, folder, ratios=(0.5, 0.9, 2.0), steps=(1e-3, 1e-4), n_steps=200):
     """{(inertia ratio, step): True if the torque loop stays bounded over `n_steps`} on a
-    straight, massless drive element (the load's inertia meets the motor's unchanged)."""
+    straight, massless drive element (the load's inertia meets the motor's unchanged).
+    Run in libcosim, which applies the bindings: the FMUs are the main system's."""
     motor_inertia = system.MOTOR_PARAMETERS["rotor_inertia"]
     rigid = system.MOTOR_PARAMETERS["stall_torque"] / motor_inertia
     outcome = {}
