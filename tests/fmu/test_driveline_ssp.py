@@ -184,6 +184,18 @@ def test_ecos_with_no_set_named_applies_every_parameter_and_differs_from_fmpy_by
     assert 1.9 < differences[1e-3] / differences[5e-4] < 2.1, differences
 
 
+def test_fmpy_given_no_parameter_set_runs_the_system_as_bound(system_ssp):
+    # FMPy's simulate_ssp applies no binding of its own: as a user calls it, with
+    # none passed, the FMUs' start values are the bound ones.
+    from fmpy.ssp.simulation import simulate_ssp
+
+    h = 1e-3
+    plain = simulate_ssp(str(system_ssp), stop_time=99.5 * h, step_size=h)
+    bound = system.run_fmpy(system_ssp, 100 * h, h)
+    for key in system.RECORDED:
+        assert np.array_equal(plain[key], bound[key]), key
+
+
 def test_each_host_is_exactly_a_jacobi_master_with_its_own_first_inputs(driveline_ssp):
     h, stop_time = 1e-3, 0.1
     fmpy_rows = system.run_fmpy(driveline_ssp, stop_time, h)
