@@ -64,16 +64,21 @@ def _slave():
 
     slave = Joint(instance_name="benchmark")
     slave.setup_experiment(0.0)
-    refs = slave._refs
-    slave.set_real(refs.all_inputs, list(TIMING_INPUTS.values()))
+    slave.set_real(_references(slave, slave._refs.all_inputs), list(TIMING_INPUTS.values()))
     slave.exit_initialization_mode()
     return slave
+
+
+def _references(slave, flat):
+    """The value references of flat indices, from the slave's own table."""
+    return [slave._FLAT.index((i,)) for i in flat]
 
 
 def _normal_stepper():
     slave = _slave()
     refs = slave._refs
-    inputs, values, outputs = refs.all_inputs, list(TIMING_INPUTS.values()), refs.all_outputs
+    inputs = _references(slave, refs.all_inputs)
+    values, outputs = list(TIMING_INPUTS.values()), _references(slave, refs.all_outputs)
     set_real, do_step, get_real = slave.set_real, slave.do_step, slave.get_real
 
     def run(first, length):

@@ -10,6 +10,7 @@ from guards_base import (
     GUARDS,
     HONEST,
     MODEL,
+    REFERENCES,
     RESTORED,
     ROBUSTNESS_CALLS,
     SLAVE,
@@ -134,7 +135,7 @@ STEP_MUTATIONS = (
         (SLAVE_GUARDS, "-k", "initialization"),
     ),
     Mutation(
-        "slave: set on an output or unknown reference",
+        "slave: set on an output",
         CORE,
         "if not 0 <= i < refs.first_output:",
         "if False:",
@@ -148,10 +149,10 @@ STEP_MUTATIONS = (
         (SLAVE_GUARDS, "-k", "after_initialization"),
     ),
     Mutation(
-        "slave: get of an unknown reference",
-        SLAVE,
-        "            if bad:\n",
-        "            if False:\n",
+        "slave: get or set of an unknown reference",
+        REFERENCES,
+        "if not FIRST_VALUE_REFERENCE <= vr < len(table):",
+        "if False:",
         (SLAVE_GUARDS, "-k", "unknown_reference"),
     ),
     *(

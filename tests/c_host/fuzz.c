@@ -112,16 +112,17 @@ int fuzz(const char *dir, unsigned seed, int count)
         case 3: case 4: {
             call = "SetReal";
             illegal = state == TERMINATED;
+            /* Value reference r is the r-th variable (1-based): 0 names none. */
             for (size_t k = 0; k < n; k++)
-                illegal |= (int)vr[k] >= first_output ||
-                           (state == STEP_COMPLETE && vr[k] >= 6);  /* parameters are fixed */
+                illegal |= vr[k] == 0 || (int)vr[k] > first_output ||
+                           (state == STEP_COMPLETE && vr[k] > 6);  /* parameters are fixed */
             status = fmu.SetReal(c, vr, n, values);
             break;
         }
         case 5:
             call = "GetReal";
             for (size_t k = 0; k < n; k++)
-                illegal |= (int)vr[k] >= n_variables;
+                illegal |= vr[k] == 0 || (int)vr[k] > n_variables;
             status = fmu.GetReal(c, vr, n, values);
             break;
         case 6: case 7: {

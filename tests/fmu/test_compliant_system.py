@@ -118,7 +118,8 @@ def test_every_component_binds_its_parameters_in_the_one_set_every_host_applies(
     compliant_ssp,
 ):
     path, motor, drive, load, _ = compliant_ssp
-    # Valid for pyssp-standard, parameter connectors, one set name, OMSimulator's annotations.
+    # Valid for pyssp-standard (no warning), bound parameters no connectors, one set name,
+    # OMSimulator's annotations.
     bound = check_ssp_for_every_host(path)
     assert bound == {"Motor": motor, "Drive": drive, "Load": load}
     # FMPy's one parameter set (hierarchical names) holds the same values.

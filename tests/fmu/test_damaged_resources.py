@@ -52,13 +52,31 @@ def another_size(path: Path) -> None:
     path.write_text("\n".join(lines) + "\n")
 
 
+def another_time(path: Path) -> None:
+    """A second `time` row: FMI 3.0's own again (value references 1-based, time
+    first), or in FMI 2.0 one beyond the slave's value references."""
+    rows = [line for line in path.read_text().splitlines() if not line.startswith("#")]
+    own = next((row for row in rows if row.endswith(" time")), None)
+    path.write_text(path.read_text() + (own or "999 Real 1 0 time") + "\n")
+
+
+def time_at_zero(path: Path) -> None:
+    """FMI 3.0's `time` at value reference 0 (the numbering before 1-based positions),
+    or in FMI 2.0 a `time` row there: 0 names no variable of the slave."""
+    text = path.read_text()
+    if "\n1 Float64 1 0 time\n" in text:
+        path.write_text(text.replace("\n1 Float64 1 0 time\n", "\n0 Float64 1 0 time\n"))
+    else:
+        path.write_text(text + "0 Real 1 0 time\n")
+
+
 def newer_python(path: Path) -> None:
     path.write_text(path.read_text().replace("minimum = 3.10", "minimum = 3.99"))
 
 
 CASES = {
     "slavemodule.txt": [empty, missing, another_module],
-    "variables.txt": [empty, truncated, missing, another_size],
+    "variables.txt": [empty, truncated, missing, another_size, another_time, time_at_zero],
     "python_runtime.txt": [empty, truncated, missing, newer_python],
 }
 PARAMETERS = [

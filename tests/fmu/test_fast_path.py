@@ -16,6 +16,7 @@ from pathlib import Path
 import pytest
 from robustness_support import GOOD
 
+from cardan_joint.fmi.slave3 import TIME_REFERENCE
 from cardan_joint.host.instance import ExtractedFMU, status_of
 from cardan_joint.models.universal_joint import variables as table
 
@@ -166,7 +167,7 @@ def scenario(instance):
     instance.free_state(restored)
     # Forwarded: FMI 2's read of a variable it does not have, FMI 3's time.
     if instance.fmi3:
-        record(bits(fmu.getFloat64([0])))
+        record(bits(fmu.getFloat64([TIME_REFERENCE])))
     else:
         record(status_of(fmu.getReal, [len(table.VARIABLES) + 3]))
     return seen

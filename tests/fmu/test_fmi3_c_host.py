@@ -67,7 +67,7 @@ MISUSE = {
     "step_before_init": (3, 1, "fmi3DoStep is not allowed before initialization"),
     "exit_before_enter": (3, 1, "fmi3ExitInitializationMode is not allowed before"),
     "enter_twice": (3, 1, "fmi3EnterInitializationMode is not allowed in step mode"),
-    "get_float32": (3, 1, "value reference 1 (input_speed, Float64) is of another type"),
+    "get_float32": (3, 1, "value reference 2 (input_speed, Float64) is of another type"),
     "get_float32_none": (0, 0, ""),
     "get_clock": (3, 1, "fmi3GetClock is not supported: the FMU has no clocks"),
     "event_mode": (3, 1, "fmi3EnterEventMode is not supported"),

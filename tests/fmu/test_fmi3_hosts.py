@@ -72,7 +72,7 @@ def test_a_host_without_a_logger_gets_the_message_on_stderr(fmi3_path, tmp_path)
             None, fmu.logMessage, fmu.intermediateUpdate)
         fmu.enterInitializationMode()
         fmu.exitInitializationMode()
-        fmu.setFloat64([3], [1.5])
+        fmu.setFloat64([4], [1.5])  # bend_angle: time, input_speed, input_acceleration first
         try:
             fmu.doStep(0.0, 0.1)
         except Exception as refusal:

@@ -102,11 +102,11 @@ def test_a_restored_state_from_before_initialization_does_not_unfix_parameters(
         ),
         (lambda f, r: f.getFloat64([999], 4), "value reference 999 is not a variable"),
         (
-            lambda f, r: f.getInt32([1], 1),
-            "value reference 1 (input_speed, Float64) is of another type",
+            lambda f, r: f.getInt32([2], 1),
+            "value reference 2 (input_speed, Float64) is of another type",
         ),
         (
-            lambda f, r: f.setFloat64([1, 3], [1.0]),
+            lambda f, r: f.setFloat64([2, 4], [1.0]),
             "nValues is 1 but the 2 value references hold 2",
         ),
         (lambda f, r: f.getFloat64([r["crosspiece_quaternion"]], 3), "hold 4 values"),
@@ -186,7 +186,7 @@ def test_many_instances_in_one_process_are_independent(fmi3_description, fmi3_un
 def test_an_internal_fault_in_a_step_is_an_error_status_not_an_exception(monkeypatch):
     from pythonfmu3.enums import Fmi3Status
 
-    from cardan_joint.fmi.slave3 import ModelSlave3
+    from cardan_joint.fmi.slave3 import TIME_REFERENCE, ModelSlave3
 
     class Joint(ModelSlave3):
         model_folder = "universal_joint"
@@ -197,7 +197,7 @@ def test_an_internal_fault_in_a_step_is_an_error_status_not_an_exception(monkeyp
     monkeypatch.setattr(slave._model, "step", lambda step_size: 1 / 0)
     assert slave.do_step(0.0, 0.1).status == Fmi3Status.error
     assert "internal error in do_step: ZeroDivisionError" in slave.log_queue[-1].msg
-    assert slave.get_float64([0])[0] == 0.0  # the clock stays at the step's start
+    assert slave.get_float64([TIME_REFERENCE])[0] == 0.0  # the clock stays at the step's start
 
 
 def test_the_model_description_carries_the_builds_start_values():

@@ -114,7 +114,7 @@ def test_a_refused_step_leaves_the_clock_alone():
     slave.exit_initialization_mode()
     assert slave.do_step(0.0, 0.5) is True
     saved = slave._get_fmu_state()
-    slave.set_real([2], [1.5])  # beyond the guard
+    slave.set_real([3], [1.5])  # bend_angle (the third variable) beyond the guard
     assert slave.do_step(123.0, 0.5) is False
     assert slave._get_fmu_state()["model"]["time"] == saved["model"]["time"] == 0.5
 

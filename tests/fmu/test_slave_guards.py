@@ -21,8 +21,10 @@ class Joint(ModelSlave):
     model_folder = "universal_joint"
 
 
-REFERENCE = {name: k for k, name in enumerate(v.name for v in table.VARIABLES)}
-ALL = list(range(len(table.VARIABLES)))
+# Value reference r is the r-th variable (1-based); POSITION indexes get_real(ALL).
+POSITION = {name: k for k, name in enumerate(v.name for v in table.VARIABLES)}
+REFERENCE = {name: k + 1 for name, k in POSITION.items()}
+ALL = list(REFERENCE.values())
 PEAK = dict(bend_angle=1.38, bend_angle_rate=2.0, bend_angle_acceleration=-100.0)
 PEAK_STEP = 0.04  # both ends at 1.38 rad, the vertex at 1.40 rad > 80 deg
 
@@ -50,7 +52,7 @@ def test_the_slave_refuses_a_step_peaking_inside_it_and_names_the_peak():
     assert (
         slave._model.time == 0.1
         and slave.get_real([REFERENCE["input_angle"]])
-        == before[REFERENCE["input_angle"] : REFERENCE["input_angle"] + 1]
+        == before[POSITION["input_angle"] : POSITION["input_angle"] + 1]
     )
 
 
@@ -58,7 +60,7 @@ def test_outputs_with_invalid_inputs_are_held_and_the_warning_names_the_input():
     slave = initialized()
     held = slave.get_real(ALL)
     slave.set_real([REFERENCE["bend_angle"]], [1.5])
-    assert slave.get_real(ALL)[REFERENCE["output_speed"]] == held[REFERENCE["output_speed"]]
+    assert slave.get_real(ALL)[POSITION["output_speed"]] == held[POSITION["output_speed"]]
     refusal = Refusal.from_message(last(slave, Fmi2Status.warning))
     assert (refusal.code, refusal.variable, refusal.value) == (
         JointReason.BEND_ANGLE,
@@ -75,12 +77,23 @@ def test_bad_parameters_are_an_error_at_initialization():
     assert Refusal.from_message(last(slave, Fmi2Status.error)).code == JointReason.BEND_GUARD
 
 
-@pytest.mark.parametrize("reference", [REFERENCE["input_angle"], len(table.VARIABLES), -1])
-def test_setting_an_output_or_an_unknown_reference_is_an_error_and_changes_nothing(reference):
+@pytest.mark.parametrize(
+    "reference, words",
+    [
+        (REFERENCE["input_angle"], "input_angle ignored: only inputs and parameters can be set"),
+        *[
+            (unknown, f"no Real variable has value reference {unknown}")
+            for unknown in (0, len(table.VARIABLES) + 1, -1)
+        ],
+    ],
+)
+def test_setting_an_output_or_an_unknown_reference_is_an_error_and_changes_nothing(
+    reference, words
+):
     slave = initialized()
     before = slave.get_real(ALL)
     slave.set_real([reference], [123.0])
-    assert "ignored: only inputs and parameters can be set" in last(slave, Fmi2Status.error)
+    assert words in last(slave, Fmi2Status.error)
     assert slave.get_real(ALL) == before
 
 

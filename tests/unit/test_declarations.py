@@ -72,3 +72,19 @@ def test_an_fmi3_variable_without_a_value_reference_is_named():
     SubElement(SubElement(root, "ModelVariables"), "Float64", name="time")
     with pytest.raises(ValueError, match="<Float64> has no valueReference"):
         model_description3.complete(root, table.fmi3_variables(), {}, table)
+
+
+@pytest.mark.parametrize("version", [2, 3])
+def test_a_value_reference_that_is_not_its_variables_position_is_refused(version):
+    # Value reference = 1-based position: OMSimulator reads FMI 3.0 dependencies as
+    # positions, the standard as value references (fmi/references.py).
+    root = Element("fmiModelDescription")
+    SubElement(root, "CoSimulation")
+    variables = SubElement(root, "ModelVariables")
+    # Numbered from 0, as before 1.2.
+    SubElement(variables, "Float64", name="input_speed", valueReference="0")
+    with pytest.raises(ValueError, match="input_speed has value reference 0, not its position 1"):
+        if version == 2:
+            model_description.complete(root, table, {})
+        else:
+            model_description3.complete(root, table.fmi3_variables(), {}, table)

@@ -17,6 +17,7 @@ import pytest
 from pythonfmu.enums import Fmi2Status
 
 from cardan_joint.fmi import fast_step
+from cardan_joint.fmi.references import FIRST_VALUE_REFERENCE
 from cardan_joint.fmi.slave import ModelSlave
 from cardan_joint.fmi.slave3 import ModelSlave3
 
@@ -123,6 +124,11 @@ def random_inputs(rng, table):
     return values
 
 
+def references(flat):
+    """The FMI 2 value references of flat indices (value reference = 1-based position)."""
+    return [i + FIRST_VALUE_REFERENCE for i in flat]
+
+
 def initialized(cls):
     slave = cls(instance_name="fast")
     slave.setup_experiment(0.0)
@@ -136,23 +142,23 @@ def test_the_one_call_step_gives_the_normal_paths_outputs_statuses_and_messages(
     normal, fast = initialized(cls), initialized(cls)
     loader = Loader(fast)
     refs, table = normal._refs, normal.table
-    known = list(range(refs.first_output))
+    known = references(range(refs.first_output))
     assert bits(loader.known) == bits(normal.get_real(known))
-    parameter = refs.first_output - 1  # set after initialization: ignored with an error
+    (parameter,) = references([refs.first_output - 1])  # set after initialization: ignored
     saved = {}
     time = 0.0
     outcomes = {True: 0, False: 0}
     for step in range(120):
         inputs = random_inputs(rng, table)
-        normal.set_real(refs.all_inputs, inputs)
+        normal.set_real(references(refs.all_inputs), inputs)
         loader.set_inputs(inputs)
         if step % 7 == 3:  # a read between the write and the step: direct feedthrough
-            assert bits(loader.read()) == bits(normal.get_real(refs.all_outputs))
+            assert bits(loader.read()) == bits(normal.get_real(references(refs.all_outputs)))
         taken = normal.do_step(time, STEP)
         assert loader.step(time, STEP) == (Fmi2Status.ok if taken else Fmi2Status.error)
         outcomes[taken] += 1
         time += STEP if taken else 0.0
-        assert bits(loader.read()) == bits(normal.get_real(refs.all_outputs)), step
+        assert bits(loader.read()) == bits(normal.get_real(references(refs.all_outputs))), step
         if step == 40:
             saved = {"normal": normal._get_fmu_state(), "fast": fast._get_fmu_state()}
         if step == 60:
@@ -166,7 +172,7 @@ def test_the_one_call_step_gives_the_normal_paths_outputs_statuses_and_messages(
             loader.fresh = False
             time = normal._model.time
         assert messages(fast) == messages(normal), step
-    assert bits(loader.known) == bits(normal.get_real(list(range(refs.first_output))))
+    assert bits(loader.known) == bits(normal.get_real(known))
     # The run went through taken and refused steps, held outputs and the ignored parameter.
     logged = {status for status, _ in messages(normal)}
     assert outcomes[True] > 50 and outcomes[False] > 5, outcomes
@@ -256,7 +262,7 @@ def test_only_an_output_that_depends_on_an_invalid_input_warns(path):
     flat = {name: i for i, name in enumerate(refs.names)}
     assert loader.step(0.0, STEP) == Fmi2Status.ok
     bad = [0.4 if name != "load_torque" else 1e12 for name in table.INPUTS]  # beyond its range
-    slave.set_real(refs.all_inputs, bad)
+    slave.set_real(references(refs.all_inputs), bad)
     loader.set_inputs(bad)
     independent = [
         flat[name] for name in table.OUTPUTS if "load_torque" not in table.BY_NAME[name].depends_on
@@ -266,7 +272,7 @@ def test_only_an_output_that_depends_on_an_invalid_input_warns(path):
 
     def read(indices):
         before = len(slave.log_queue)
-        values = slave.get_real(indices) if path == "plain" else loader.read(indices)
+        values = slave.get_real(references(indices)) if path == "plain" else loader.read(indices)
         return values, [m for m in slave.log_queue[before:] if m.status == Fmi2Status.warning]
 
     values, warnings = read(independent)
@@ -274,8 +280,10 @@ def test_only_an_output_that_depends_on_an_invalid_input_warns(path):
     # Following the valid inputs: as a slave given only those.
     clean = initialized(CardanJointSlave)
     assert clean.do_step(0.0, STEP)
-    clean.set_real(refs.all_inputs, [0.4 if n != "load_torque" else 0.0 for n in table.INPUTS])
-    assert bits(values) == bits(clean.get_real(independent))
+    clean.set_real(
+        references(refs.all_inputs), [0.4 if n != "load_torque" else 0.0 for n in table.INPUTS]
+    )
+    assert bits(values) == bits(clean.get_real(references(independent)))
     for indices in (dependent, independent + dependent, None):
         values, warnings = read(indices if indices is not None else refs.all_outputs)
         assert len(warnings) == 1 and "load_torque" in warnings[0].msg

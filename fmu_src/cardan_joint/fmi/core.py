@@ -6,8 +6,8 @@ model API of `framework.api.Stepped`. This mixin keeps the behaviour around it:
 the output cache, the outputs held while an input is invalid, the refused step
 that leaves the model untouched, the parameters fixed after initialization and
 the complete FMU state. It addresses variables by *flat index*, the position
-in the class's variable `table` (inputs, parameters, outputs), which is the
-FMI 2 value reference; the FMI 3 slave maps its own value references onto it.
+in the class's variable `table` (inputs, parameters, outputs); each slave maps
+its value references onto flat indices with its `_FLAT` table (`references`).
 
 Both pythonfmu libraries turn any Python exception into a fatal status, so
 every method here that a slave calls catches everything. A slave mixes this in
@@ -20,7 +20,7 @@ from typing import Any
 from .. import __version__
 from .fast_step import FastStep
 from .fmu_state import FmuStates
-from .references import References
+from .references import References, ValueReferences
 from .watching import Watching
 
 
@@ -30,7 +30,7 @@ def _readable(seconds: float) -> str:
     return repr(float(f"{seconds:.12g}"))
 
 
-class SlaveCore(Watching, FmuStates, FastStep):
+class SlaveCore(ValueReferences, Watching, FmuStates, FastStep):
     author = "Cardan joint FMU team"
     license = "MIT"
     version = __version__

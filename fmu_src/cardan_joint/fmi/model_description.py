@@ -9,6 +9,8 @@ start is rewritten here as the shortest text that does (`repr`).
 
 from xml.etree.ElementTree import Element, SubElement
 
+from .references import FIRST_VALUE_REFERENCE
+
 
 def _number(value: float) -> str:
     # The shortest text that reads back as the same double.
@@ -32,6 +34,21 @@ def child(node: Element, tag: str) -> Element:
     return found
 
 
+def numbered_variables(root: Element):
+    """(1-based position, node) of each variable under <ModelVariables>, each checked
+    to have its position as value reference (`references`: so every host reads the
+    dependencies alike)."""
+    for position, node in enumerate(child(root, "ModelVariables"), start=FIRST_VALUE_REFERENCE):
+        if node.get("valueReference") is None:
+            raise ValueError(f"model description: a <{node.tag}> has no valueReference attribute")
+        if node.get("valueReference") != str(position):
+            raise ValueError(
+                f"model description: {node.get('name')} has value reference "
+                f"{node.get('valueReference')}, not its position {position}"
+            )
+        yield position, node
+
+
 def _unit_definitions(table) -> Element:
     node = Element("UnitDefinitions")
     for unit in table.UNITS.values():
@@ -53,7 +70,7 @@ def complete(root: Element, table, starts) -> Element:
     root.insert(position, _unit_definitions(table))
 
     index = {}
-    for i, scalar in enumerate(child(root, "ModelVariables"), start=1):
+    for i, scalar in numbered_variables(root):
         variable = table.BY_NAME[scalar.get("name")]
         index[variable.name] = i
         if variable.initial and scalar.get("initial") is None:

@@ -8,7 +8,7 @@ all from the model's table, with the same unit definitions as the FMI 2.0 FMU.
 
 from xml.etree.ElementTree import Element, SubElement
 
-from .model_description import _number, _unit_definitions, child, start_text
+from .model_description import _number, _unit_definitions, child, numbered_variables, start_text
 
 CAPABILITIES = {
     "canHandleVariableCommunicationStepSize": "true",
@@ -37,8 +37,8 @@ def complete(root: Element, groups, starts, table) -> Element:
 
     by_name = {group.name: group for group in groups}
     reference: dict[str, str] = {}
-    for node in child(root, "ModelVariables"):
-        reference[_attribute(node, "name")] = _attribute(node, "valueReference")
+    for position, node in numbered_variables(root):
+        reference[_attribute(node, "name")] = str(position)
         group = by_name.get(node.get("name"))
         if group is None:  # the independent variable
             continue

@@ -1,9 +1,20 @@
 """How a slave addresses a variable table: flat indices (inputs, then
-parameters, then outputs: the FMI 2 value references) and the log categories
-every FMU of this project declares."""
+parameters, then outputs), the value references that map onto them, and the log
+categories every FMU of this project declares.
+
+Value reference r is the variable at 1-based position r in the model
+description's <ModelVariables> (FMI 3.0: `time` first), in both FMI versions.
+The standard reads <Dependencies> (FMI 3.0) and the `dependencies` of FMI 2.0's
+<Unknown> as value references and positions respectively; OMSimulator reads
+FMI 3.0's as positions too. Numbered so, every reading names the same variables.
+"""
 
 import math
+from collections.abc import Callable
 from operator import attrgetter
+from typing import Any
+
+FIRST_VALUE_REFERENCE = 1
 
 # A watched output past its rating or margin (fmi/watching.py).
 WATCH_CATEGORY = "logWatch"
@@ -52,13 +63,22 @@ class References:
         # The one-call step's known array (`fast_store`), in slot order.
         self.known_of = _values_of(self.known)
 
+    def reference_table(self, variables) -> tuple:
+        """Per value reference, the flat indices its variable holds. `variables`: the
+        model description's variables in document order, each as the names of its
+        rows (an FMI 3.0 array has several, `time` none); value reference r is the
+        r-th of them, so the references below FIRST_VALUE_REFERENCE hold none."""
+        flat = {name: i for i, name in enumerate(self.names)}
+        unused = ((),) * FIRST_VALUE_REFERENCE
+        return unused + tuple(tuple(flat[name] for name in rows) for rows in variables)
+
     def layout(self) -> dict:
         """The one-call step's buffers (fmi/fast_step.py), by flat index.
 
         known: `known_size` doubles, flat index i in slot i: the inputs (slots
         0 to inputs - 1), then the parameters (slots inputs to known_size - 1).
         outputs: `outputs` doubles, flat index first_output + k in slot k.
-        names: every variable, by flat index (the FMI 2 value reference).
+        names: every variable, by flat index.
         """
         return {
             "inputs": len(self.inputs),
@@ -68,3 +88,44 @@ class References:
             "outputs": len(self.names) - self.first_output,
             "names": list(self.names),
         }
+
+
+class ValueReferences:
+    """Mixed into every slave: its variables registered under their value
+    references and those references mapped onto flat indices."""
+
+    # Per value reference, the flat indices it holds (`References.reference_table`).
+    _FLAT: tuple = ()
+    vars: dict  # the pythonfmu base's registered variables
+    # Set by each FMI version's slave: its real type's name, for messages.
+    _TYPE: str
+    # The slave's (`core.SlaveCore`).
+    _STATUS: Any
+    _report: Callable[[str, Any], None]
+    _fault: Callable[[str, BaseException], None]
+
+    def _publish(self, variable) -> None:
+        """Register a pythonfmu variable under value reference = its 1-based position
+        in the model description (`references`). Not `register_variable`, which
+        numbers from 0 once and for all; the slave answers every get and set itself."""
+        reference = len(self.vars) + FIRST_VALUE_REFERENCE
+        self.vars[reference] = variable
+        variable.value_reference = reference
+
+    def _flat_indices(self, vrs, caller):
+        """The flat indices of value references `vrs`, or None after reporting the
+        first that names no variable (as an error of `caller`)."""
+        try:
+            table, indices = self._FLAT, []
+            for vr in vrs:
+                if not FIRST_VALUE_REFERENCE <= vr < len(table):
+                    self._report(
+                        f"{caller}: no {self._TYPE} variable has value reference {vr}",
+                        self._STATUS.error,
+                    )
+                    return None
+                indices.extend(table[vr])
+            return indices
+        except Exception as error:
+            self._fault(caller, error)
+            return None

@@ -1,13 +1,13 @@
 """The pythonfmu (FMI 2.0) slave: the FMI 2 face of `core.SlaveCore`.
 
 No equation and no model logic live here (that is `core`, for every model and
-both FMI versions): value references are the core's flat indices. What lives
-here is FMI 2 plumbing that pythonfmu 0.7.0 gets wrong for a robust
-component: any Python exception reaching its C layer becomes fmi2Fatal, so
-every method it calls catches everything; a refused step returns False
-(the runtime answers fmi2Error, the status its message is logged with); the
-typed accessors of other types refuse politely; and every problem is logged
-(the FMU's native loader makes sure it reaches the host, see
+both FMI versions): value reference r is the r-th variable (1-based, see
+`references`), flat index r - 1 of the core. What lives here is FMI 2 plumbing
+that pythonfmu 0.7.0 gets wrong for a robust component: any Python exception
+reaching its C layer becomes fmi2Fatal, so every method it calls catches
+everything; a refused step returns False (the runtime answers fmi2Error, the
+status its message is logged with); the typed accessors of other types refuse
+politely; and every problem is logged (the FMU's native loader makes sure it reaches the host, see
 `cardan_joint.fmi.native`).
 """
 
@@ -29,7 +29,14 @@ class ModelSlave(ModelBinding, SlaveCore, Fmi2Slave):
 
     default_experiment = DefaultExperiment(**SlaveCore.experiment)
     log_categories = log_categories("fmi2")
-    _STATUS, _API, _STATE = Fmi2Status, "fmi2", "state"
+    _STATUS, _API, _STATE, _TYPE = Fmi2Status, "fmi2", "state", "Real"
+
+    def __init_subclass__(cls, **kwargs):
+        super().__init_subclass__(**kwargs)
+        if cls.table is not None:
+            # One variable per flat index, in flat order.
+            cls._FLAT = cls._refs.reference_table((name,) for name in cls._refs.names)
+            cls.fast_flat = cls._FLAT  # how the native loader maps value references
 
     def __init__(self, **kwargs):
         super().__init__(**kwargs)
@@ -40,18 +47,16 @@ class ModelSlave(ModelBinding, SlaveCore, Fmi2Slave):
     def _register(self, variable):
         causality = Fmi2Causality[variable.causality]
         initial = Fmi2Initial[variable.initial] if variable.initial else None
-        reference = len(self.vars)
-        self.register_variable(
-            Real(
-                variable.name,
-                causality=causality,
-                description=variable.description,
-                variability=Fmi2Variability[variable.variability],
-                initial=initial,
-                getter=lambda: self.get_real([reference])[0],
-                setter=lambda value: self.set_real([reference], [value]),
-            )
+        real = Real(
+            variable.name,
+            causality=causality,
+            description=variable.description,
+            variability=Fmi2Variability[variable.variability],
+            initial=initial,
+            getter=lambda: self.get_real([real.value_reference])[0],
+            setter=lambda value: self.set_real([real.value_reference], [value]),
         )
+        self._publish(real)
 
     def to_xml(self, model_options=None):
         options = {
@@ -84,19 +89,16 @@ class ModelSlave(ModelBinding, SlaveCore, Fmi2Slave):
 
     def get_real(self, vrs):
         try:
-            return self._get_flat(vrs)
+            indices = self._flat_indices(vrs, "get_real")
+            return [math.nan] * len(vrs) if indices is None else self._get_flat(indices)
         except Exception as error:
-            bad = [vr for vr in vrs if not 0 <= vr < len(self._refs.names)]
-            if bad:
-                self._report(
-                    f"get_real: no Real variable has value reference {bad[0]}", Fmi2Status.error
-                )
-            else:
-                self._fault("get_real", error)
+            self._fault("get_real", error)
             return [math.nan] * len(vrs)
 
     def set_real(self, vrs, values):
-        self._set_flat(vrs, values, "set_real")
+        indices = self._flat_indices(vrs, "set_real")
+        if indices is not None:
+            self._set_flat(indices, values, "set_real")
 
     # The FMU has Real variables only; pythonfmu's typed accessors would raise
     # (fmi2Fatal) on any other call, so these refuse politely instead.

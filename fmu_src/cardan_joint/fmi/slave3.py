@@ -1,19 +1,19 @@
 """The pythonfmu3 slave: the FMI 3.0 co-simulation face of `core.SlaveCore`.
 
 No equation and no joint logic live here: this maps FMI 3 value references
-(the independent variable `time`, then one per FMI 3 variable: by default one
-scalar per row of the model's table, the FMI 2.0 variables; with `fmi3_arrays`
-(`--fmi3-arrays`) the table's `fmi3_variables()`, vectors as Float64 arrays)
-onto the flat indices
-`core` works with. The FMU's runtime (`cardan_joint.fmi.native`) constructs
-this slave and calls its methods as pythonfmu3 0.3.4's C layer did: any Python
-exception becomes fmi3Fatal (so every entry point catches everything), a
-getter's list must hold exactly `nValues` values (so a getter always returns
-enough, NaN-padded when a value reference is unknown: the runtime refuses any
-other length), `do_step` returns a step result with any status, and every
-message goes to the runtime, which hands it to the host's logger (or stderr
-when the host gave none). The runtime checks value references and types first
-and serves Float64 variables only, which are all this FMU has.
+(1-based positions, `references`: the independent variable `time`, then one per
+FMI 3 variable: by default one scalar per row of the model's table, the FMI 2.0
+variables; with `fmi3_arrays` (`--fmi3-arrays`) the table's `fmi3_variables()`,
+vectors as Float64 arrays) onto the flat indices `core` works with. The FMU's
+runtime (`cardan_joint.fmi.native`) constructs this slave and calls its methods
+as pythonfmu3 0.3.4's C layer did: any Python exception becomes fmi3Fatal (so
+every entry point catches everything), a getter's list must hold exactly
+`nValues` values (so a getter always returns enough, NaN-padded when a value
+reference is unknown: the runtime refuses any other length), `do_step` returns
+a step result with any status, and every message goes to the runtime, which
+hands it to the host's logger (or stderr when the host gave none). The runtime
+checks value references and types first and serves Float64 variables only,
+which are all this FMU has.
 """
 
 import math
@@ -28,9 +28,9 @@ from ..variable_schema import fmi3_groups
 from .binding import ModelBinding
 from .core import SlaveCore
 from .model_description3 import complete
-from .references import log_categories
+from .references import FIRST_VALUE_REFERENCE, log_categories
 
-TIME_REFERENCE = 0
+TIME_REFERENCE = FIRST_VALUE_REFERENCE  # `time` is the first variable
 _STEP_RESULTS = {status: Fmi3StepResult(status=status) for status in Fmi3Status}
 
 
@@ -39,15 +39,14 @@ class ModelSlave3(ModelBinding, SlaveCore, Fmi3Slave):
     its folder (`model_folder`), whose spec sets the table and the physics."""
 
     log_categories = log_categories("fmi3")
-    _STATUS, _API, _STATE = Fmi3Status, "fmi3", "State"
+    _STATUS, _API, _STATE, _TYPE = Fmi3Status, "fmi3", "State", "Float64"
     # Vectors as Float64 arrays (written in by the build, `--fmi3-arrays`): hosts that
     # read a variable one value at a time (OMSimulator, Ecos) get nothing of an
     # array, so the default is the table's scalars, which every host reads.
     fmi3_arrays = False
     # The model's FMI 3 variables and, per value reference, the flat indices
-    # (FMI 2 value references) it holds, its size, whether it can be set.
+    # it holds (`_FLAT`), its size, whether it can be set.
     GROUPS: tuple = ()
-    _FLAT: tuple = ()
     fast_flat: tuple = ()
     _SIZE: tuple = ()
     _LONGEST = 1
@@ -64,13 +63,15 @@ class ModelSlave3(ModelBinding, SlaveCore, Fmi3Slave):
         cls.GROUPS = groups = (
             table.fmi3_variables() if cls.fmi3_arrays else fmi3_groups(table.VARIABLES)
         )
-        names = cls._refs.names
-        cls._FLAT = ((),) + tuple(tuple(names.index(r.name) for r in g.rows) for g in groups)
+        rows = [tuple(row.name for row in group.rows) for group in groups]
+        cls._FLAT = cls._refs.reference_table([(), *rows])  # `time`: no flat index
         cls.fast_flat = cls._FLAT  # how the native loader's one-call step maps value references
         cls._SIZE = tuple(len(flat) or 1 for flat in cls._FLAT)
         cls._LONGEST = max(cls._SIZE)
         cls._SETTABLE = frozenset(
-            vr for vr, g in enumerate(groups, start=1) if g.causality in ("input", "parameter")
+            vr
+            for vr, g in enumerate(groups, start=TIME_REFERENCE + 1)
+            if g.causality in ("input", "parameter")
         )
 
     def __init__(self, **kwargs):
@@ -81,7 +82,7 @@ class ModelSlave3(ModelBinding, SlaveCore, Fmi3Slave):
         self.description = cls.description
         self.default_experiment = DefaultExperiment(**cls.experiment)
         self._init_model()
-        self.register_variable(
+        self._publish(
             Float64(
                 "time",
                 causality=Fmi3Causality.independent,
@@ -108,7 +109,7 @@ class ModelSlave3(ModelBinding, SlaveCore, Fmi3Slave):
             # array variable only because its own array accessors need it; this
             # slave answers arrays itself (get_float64), on the standard library.
             variable._dimensions = [Dimension(start=str(len(group.rows)))]
-        self.register_variable(variable)
+        self._publish(variable)
 
     def to_xml(self, model_options=None):
         starts = {name: getattr(self._model, name) for name in self._refs.known}
@@ -134,20 +135,6 @@ class ModelSlave3(ModelBinding, SlaveCore, Fmi3Slave):
         return _STEP_RESULTS[self._step(current_time, step_size)]
 
     # --- values --------------------------------------------------------------
-
-    def _flat_indices(self, vrs, caller):
-        """The flat indices of `vrs`, or None after reporting an unknown reference."""
-        try:
-            indices = []
-            for vr in vrs:
-                indices.extend(self._FLAT[vr])
-            return indices
-        except IndexError:
-            bad = next(vr for vr in vrs if not 0 <= vr < len(self._FLAT))
-            self._report(
-                f"{caller}: no Float64 variable has value reference {bad}", Fmi3Status.error
-            )
-            return None
 
     def get_float64(self, vrs):
         try:
@@ -198,4 +185,4 @@ class ModelSlave3(ModelBinding, SlaveCore, Fmi3Slave):
             self._fault("fmi3SetFloat64", error)
 
     def _fmi3_name(self, vr):
-        return "time" if vr == TIME_REFERENCE else self.GROUPS[vr - 1].name
+        return "time" if vr == TIME_REFERENCE else self.GROUPS[vr - TIME_REFERENCE - 1].name

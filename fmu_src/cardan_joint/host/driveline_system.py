@@ -160,15 +160,28 @@ def _connectors(instance, connections=CONNECTIONS, recorded=RECORDED):
     return kinds
 
 
-def build_fmus(dest, drive: str = DRIVE, load: str = "Load") -> dict:
+def system_parameters(drive: str = DRIVE, motor=None, load=None, drive_parameters=None) -> dict:
+    """{instance: {parameter: value}}: the defaults above, overridden by the dicts given."""
+    return {
+        "Motor": {**MOTOR_PARAMETERS, **(motor or {})},
+        DRIVE_INSTANCE: {**DRIVE_PARAMETERS.get(drive, {}), **(drive_parameters or {})},
+        "Load": {**LOAD_PARAMETERS, **(load or {})},
+    }
+
+
+def build_fmus(dest, drive: str = DRIVE, load: str = "Load", parameters=None) -> dict:
     """Build the Motor, load (`Load` or `InertiaLoad`) and drive FMUs into `dest`;
-    return {instance: path}."""
+    return {instance: path}. `parameters` ({instance: {parameter: value}}, as
+    `system_parameters` gives) become the FMUs' own start values: a host that
+    applies no SSP binding (Ecos when no parameter set is named) then runs the
+    system as the SSP binds it."""
     from ..build import build
 
+    parameters = parameters or {}
+    models = {"Motor": "Motor", DRIVE_INSTANCE: drive, "Load": load}
     return {
-        "Motor": build(dest, model="Motor"),
-        DRIVE_INSTANCE: build(dest, model=drive),
-        "Load": build(dest, model=load),
+        instance: build(dest, model=model, start_values=parameters.get(instance))
+        for instance, model in models.items()
     }
 
 
@@ -185,15 +198,11 @@ def write_driveline_ssp(
     step_size: float = 1e-3,
 ) -> Path:
     """Write the system as an SSP archive. `fmus`: {instance: FMU path} as from
-    `build_fmus`; `step_size` is the fixed step the SSP names for OMSimulator;
-    parameter dicts override the defaults above (the compliant
-    system: `COMPLIANT_CONNECTIONS`, `COMPLIANT_RECORDED` and its parameters from
-    `compliant_parameters`)."""
-    parameters = {
-        "Motor": {**MOTOR_PARAMETERS, **(motor or {})},
-        DRIVE_INSTANCE: {**DRIVE_PARAMETERS.get(drive, {}), **(drive_parameters or {})},
-        "Load": {**LOAD_PARAMETERS, **(load or {})},
-    }
+    `build_fmus` (given the same parameters, every host runs the system as bound);
+    `step_size` is the fixed step the SSP names for OMSimulator; parameter dicts
+    override the defaults above (the compliant system: `COMPLIANT_CONNECTIONS`,
+    `COMPLIANT_RECORDED` and its parameters from `compliant_parameters`)."""
+    parameters = system_parameters(drive, motor, load, drive_parameters)
     components = [
         Component(name, fmus[name], _connectors(name, connections, recorded), parameters[name])
         for name in ("Motor", DRIVE_INSTANCE, "Load")

@@ -9,10 +9,13 @@ worth knowing, read in Ecos's sources and measured:
   dynamic linker does not look; it is loaded first by its path, so that
   ``libecosc.so`` finds it loaded (by its soname) when ecospy imports.
 * Ecos gathers the component-level parameter bindings into sets by the name
-  inside each ``.ssv`` and applies exactly one set, the one named at
-  initialisation (``init(parameter_set=...)``, the CLI's ``--parameterSet``); it
-  ignores system-level bindings. Our SSPs name every component's set after the
-  system (``host.ssp``), so that one name applies every parameter.
+  inside each ``.ssv`` and applies at most one set, the one named at
+  initialisation (``init(parameter_set=...)``, the CLI's ``--parameterSet``);
+  with none named it applies none (``simulation::init``), and it ignores
+  system-level bindings. Our SSPs name every component's set after the system
+  (``host.ssp``), so that one name applies every parameter, and the driveline's
+  FMUs start at the bound values (``driveline_system.build_fmus``), so that
+  ``init()`` with no name runs the same system.
 * Identifiers are ``"Component::variable"``.
 * At initialisation the initial outputs are passed through before the first
   step (as libcosim does), then every step transfers the outputs of the step

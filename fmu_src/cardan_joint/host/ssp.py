@@ -1,18 +1,26 @@
 """Write a co-simulation system as an SSP archive (SSP 1.0, xml.etree).
 
-`write_ssp` packs the FMUs, a SystemStructure.ssd with their connectors and
-connections, and one parameter set (.ssv) per component, bound at component
-level, each bound parameter declared as a connector of kind "parameter". What
-the hosts users have apply, read in their sources and measured:
+`write_ssp` packs the FMUs, a SystemStructure.ssd with their connected
+variables as connectors (each of the kind the FMU's causality says) and one
+parameter set (.ssv) per component, bound at component level. A bound parameter
+is no connector: the standard binds it through the ParameterBinding, and a
+connector of kind "parameter" left unconnected is an input without a source
+(pyssp-standard warns), while an FMU input bound so (the joint's `bend_angle`)
+would be declared a parameter. What the hosts users have apply, read in their
+sources and measured:
 
 - OSP libcosim applies component-level bindings and ignores system-level ones;
 - Ecos collects component-level bindings into sets by the .ssv's set name and
-  applies the one set the user names (`--parameterSet`, `init(parameter_set=)`);
+  applies only the one set the user names (`--parameterSet`,
+  `init(parameter_set=)`); with none named it applies none, and each FMU runs on
+  its own start values (`driveline_system.build_fmus` builds them at the
+  system's values for that reason);
 - FMPy's `simulate_ssp` applies no binding itself but takes one parameter set
   with hierarchical names, which `fmpy_parameter_set` builds from the bindings;
-- OMSimulator applies every binding, and needs its vendor annotation to create
-  the root system (the system kind: a fixed-step weakly coupled master) and one
-  under DefaultExperiment (else it warns of deprecated content).
+- OMSimulator sets every bound value on the FMU variable of that name, and
+  needs its vendor annotation to create the root system (the system kind: a
+  fixed-step weakly coupled master) and one under DefaultExperiment (else it
+  warns of deprecated content).
 
 So every component's set carries the system's name (Ecos: `--parameterSet
 <system>` applies them all), and the annotations are OMSimulator's own.
@@ -98,16 +106,38 @@ def parameter_set_xml(name: str, values: Mapping[str, float]) -> bytes:
     return _xml(root)
 
 
-def _connector_kinds(component: Component) -> dict[str, str]:
-    """The component's connectors: its connected variables, then its bound parameters."""
-    kinds = dict(component.connectors)
+def _causalities(fmu) -> dict[str, str]:
+    """{variable: causality} of the FMU's model description (FMI 2.0 or 3.0)."""
+    with zipfile.ZipFile(fmu) as archive:
+        root = fromstring(archive.read("modelDescription.xml"))
+    variables = root.find("ModelVariables")
+    listed = variables if variables is not None else ()
+    return {str(v.get("name")): v.get("causality", "local") for v in listed}
+
+
+def _check_component(component: Component) -> None:
+    """Each connector of the kind its FMU variable's causality says, each bound
+    parameter an FMU parameter or an input that no connection drives."""
+    causality = _causalities(component.fmu)
+    for connector, kind in component.connectors.items():
+        if kind not in ("input", "output") or causality.get(connector) != kind:
+            raise ValueError(
+                f"{component.name}: connector {connector!r} is declared an {kind}, but the "
+                f"FMU {Path(component.fmu).name} has it as "
+                f"{causality.get(connector, 'no variable')}"
+            )
     for parameter in component.parameters:
-        if kinds.setdefault(parameter, "parameter") != "parameter":
+        if parameter in component.connectors:
             raise ValueError(
                 f"{component.name}: {parameter!r} is bound as a parameter but connected "
-                f"as an {kinds[parameter]}"
+                f"as an {component.connectors[parameter]}"
             )
-    return kinds
+        if causality.get(parameter) not in ("parameter", "input"):
+            raise ValueError(
+                f"{component.name}: {parameter!r} is bound, but the FMU "
+                f"{Path(component.fmu).name} has it as "
+                f"{causality.get(parameter, 'no variable')}, not a parameter or an input"
+            )
 
 
 def system_structure_xml(
@@ -126,7 +156,7 @@ def system_structure_xml(
             elements, ssd("Component"), name=component.name, source=component.source, type=FMU_TYPE
         )
         connectors = SubElement(node, ssd("Connectors"))
-        for connector, kind in _connector_kinds(component).items():
+        for connector, kind in component.connectors.items():
             SubElement(
                 SubElement(connectors, ssd("Connector"), name=connector, kind=kind),
                 _qualified("ssc", "Real"),
@@ -180,6 +210,8 @@ def write_ssp(
     if not (math.isfinite(step_size) and 0.0 < step_size <= stop_time):
         raise ValueError(f"step_size {step_size!r} must be in (0, stop_time = {stop_time!r}]")
     by_name = {c.name: c for c in components}
+    for component in components:
+        _check_component(component)
     for start_element, start_connector, end_element, end_connector in connections:
         for element, connector, kind in (
             (start_element, start_connector, "output"),
