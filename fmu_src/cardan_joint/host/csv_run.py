@@ -1,7 +1,8 @@
 """A run streamed to a CSV as it goes: memory stays bounded however long the run.
 
 The rows go to the CSV in chunks (FMI 3 arrays split into their FMI 2 columns),
-under a temporary name that becomes the file only when the run is over: a run
+each column titled with its SI unit (`output_speed [rad/s]`), under a
+temporary name that becomes the file only when the run is over: a run
 that finished or was refused after its first step leaves a whole CSV of what
 it computed; an interrupted or failed one leaves no file (and an earlier file
 of that name untouched). A copy thinned to at most `plot_rows` rows is kept
@@ -35,8 +36,8 @@ PLOT_ROWS = 100_000
 class StreamedRun:
     """`rows_to` of `simulate`: writes each chunk, keeps every `stride`-th row."""
 
-    def __init__(self, path: Path, stride: int) -> None:
-        self.path, self.stride = Path(path), stride
+    def __init__(self, path: Path, stride: int, units: Mapping[str, str] | None = None) -> None:
+        self.path, self.stride, self.units = Path(path), stride, units
         self.stream: CsvStream | None = None
         self._kept: list[np.ndarray] = []
         self._last: np.ndarray | None = None  # the last row, drawn whatever the stride
@@ -44,7 +45,7 @@ class StreamedRun:
     def __call__(self, rows: np.ndarray) -> None:
         rows = flat_columns(rows)
         if self.stream is None:
-            self.stream = CsvStream(self.path, rows.dtype.names or ())
+            self.stream = CsvStream(self.path, rows.dtype.names or (), self.units)
         first = -self.stream.rows % self.stride  # the stride continues across chunks
         self.stream.write(rows)
         self._kept.append(rows[first :: self.stride])
@@ -69,6 +70,12 @@ class StreamedRun:
             self.stream.discard()
 
 
+def column_units(info: FmuInfo) -> dict[str, str]:
+    """{column: SI unit} of a run's CSV: the time's and every variable's (FMI 2 columns)."""
+    units = {c: v.unit for v in info.variables.values() for c in v.columns}
+    return {**units, "time": "s"}
+
+
 def simulate_to_csv(
     fmu: str | Path | FmuInfo,
     path: str | Path,
@@ -91,7 +98,8 @@ def simulate_to_csv(
     length = run_times(info, stop_time, output_interval)
     check_disk(length, recorded_values(info, recorded_variables(info, output)), Path(path))
     if run is None:
-        run = StreamedRun(Path(path), stride=max(1, math.ceil(length.rows / plot_rows)))
+        stride = max(1, math.ceil(length.rows / plot_rows))
+        run = StreamedRun(Path(path), stride, column_units(info))
     try:
         try:
             simulate(

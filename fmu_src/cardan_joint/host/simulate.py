@@ -13,8 +13,9 @@ a misspelt input, start value or output is refused naming the nearest valid ones
 The stop time and output interval are checked (`run_arguments`) before the
 first step, the recorded rows against the memory available, or, given
 `rows_to`, handed over in chunks as the run goes (`simulate_to_csv` streams a
-long run to a file). Ctrl-C ends the run between two steps and raises
-`SimulationInterrupted` (a KeyboardInterrupt) naming the time reached.
+long run to a file). Ctrl-C (SIGTERM, SIGHUP alike) ends the run between two
+steps and raises `SimulationInterrupted` (a KeyboardInterrupt) naming the time
+reached; the FMU unzipped for the run is removed however it ends.
 """
 
 import warnings
@@ -29,6 +30,7 @@ from .. import DEFAULT_MODEL
 from .fmu_info import FmuInfo, array_columns
 from .interrupts import SimulationInterrupted, interrupt_between_steps
 from .run_arguments import RunLength, check_memory, run_length
+from .unpacked import ExtractedFMU
 
 if TYPE_CHECKING:  # imported in first_refusal at run time, where it is needed
     from ..framework.refusal import Refusal
@@ -211,10 +213,11 @@ def simulate(
             return False
         return not interrupt.requested  # False: FMPy ends the run and terminates the FMU
 
-    with interrupt_between_steps() as interrupt:
+    # Unzipped into a folder of ours: FMPy removes its own only after a run that ended well.
+    with interrupt_between_steps() as interrupt, ExtractedFMU(info.path, description) as unzipped:
         try:
             result = simulate_fmu(
-                str(info.path),
+                unzipped.directory,
                 stop_time=stop_time,
                 output_interval=output_interval,
                 input=inputs,
@@ -233,7 +236,9 @@ def simulate(
             result = recorders[0].result() if recorders else np.zeros(0, dtype=[("time", float)])
     reached = float(result["time"][-1]) if len(result) else float("nan")
     if interrupt.requested:
-        raise SimulationInterrupted(reached if len(result) else 0.0, _rest(result, rows_to))
+        raise SimulationInterrupted(
+            reached if len(result) else 0.0, _rest(result, rows_to), interrupt.signum
+        )
     problems = [m for m in messages if m[0] in ("discard", "error", "fatal")]
     if problems or not reached >= stop_time - 1e-9 * max(1.0, abs(stop_time)):
         detail = (

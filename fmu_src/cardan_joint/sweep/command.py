@@ -267,15 +267,19 @@ def main(argv=None, prog=None, default_name="design_sweep") -> int:
                 file=sys.stderr,
             )
             return 130
+    summary = _summary(table)
+    print("\n".join(summary))
+    if len(table) and (table["status"] == FAILED).all():  # nothing to show: earlier files stay
+        print(
+            f"{name}: every case failed, no table or figure written: {summary[1].strip()}",
+            file=sys.stderr,
+        )
+        return 1
     stem, figure = out / args.name, out / f"{args.name}.png"
     existed = {
         p for p in (stem.with_suffix(".csv"), stem.with_suffix(".parquet"), figure) if p.exists()
     }
-    written = write_table(table, stem) + [plot_heatmaps(table, spec, figure)]
-    summary = _summary(table)
-    print("\n".join(summary))
+    drawn = plot_heatmaps(table, spec, figure)  # first: a figure that fails replaces nothing
+    written = write_table(table, stem) + [drawn]
     print("wrote " + ", ".join(f"{p}{' (replaced)' if p in existed else ''}" for p in written))
-    if len(table) and (table["status"] == FAILED).all():
-        print(f"{name}: every case failed: {summary[1].strip()}", file=sys.stderr)
-        return 1
     return 0
