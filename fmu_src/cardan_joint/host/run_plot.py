@@ -74,7 +74,7 @@ def envelope(time: np.ndarray, values: np.ndarray, columns: int):
 
 
 def family(name: str) -> str:
-    """A variable's name without its index (`crosspiece_quaternion_2` -> `crosspiece_quaternion`)."""
+    """A variable's name without its index (`crosspiece_quaternion_2`: `crosspiece_quaternion`)."""
     stem, _, index = name.rpartition("_")
     return stem if stem and index.isdigit() else name
 
