@@ -8,9 +8,10 @@ back, against a 200 N.m load. Writes results/demo.csv and results/demo.png.
 """
 
 import math
+import sys
 
 import numpy as np
-from _support import example_fmu, example_parser, output_folder
+from _support import example_fmu, example_parser, output_folder, positive, run_example
 
 from cardan_joint import results
 from cardan_joint.host.plotting import pyplot, save_figure
@@ -69,7 +70,7 @@ def plot(result, inputs, path):
 
 def main(argv=None):
     parser = example_parser(__doc__)
-    parser.add_argument("--stop-time", type=float, default=2.0)
+    parser.add_argument("--stop-time", type=positive, default=2.0, help="[s] (default 2)")
     args = parser.parse_args(argv)
     args.fmu = example_fmu(args)
     out = output_folder(args)
@@ -99,4 +100,4 @@ def main(argv=None):
 
 
 if __name__ == "__main__":
-    main()
+    sys.exit(run_example(main))

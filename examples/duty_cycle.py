@@ -19,9 +19,10 @@ then applies, and the torque is constant) checks the FMU against the block sum.
 """
 
 import math
+import sys
 
 import numpy as np
-from _support import example_fmu, example_parser, legend_outside, output_folder
+from _support import example_fmu, example_parser, legend_outside, output_folder, run_example
 
 from cardan_joint import results
 from cardan_joint.host.plotting import pyplot, save_figure
@@ -192,4 +193,4 @@ def main(argv=None):
 
 
 if __name__ == "__main__":
-    raise SystemExit(main())
+    sys.exit(run_example(main))

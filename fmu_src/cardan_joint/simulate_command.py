@@ -16,12 +16,11 @@ from pathlib import Path
 from . import results
 from .host.fmu_info import FmuInfo
 from .host.interrupts import exit_status, signal_name
+from .host.progress import PROGRESS_MIN_STEPS
 from .host.run_inputs import read_input_csv, split_assignments, with_constants
 from .names import UsageError
 
 PROG = "cardan-joint"
-# Runs with fewer steps finish before a progress bar would help.
-PROGRESS_MIN_STEPS = 20_000
 
 
 DEFAULT_OUTPUT = "results/simulate.csv"
@@ -103,25 +102,6 @@ def check_plot_format(plot: Path) -> None:
         )
 
 
-def _progress_callback(length, show):
-    """(step_finished, bars): a progress bar made at the first step (none for a
-    run refused before it starts); `show` None: only on a terminal."""
-    bars = []
-    if show is False:
-        return None, bars
-
-    def step_finished(time, recorder):
-        if not bars:
-            from tqdm import tqdm
-
-            disable = None if show is None else False  # tqdm's None: a terminal only
-            bars.append(tqdm(total=length.steps, desc="simulate", unit="step", disable=disable))
-        bars[0].update(round(time / length.step) - bars[0].n)
-        return True
-
-    return step_finished, bars
-
-
 def _interrupted(interrupt: BaseException) -> str:
     """ "interrupted", naming the signal unless it was Ctrl-C's."""
     signum = getattr(interrupt, "signum", signal.SIGINT)
@@ -184,14 +164,12 @@ def simulate_command(args):
     info.check(plot_variables, ("input", "output"), "--plot-variables variable")
     inputs = with_constants(csv_signal, constants) if csv_signal is not None else constants
     # --progress: always; by default a long run's bar, on a terminal only (not into a log).
-    show = args.progress or (None if length.steps >= PROGRESS_MIN_STEPS else False)
-    show = False if args.no_progress else show
+    show = True if args.progress else False if args.no_progress else None
     output = Path(args.output)
     plot = Path(args.plot) if args.plot else output.with_suffix(".png")
     check_plot_format(plot)
     existed = {results.check_output_path(p): p.exists() for p in (output, plot)}
     run = StreamedRun(output, max(1, -(-length.rows // PLOT_ROWS)), column_units(info))
-    step_finished, bars = _progress_callback(length, show)
     refused = None
     with warnings.catch_warnings(record=True) as caught:
         warnings.simplefilter("always")
@@ -205,7 +183,7 @@ def simulate_command(args):
                 parameters,
                 recorded,
                 run=run,
-                step_finished=step_finished,
+                progress=show,
             )
         except SimulationInterrupted as interrupt:
             print(
@@ -223,9 +201,6 @@ def simulate_command(args):
             return exit_status(interrupt)
         except SimulationError as error:
             refused = error
-        finally:
-            for bar in bars:
-                bar.close()
     sys.stderr.write(_warned(caught))
     if refused is not None and run.rows <= 1:  # at most the initial row: no step was taken
         print(

@@ -7,10 +7,12 @@ import subprocess
 import sys
 import tempfile
 import textwrap
+import time
 import zipfile
+from pathlib import Path
 
 import pytest
-from conftest import cardan_joint_here
+from conftest import ROOT, cardan_joint_here
 
 from cardan_joint.host.fmu_info import BadFMUError
 from cardan_joint.host.simulate import SimulationError, simulate
@@ -152,3 +154,28 @@ def test_ctrl_c_in_an_instance_loop_raises_keyboard_interrupt(fmu_path, signum):
     assert process.returncode == 3, said
     expected = "KeyboardInterrupt" if signum == signal.SIGINT else "Stopped"
     assert said.strip() == expected
+
+
+def _catches(pid: int, signum: int) -> bool:
+    """Whether process `pid` has a handler of its own for `signum` (Linux)."""
+    status = Path(f"/proc/{pid}/status").read_text()
+    caught = next(line for line in status.splitlines() if line.startswith("SigCgt:"))
+    return bool(int(caught.split()[1], 16) >> (signum - 1) & 1)
+
+
+def test_ctrl_c_in_an_example_ends_it_in_one_line(fmu_path, tmp_path):
+    example = [sys.executable, str(ROOT / "examples" / "driveshaft.py"), "--fmu", str(fmu_path)]
+    process = _child([*example, "--revolutions", "100000", "--out", str(tmp_path)], cwd=ROOT)
+    try:
+        # SIGTERM caught: the example runs under run_example (Python catches SIGINT from its start).
+        deadline = time.monotonic() + 60
+        while not _catches(process.pid, signal.SIGTERM):
+            assert process.poll() is None and time.monotonic() < deadline
+            time.sleep(0.05)
+        time.sleep(0.5)  # into its loop of steps
+        process.send_signal(signal.SIGINT)
+        err = process.communicate(timeout=60)[1].decode()
+    finally:
+        process.kill()
+    assert process.returncode == 130, err
+    assert err.strip() == "driveshaft.py: interrupted"

@@ -29,6 +29,7 @@ import numpy as np
 from .. import DEFAULT_MODEL
 from .fmu_info import FmuInfo, array_columns
 from .interrupts import SimulationInterrupted, interrupt_between_steps
+from .progress import StepProgress
 from .run_arguments import RunLength, check_memory, run_length
 from .unpacked import ExtractedFMU
 
@@ -144,6 +145,7 @@ def simulate(
     start_values: Mapping[str, float] | None = None,
     output: Sequence[str] | None = None,
     rows_to: Callable[[np.ndarray], None] | None = None,
+    progress: bool | None = None,
     **fmpy_options: Any,
 ) -> np.ndarray:
     """Co-simulate the FMU; return FMPy's structured result array.
@@ -162,6 +164,7 @@ def simulate(
     (FMPy's structured rows), the last ones when the run ends (refused too); the
     result returned, or the error's `result`, then holds no rows. Ctrl-C (main
     thread) ends the run after the step in progress: SimulationInterrupted.
+    `progress`: a progress bar (`host.progress`; None: a long run's, on a terminal).
     """
     from fmpy import simulate_fmu
     from fmpy.fmi1 import FMICallException
@@ -205,8 +208,11 @@ def simulate(
     recorders: list[Any] = []  # FMPy's Recorder (its class is private)
     step_finished = fmpy_options.pop("step_finished", None)
 
+    bar = StepProgress(length.steps, length.step, progress)
+
     def keep_recorder(time, recorder):
         recorders[:1] = [recorder]
+        bar.update(time)
         if rows_to is not None and len(recorder.rows) >= CHUNK_ROWS + KEPT_ROWS:
             _hand_over(recorder, rows_to, KEPT_ROWS)
         if step_finished is not None and not step_finished(time, recorder):
@@ -214,7 +220,10 @@ def simulate(
         return not interrupt.requested  # False: FMPy ends the run and terminates the FMU
 
     # Unzipped into a folder of ours: FMPy removes its own only after a run that ended well.
-    with interrupt_between_steps() as interrupt, ExtractedFMU(info.path, description) as unzipped:
+    with (
+        interrupt_between_steps() as interrupt,
+        ExtractedFMU(info.path, description) as unzipped,
+    ):
         try:
             result = simulate_fmu(
                 unzipped.directory,
@@ -234,6 +243,8 @@ def simulate(
             if not (messages or interrupt.requested):  # no reason: FMPy's error is all there is
                 raise
             result = recorders[0].result() if recorders else np.zeros(0, dtype=[("time", float)])
+        finally:
+            bar.close()
     reached = float(result["time"][-1]) if len(result) else float("nan")
     if interrupt.requested:
         raise SimulationInterrupted(
