@@ -35,9 +35,10 @@ _DRIVEN = (
 )
 
 
-def check_fmu(fmu, spec: SweepSpec) -> None:
-    """UsageError (before any case) unless the FMU has every variable the sweep
-    sets and reads; MissingFMUError or BadFMUError for a missing or unreadable file."""
+def check_fmu(fmu, spec: SweepSpec):
+    """The FMU's FmuInfo; UsageError (before any case) unless the FMU has every
+    variable the sweep sets and reads; MissingFMUError or BadFMUError for a
+    missing or unreadable file."""
     from ..host.fmu_info import FmuInfo
     from ..names import UsageError
 
@@ -58,7 +59,7 @@ def check_fmu(fmu, spec: SweepSpec) -> None:
             f"{fmu} ({info.model_name}) lacks what the sweep sets and reads: {lacking}; "
             "the sweep takes a UniversalJoint FMU (python build_fmu.py)"
         )
-    check_ranges(info.starts("parameter"), spec)
+    return info
 
 
 # What each case setting is called on the command line, for a refusal's message.
@@ -74,7 +75,8 @@ _OPTIONS = {
 def check_ranges(parameters: dict, spec: SweepSpec) -> None:
     """UsageError, before any case, naming the first case the joint's own checks
     refuse (the FMU's parameters `parameters`, the case's inputs and inertias):
-    the checks the FMU makes at its first step, made once here for every case."""
+    the checks the FMU makes at its first step, made once here for every case.
+    The command makes them; in Python a case the FMU refuses is a failed row."""
     from ..models import StartValueError, discover
     from ..names import UsageError
 

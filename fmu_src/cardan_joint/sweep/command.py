@@ -206,7 +206,7 @@ def _summary(table) -> list[str]:
 def _checked(args):
     """The sweep's settings, every argument checked before the first case."""
     from ..host.fmu_info import MissingFMUError
-    from .case import check_fmu
+    from .case import check_fmu, check_ranges
 
     spec = spec_from_arguments(args)
     local = not (args.serial or args.scheduler)
@@ -215,9 +215,10 @@ def _checked(args):
     if args.compare and args.repeat < 1:
         raise UsageError(f"--repeat {args.repeat}: give at least 1 timing repetition")
     try:
-        check_fmu(Path(args.fmu), spec)
+        info = check_fmu(Path(args.fmu), spec)
     except MissingFMUError as error:
         raise UsageError(str(error)) from None
+    check_ranges(info.starts("parameter"), spec)  # every case, before the first one runs
     return spec
 
 
