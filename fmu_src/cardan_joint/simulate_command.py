@@ -123,8 +123,11 @@ def _title(info, length, args, csv_signal, given, refusal=None, rows=0, stride=1
     """The figure's title: model, FMI version, length, how each input was set, a refusal."""
     from .host.run_plot import run_title
 
-    unit = {name: info.variables[name].unit for name in given}
-    inputs = {name: f"= {value:g} {unit[name]}".rstrip() for name, value in given.items()}
+    shown = {
+        name: (value * info.variables[name].factor, info.variables[name].display_unit)
+        for name, value in given.items()
+    }  # in display units, as the panels
+    inputs = {name: f"= {value:.6g} {unit}".rstrip() for name, (value, unit) in shown.items()}
     if csv_signal is not None and len(csv_signal.dtype.names) > 1:
         inputs[", ".join(n for n in csv_signal.dtype.names if n != "time")] = f"from {args.input}"
     steps = f"{length.steps} steps of {length.step:g} s"

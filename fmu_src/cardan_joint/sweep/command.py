@@ -225,8 +225,10 @@ def _checked(args):
 def main(argv=None, prog=None, default_name="design_sweep") -> int:
     parser = argparse.ArgumentParser(
         prog=prog,
-        description="Design sweep of the Cardan joint "
-        "FMU over bend angle x input speed x inertia distribution.",
+        description="Design sweep of the Cardan joint FMU over bend angle x input speed x "
+        "inertia distribution. Units: angles in deg, speeds in rpm, I0 in kg.m2, torque in "
+        "N.m, as each option says; the table's columns name theirs (bend_angle_deg, "
+        "input_speed_rpm; peaks in SI).",
     )
     add_arguments(parser, default_name)
     args = parser.parse_args(argv)
