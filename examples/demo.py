@@ -14,6 +14,8 @@ import numpy as np
 from _support import example_fmu, example_parser, output_folder, positive, run_example
 
 from cardan_joint import results
+from cardan_joint.host.csv_run import column_units
+from cardan_joint.host.fmu_info import FmuInfo
 from cardan_joint.host.plotting import pyplot, save_figure
 from cardan_joint.host.simulate import simulate
 from cardan_joint.models.universal_joint import variables as table
@@ -86,7 +88,8 @@ def main(argv=None):
             "crosspiece_inertia_3": 0.008,
         },
     )
-    results.write_csv(result, out / "demo.csv")
+    # Each column titled with its SI unit, as `cardan-joint simulate` writes.
+    results.write_csv(result, out / "demo.csv", units=column_units(FmuInfo.read(args.fmu)))
     plot(result, inputs, out / "demo.png")
     swing = result["output_speed"] / np.interp(
         result["time"], inputs["time"], inputs["input_speed"]
