@@ -230,3 +230,11 @@ def test_the_python_sweep_refuses_an_fmu_without_its_variables(propshaft_fmu_pat
     spec = sweep.SweepSpec(bend_angles_deg=(5.0,), input_speeds_rpm=(1000.0,))
     with pytest.raises(UsageError, match=r"\(Propshaft\) lacks what the sweep sets and reads"):
         sweep.run_serial(propshaft_fmu_path, spec, progress=False)
+
+
+def test_a_sweep_into_a_log_draws_no_progress_bar(capsys, fmu_path, tmp_path):
+    args = ("sweep", "--serial", "--fmu", fmu_path, "--speeds", "1000", "--bend-angles", "5")
+    quiet = cardan_joint_here(capsys, *args, "--distributions", "T1", "--out", tmp_path)
+    assert quiet.returncode == 0 and "case/s" not in quiet.stderr  # not a terminal: no bar
+    drawn = cardan_joint_here(capsys, *args, "--out", tmp_path / "again", "--progress")
+    assert drawn.returncode == 0 and "case/s" in drawn.stderr

@@ -111,7 +111,11 @@ def add_arguments(parser, default_name="design_sweep"):
         help="discard the cases of an earlier run of this sweep (default: "
         "resume it, computing only the missing cases)",
     )
-    parser.add_argument("--no-progress", action="store_true", help="no progress bar")
+    progress = parser.add_mutually_exclusive_group()
+    progress.add_argument(
+        "--progress", action="store_true", help="a progress bar also into a log or a pipe"
+    )
+    progress.add_argument("--no-progress", action="store_true", help="no progress bar")
 
 
 def spec_from_arguments(args) -> SweepSpec:
@@ -245,7 +249,8 @@ def main(argv=None, prog=None, default_name="design_sweep") -> int:
         except MissingExtra as error:
             print(f"{name}: {error}", file=sys.stderr)
             return 1
-    progress = not args.no_progress
+    # A bar on a terminal only (a log never fills with bars), unless asked.
+    progress = True if args.progress else False if args.no_progress else None
     print(
         f"{len(spec.cases())} co-simulations in {len(spec.tasks())} tasks, "
         f"{spec.revolutions * spec.steps_per_revolution} steps each"
