@@ -136,7 +136,7 @@ def _title(info, length, args, csv_signal, given, refusal=None, rows=0, stride=1
     else:
         length_text = f"refused after {rows - 1} of {steps} (t = {refusal[0]:.6g} s)"
     if stride > 1:
-        length_text += f", 1 row in {stride} drawn"
+        length_text += f", drawn from each {stride} rows' least and greatest"
     reason = None if refusal is None else f"Refused: {textwrap.shorten(refusal[1], 320)}"
     return run_title(
         info.model_name, info.model_description.fmiVersion, inputs, length_text, reason
@@ -146,7 +146,7 @@ def _title(info, length, args, csv_signal, given, refusal=None, rows=0, stride=1
 def simulate_command(args):
     import warnings
 
-    from .host.csv_run import PLOT_ROWS, StreamedRun, column_units, simulate_to_csv
+    from .host.csv_run import StreamedRun, column_units, plot_stride, simulate_to_csv
     from .host.interrupts import SimulationInterrupted
     from .host.run_plot import plot_run
     from .host.simulate import SimulationError, run_times
@@ -172,7 +172,7 @@ def simulate_command(args):
     plot = Path(args.plot) if args.plot else output.with_suffix(".png")
     check_plot_format(plot)
     existed = {results.check_output_path(p): p.exists() for p in (output, plot)}
-    run = StreamedRun(output, max(1, -(-length.rows // PLOT_ROWS)), column_units(info))
+    run = StreamedRun(output, plot_stride(length.rows), column_units(info))
     refused = None
     with warnings.catch_warnings(record=True) as caught:
         warnings.simplefilter("always")
