@@ -155,7 +155,8 @@ def simulate(
     Raises SimulationError if the FMU refused a step or logged an error: a
     RefusalError, with the refusal's fields, when the FMU said why. A name
     the FMU does not have raises UnknownNameError (a KeyError) naming the
-    nearest valid ones; a missing FMU, MissingFMUError naming its build command.
+    nearest valid ones; a missing FMU, MissingFMUError naming its build command;
+    a damaged one (not a zip, no binary for this platform), BadFMUError naming it.
     `fmu` may be an `FmuInfo` already read (its description is not read again).
     A stop time or output interval that is not a finite number > 0 (the interval
     at most the stop time) raises UsageError, a result that would not fit in the
