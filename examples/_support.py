@@ -4,11 +4,18 @@ Figures otherwise come from cardan_joint.host.plotting.
 """
 
 import argparse
+import math
 import sys
+from collections.abc import Callable
 from pathlib import Path
 
+from cardan_joint.host.fmu_info import FmuInfo, MissingFMUError
 from cardan_joint.host.fmu_info import build_command as fmu_build_command
-from cardan_joint.host.simulate import DEFAULT_FMU
+from cardan_joint.host.instance import StepRefusedError
+from cardan_joint.host.interrupts import exit_status, stop_signals_raise
+from cardan_joint.host.simulate import DEFAULT_FMU, SimulationError
+from cardan_joint.names import UsageError
+from cardan_joint.results import ResultFileError
 
 DEFAULT_MODEL = "UniversalJoint"
 
@@ -36,7 +43,8 @@ def example_parser(
 
 def example_fmu(args) -> Path:
     """The FMU the example runs; exits with the command that builds it when it is missing
-    (a message, not a traceback: the user's next step is a build, not a bug report)."""
+    (a message, not a traceback: the user's next step is a build, not a bug report),
+    and refuses a file that is not an FMU."""
     fmu = Path(args.fmu)
     if not fmu.is_file():
         sys.exit(
@@ -44,7 +52,40 @@ def example_fmu(args) -> Path:
             f"`{build_command(args.model)}` (it writes "
             f"{DEFAULT_FMU.with_name(args.model + '.fmu')}), or pass --fmu"
         )
+    FmuInfo.read(fmu)  # BadFMUError (one line from run_example) for a file that is not an FMU
     return fmu
+
+
+def positive(text: str) -> float:
+    """An argparse type: a finite number > 0 (a stop time, a step, a speed)."""
+    try:
+        value = float(text)
+    except ValueError:
+        raise argparse.ArgumentTypeError(f"{text!r} is not a number") from None
+    if not (math.isfinite(value) and value > 0):
+        raise argparse.ArgumentTypeError(f"{text} must be a finite number > 0")
+    return value
+
+
+def run_example(main: Callable[[], int | None]) -> int:
+    """Run an example's `main` as a command: a mistake (an argument, a missing or
+    damaged FMU, a path) exits 2 with one line, a run the FMU refused 1, Ctrl-C
+    (SIGTERM, SIGHUP) 128 + the signal, saying so in one line; a bug keeps its
+    traceback."""
+    prog = Path(sys.argv[0]).name
+    try:
+        with stop_signals_raise():
+            status = main()
+    except (UsageError, MissingFMUError, ResultFileError) as error:
+        print(f"{prog}: {error}", file=sys.stderr)
+        return 2
+    except (SimulationError, StepRefusedError) as error:
+        print(f"{prog}: {' '.join(str(error).split())}", file=sys.stderr)
+        return 1
+    except KeyboardInterrupt as interrupt:
+        print(f"{prog}: interrupted", file=sys.stderr)
+        return exit_status(interrupt)
+    return status or 0
 
 
 def output_folder(args) -> Path:

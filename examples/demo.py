@@ -8,11 +8,14 @@ back, against a 200 N.m load. Writes results/demo.csv and results/demo.png.
 """
 
 import math
+import sys
 
 import numpy as np
-from _support import example_fmu, example_parser, output_folder
+from _support import example_fmu, example_parser, output_folder, positive, run_example
 
 from cardan_joint import results
+from cardan_joint.host.csv_run import column_units
+from cardan_joint.host.fmu_info import FmuInfo
 from cardan_joint.host.plotting import pyplot, save_figure
 from cardan_joint.host.simulate import simulate
 from cardan_joint.models.universal_joint import variables as table
@@ -69,7 +72,7 @@ def plot(result, inputs, path):
 
 def main(argv=None):
     parser = example_parser(__doc__)
-    parser.add_argument("--stop-time", type=float, default=2.0)
+    parser.add_argument("--stop-time", type=positive, default=2.0, help="[s] (default 2)")
     args = parser.parse_args(argv)
     args.fmu = example_fmu(args)
     out = output_folder(args)
@@ -85,7 +88,8 @@ def main(argv=None):
             "crosspiece_inertia_3": 0.008,
         },
     )
-    results.write_csv(result, out / "demo.csv")
+    # Each column titled with its SI unit, as `cardan-joint simulate` writes.
+    results.write_csv(result, out / "demo.csv", units=column_units(FmuInfo.read(args.fmu)))
     plot(result, inputs, out / "demo.png")
     swing = result["output_speed"] / np.interp(
         result["time"], inputs["time"], inputs["input_speed"]
@@ -99,4 +103,4 @@ def main(argv=None):
 
 
 if __name__ == "__main__":
-    main()
+    sys.exit(run_example(main))

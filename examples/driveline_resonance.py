@@ -31,7 +31,7 @@ from cardan_joint.host.plotting import pyplot, save_figure
 from cardan_joint.units import RAD_PER_S_TO_RPM
 
 sys.path.insert(0, str(Path(__file__).resolve().parent))
-from _support import output_folder  # noqa: E402
+from _support import output_folder, positive, run_example  # noqa: E402
 
 BEND = math.radians(20.0)
 STIFFNESS, LOAD_INERTIA, DAMPING_RATIO = 2000.0, 0.5, 0.05
@@ -141,7 +141,7 @@ def plot_orders(rows, path, seconds=2.0):
 def main(argv=None):
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     parser.add_argument("--out", default="results", help="folder for the results")
-    parser.add_argument("--rate", type=float, default=RATE, help="run-up rate [rad/s2]")
+    parser.add_argument("--rate", type=positive, default=RATE, help="run-up rate [rad/s2]")
     args = parser.parse_args(argv)
     out = output_folder(args)
     with tempfile.TemporaryDirectory(prefix="driveline_resonance_") as work:
@@ -160,4 +160,4 @@ def main(argv=None):
 
 
 if __name__ == "__main__":
-    main()
+    sys.exit(run_example(main))

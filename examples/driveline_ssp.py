@@ -29,7 +29,7 @@ from cardan_joint.host.plotting import pyplot, save_figure
 from cardan_joint.units import RAD_PER_S_TO_RPM
 
 sys.path.insert(0, str(Path(__file__).resolve().parent))
-from _support import output_folder  # noqa: E402
+from _support import output_folder, run_example  # noqa: E402
 
 STOP_TIME, STEP = 1.0, 1e-3
 
@@ -113,7 +113,10 @@ def plot(fmpy_rows, libcosim_rows, path, drive):
 def main(argv=None):
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     parser.add_argument(
-        "--drive", default=system.DRIVE, help="drive element model (default: %(default)s)"
+        "--drive",
+        default=system.DRIVE,
+        choices=sorted(system.DRIVE_PARAMETERS),
+        help="drive element model (default: %(default)s)",
     )
     parser.add_argument("--out", default="results", help="folder for the results")
     args = parser.parse_args(argv)
@@ -150,4 +153,4 @@ def main(argv=None):
 
 
 if __name__ == "__main__":
-    main()
+    sys.exit(run_example(main))

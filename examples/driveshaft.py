@@ -59,6 +59,7 @@ Writes results/driveshaft_steps.csv (step dependence), results/driveshaft_phase.
 """
 
 import math
+import sys
 
 import numpy as np
 from _driveshaft_support import (
@@ -69,7 +70,7 @@ from _driveshaft_support import (
     predicted_hold_fluctuation,
     single_joint_fluctuation,
 )
-from _support import example_fmu, example_parser, output_folder
+from _support import example_fmu, example_parser, output_folder, positive, run_example
 
 from cardan_joint import results
 from cardan_joint.host.instance import ExtractedFMU
@@ -209,7 +210,7 @@ def phase_table(fmu, bend_angle, input_speed, step, revolutions, errors_deg):
 def main(argv=None):
     parser = example_parser(__doc__)
     parser.add_argument("--bend-angle", type=float, default=30.0, help="deg (default 30)")
-    parser.add_argument("--input-speed", type=float, default=10.0, help="rad/s (default 10)")
+    parser.add_argument("--input-speed", type=positive, default=10.0, help="rad/s (default 10)")
     parser.add_argument(
         "--revolutions", type=int, default=2, help="input revolutions per run (default 2)"
     )
@@ -293,4 +294,4 @@ def main(argv=None):
 
 
 if __name__ == "__main__":
-    main()
+    sys.exit(run_example(main))

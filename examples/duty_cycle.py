@@ -22,10 +22,11 @@ applies, and the torque is constant) checks the FMU against the block sum.
 
 import dataclasses
 import math
+import sys
 from pathlib import Path
 
 import numpy as np
-from _support import example_fmu, example_parser, output_folder
+from _support import example_fmu, example_parser, output_folder, run_example
 
 from cardan_joint.host.duty_cycle import read_block_table
 from cardan_joint.host.life_files import write_report
@@ -147,4 +148,4 @@ def main(argv=None):
 
 
 if __name__ == "__main__":
-    raise SystemExit(main())
+    sys.exit(run_example(main))

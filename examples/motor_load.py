@@ -16,9 +16,17 @@ The master (FMPy's low-level API) closes the driveline around the FMU:
 """
 
 import math
+import sys
 
 import numpy as np
-from _support import example_fmu, example_parser, legend_outside, output_folder
+from _support import (
+    example_fmu,
+    example_parser,
+    legend_outside,
+    output_folder,
+    positive,
+    run_example,
+)
 
 from cardan_joint import results
 from cardan_joint.host.plotting import pyplot, save_figure
@@ -169,7 +177,7 @@ def plot(rows, p, path, revolutions=4):
 
 def main(argv=None):
     parser = example_parser(__doc__)
-    parser.add_argument("--stop-time", type=float, default=1.0)
+    parser.add_argument("--stop-time", type=positive, default=1.0, help="[s] (default 1)")
     parser.add_argument("--step", type=float, default=1e-3)
     args = parser.parse_args(argv)
     args.fmu = example_fmu(args)
@@ -187,4 +195,4 @@ def main(argv=None):
 
 
 if __name__ == "__main__":
-    main()
+    sys.exit(run_example(main))

@@ -18,10 +18,11 @@ joint planes) cancels it.
 """
 
 import math
+import sys
 import warnings
 
 import numpy as np
-from _support import example_fmu, example_parser, legend_outside, output_folder
+from _support import example_fmu, example_parser, legend_outside, output_folder, run_example
 
 from cardan_joint.host.plotting import pyplot, save_figure
 from cardan_joint.host.simulate import simulate
@@ -124,4 +125,4 @@ def _shop_formula(side, top, k):
 
 
 if __name__ == "__main__":
-    main()
+    sys.exit(run_example(main))

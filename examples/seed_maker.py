@@ -17,9 +17,11 @@ three largest samples. The maker's table mixes truncation (10 deg: 0.43856 ->
 """
 
 import math
+import sys
 
 import numpy as np
 from _seed_support import COLORS, Outputs, parabola_peak, parse_args, pyplot, run
+from _support import run_example
 
 from cardan_joint.units import RAD_TO_DEG
 
@@ -282,4 +284,4 @@ def main(argv=None):
 
 
 if __name__ == "__main__":
-    main()
+    sys.exit(run_example(main))

@@ -32,6 +32,7 @@ It is plotted as the paper did, and labelled so.
 """
 
 import math
+import sys
 
 import numpy as np
 from _mityushov_support import (
@@ -47,6 +48,7 @@ from _mityushov_support import (
     roll_from_quaternion,
 )
 from _seed_support import Outputs, parse_args, pyplot, run
+from _support import run_example
 
 DURATION = 2 * 2 * math.pi / INPUT_SPEED  # two input revolutions, s
 TORQUE_INERTIA = 0.026  # kg.m2, figure 7
@@ -259,4 +261,4 @@ def main(argv=None):
 
 
 if __name__ == "__main__":
-    main()
+    sys.exit(run_example(main))

@@ -17,9 +17,11 @@ the script prints as well.
 """
 
 import math
+import sys
 
 import numpy as np
 from _seed_support import Outputs, parse_args, pyplot, run
+from _support import run_example
 
 INPUT_SPEED = 10.0  # rad/s
 DURATION = 1.0  # s
@@ -151,4 +153,4 @@ def main(argv=None):
 
 
 if __name__ == "__main__":
-    main()
+    sys.exit(run_example(main))

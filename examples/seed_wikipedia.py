@@ -11,9 +11,11 @@ Yoke phase 0 (the FMU's default) is Wikipedia's convention.
 """
 
 import math
+import sys
 
 import numpy as np
 from _seed_support import COLORS, Outputs, parse_args, pyplot, run
+from _support import run_example
 
 from cardan_joint.units import RAD_TO_DEG
 
@@ -146,4 +148,4 @@ def main(argv=None):
 
 
 if __name__ == "__main__":
-    main()
+    sys.exit(run_example(main))

@@ -15,19 +15,20 @@ import argparse
 DEFAULT_OUTPUT = "results/life.csv"
 
 
-def add_parser(commands) -> None:
-    """The `life` subcommand on the CLI's subparsers."""
+HELP = "run a duty cycle (time series or block table) and report the joints' life"
+DESCRIPTION = (
+    "Run a duty cycle through a jointed FMU and report the life it uses: "
+    "a measured time series (CSV or Parquet: time, input_speed, a torque, bend_angle, "
+    "optional rates; bare names in SI, or units in brackets, e.g. 'input_speed [rpm]') "
+    "or a block table (CSV: block, time_share or revolution_share, 'speed [rpm]', "
+    "'torque [N.m]', 'angle [deg]'). Writes CSV, JSON and PNG beside --output."
+)
+
+
+def add_arguments(life: argparse.ArgumentParser) -> None:
+    """The `life` command's options, on its parser (cli.COMMANDS)."""
     from .host.simulate import DEFAULT_FMU
 
-    life = commands.add_parser(
-        "life",
-        help="run a duty cycle (time series or block table) and report the joints' life",
-        description="Run a duty cycle through a jointed FMU and report the life it uses: "
-        "a measured time series (CSV or Parquet: time, input_speed, a torque, bend_angle, "
-        "optional rates; bare names in SI, or units in brackets, e.g. 'input_speed [rpm]') "
-        "or a block table (CSV: block, time_share or revolution_share, 'speed [rpm]', "
-        "'torque [N.m]', 'angle [deg]'). Writes CSV, JSON and PNG beside --output.",
-    )
     life.add_argument("cycle", metavar="CYCLE", help="time series (.csv/.parquet) or block table")
     life.add_argument("--fmu", default=str(DEFAULT_FMU), help="a jointed FMU (default %(default)s)")
     life.add_argument(

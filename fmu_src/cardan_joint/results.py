@@ -2,11 +2,12 @@
 
 Time series (FMPy's structured result arrays, and any table of numbers) go to
 CSV in FMPy's column format (the bytes `fmpy.util.write_csv` writes): a quoted
-header, one column per variable, values printed as the shortest text that
-reads back to the same double. `CsvStream` writes one chunk of rows at a time,
-so a long run never has to be held whole. They are read back through pandas
-(FMPy's reader takes a space after a comma for a vector column, which
-hand-written input files often have).
+header, one column per variable (each title `name [unit]` when the writer
+gives the units, as the command line's runs do; readers take either), values
+printed as the shortest text that reads back to the same double. `CsvStream`
+writes one chunk of rows at a time, so a long run never has to be held
+whole. They are read back through pandas (FMPy's reader takes a space after a
+comma for a vector column, which hand-written input files often have).
 
 Every file is written under a temporary name beside its place and renamed into
 it when whole: a file is there complete, or not at all (an interrupt, a full
@@ -17,6 +18,7 @@ Parquet engine (pyarrow) is installed.
 """
 
 import os
+import tempfile
 import uuid
 from collections.abc import Iterable, Iterator, Mapping, Sequence
 from contextlib import contextmanager
@@ -45,6 +47,31 @@ def check_writable(path: PathType) -> Path:
         raise ResultFileError(f"cannot write {path}: {blocking} is a file, not a folder")
     if path.is_dir():
         raise ResultFileError(f"cannot write {path}: it is a folder")
+    return path
+
+
+def check_output_path(path: PathType) -> Path:
+    """A command's output `path`, checked before any work: `check_writable`; its
+    folder exists, or lies inside the working folder (then it is made when the
+    file is written: `results/` on a fresh clone), never elsewhere (a mistyped
+    absolute path would make folders at the filesystem root); and a file can be
+    created there. ResultFileError naming the missing or unwritable folder."""
+    path = check_writable(path)
+    folder = path.parent.resolve()
+    existing = next(p for p in (folder, *folder.parents) if p.exists())
+    if existing != folder and Path.cwd().resolve() not in (folder, *folder.parents):
+        missing = next(p for p in reversed((folder, *folder.parents)) if not p.exists())
+        raise ResultFileError(
+            f"cannot write {path}: the folder {missing} does not exist (make it first; "
+            "only folders inside the working folder are made)"
+        )
+    try:
+        with tempfile.NamedTemporaryFile(dir=existing, prefix=".cardan_joint_"):
+            pass
+    except OSError as error:
+        raise ResultFileError(
+            f"cannot write {path}: no file can be created in {existing} ({error.strerror})"
+        ) from None
     return path
 
 
@@ -84,19 +111,37 @@ def structured(columns: Mapping[str, Iterable[float]]) -> np.ndarray:
     return data
 
 
+def column_title(name: str, unit: str = "") -> str:
+    """A CSV column's title: its name and, for a quantity with a unit, `[unit]`."""
+    return f"{name} [{unit}]" if unit not in ("", "1") else name
+
+
+def split_title(title: str) -> tuple[str, str]:
+    """A column title -> (name, unit): `output_speed [rad/s]` and the bare
+    `output_speed` (no unit: "") alike."""
+    title = title.strip()
+    name, bracket, unit = title.partition(" [")
+    if bracket and unit.endswith("]"):
+        return name.strip(), unit[:-1].strip()
+    return title, ""
+
+
 def write_csv(
     data: np.ndarray | Mapping[str, Iterable[float]],
     path: PathType,
     columns: Sequence[str] | None = None,
+    units: Mapping[str, str] | None = None,
 ) -> Path:
     """Write a result (structured array, or {name: column} of numbers) in FMPy's CSV format.
 
-    `columns`: the variables to write besides `time` (FMPy's convention; None: all)."""
+    `columns`: the variables to write besides `time` (FMPy's convention; None: all).
+    `units`: {name: unit} put in the header as `name [unit]` (None: bare names,
+    as FMI's cross-check files and FMPy's reader of them need)."""
     if not isinstance(data, np.ndarray):
         data = structured(data)
     if columns is not None:
         data = data[["time", *columns]]
-    with CsvStream(path, data.dtype.names or ()) as stream:
+    with CsvStream(path, data.dtype.names or (), units) as stream:
         stream.write(data)
     return Path(path)
 
@@ -106,12 +151,15 @@ class CsvStream:
     `commit` (or leaving `with` normally) renames it into place, `discard` (or
     leaving `with` on an exception) removes it. `rows`: the rows written."""
 
-    def __init__(self, path: PathType, names: Sequence[str]) -> None:
+    def __init__(
+        self, path: PathType, names: Sequence[str], units: Mapping[str, str] | None = None
+    ) -> None:
         self.path, self._temporary = temporary_beside(path)
         self.names = tuple(names)
         self.rows = 0
         self._stream = open(self._temporary, "w")
-        self._stream.write(",".join(f'"{name}"' for name in self.names) + "\n")
+        header = (column_title(name, (units or {}).get(name, "")) for name in self.names)
+        self._stream.write(",".join(f'"{title}"' for title in header) + "\n")
 
     def write(self, data: np.ndarray) -> None:
         """Append rows (a structured array holding at least `names`)."""
@@ -144,9 +192,15 @@ class CsvStream:
 
 def read_csv(path: PathType) -> np.ndarray:
     """A CSV of numbers under a header line (FMPy's format, quoted names or not,
-    spaces after commas allowed) -> a structured float array, every value read
-    back to the same double; raises ResultFileError naming the file, and the
-    line and column of a value that is not a number."""
+    spaces after commas allowed, each name with its `[unit]` or without) -> a
+    structured float array named without the units, every value read back to
+    the same double; raises ResultFileError naming the file, and the line and
+    column of a value that is not a number."""
+    return read_csv_units(path)[0]
+
+
+def read_csv_units(path: PathType) -> tuple[np.ndarray, dict[str, str]]:
+    """As `read_csv`, and {name: unit} of the columns whose title gives one."""
     import pandas as pd
 
     path = Path(path)
@@ -163,18 +217,23 @@ def read_csv(path: PathType) -> np.ndarray:
         ) from None
     if frame.empty:
         raise ResultFileError(f"{path}: a header line but no data rows")
-    columns = {}
-    for name in frame.columns:
-        numbers = pd.to_numeric(frame[name], errors="coerce")
-        wrong = numbers.isna() & frame[name].notna()
+    columns, units = {}, {}
+    for title in frame.columns:
+        name, unit = split_title(str(title))
+        numbers = pd.to_numeric(frame[title], errors="coerce")
+        wrong = numbers.isna() & frame[title].notna()
         if wrong.any():
             row = int(np.argmax(wrong.to_numpy()))
             raise ResultFileError(
-                f"{path}, line {row + 2}, column {str(name).strip()!r}: "
-                f"{frame[name].iloc[row]!r} is not a number"
+                f"{path}, line {row + 2}, column {name!r}: "
+                f"{frame[title].iloc[row]!r} is not a number"
             )
-        columns[str(name).strip()] = numbers.to_numpy(dtype=float)
-    return structured(columns)
+        if name in columns:
+            raise ResultFileError(f"{path}: column {name!r} appears twice")
+        columns[name] = numbers.to_numpy(dtype=float)
+        if unit:
+            units[name] = unit
+    return structured(columns), units
 
 
 def write_rows(rows: Sequence[Mapping[str, object]], path: PathType) -> Path:

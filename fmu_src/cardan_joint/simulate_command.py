@@ -3,21 +3,86 @@
 The run's arguments are checked before the first step (`host.run_arguments`);
 the rows go to the CSV as they come, which becomes the file only when the run
 is over (`host.csv_run`). Ctrl-C ends the run between two steps and exits 130
-writing nothing; a refused run writes what it computed up to the refusal; the
-FMU's warnings print one line each.
+writing nothing (SIGTERM and SIGHUP alike, exit 143 and 129); a refused run
+writes what it computed up to the refusal; the FMU's warnings print one line
+each.
 """
 
+import signal
 import sys
 import textwrap
 from pathlib import Path
 
 from . import results
 from .host.fmu_info import FmuInfo
+from .host.interrupts import exit_status, signal_name
+from .host.progress import PROGRESS_MIN_STEPS
 from .host.run_inputs import read_input_csv, split_assignments, with_constants
+from .names import UsageError
 
 PROG = "cardan-joint"
-# Runs with fewer steps finish before a progress bar would help.
-PROGRESS_MIN_STEPS = 20_000
+
+
+DEFAULT_OUTPUT = "results/simulate.csv"
+
+
+def add_simulate_arguments(run) -> None:
+    """The options of `cardan-joint simulate`."""
+    from .host.simulate import DEFAULT_FMU
+
+    run.add_argument(
+        "--fmu", default=str(DEFAULT_FMU), help="FMU file, any model (default %(default)s)"
+    )
+    run.add_argument(
+        "--set",
+        action="append",
+        default=[],
+        metavar="NAME=VALUE[UNIT]",
+        help="constant input or parameter value, in the FMU's SI unit (rad, rad/s, N.m, "
+        "kg.m2) or in a unit written after it that the variable's display units offer: "
+        "--set bend_angle=0.3 or bend_angle=20deg, input_speed=1500rpm",
+    )
+    run.add_argument(
+        "--input",
+        metavar="CSV",
+        help="input CSV: a 'time' column [s] and input-name columns in SI units (rad, rad/s, "
+        "N.m), or titled with a unit ('bend_angle [deg]', 'input_speed [rpm]')",
+    )
+    run.add_argument(
+        "--stop-time",
+        type=float,
+        default=None,
+        help="stop time [s] (default: the CSV's last time, else the FMU's default experiment)",
+    )
+    run.add_argument(
+        "--step", type=float, default=1e-3, help="communication step [s] (default %(default)s)"
+    )
+    run.add_argument(
+        "--output",
+        default=DEFAULT_OUTPUT,
+        help="output CSV in SI units, each column titled 'name [unit]' (default %(default)s; "
+        "an existing file is replaced, and the command says so)",
+    )
+    run.add_argument(
+        "--plot",
+        default=None,
+        help="plot file, .png, .pdf, .svg... (default: the output CSV's name, .png)",
+    )
+    run.add_argument(
+        "--plot-variables",
+        nargs="+",
+        default=None,
+        metavar="NAME",
+        help="inputs or outputs to plot, each in its display unit (default: the FMU's outputs)",
+    )
+    progress = run.add_mutually_exclusive_group()
+    progress.add_argument(
+        "--progress",
+        action="store_true",
+        help=f"show a progress bar even on a short run (default: from {PROGRESS_MIN_STEPS} "
+        "steps on, on a terminal)",
+    )
+    progress.add_argument("--no-progress", action="store_true", help="no progress bar")
 
 
 def _written(path: Path, existed: bool, detail: str = "") -> str:
@@ -25,22 +90,22 @@ def _written(path: Path, existed: bool, detail: str = "") -> str:
     return f"{path} ({notes})" if notes else str(path)
 
 
-def _progress_callback(length, show):
-    """(step_finished, bars): a progress bar made at the first step (none for a
-    run refused before it starts)."""
-    bars = []
-    if not show:
-        return None, bars
+def check_plot_format(plot: Path) -> None:
+    """UsageError, before the run, unless matplotlib writes the plot's format."""
+    from matplotlib.backend_bases import FigureCanvasBase
 
-    def step_finished(time, recorder):
-        if not bars:
-            from tqdm import tqdm
+    formats = FigureCanvasBase.get_supported_filetypes()
+    if plot.suffix[1:].lower() not in formats:
+        raise UsageError(
+            f"--plot {plot}: a figure is written as {', '.join('.' + f for f in formats)}; "
+            f"not {plot.suffix or 'a name without a suffix'}"
+        )
 
-            bars.append(tqdm(total=length.steps, desc="simulate", unit="step"))
-        bars[0].update(round(time / length.step) - bars[0].n)
-        return True
 
-    return step_finished, bars
+def _interrupted(interrupt: BaseException) -> str:
+    """ "interrupted", naming the signal unless it was Ctrl-C's."""
+    signum = getattr(interrupt, "signum", signal.SIGINT)
+    return "interrupted" if signum == signal.SIGINT else f"interrupted by {signal_name(signum)}"
 
 
 def _reasons(error) -> list[str]:
@@ -58,8 +123,11 @@ def _title(info, length, args, csv_signal, given, refusal=None, rows=0, stride=1
     """The figure's title: model, FMI version, length, how each input was set, a refusal."""
     from .host.run_plot import run_title
 
-    unit = {name: info.variables[name].unit for name in given}
-    inputs = {name: f"= {value:g} {unit[name]}".rstrip() for name, value in given.items()}
+    shown = {
+        name: (value * info.variables[name].factor, info.variables[name].display_unit)
+        for name, value in given.items()
+    }  # in display units, as the panels
+    inputs = {name: f"= {value:.6g} {unit}".rstrip() for name, (value, unit) in shown.items()}
     if csv_signal is not None and len(csv_signal.dtype.names) > 1:
         inputs[", ".join(n for n in csv_signal.dtype.names if n != "time")] = f"from {args.input}"
     steps = f"{length.steps} steps of {length.step:g} s"
@@ -68,7 +136,7 @@ def _title(info, length, args, csv_signal, given, refusal=None, rows=0, stride=1
     else:
         length_text = f"refused after {rows - 1} of {steps} (t = {refusal[0]:.6g} s)"
     if stride > 1:
-        length_text += f", 1 row in {stride} drawn"
+        length_text += f", drawn from each {stride} rows' least and greatest"
     reason = None if refusal is None else f"Refused: {textwrap.shorten(refusal[1], 320)}"
     return run_title(
         info.model_name, info.model_description.fmiVersion, inputs, length_text, reason
@@ -78,7 +146,7 @@ def _title(info, length, args, csv_signal, given, refusal=None, rows=0, stride=1
 def simulate_command(args):
     import warnings
 
-    from .host.csv_run import PLOT_ROWS, StreamedRun, simulate_to_csv
+    from .host.csv_run import StreamedRun, column_units, plot_stride, simulate_to_csv
     from .host.interrupts import SimulationInterrupted
     from .host.run_plot import plot_run
     from .host.simulate import SimulationError, run_times
@@ -98,12 +166,13 @@ def simulate_command(args):
     plot_variables = args.plot_variables or info.columns("output")
     info.check(plot_variables, ("input", "output"), "--plot-variables variable")
     inputs = with_constants(csv_signal, constants) if csv_signal is not None else constants
-    show = not args.no_progress and (args.progress or length.steps >= PROGRESS_MIN_STEPS)
+    # --progress: always; by default a long run's bar, on a terminal only (not into a log).
+    show = True if args.progress else False if args.no_progress else None
     output = Path(args.output)
     plot = Path(args.plot) if args.plot else output.with_suffix(".png")
-    existed = {results.check_writable(p): p.exists() for p in (output, plot)}
-    run = StreamedRun(output, stride=max(1, -(-length.rows // PLOT_ROWS)))
-    step_finished, bars = _progress_callback(length, show)
+    check_plot_format(plot)
+    existed = {results.check_output_path(p): p.exists() for p in (output, plot)}
+    run = StreamedRun(output, plot_stride(length.rows), column_units(info))
     refused = None
     with warnings.catch_warnings(record=True) as caught:
         warnings.simplefilter("always")
@@ -117,26 +186,24 @@ def simulate_command(args):
                 parameters,
                 recorded,
                 run=run,
-                step_finished=step_finished,
+                progress=show,
             )
         except SimulationInterrupted as interrupt:
             print(
-                f"{PROG} simulate: interrupted at t = {interrupt.time:.6g} s of "
+                f"{PROG} simulate: {_interrupted(interrupt)} at t = {interrupt.time:.6g} s of "
                 f"{length.stop_time:.6g} s: no file written",
                 file=sys.stderr,
             )
-            return 130
-        except KeyboardInterrupt:  # after the run: while its last rows were written
+            return exit_status(interrupt)
+        except KeyboardInterrupt as interrupt:  # after the run: while its last rows were written
             print(
-                f"{PROG} simulate: interrupted while writing {output}: no file written",
+                f"{PROG} simulate: {_interrupted(interrupt)} while writing {output}: "
+                "no file written",
                 file=sys.stderr,
             )
-            return 130
+            return exit_status(interrupt)
         except SimulationError as error:
             refused = error
-        finally:
-            for bar in bars:
-                bar.close()
     sys.stderr.write(_warned(caught))
     if refused is not None and run.rows <= 1:  # at most the initial row: no step was taken
         print(
@@ -144,7 +211,7 @@ def simulate_command(args):
             "computed, no CSV or plot written\n  " + "\n  ".join(_reasons(refused)),
             file=sys.stderr,
         )
-        return 1
+        return 2  # a value it cannot start from: the user's mistake, as `build` says it
     sample = run.sample()
     reached = float(sample["time"][-1])
     reason = None if refused is None else (reached, _reasons(refused)[0])
@@ -153,13 +220,13 @@ def simulate_command(args):
     )
     try:
         plot_run(sample, plot_variables, plot, title, info.display)
-    except KeyboardInterrupt:
+    except KeyboardInterrupt as interrupt:
         print(
-            f"{PROG} simulate: interrupted while drawing {plot}: wrote {output} "
+            f"{PROG} simulate: {_interrupted(interrupt)} while drawing {plot}: wrote {output} "
             f"({run.rows} rows), no plot",
             file=sys.stderr,
         )
-        return 130
+        return exit_status(interrupt)
     written = (
         f"{_written(output, existed[output], f'{run.rows} rows')} and "
         f"{_written(plot, existed[plot])}"

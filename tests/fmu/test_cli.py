@@ -63,7 +63,7 @@ def test_simulate_from_an_input_csv(built_fmu, tmp_path):
         "0,10,10,0.1,0.4\n0.5,15,10,0.3,0.4\n"
     )
     out, plot = tmp_path / "csv_run.csv", tmp_path / "plots" / "csv_run.png"
-    run = cardan_joint(
+    run = cardan_joint(  # run in tmp_path: a missing folder inside the working folder is made
         "simulate",
         "--fmu",
         built_fmu,
@@ -78,6 +78,7 @@ def test_simulate_from_an_input_csv(built_fmu, tmp_path):
         "--plot-variables",
         "output_speed",
         "input_torque",
+        cwd=tmp_path,
     )
     assert run.returncode == 0, run.stderr
     rows = results.read_csv(out)

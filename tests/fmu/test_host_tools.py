@@ -85,7 +85,7 @@ def test_a_run_refused_at_the_start_says_so_and_writes_nothing(
     out = tmp_path / "refused.csv"
     args = ("simulate", "--fmu", built("UniversalJoint"), "--output", out)
     run = cardan_joint_here(capsys, *args, "--set", setting)
-    assert run.returncode == 1 and "Traceback" not in run.stderr
+    assert run.returncode == 2 and "Traceback" not in run.stderr  # as `build` for the mistake
     assert "refused the run at its start (t = 0 s)" in run.stderr
     assert reason in run.stderr  # the FMU's own, not FMPy's bare status
     assert not out.exists() and not out.with_suffix(".png").exists()

@@ -146,7 +146,9 @@ def test_ctrl_c_during_a_sweep_keeps_the_finished_cases(fmu_path, tmp_path):
         str(fmu_path),
     ]
     grid = ["--bend-angles", "5", "10", "15", "20", "--speeds", "1000", "2000", "3000"]
-    process = subprocess.Popen([*command, *grid, "--out", str(tmp_path)], stderr=subprocess.PIPE)
+    process = subprocess.Popen(
+        [*command, *grid, "--out", str(tmp_path), "--progress"], stderr=subprocess.PIPE
+    )
     try:
         seen = b""
         while b" 4/48 [" not in seen:  # the progress bar after the first task: cases stored

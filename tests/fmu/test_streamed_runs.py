@@ -11,7 +11,8 @@ from conftest import cardan_joint_here
 
 from cardan_joint import results
 from cardan_joint.host import run_arguments
-from cardan_joint.host.csv_run import simulate_to_csv
+from cardan_joint.host.csv_run import column_units, simulate_to_csv
+from cardan_joint.host.fmu_info import FmuInfo
 from cardan_joint.host.run_arguments import RunTooLargeError
 from cardan_joint.host.simulate import CHUNK_ROWS, RefusalError, flat_columns, simulate
 from cardan_joint.names import UsageError
@@ -73,13 +74,17 @@ def test_a_streamed_run_writes_the_csv_of_the_run_held_in_memory(request, fixtur
     steps = 2 * CHUNK_ROWS + 100  # chunks handed over during the run, and the rest after it
     arguments = {"stop_time": steps * 1e-3, "output_interval": 1e-3, "inputs": {"input_speed": 9.0}}
     held = flat_columns(simulate(fmu, **arguments))
-    results.write_csv(held, tmp_path / "held.csv")
+    units = column_units(FmuInfo.read(fmu))  # the streamed CSV titles each column with its unit
+    results.write_csv(held, tmp_path / "held.csv", units=units)
     run = simulate_to_csv(fmu, tmp_path / "streamed.csv", plot_rows=1000, **arguments)
     assert run.rows == len(held) == steps + 1
     assert (tmp_path / "streamed.csv").read_bytes() == (tmp_path / "held.csv").read_bytes()
     sample = run.sample()
     assert sample["time"][0] == 0.0 and sample["time"][-1] == held["time"][-1]
-    assert len(sample) <= 1002 and np.all(np.isin(sample["time"], held["time"]))
+    assert len(sample) <= 1001 and np.all(np.isin(sample["time"], held["time"]))
+    assert np.all(np.diff(sample["time"]) >= 0)
+    for name in held.dtype.names:  # every peak of the run is in the figure's rows
+        assert (sample[name].min(), sample[name].max()) == (held[name].min(), held[name].max())
 
 
 def test_a_streamed_refused_run_writes_the_rows_up_to_the_refusal(fmu_path, tmp_path):
@@ -159,31 +164,58 @@ def test_the_fmus_warnings_print_one_line_each(capsys, propshaft_fmu_path, tmp_p
     ]
 
 
-def test_an_all_failing_sweep_exits_non_zero_naming_the_cause(capsys, fmu_path, tmp_path):
-    run = cardan_joint_here(
+def _earlier_sweep(folder):
+    """An earlier sweep's files in `folder`: what a refused or failed sweep must keep."""
+    earlier = {folder / "sweep.csv": b"earlier table\n", folder / "sweep.png": b"earlier figure"}
+    for path, content in earlier.items():
+        path.write_bytes(content)
+    return earlier
+
+
+def _serial_sweep(capsys, fmu_path, folder, *args):
+    """`cardan-joint sweep --serial` at 1000 rpm into `folder`, with `args`."""
+    return cardan_joint_here(
         capsys,
         "sweep",
         "--serial",
         "--fmu",
         fmu_path,
-        "--bend-angles",
-        "95",
-        "100",
         "--speeds",
         "1000",
-        "--distributions",
-        "T1",
-        "--revolutions",
-        "1",
-        "--steps-per-revolution",
-        "36",
         "--out",
-        tmp_path,
+        folder,
         "--no-progress",
+        *args,
     )
+
+
+def test_a_value_out_of_the_joints_range_is_refused_before_any_case(capsys, fmu_path, tmp_path):
+    earlier = _earlier_sweep(tmp_path)
+    run = _serial_sweep(capsys, fmu_path, tmp_path, "--bend-angles", "10", "100")
+    assert run.returncode == 2 and "Traceback" not in run.stderr
+    assert "case 100 deg, 1000 rpm, T1 (--bend-angles)" in run.stderr
+    assert "max_bend_angle" in run.stderr and "no case was run" in run.stderr
+    assert "co-simulations" not in run.stdout  # refused before the sweep began
+    assert {p: p.read_bytes() for p in earlier} == earlier
+    assert sorted(p.name for p in tmp_path.iterdir()) == ["sweep.csv", "sweep.png"]
+
+
+def test_a_sweep_whose_every_case_failed_keeps_the_earlier_files(
+    capsys, fmu_path, tmp_path, monkeypatch
+):
+    from cardan_joint.sweep import case
+
+    def failing(*args):
+        raise RuntimeError("the co-simulation broke")
+
+    monkeypatch.setattr(case, "cosimulate", failing)
+    earlier = _earlier_sweep(tmp_path)
+    run = _serial_sweep(capsys, fmu_path, tmp_path, "--bend-angles", "5", "--distributions", "T1")
     assert run.returncode == 1 and "Traceback" not in run.stderr
-    assert "every case failed: 2 failed (95 deg, 1000 rpm, T1; 100 deg, 1000 rpm, T1)" in run.stderr
-    assert "max_bend_angle" in run.stderr
+    assert "every case failed, no table or figure written: 1 failed (5 deg, 1000 rpm, T1)" in (
+        run.stderr
+    )
+    assert {p: p.read_bytes() for p in earlier} == earlier
 
 
 def test_a_sweep_refuses_an_fmu_without_its_variables(capsys, propshaft_fmu_path, tmp_path):
@@ -201,3 +233,11 @@ def test_the_python_sweep_refuses_an_fmu_without_its_variables(propshaft_fmu_pat
     spec = sweep.SweepSpec(bend_angles_deg=(5.0,), input_speeds_rpm=(1000.0,))
     with pytest.raises(UsageError, match=r"\(Propshaft\) lacks what the sweep sets and reads"):
         sweep.run_serial(propshaft_fmu_path, spec, progress=False)
+
+
+def test_a_sweep_into_a_log_draws_no_progress_bar(capsys, fmu_path, tmp_path):
+    args = ("sweep", "--serial", "--fmu", fmu_path, "--speeds", "1000", "--bend-angles", "5")
+    quiet = cardan_joint_here(capsys, *args, "--distributions", "T1", "--out", tmp_path)
+    assert quiet.returncode == 0 and "case/s" not in quiet.stderr  # not a terminal: no bar
+    drawn = cardan_joint_here(capsys, *args, "--out", tmp_path / "again", "--progress")
+    assert drawn.returncode == 0 and "case/s" in drawn.stderr

@@ -111,3 +111,42 @@ def test_propshaft_layout_legend_sits_outside_the_data(monkeypatch, tmp_path):
     example.plot(run, run, 1.79, tmp_path / "propshaft_layout.png")
     assert figures[0].axes[0].get_legend() is not None
     assert not _legend_overlaps(figures[0])
+
+
+@pytest.mark.parametrize(
+    "args, said",
+    [
+        (["examples/motor_load.py", "--stop-time", "-1"], "--stop-time: -1 must be a finite"),
+        (["examples/demo.py", "--stop-time", "nan"], "--stop-time: nan must be a finite"),
+        (["examples/driveline_ssp.py", "--drive", "Nope"], "argument --drive: invalid choice"),
+        (["examples/demo.py", "--fmu", "README.md"], "README.md is not a readable FMU"),
+    ],
+)
+def test_a_bad_argument_ends_in_one_line_and_exit_2(args, said):
+    run = subprocess.run(
+        [sys.executable, *args], capture_output=True, text=True, cwd=ROOT, timeout=120
+    )
+    assert run.returncode == 2, run.stderr
+    assert "Traceback" not in run.stderr and said in run.stderr
+    assert said in run.stderr.splitlines()[-1]
+
+
+@pytest.mark.parametrize(
+    "raised, status, said",
+    [
+        (KeyboardInterrupt(), 130, "interrupted"),
+        (ValueError("unused"), None, None),  # a bug keeps its traceback
+    ],
+)
+def test_an_example_interrupted_says_so_in_one_line(capsys, raised, status, said):
+    run_example = load_example("_support").run_example
+
+    def main():
+        raise raised
+
+    if status is None:
+        with pytest.raises(ValueError):
+            run_example(main)
+        return
+    assert run_example(main) == status
+    assert capsys.readouterr().err.splitlines()[-1].endswith(f": {said}")

@@ -67,3 +67,25 @@ def test_unit_names_say_their_direction():
     # The FMU's display units use the same factors.
     assert dict(table.UNITS["rad/s"].display)["rpm"] == units.RAD_PER_S_TO_RPM
     assert dict(table.UNITS["rad"].display)["deg"] == units.RAD_TO_DEG
+
+
+def test_units_in_the_header_are_written_and_read_with_or_without_them(tmp_path):
+    data = {"time": [0.0, 0.5], "output_speed": [1.0, 2.0], "speed_ratio": [1.0, 1.5]}
+    units = {"time": "s", "output_speed": "rad/s", "speed_ratio": "1"}
+    titled = results.write_csv(data, tmp_path / "titled.csv", units=units)
+    bare = results.write_csv(data, tmp_path / "bare.csv")
+    assert titled.read_text().splitlines()[0] == '"time [s]","output_speed [rad/s]","speed_ratio"'
+    assert bare.read_text().splitlines()[0] == '"time","output_speed","speed_ratio"'
+    for path in (titled, bare):
+        read = results.read_csv(path)
+        assert read.dtype.names == ("time", "output_speed", "speed_ratio")
+        assert read["output_speed"].tolist() == [1.0, 2.0]
+    assert results.read_csv_units(titled)[1] == {"time": "s", "output_speed": "rad/s"}
+    assert results.read_csv_units(bare)[1] == {}
+
+
+def test_a_name_given_twice_with_and_without_a_unit_is_refused(tmp_path):
+    path = tmp_path / "twice.csv"
+    path.write_text("time,x,x [m]\n0,1,2\n")
+    with pytest.raises(results.ResultFileError, match="column 'x' appears twice"):
+        results.read_csv(path)

@@ -131,3 +131,53 @@ def test_a_handler_the_host_installed_is_left_alone():
         assert seen == [1] and not request.requested
     finally:
         signal.signal(signal.SIGINT, previous)
+
+
+@pytest.mark.parametrize("signum", [signal.SIGTERM, signal.SIGHUP])
+def test_sigterm_and_sighup_are_held_like_ctrl_c_and_restored(signum):
+    import os
+
+    from cardan_joint.host.interrupts import Stopped
+
+    assert signal.getsignal(signum) is signal.SIG_DFL
+    with interrupt_between_steps() as request:
+        os.kill(os.getpid(), signum)  # recorded, not the end of the process
+        assert request.signum == signum
+        with pytest.raises(Stopped) as second:  # a second one does not wait
+            os.kill(os.getpid(), signum)
+        assert second.value.signum == signum
+    assert signal.getsignal(signum) is signal.SIG_DFL
+
+
+def test_an_instance_holds_a_signal_to_the_end_of_its_step_only():
+    import os
+
+    from cardan_joint.host.interrupts import STEP_INTERRUPTS
+
+    STEP_INTERRUPTS.acquire()
+    STEP_INTERRUPTS.acquire()  # two instances open
+    try:
+        held = STEP_INTERRUPTS.request
+        with pytest.raises(KeyboardInterrupt):  # between steps: at once
+            os.kill(os.getpid(), signal.SIGINT)
+        held.holding = True  # in a step
+        os.kill(os.getpid(), signal.SIGINT)
+        held.holding = False
+        with pytest.raises(KeyboardInterrupt):  # after it
+            held.raise_requested()
+        held.raise_requested()  # once
+        STEP_INTERRUPTS.release()
+        assert signal.getsignal(signal.SIGINT) is not signal.default_int_handler
+    finally:
+        STEP_INTERRUPTS.release()
+    assert signal.getsignal(signal.SIGINT) is signal.default_int_handler
+    assert signal.getsignal(signal.SIGTERM) is signal.SIG_DFL
+
+
+def test_the_command_prints_its_version(capsys):
+    from cardan_joint import __version__, cli
+
+    with pytest.raises(SystemExit) as exit:
+        cli.main(["--version"])
+    assert exit.value.code == 0
+    assert capsys.readouterr().out == f"cardan-joint {__version__}\n"

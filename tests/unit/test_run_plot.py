@@ -28,7 +28,49 @@ def _result(rows=200):
 
 def test_outputs_are_grouped_by_unit_and_magnitude():
     groups = run_plot.panels(_result(), list(UNITS), UNITS.__getitem__)
-    assert groups == [["angle", "zero"], ["error"], ["speed"], ["ratio", "noise"]]
+    # A ratio and rounding noise share a unit ("1") but are not one quantity.
+    assert groups == [["angle", "zero"], ["error"], ["speed"], ["ratio"], ["noise"]]
+
+
+def test_unitless_variables_share_a_panel_by_family_only():
+    names = ["speed_ratio", "quaternion_0", "quaternion_1", "life_consumed"]
+    rows = 50
+    data = np.zeros(rows, dtype=[("time", float)] + [(n, float) for n in names])
+    for k, name in enumerate(names):
+        data[name] = np.sin(np.linspace(0, 3, rows) + k)
+    groups = run_plot.panels(data, names, lambda name: "1")
+    assert groups == [["speed_ratio"], ["quaternion_0", "quaternion_1"], ["life_consumed"]]
+    assert run_plot.axis_label(groups[1], "1") == "quaternion_0..1 [1]"
+    assert run_plot.axis_label(["output_speed"], "rpm") == "output_speed [rpm]"
+
+
+def test_a_near_constant_is_called_by_its_range_not_zero(monkeypatch, tmp_path):
+    figures = []
+    monkeypatch.setattr(run_plot, "save_figure", lambda fig, path, dpi: figures.append(fig))
+    data = _result()
+    data["noise"] = np.linspace(0.0, 5.6e-13, len(data))  # a life fraction, rising
+    run_plot.plot_run(data, ["noise", "zero"], tmp_path / "x.png", "title", lambda n: (1.0, "1"))
+    texts = [
+        t.get_text() for ax in figures[0].axes if ax.lines for t in ax.get_legend().get_texts()
+    ]
+    assert texts == ["noise from 0 to 5.6e-13 (flat at this scale)", "zero = 0 (constant)"]
+
+
+def test_a_long_run_is_drawn_as_its_envelope_per_pixel_column(monkeypatch, tmp_path):
+    figures = []
+    monkeypatch.setattr(run_plot, "save_figure", lambda fig, path, dpi: figures.append(fig))
+    short, long = _result(200), _result(20_000)
+    for data in (short, long):
+        run_plot.plot_run(data, ["error"], tmp_path / "x.png", "t", lambda n: (1.0, "deg"))
+    (drawn,), (shaded,) = ([a for a in fig.axes if a.has_data()] for fig in figures)
+    assert len(drawn.lines) == 1 and not drawn.collections  # a line through every row
+    assert not shaded.lines and len(shaded.collections) == 1  # the envelope
+    assert "least to greatest value in each pixel column" in figures[1]._suptitle.get_text()
+    time, low, high = run_plot.envelope(long["time"], long["error"], 100)
+    assert len(time) == 100 and np.all(low <= high)
+    assert low.min() == long["error"].min() and high.max() == long["error"].max()
+    column = (long["time"] >= time[3]) & (long["time"] < time[4])
+    assert (low[3], high[3]) == (long["error"][column].min(), long["error"][column].max())
 
 
 def test_rounding_noise_is_a_constant_and_reads_as_zero():
@@ -46,7 +88,9 @@ def test_a_panel_of_constants_is_centred_on_them_not_on_noise(monkeypatch, tmp_p
     (ax,) = [a for a in figures[0].axes if a.get_visible() and a.lines]
     low, high = ax.get_ylim()
     assert low < 0 < high and high - low > 1.0  # not a 1e-16 wide axis
-    assert [t.get_text() for t in ax.get_legend().get_texts()] == ["noise = 0 (constant)"]
+    assert [t.get_text() for t in ax.get_legend().get_texts()] == [
+        "noise from -3.3e-16 to 3.3e-16 (flat at this scale)"
+    ]
 
 
 def test_every_legend_sits_beside_its_panel(monkeypatch, tmp_path):
@@ -58,7 +102,7 @@ def test_every_legend_sits_beside_its_panel(monkeypatch, tmp_path):
     fig.canvas.draw()
     renderer = fig.canvas.get_renderer()
     used = [ax for ax in fig.axes if ax.lines]
-    assert len(used) == 4
+    assert len(used) == 5
     for ax in used:
         legend = ax.get_legend().get_window_extent(renderer)
         assert legend.x0 >= ax.get_window_extent(renderer).x1  # right of the data, never on it

@@ -24,6 +24,7 @@ from pathlib import Path
 from .. import DEFAULT_MODEL
 from ..models import MODELS_DIR, Model, StartValueError
 from ..models import model as find_model
+from ..names import UsageError
 from .archive import ArchiveError, normalise
 
 PACKAGE_DIR = Path(__file__).resolve().parent.parent
@@ -51,6 +52,11 @@ FMI_VERSIONS = (2, 3)
 
 class BuildError(RuntimeError):
     pass
+
+
+class BuildUsageError(BuildError, UsageError):
+    """A build asked for something it cannot build (an unknown model or start
+    value, a value out of range, a bad name): the user's mistake, exit 2."""
 
 
 def _python_files(path: Path) -> list:
@@ -121,7 +127,7 @@ def _check_start_values(spec: Model, start_values: dict, settings: dict) -> dict
     try:
         spec.check_start_values(values, settings)
     except StartValueError as error:
-        raise BuildError(str(error)) from None
+        raise BuildUsageError(str(error)) from None
     return values
 
 
@@ -214,18 +220,18 @@ def build(
     try:
         spec = find_model(model)
     except StartValueError as error:
-        raise BuildError(str(error)) from None
+        raise BuildUsageError(str(error)) from None
     settings = {**spec.default_settings, **(settings or {})}
     model_name = model_name or spec.default_name(settings)
     if not re.fullmatch(r"[A-Za-z_][A-Za-z0-9_]*", model_name):
-        raise BuildError(f"model name {model_name!r} must be a Python identifier")
+        raise BuildUsageError(f"model name {model_name!r} must be a Python identifier")
     if fmi_version not in spec.fmi_versions:
-        raise BuildError(
+        raise BuildUsageError(
             f"{model} is built for FMI {', '.join(map(str, spec.fmi_versions))} only, "
             f"not FMI {fmi_version}"
         )
     if fmi3_arrays and fmi_version != 3:
-        raise BuildError(f"FMI 3 arrays need FMI 3, not FMI {fmi_version}")
+        raise BuildUsageError(f"FMI 3 arrays need FMI 3, not FMI {fmi_version}")
     script_template = SCRIPTS[fmi_version]
     start_values = _check_start_values(spec, start_values or {}, settings)
     dest = Path(dest).resolve() / ("fmi3" if fmi_version == 3 else "")

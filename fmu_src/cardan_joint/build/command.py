@@ -30,6 +30,25 @@ def _add_setting(parser, setting: str, specs) -> None:
     )
 
 
+def _model_key(text: str) -> str:
+    """A model's name (its key) from its name or its folder's name (left as given if neither)."""
+    models = discover()
+    return next((key for key, spec in models.items() if text in (key, spec.folder)), text)
+
+
+def _vectors(fmu: Path) -> bool | None:
+    """Whether the FMU at `fmu` holds FMI 3 arrays (None: no readable FMU there)."""
+    import zipfile
+
+    from fmpy import read_model_description
+
+    try:
+        variables = read_model_description(str(fmu)).modelVariables
+    except (zipfile.BadZipFile, KeyError, OSError, ValueError):  # none there, or not an FMU
+        return None
+    return any(getattr(v, "dimensions", None) for v in variables)
+
+
 def main(argv=None, prog=None) -> int:
     parser = argparse.ArgumentParser(
         prog=prog,
@@ -39,8 +58,10 @@ def main(argv=None, prog=None) -> int:
     parser.add_argument(
         "--model",
         default=DEFAULT_MODEL,
+        type=_model_key,
         choices=sorted(discover()),
-        help="which model to build (default: %(default)s)",
+        help="which model to build, by its name or its folder's under models/ "
+        "(default: %(default)s)",
     )
     parser.add_argument(
         "--fmi-version",
@@ -54,7 +75,9 @@ def main(argv=None, prog=None) -> int:
         action="store_true",
         help="FMI 3 only: a model's vectors (a table's array rows, e.g. a quaternion) "
         "as Float64 arrays, for hosts that read whole arrays; the default, "
-        "scalars named as in FMI 2.0, every FMI 3 host reads (docs/fmi3.md)",
+        "scalars named as in FMI 2.0, every FMI 3 host reads (docs/fmi3.md). Written "
+        "to the same file as the scalar build (the command says it replaced it): "
+        "--name keeps both",
     )
     parser.add_argument("--dest", default="dist", help="output folder (default: dist)")
     parser.add_argument(
@@ -112,6 +135,9 @@ def main(argv=None, prog=None) -> int:
         start_values = parse_assignments(args.set)
     except UsageError as error:
         parser.error(str(error))
+    target = Path(args.dest, "fmi3" if args.fmi_version == 3 else "")
+    target /= f"{args.name or spec.default_name({**spec.default_settings, **settings})}.fmu"
+    earlier = _vectors(target)
     try:
         fmu = build(
             args.dest,
@@ -122,15 +148,22 @@ def main(argv=None, prog=None) -> int:
             fmi_version=args.fmi_version,
             fmi3_arrays=args.fmi3_arrays,
         )
-    except BuildError as error:
-        print(f"build_fmu: {error}", file=sys.stderr)
-        return 1
+    except BuildError as error:  # the user's mistake exits 2, as `cardan-joint simulate`'s
+        print(f"{parser.prog}: {error}", file=sys.stderr)
+        return 2 if isinstance(error, UsageError) else 1
     except OSError as error:  # a folder that cannot be written: named, no traceback
         print(
-            f"build_fmu: {error.filename or args.dest}: {error.strerror or error}", file=sys.stderr
+            f"{parser.prog}: {error.filename or args.dest}: {error.strerror or error}",
+            file=sys.stderr,
         )
         return 1
     print(f"built and validated {fmu}")
+    if earlier is not None and earlier != args.fmi3_arrays:
+        kinds = ("scalars", "arrays") if args.fmi3_arrays else ("arrays", "scalars")
+        print(
+            f"replaced the earlier {fmu.name} of FMI 3 {kinds[0]} with FMI 3 {kinds[1]} "
+            "(--name gives a build a file of its own)"
+        )
     if args.cross_check:
         from .cross_check import write_cross_check
 

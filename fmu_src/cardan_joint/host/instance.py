@@ -4,7 +4,9 @@ The one wrapper around FMPy's slave classes that tests, examples and benchmarks
 share: initialisation with start values, set/get by name, stepping (raising
 the FMU's own reason, or returning the status), FMU states, an optional log
 sink, terminate/free on leaving `with`. It knows no model: names come from
-the FMU's model description.
+the FMU's model description. Ctrl-C (SIGTERM, SIGHUP) during a step raises
+KeyboardInterrupt when the step is over (`interrupts.STEP_INTERRUPTS`), never
+a refusal.
 
     with FmuInstance.open("dist/<Model>.fmu", start_values={...}) as model:
         model.step(1e-3)
@@ -16,13 +18,14 @@ the FMU's model description.
 
 from __future__ import annotations
 
-import shutil
 from collections.abc import Callable, Iterable
 from pathlib import Path
 from typing import Any
 
 from ..names import check_known
-from .fmu_info import FmuInfo, read_model_description
+from .fmu_info import FmuInfo
+from .interrupts import STEP_INTERRUPTS
+from .unpacked import ExtractedFMU
 
 Message = tuple[int, str, str]  # (FMI status, category, text)
 # FMPy's opaque handle of a saved FMU state (fmi2FMUstate / fmi3FMUState pointer).
@@ -144,6 +147,10 @@ class FmuInstance:
             self.callbacks = logging_callbacks(sink)
             self.fmu.instantiate(callbacks=self.callbacks, loggingOn=True)
         self._cleanup.append(self.fmu.freeInstance)
+        # A stop signal during a step is raised after it, not inside the FMU's code
+        # (where the runtime could only call the step failed).
+        STEP_INTERRUPTS.acquire()
+        self._holding = True
         try:
             if self.fmi3:
                 self.fmu.enterInitializationMode(startTime=start_time)
@@ -224,9 +231,13 @@ class FmuInstance:
         from fmpy.fmi1 import FMICallException
 
         self.recent.clear()
+        held = STEP_INTERRUPTS.request
+        held.holding = True
         try:
             self.fmu.doStep(currentCommunicationPoint=self.time, communicationStepSize=step_size)
         except FMICallException as refused:
+            held.holding = False
+            held.raise_requested()  # a second Ctrl-C, raised inside the step, failed it
             reasons = [text for status, _, text in self.recent if status >= 2] or [
                 f"(the FMU gave no reason; {refused})"
             ]
@@ -235,7 +246,10 @@ class FmuInstance:
                 + "; ".join(reasons),
                 refused.status,
             ) from None
+        finally:
+            held.holding = False
         self.time += step_size
+        held.raise_requested()
 
     def try_step(self, step_size: float) -> int:
         """Step; return the FMI status (a refused step leaves the time where it was)."""
@@ -266,34 +280,17 @@ class FmuInstance:
 
     def close(self) -> None:
         """Terminate and free the instance (and remove what `open` unzipped); once."""
+        try:
+            self._clean_up()
+        finally:
+            if getattr(self, "_holding", False):
+                self._holding = False
+                STEP_INTERRUPTS.release()
+
+    def _clean_up(self) -> None:
         if self._cleanup:
             action = self._cleanup.pop()
             try:
                 action()
             finally:  # the rest runs even when one step fails
-                self.close()
-
-
-class ExtractedFMU:
-    """An FMU unzipped once, for any number of instances; a directory is used as is."""
-
-    def __init__(self, fmu: str | Path) -> None:
-        from fmpy import extract
-
-        self.model_description = read_model_description(fmu)
-        self._owned = not Path(fmu).is_dir()
-        self.directory = extract(str(fmu)) if self._owned else str(fmu)
-
-    def instance(self, name: str = "instance", **arguments: Any) -> FmuInstance:
-        return FmuInstance(self.model_description, self.directory, name=name, **arguments)
-
-    def close(self) -> None:
-        if self._owned:
-            shutil.rmtree(self.directory, ignore_errors=True)
-            self._owned = False
-
-    def __enter__(self) -> ExtractedFMU:
-        return self
-
-    def __exit__(self, *exc) -> None:
-        self.close()
+                self._clean_up()

@@ -1,6 +1,9 @@
 """The inputs of a run: input CSVs, `--set` pairs split into inputs and
 parameters, and the one input signal for FMPy, every mistake a `UsageError`
-naming it. Names come from the FMU (`FmuInfo`), so this serves every model.
+naming it. Names and units come from the FMU (`FmuInfo`), so this serves
+every model: a value is in the variable's SI unit, or in a unit written after
+it (`--set bend_angle=20deg`, a column titled `input_speed [rpm]`) that is the
+SI unit or one of the display units the FMU declares.
 
 FMPy prints `Warning: missing input for variable ...` for every input without
 a signal. An input nobody sets is not undefined for these FMUs: it holds its
@@ -9,10 +12,13 @@ over each step. `complete_inputs` gives each missing input exactly that
 signal, so completing the inputs changes nothing but the noise.
 """
 
+import re
+from typing import Any
+
 import numpy as np
 
 from .. import results
-from ..names import UsageError, parse_assignments
+from ..names import UsageError
 from .fmu_info import FmuInfo
 
 # Inputs the FMU carries along a rate when no one sets them (see "Step semantics").
@@ -23,10 +29,60 @@ RATES = {
 }
 
 
+# A value with an optional unit after it: "0.3", "20deg", "1500 rpm", "-1e3rad/s2".
+_QUANTITY = re.compile(
+    r"\s*([-+]?(?:(?:\d+\.?\d*|\.\d+)(?:[eE][-+]?\d+)?|inf|nan))\s*(.*?)\s*$", re.IGNORECASE
+)
+
+
+def units_of(info: FmuInfo, name: str) -> dict[str, tuple[float, float]]:
+    """{unit: (factor, offset)} a value of `name` may be given in (display = SI *
+    factor + offset): its SI unit and the display units the FMU declares for it."""
+    unit = info.variables[name].unit
+    units = {unit: (1.0, 0.0)} if unit else {}
+    for definition in info.model_description.unitDefinitions:
+        if definition.name == unit:
+            units.update(
+                (d.name, (float(d.factor), float(d.offset or 0.0))) for d in definition.displayUnits
+            )
+    return units
+
+
+def in_si(info: FmuInfo, name: str, value: Any, unit: str, where: str) -> Any:
+    """`value` (a number or an array) of `name` given in `unit` (SI if empty)
+    as the FMU's SI value; UsageError naming the units it takes."""
+    if not unit:
+        return value
+    units = units_of(info, name)
+    if unit not in units:
+        taken = " or ".join(units) or "no unit (a plain number)"
+        raise UsageError(f"{where}: {name} takes {taken}, not {unit!r}")
+    factor, offset = units[unit]
+    return (value - offset) / factor
+
+
+def parse_set(pairs, info: FmuInfo) -> dict[str, float]:
+    """--set NAME=VALUE[UNIT] ... -> {NAME: SI value}; UNIT (`20deg`, `1500rpm`)
+    is the variable's SI unit or one of its display units, none meaning SI."""
+    texts = {}
+    for pair in pairs:
+        name, sep, text = pair.partition("=")
+        if not sep or not name.strip():
+            raise UsageError(f"--set takes NAME=VALUE, got {pair!r}")
+        texts[name.strip()] = (pair, text)
+    info.check(texts, ("input", "parameter"), "input or parameter")
+    values = {}
+    for name, (pair, text) in texts.items():
+        match = _QUANTITY.fullmatch(text)
+        if match is None:
+            raise UsageError(f"--set {pair}: {text.strip()!r} is not a number (with a unit)")
+        values[name] = in_si(info, name, float(match[1]), match[2], f"--set {pair}")
+    return values
+
+
 def split_assignments(pairs, info: FmuInfo) -> tuple[dict[str, float], dict[str, float]]:
-    """--set NAME=VALUE ... -> (constant inputs, parameter start values)."""
-    values = parse_assignments(pairs)
-    info.check(values, ("input", "parameter"), "input or parameter")
+    """--set NAME=VALUE[UNIT] ... -> (constant inputs, parameter start values), in SI."""
+    values = parse_set(pairs, info)
     inputs = {n: v for n, v in values.items() if info.variables[n].causality == "input"}
     return inputs, {n: v for n, v in values.items() if n not in inputs}
 
@@ -34,7 +90,7 @@ def split_assignments(pairs, info: FmuInfo) -> tuple[dict[str, float], dict[str,
 def read_input_csv(path, info: FmuInfo):
     """A CSV with a `time` column and input-name columns -> FMPy's structured array."""
     try:
-        signal = results.read_csv(path)
+        signal, units = results.read_csv_units(path)
     except results.ResultFileError as error:
         raise UsageError(f"input file {error}") from None
     header = list(signal.dtype.names or ())
@@ -54,6 +110,12 @@ def read_input_csv(path, info: FmuInfo):
     for name in header:
         if not np.all(np.isfinite(signal[name])):
             raise UsageError(f"{path}, column {name!r}: every value must be a finite number")
+    for name, unit in units.items():
+        if name == "time":
+            if unit != "s":
+                raise UsageError(f"{path}, column 'time': time is given in s, not {unit!r}")
+            continue
+        signal[name] = in_si(info, name, signal[name], unit, f"{path}, column {name!r}")
     times = signal["time"]
     if np.any(np.diff(times) < 0):
         raise UsageError(f"{path}: the time column must be non-decreasing")

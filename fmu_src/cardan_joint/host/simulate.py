@@ -13,8 +13,9 @@ a misspelt input, start value or output is refused naming the nearest valid ones
 The stop time and output interval are checked (`run_arguments`) before the
 first step, the recorded rows against the memory available, or, given
 `rows_to`, handed over in chunks as the run goes (`simulate_to_csv` streams a
-long run to a file). Ctrl-C ends the run between two steps and raises
-`SimulationInterrupted` (a KeyboardInterrupt) naming the time reached.
+long run to a file). Ctrl-C (SIGTERM, SIGHUP alike) ends the run between two
+steps and raises `SimulationInterrupted` (a KeyboardInterrupt) naming the time
+reached; the FMU unzipped for the run is removed however it ends.
 """
 
 import warnings
@@ -28,7 +29,9 @@ import numpy as np
 from .. import DEFAULT_MODEL
 from .fmu_info import FmuInfo, array_columns
 from .interrupts import SimulationInterrupted, interrupt_between_steps
+from .progress import StepProgress
 from .run_arguments import RunLength, check_memory, run_length
+from .unpacked import ExtractedFMU
 
 if TYPE_CHECKING:  # imported in first_refusal at run time, where it is needed
     from ..framework.refusal import Refusal
@@ -142,6 +145,7 @@ def simulate(
     start_values: Mapping[str, float] | None = None,
     output: Sequence[str] | None = None,
     rows_to: Callable[[np.ndarray], None] | None = None,
+    progress: bool | None = None,
     **fmpy_options: Any,
 ) -> np.ndarray:
     """Co-simulate the FMU; return FMPy's structured result array.
@@ -151,7 +155,8 @@ def simulate(
     Raises SimulationError if the FMU refused a step or logged an error: a
     RefusalError, with the refusal's fields, when the FMU said why. A name
     the FMU does not have raises UnknownNameError (a KeyError) naming the
-    nearest valid ones; a missing FMU, MissingFMUError naming its build command.
+    nearest valid ones; a missing FMU, MissingFMUError naming its build command;
+    a damaged one (not a zip, no binary for this platform), BadFMUError naming it.
     `fmu` may be an `FmuInfo` already read (its description is not read again).
     A stop time or output interval that is not a finite number > 0 (the interval
     at most the stop time) raises UsageError, a result that would not fit in the
@@ -160,6 +165,7 @@ def simulate(
     (FMPy's structured rows), the last ones when the run ends (refused too); the
     result returned, or the error's `result`, then holds no rows. Ctrl-C (main
     thread) ends the run after the step in progress: SimulationInterrupted.
+    `progress`: a progress bar (`host.progress`; None: a long run's, on a terminal).
     """
     from fmpy import simulate_fmu
     from fmpy.fmi1 import FMICallException
@@ -203,18 +209,25 @@ def simulate(
     recorders: list[Any] = []  # FMPy's Recorder (its class is private)
     step_finished = fmpy_options.pop("step_finished", None)
 
+    bar = StepProgress(length.steps, length.step, progress)
+
     def keep_recorder(time, recorder):
         recorders[:1] = [recorder]
+        bar.update(time)
         if rows_to is not None and len(recorder.rows) >= CHUNK_ROWS + KEPT_ROWS:
             _hand_over(recorder, rows_to, KEPT_ROWS)
         if step_finished is not None and not step_finished(time, recorder):
             return False
         return not interrupt.requested  # False: FMPy ends the run and terminates the FMU
 
-    with interrupt_between_steps() as interrupt:
+    # Unzipped into a folder of ours: FMPy removes its own only after a run that ended well.
+    with (
+        interrupt_between_steps() as interrupt,
+        ExtractedFMU(info.path, description) as unzipped,
+    ):
         try:
             result = simulate_fmu(
-                str(info.path),
+                unzipped.directory,
                 stop_time=stop_time,
                 output_interval=output_interval,
                 input=inputs,
@@ -231,9 +244,13 @@ def simulate(
             if not (messages or interrupt.requested):  # no reason: FMPy's error is all there is
                 raise
             result = recorders[0].result() if recorders else np.zeros(0, dtype=[("time", float)])
+        finally:
+            bar.close()
     reached = float(result["time"][-1]) if len(result) else float("nan")
     if interrupt.requested:
-        raise SimulationInterrupted(reached if len(result) else 0.0, _rest(result, rows_to))
+        raise SimulationInterrupted(
+            reached if len(result) else 0.0, _rest(result, rows_to), interrupt.signum
+        )
     problems = [m for m in messages if m[0] in ("discard", "error", "fatal")]
     if problems or not reached >= stop_time - 1e-9 * max(1.0, abs(stop_time)):
         detail = (

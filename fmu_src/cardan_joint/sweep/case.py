@@ -6,10 +6,10 @@ a shared file system) and import this package.
 """
 
 import math
-import tempfile
 from dataclasses import asdict
 from pathlib import Path
 
+from .. import DEFAULT_MODEL
 from ..units import DEG_TO_RAD, RPM_TO_RAD_PER_S
 from .spec import FAILED, OK, PEAKS, Case, SweepSpec
 
@@ -35,9 +35,10 @@ _DRIVEN = (
 )
 
 
-def check_fmu(fmu, spec: SweepSpec) -> None:
-    """UsageError (before any case) unless the FMU has every variable the sweep
-    sets and reads; MissingFMUError or BadFMUError for a missing or unreadable file."""
+def check_fmu(fmu, spec: SweepSpec):
+    """The FMU's FmuInfo; UsageError (before any case) unless the FMU has every
+    variable the sweep sets and reads; MissingFMUError or BadFMUError for a
+    missing or unreadable file."""
     from ..host.fmu_info import FmuInfo
     from ..names import UsageError
 
@@ -58,6 +59,60 @@ def check_fmu(fmu, spec: SweepSpec) -> None:
             f"{fmu} ({info.model_name}) lacks what the sweep sets and reads: {lacking}; "
             "the sweep takes a UniversalJoint FMU (python build_fmu.py)"
         )
+    return info
+
+
+# What each case setting is called on the command line, for a refusal's message.
+_OPTIONS = {
+    "bend_angle": "--bend-angles",
+    "input_speed": "--speeds",
+    "load_torque": "--load-torque",
+    "max_bend_angle": "--max-bend-angle",
+    **{f"crosspiece_inertia_{k}": "--i0, --distributions" for k in (1, 2, 3)},
+}
+
+
+def check_ranges(parameters: dict, spec: SweepSpec) -> None:
+    """UsageError, before any case, naming the first case the joint's own checks
+    refuse (the FMU's parameters `parameters`, the case's inputs and inertias):
+    the checks the FMU makes at its first step, made once here for every case.
+    The command makes them; in Python a case the FMU refuses is a failed row."""
+    from ..models import StartValueError, discover
+    from ..names import UsageError
+
+    joint = discover()[DEFAULT_MODEL]
+    for case in spec.cases():
+        values = {**parameters, **_start_values(spec, case), **_inputs(spec, case)}
+        try:
+            joint.check_start_values(values, joint.default_settings)
+        except StartValueError as error:
+            named = [o for n, o in _OPTIONS.items() if f" {n} = " in f" {error}"]
+            option = f" ({named[0]})" if named else ""
+            raise UsageError(
+                f"case {case.bend_angle_deg:g} deg, {case.input_speed_rpm:g} rpm, "
+                f"{case.inertia_distribution}{option}: {error}; no case was run"
+            ) from None
+
+
+def _start_values(spec: SweepSpec, case: Case) -> dict:
+    values = {
+        f"crosspiece_inertia_{k}": value
+        for k, value in enumerate(spec.inertias(case.inertia_distribution), 1)
+    }
+    if spec.max_bend_angle_deg is not None:
+        values["max_bend_angle"] = spec.max_bend_angle_deg * DEG_TO_RAD
+    return values
+
+
+def _inputs(spec: SweepSpec, case: Case) -> dict:
+    return {
+        "input_speed": case.input_speed_rpm * RPM_TO_RAD_PER_S,
+        "input_acceleration": 0.0,
+        "bend_angle": case.bend_angle_deg * DEG_TO_RAD,
+        "bend_angle_rate": 0.0,
+        "bend_angle_acceleration": 0.0,
+        "load_torque": spec.load_torque,
+    }
 
 
 def _failure_message(error):
@@ -85,25 +140,13 @@ def run_case(fmu_dir, spec: SweepSpec, case: Case) -> dict:
     """Co-simulate one case; return its table row (never raises for a bad case)."""
     import numpy as np
 
-    inertias = {
-        f"crosspiece_inertia_{k}": value
-        for k, value in enumerate(spec.inertias(case.inertia_distribution), 1)
-    }
+    start_values = _start_values(spec, case)
+    inertias = {n: v for n, v in start_values.items() if n.startswith("crosspiece_inertia_")}
     row = {**asdict(case), **inertias, "load_torque": spec.load_torque, "status": OK, "message": ""}
-    speed = case.input_speed_rpm * RPM_TO_RAD_PER_S
+    inputs = _inputs(spec, case)
+    speed = inputs["input_speed"]
     try:
         step = 2 * math.pi / speed / spec.steps_per_revolution
-        start_values = dict(inertias)
-        if spec.max_bend_angle_deg is not None:
-            start_values["max_bend_angle"] = spec.max_bend_angle_deg * DEG_TO_RAD
-        inputs = {
-            "input_speed": speed,
-            "input_acceleration": 0.0,
-            "bend_angle": case.bend_angle_deg * DEG_TO_RAD,
-            "bend_angle_rate": 0.0,
-            "bend_angle_acceleration": 0.0,
-            "load_torque": spec.load_torque,
-        }
         result = cosimulate(
             fmu_dir,
             spec.revolutions * spec.steps_per_revolution * step,
@@ -140,11 +183,10 @@ def run_case(fmu_dir, spec: SweepSpec, case: Case) -> dict:
 
 def run_task(fmu: str, spec: SweepSpec, cases) -> list:
     """Run a task's cases on one unzipped copy of the FMU (runs on a worker)."""
-    from fmpy import extract
+    from ..host.unpacked import ExtractedFMU
 
     if not Path(fmu).is_file():
         message = f"FMU {fmu} not found on this worker: it must be reachable at the same path"
         return [{**asdict(case), "status": FAILED, "message": message} for case in cases]
-    with tempfile.TemporaryDirectory(prefix="cardan_sweep_") as directory:
-        extract(str(fmu), unzipdir=directory)
-        return [run_case(directory, spec, case) for case in cases]
+    with ExtractedFMU(fmu) as unzipped:
+        return [run_case(unzipped.directory, spec, case) for case in cases]

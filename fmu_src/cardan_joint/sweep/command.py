@@ -111,7 +111,11 @@ def add_arguments(parser, default_name="design_sweep"):
         help="discard the cases of an earlier run of this sweep (default: "
         "resume it, computing only the missing cases)",
     )
-    parser.add_argument("--no-progress", action="store_true", help="no progress bar")
+    progress = parser.add_mutually_exclusive_group()
+    progress.add_argument(
+        "--progress", action="store_true", help="a progress bar also into a log or a pipe"
+    )
+    progress.add_argument("--no-progress", action="store_true", help="no progress bar")
 
 
 def spec_from_arguments(args) -> SweepSpec:
@@ -206,7 +210,7 @@ def _summary(table) -> list[str]:
 def _checked(args):
     """The sweep's settings, every argument checked before the first case."""
     from ..host.fmu_info import MissingFMUError
-    from .case import check_fmu
+    from .case import check_fmu, check_ranges
 
     spec = spec_from_arguments(args)
     local = not (args.serial or args.scheduler)
@@ -215,17 +219,20 @@ def _checked(args):
     if args.compare and args.repeat < 1:
         raise UsageError(f"--repeat {args.repeat}: give at least 1 timing repetition")
     try:
-        check_fmu(Path(args.fmu), spec)
+        info = check_fmu(Path(args.fmu), spec)
     except MissingFMUError as error:
         raise UsageError(str(error)) from None
+    check_ranges(info.starts("parameter"), spec)  # every case, before the first one runs
     return spec
 
 
 def main(argv=None, prog=None, default_name="design_sweep") -> int:
     parser = argparse.ArgumentParser(
         prog=prog,
-        description="Design sweep of the Cardan joint "
-        "FMU over bend angle x input speed x inertia distribution.",
+        description="Design sweep of the Cardan joint FMU over bend angle x input speed x "
+        "inertia distribution. Units: angles in deg, speeds in rpm, I0 in kg.m2, torque in "
+        "N.m, as each option says; the table's columns name theirs (bend_angle_deg, "
+        "input_speed_rpm; peaks in SI).",
     )
     add_arguments(parser, default_name)
     args = parser.parse_args(argv)
@@ -242,7 +249,8 @@ def main(argv=None, prog=None, default_name="design_sweep") -> int:
         except MissingExtra as error:
             print(f"{name}: {error}", file=sys.stderr)
             return 1
-    progress = not args.no_progress
+    # A bar on a terminal only (a log never fills with bars), unless asked.
+    progress = True if args.progress else False if args.no_progress else None
     print(
         f"{len(spec.cases())} co-simulations in {len(spec.tasks())} tasks, "
         f"{spec.revolutions * spec.steps_per_revolution} steps each"
@@ -267,15 +275,19 @@ def main(argv=None, prog=None, default_name="design_sweep") -> int:
                 file=sys.stderr,
             )
             return 130
+    summary = _summary(table)
+    print("\n".join(summary))
+    if len(table) and (table["status"] == FAILED).all():  # nothing to show: earlier files stay
+        print(
+            f"{name}: every case failed, no table or figure written: {summary[1].strip()}",
+            file=sys.stderr,
+        )
+        return 1
     stem, figure = out / args.name, out / f"{args.name}.png"
     existed = {
         p for p in (stem.with_suffix(".csv"), stem.with_suffix(".parquet"), figure) if p.exists()
     }
-    written = write_table(table, stem) + [plot_heatmaps(table, spec, figure)]
-    summary = _summary(table)
-    print("\n".join(summary))
+    drawn = plot_heatmaps(table, spec, figure)  # first: a figure that fails replaces nothing
+    written = write_table(table, stem) + [drawn]
     print("wrote " + ", ".join(f"{p}{' (replaced)' if p in existed else ''}" for p in written))
-    if len(table) and (table["status"] == FAILED).all():
-        print(f"{name}: every case failed: {summary[1].strip()}", file=sys.stderr)
-        return 1
     return 0

@@ -38,7 +38,7 @@ class _Collector:
             total=sum(len(t) for t in self.pending),
             desc=label,
             unit="case",
-            disable=not progress,
+            disable=None if progress is None else not progress,  # None: a terminal only
             leave=True,
         )
 
@@ -60,12 +60,13 @@ class _Collector:
 def run_serial(
     fmu: PathLike,
     spec: SweepSpec,
-    progress: bool = True,
+    progress: bool | None = True,
     store: CaseStore | None = None,
     on_rows: Callable[[list], None] | None = None,
 ) -> "pandas.DataFrame":
     """Every task (every missing one, with a store) in this process, in order;
-    returns the table (a DataFrame). `on_rows(rows)` is called after each task.
+    returns the table (a DataFrame). `on_rows(rows)` is called after each task;
+    `progress`: a bar (None: on a terminal only, never into a log).
     An FMU without the variables the sweep drives is refused before any case."""
     check_fmu(fmu, spec)
     path = str(Path(fmu).resolve())
@@ -82,7 +83,7 @@ def run_dask(
     fmu: PathLike,
     spec: SweepSpec,
     client,
-    progress: bool = True,
+    progress: bool | None = True,
     store: CaseStore | None = None,
     on_rows: Callable[[list], None] | None = None,
 ) -> "pandas.DataFrame":
