@@ -6,7 +6,7 @@
 that the physics stays importable without the FMI stack.
 """
 
-__version__ = "1.1.0"
+__version__ = "2.0.0"
 # The model a command builds or runs when none is named: the project's own. The
 # generic layers (build, host, fmi) take it from here and name no model.
 DEFAULT_MODEL = "UniversalJoint"
