@@ -9,7 +9,7 @@
  *                                           instance driven from two threads in turn
  *   host cycles DIR N                       N instantiate/step/free cycles
  *   host fuzz DIR SEED COUNT                random legal and illegal calls (fuzz.c)
- *   host bench DIR STEPS                    µs per (set 6 inputs, doStep, get outputs)
+ *   host bench DIR STEPS [SPEED]            µs per (set 6 inputs, doStep, get outputs)
  *
  * Logger calls go to stderr as "LOG <status> <category>: <message>".
  */
@@ -208,11 +208,11 @@ static double now(void)
     return t.tv_sec + 1e-9 * t.tv_nsec;
 }
 
-static int bench(const char *dir, int steps)
+static int bench(const char *dir, int steps, double speed)
 {
     static const char *names[] = {"input_speed", "input_acceleration", "bend_angle",
                                   "bend_angle_rate", "bend_angle_acceleration", "load_torque"};
-    static const double values[] = {100.0, 5.0, 0.3, 0.01, 0.0, 50.0};  /* as the benchmarks */
+    const double values[] = {speed, 5.0, 0.3, 0.01, 0.0, 50.0};  /* as the benchmarks */
     load(dir);
     fmi2Component c = start("bench", fmi2False);
     initialize(c);
@@ -249,8 +249,8 @@ int main(int argc, char **argv)
         return cycles(argv[2], atoi(argv[3]));
     if (argc == 5 && strcmp(argv[1], "fuzz") == 0)
         return fuzz(argv[2], strtoul(argv[3], NULL, 10), atoi(argv[4]));
-    if (argc == 4 && strcmp(argv[1], "bench") == 0)
-        return bench(argv[2], atoi(argv[3]));
+    if ((argc == 4 || argc == 5) && strcmp(argv[1], "bench") == 0)
+        return bench(argv[2], atoi(argv[3]), argc == 5 ? atof(argv[4]) : 100.0);
     fprintf(stderr, "usage: see the comment at the top of host.c\n");
     return 2;
 }
