@@ -3,6 +3,8 @@
  * extracted FMU:
  *
  *   host run DIR STEPS DT [name=value ...]  CSV of all outputs (FMPy's layout)
+ *   host last DIR STEPS DT [name=value ...] the same run, every output read at each
+ *                                           step, only the header and the last row printed
  *   host bad DIR NAME VALUE                 one step after a bad input, logging off
  *   host instantiate DIR                    instantiate only: "instance ok|NULL"
  *   host threads DIR STEPS                  two threads, one instance each; one
@@ -121,7 +123,8 @@ void initialize(fmi2Component c)
 }
 
 /* The communication points FMPy's simulate_fmu uses: start + k * dt. */
-static int run(const char *dir, int steps, double dt, int n_settings, char **settings)
+static int run(const char *dir, int steps, double dt, int n_settings, char **settings,
+               int every_row)
 {
     load(dir);
     fmi2Component c = start("run", fmi2False);
@@ -145,10 +148,12 @@ static int run(const char *dir, int steps, double dt, int n_settings, char **set
     double time = 0.0;
     for (int k = 0; k <= steps; k++) {
         check(fmu.GetReal(c, vr, n, y), "GetReal");
-        printf("%.17g", time);
-        for (int i = 0; i < n; i++)
-            printf(",%.17g", y[i]);
-        printf("\n");
+        if (every_row || k == steps) {
+            printf("%.17g", time);
+            for (int i = 0; i < n; i++)
+                printf(",%.17g", y[i]);
+            printf("\n");
+        }
         if (k == steps)
             break;
         double next = (k + 1) * dt;
@@ -236,7 +241,9 @@ int main(int argc, char **argv)
 {
     setvbuf(stdout, NULL, _IOFBF, 1 << 16);
     if (argc >= 5 && strcmp(argv[1], "run") == 0)
-        return run(argv[2], atoi(argv[3]), atof(argv[4]), argc - 5, argv + 5);
+        return run(argv[2], atoi(argv[3]), atof(argv[4]), argc - 5, argv + 5, 1);
+    if (argc >= 5 && strcmp(argv[1], "last") == 0)
+        return run(argv[2], atoi(argv[3]), atof(argv[4]), argc - 5, argv + 5, 0);
     if (argc == 5 && strcmp(argv[1], "bad") == 0)
         return bad(argv[2], argv[3], strtod(argv[4], NULL));
     if (argc == 5 && strcmp(argv[1], "refusal") == 0)
