@@ -3,6 +3,7 @@ functions outside it, for tests/unit/test_codegen.py. Each untranslatable one
 names, in `REFUSED`, the construct its message must quote."""
 
 import math
+from typing import NamedTuple
 
 SCALE = 0.75
 STEPS = 3
@@ -54,6 +55,40 @@ def quadrature(a: float, b: float) -> float:
         x = a + half * (1.0 + NODES[k])
         total += WEIGHTS[k] * math.sin(x) * x**k
     return half * total + WEIGHTS[-1]
+
+
+# Rules of several sizes, indexed by their size (a tuple of tables of any lengths).
+RULES = ((), (0.5,), (0.2113248654051871, 0.7886751345948129))
+
+
+class Rule(NamedTuple):
+    scale: float
+    power: float
+    count: int
+
+
+def _weighted(rule: Rule, x):
+    return rule.scale * abs(x) ** rule.power + float(rule.count)
+
+
+def _apply(function, pair, k: int):
+    """A function passed as an argument, bound when translated; `pair` takes the
+    caller's tuple."""
+    return function(pair[0], pair[1])[1] + RULES[2][k]
+
+
+def shapes(x: float, y: float) -> tuple:
+    """A table of rows, a NamedTuple built and read by field, a function passed
+    as an argument, a tuple spread into a call and into a tuple, math.log."""
+    total = 0.0
+    for n in range(1, len(RULES)):
+        for k in range(n):
+            total += RULES[n][k] * x
+    rule = Rule(0.5, 1.5, 2)
+    pair = (x, y)
+    spread = (*_pair(*pair), math.log(abs(y) + 1.0))
+    return (total, _weighted(rule, y), _apply(_pair, pair, 1), _apply(_pair, pair, 0),
+            *spread)  # fmt: skip
 
 
 def extremes(x: float, y: float) -> tuple[float, float, float, float]:

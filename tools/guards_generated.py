@@ -1,7 +1,8 @@
 """The mutation table's guards of the generated step (tools/guards.py,
 docs/codegen.md): the generator's operation-for-operation translation, the
 build's check of the runtime's convention, and the runtime keeping the slave in
-step with the steps it takes in C."""
+step with the steps it takes in C: its watches, the reads it passes on, and
+the life integral the default build's step runs."""
 
 from guards_base import Mutation
 
@@ -9,6 +10,7 @@ EXPRESSIONS = "fmu_src/cardan_joint/codegen/expressions.py"
 STEP_SOURCE = "fmu_src/cardan_joint/build/step_source.py"
 FAST_PATH = "fmu_src/cardan_joint/fmi/native/fast_path.c"
 FAST_VALUES = "fmu_src/cardan_joint/fmi/native/fast_values.c"
+LIFE_INTEGRAL = "fmu_src/cardan_joint/physics/life_integral.py"
 GENERATED = "fmu_src/cardan_joint/fmi/native/generated.c"
 BIT_TEST = ("tests/unit/test_codegen_joint.py", "-k", "python_steps_bits")
 BUILD_TESTS = "tests/unit/test_codegen_build.py"
@@ -63,5 +65,26 @@ GENERATED_MUTATIONS = (
         "    if (method != FAST_SYNC)\n        catch_up(in);",
         "",
         (RUNTIME_TESTS,),
+    ),
+    Mutation(
+        "generated step: a watch passed by a step in C is warned of",
+        FAST_VALUES,
+        "return watch_passed(fast) ? (int)fast_call(in, FAST_WATCH, 0, 0) : fmi2OK;",
+        "return fmi2OK;",
+        (RUNTIME_TESTS, "-k", "past_the_rated_torque"),
+    ),
+    Mutation(
+        "one-call step: a read passes the indices it reads",
+        FAST_VALUES,
+        "fast->reading = vr, fast->reading_count = n;",
+        "fast->reading = vr, fast->reading_count = 0;",
+        ("tests/fmu/test_fast_path.py", "-k", "plain_calls"),
+    ),
+    Mutation(
+        "life integral: two torque zeros an ulp apart",
+        LIFE_INTEGRAL,
+        "hi, zero = (middle, 1) if middle > t else (end, 0)",
+        "hi, zero = middle, 1",
+        ("tests/unit/test_life.py", "-k", "ulp_apart"),
     ),
 )

@@ -3,13 +3,15 @@
  * extracted FMU:
  *
  *   host run DIR STEPS DT [name=value ...]  CSV of all outputs (FMPy's layout)
+ *   host last DIR STEPS DT [name=value ...] the same run, every output read at each
+ *                                           step, only the header and the last row printed
  *   host bad DIR NAME VALUE                 one step after a bad input, logging off
  *   host instantiate DIR                    instantiate only: "instance ok|NULL"
  *   host threads DIR STEPS                  two threads, one instance each; one
  *                                           instance driven from two threads in turn
  *   host cycles DIR N                       N instantiate/step/free cycles
  *   host fuzz DIR SEED COUNT                random legal and illegal calls (fuzz.c)
- *   host bench DIR STEPS                    µs per (set 6 inputs, doStep, get outputs)
+ *   host bench DIR STEPS [SPEED]            µs per (set 6 inputs, doStep, get outputs)
  *
  * Logger calls go to stderr as "LOG <status> <category>: <message>".
  */
@@ -121,7 +123,8 @@ void initialize(fmi2Component c)
 }
 
 /* The communication points FMPy's simulate_fmu uses: start + k * dt. */
-static int run(const char *dir, int steps, double dt, int n_settings, char **settings)
+static int run(const char *dir, int steps, double dt, int n_settings, char **settings,
+               int every_row)
 {
     load(dir);
     fmi2Component c = start("run", fmi2False);
@@ -145,10 +148,12 @@ static int run(const char *dir, int steps, double dt, int n_settings, char **set
     double time = 0.0;
     for (int k = 0; k <= steps; k++) {
         check(fmu.GetReal(c, vr, n, y), "GetReal");
-        printf("%.17g", time);
-        for (int i = 0; i < n; i++)
-            printf(",%.17g", y[i]);
-        printf("\n");
+        if (every_row || k == steps) {
+            printf("%.17g", time);
+            for (int i = 0; i < n; i++)
+                printf(",%.17g", y[i]);
+            printf("\n");
+        }
         if (k == steps)
             break;
         double next = (k + 1) * dt;
@@ -208,11 +213,11 @@ static double now(void)
     return t.tv_sec + 1e-9 * t.tv_nsec;
 }
 
-static int bench(const char *dir, int steps)
+static int bench(const char *dir, int steps, double speed)
 {
     static const char *names[] = {"input_speed", "input_acceleration", "bend_angle",
                                   "bend_angle_rate", "bend_angle_acceleration", "load_torque"};
-    static const double values[] = {100.0, 5.0, 0.3, 0.01, 0.0, 50.0};  /* as the benchmarks */
+    const double values[] = {speed, 5.0, 0.3, 0.01, 0.0, 50.0};  /* as the benchmarks */
     load(dir);
     fmi2Component c = start("bench", fmi2False);
     initialize(c);
@@ -236,7 +241,9 @@ int main(int argc, char **argv)
 {
     setvbuf(stdout, NULL, _IOFBF, 1 << 16);
     if (argc >= 5 && strcmp(argv[1], "run") == 0)
-        return run(argv[2], atoi(argv[3]), atof(argv[4]), argc - 5, argv + 5);
+        return run(argv[2], atoi(argv[3]), atof(argv[4]), argc - 5, argv + 5, 1);
+    if (argc >= 5 && strcmp(argv[1], "last") == 0)
+        return run(argv[2], atoi(argv[3]), atof(argv[4]), argc - 5, argv + 5, 0);
     if (argc == 5 && strcmp(argv[1], "bad") == 0)
         return bad(argv[2], argv[3], strtod(argv[4], NULL));
     if (argc == 5 && strcmp(argv[1], "refusal") == 0)
@@ -249,8 +256,8 @@ int main(int argc, char **argv)
         return cycles(argv[2], atoi(argv[3]));
     if (argc == 5 && strcmp(argv[1], "fuzz") == 0)
         return fuzz(argv[2], strtoul(argv[3], NULL, 10), atoi(argv[4]));
-    if (argc == 4 && strcmp(argv[1], "bench") == 0)
-        return bench(argv[2], atoi(argv[3]));
+    if ((argc == 4 || argc == 5) && strcmp(argv[1], "bench") == 0)
+        return bench(argv[2], atoi(argv[3]), argc == 5 ? atof(argv[4]) : 100.0);
     fprintf(stderr, "usage: see the comment at the top of host.c\n");
     return 2;
 }

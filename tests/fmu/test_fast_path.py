@@ -27,6 +27,13 @@ PLAIN_ENTRIES = {
 LAST_SUCCESSFUL_TIME, TERMINATED = 2, 3  # fmi2StatusKind
 
 
+@pytest.fixture(autouse=True)
+def python_step(monkeypatch):
+    """The one-call step in Python: the default build's generated step would take
+    every step in C (test_generated_step.py)."""
+    monkeypatch.setenv("CARDAN_JOINT_FMU_PYTHON_STEP", "1")
+
+
 @pytest.fixture(scope="module", params=[2, 3], ids=["fmi2", "fmi3"])
 def extracted(request):
     fmu_path = request.getfixturevalue("fmu_path" if request.param == 2 else "fmi3_path")
@@ -151,7 +158,11 @@ def scenario(instance):
     record(bits(instance.values("output_angle")))
     record(step_status(instance))  # refused: the state stays
     record(instance.try_set(yoke_phase=0.3))  # a fixed parameter after initialization
-    instance.set(bend_angle=0.4)
+    # An invalid load: only a read of an output that depends on it warns.
+    instance.set(bend_angle=0.4, load_torque=math.nan)
+    record(bits(instance.values("output_angle", "output_speed")))
+    record(bits(instance.values("input_torque")))
+    instance.set(load_torque=GOOD["load_torque"])
     state = instance.get_state()
     record(step_status(instance))  # taken again after a refused one
     record(bits(instance.values(*outputs)))
@@ -196,6 +207,9 @@ def test_plain_calls_when_the_slave_has_no_fast_step_give_the_same_bits(extracte
     assert fast_messages == plain_messages
     assert any(status == 1 and "held" in text for status, _, text in fast_messages)
     assert any(status == 3 for status, _, _ in fast_messages)  # the refused step
+    # The reads of the outputs the load leaves alone did not warn (fast_get
+    # passes the indices it reads): one warning of the load, at its read.
+    assert sum("load_torque" in text for _, _, text in fast_messages) == 1, fast_messages
 
 
 def test_each_input_write_reaches_the_slave_to_the_bit_and_unchanged_inputs_cross_again(

@@ -1,9 +1,10 @@
 """The generated step in the FMU's runtime (docs/codegen.md): a build whose
-model step the generator translates (the joint without life) takes every step
-it can in C, without entering Python, and gives the same bits, statuses and
-messages as the same FMU stepping in Python, FMI 2.0 and 3.0: over every kind
-of call the one-call step serves (test_fast_path's scenario) and over random
-runs with refusals, FMU states set back and long steps."""
+model step the generator translates (the joint, with life and without) takes
+every step it can in C, without entering Python, and gives the same bits,
+statuses and messages as the same FMU stepping in Python, FMI 2.0 and 3.0: over
+every kind of call the one-call step serves (test_fast_path's scenario) and
+over random runs with refusals, FMU states set back, long steps and loads past
+the rated torque (warned once)."""
 
 import math
 import random
@@ -14,14 +15,19 @@ from test_fast_path import bits, count_entries, model_class, scenario, slave_cla
 from cardan_joint.host.instance import ExtractedFMU
 from cardan_joint.models.universal_joint import variables as table
 
-NO_LIFE = ("--no-life",)
+BUILDS = {"no-life": ("--no-life",), "life": ()}
 COUNTED = ("fast_sync", "fast_step")
 
 
-@pytest.fixture(scope="module", params=[2, 3], ids=["fmi2", "fmi3"])
+@pytest.fixture(
+    scope="module",
+    params=[(version, build) for build in BUILDS for version in (2, 3)],
+    ids=lambda param: f"fmi{param[0]}-{param[1]}",
+)
 def extracted(request, built):
-    with ExtractedFMU(built(fmi_version=request.param, settings=NO_LIFE)) as fmu:
-        fmu.version = request.param
+    version, build = request.param
+    with ExtractedFMU(built(fmi_version=version, settings=BUILDS[build])) as fmu:
+        fmu.version = version
         with fmu.instance("warm-up"):  # pythonfmu imports the script
             pass
         yield fmu
@@ -107,3 +113,42 @@ def test_random_runs_give_the_python_steps_bits_and_messages(extracted, monkeypa
     assert c_counts["run"] < python_counts["run"] / 2, (c_counts, python_counts)
     # Some steps were refused (logged as Error, the status they return).
     assert any(status == 3 for status, _, _ in c_messages)
+
+
+@pytest.fixture(scope="module", params=[2, 3], ids=["fmi2", "fmi3"])
+def with_life(request, built):
+    with ExtractedFMU(built(fmi_version=request.param)) as fmu:
+        fmu.version = request.param
+        yield fmu
+
+
+def test_a_load_past_the_rated_torque_warns_once_with_the_c_step(with_life, monkeypatch):
+    """The watches of the default build, with its step in C: the step that
+    passes rated_torque is taken in C, the slave warns once (Warning, logWatch)
+    and the run goes on in C; the same statuses, messages and values as with
+    CARDAN_JOINT_FMU_PYTHON_STEP=1."""
+    slave_class, _ = slave_classes(with_life)
+
+    def run(instance):
+        seen = [instance.exit_initialization_mode()]
+        instance.set(input_speed=100.0, bend_angle=0.3, load_torque=500.0)
+        for k in range(30):
+            if k == 10:
+                instance.set(load_torque=-2500.0)  # past the 1000 N.m rating, either sign
+            seen.append(instance.try_step(1e-3))
+            seen.append(bits(instance.values("input_torque", "life_consumed")))
+        return seen
+
+    outcomes = []
+    for python_step in ("0", "1"):
+        monkeypatch.setenv("CARDAN_JOINT_FMU_PYTHON_STEP", python_step)
+        counts = count_entries(monkeypatch, model_class(slave_class), ("run",))
+        messages: list = []
+        with with_life.instance("watched", exit_initialization=False, messages=messages) as i:
+            outcomes.append((run(i), messages, counts["run"]))
+    (c_run, c_messages, c_runs), (python_run, python_messages, python_runs) = outcomes
+    assert c_run == python_run and c_messages == python_messages
+    watched = [m for m in c_messages if m[1] == "logWatch"]
+    assert len(watched) == 1 and "input_torque" in watched[0][2], c_messages
+    assert watched[0][0] == 1  # a Warning: the step stands
+    assert (c_runs, python_runs) == (0, 30)

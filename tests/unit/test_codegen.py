@@ -19,6 +19,7 @@ from cardan_joint.codegen import Untranslatable, generate
         (samples.loops, lambda rng: (rng.uniform(-20.0, 20.0), rng.randint(-5, 30))),
         (samples.choices, lambda rng: (rng.uniform(-9.0, 9.0), rng.uniform(-9.0, 9.0))),
         (samples.quadrature, lambda rng: (rng.uniform(-9.0, 9.0), rng.uniform(-9.0, 9.0))),
+        (samples.shapes, lambda rng: (rng.uniform(-9.0, 9.0), rng.uniform(-9.0, 9.0))),
         (
             samples.extremes,
             lambda rng: tuple(rng.choice([math.nan, 1.0, -0.0, 0.0, rng.random()]) for _ in "xy"),

@@ -1,5 +1,5 @@
 """What the build makes of a model's step (build/step_source.py, fmi/native's
-generated.c): the joint's step without life in C; a step the generator cannot
+generated.c): the joint's step in C, with life and without; a step the generator cannot
 translate, or one off the runtime's convention, stays in Python and the build
 says why; the runtime uses a compiled step only when its sizes are the slave's."""
 
@@ -20,11 +20,14 @@ JOINT = discover()["UniversalJoint"]
 NATIVE = Path(native.__file__).parent
 
 
-def test_the_joint_without_life_is_generated_and_with_life_stays_in_python(capsys):
+def test_the_joints_step_is_generated_with_life_and_without(capsys):
     step = generated_step(JOINT, {"life": False}, "UniversalJointNoLife")
     assert step is not None and step.name == GENERATED_STEP
     assert step.arguments[:3] == ("time", "h", "turns")
-    assert generated_step(JOINT, {"life": True}, "UniversalJoint") is None
+    with_life = generated_step(JOINT, {"life": True}, "UniversalJoint")
+    assert with_life is not None
+    assert with_life.arguments[9:11] == ("life_consumed", "life_consumed_error")
+    assert with_life.arguments[-1] == "life_min_angle"
     assert capsys.readouterr().err == ""
 
 

@@ -12,10 +12,10 @@ import random
 
 import mpmath as mp
 import pytest
-from life_reference import case_of, damage
+from life_reference import case_of, damage, damage_quadpack
 
 from cardan_joint.models.universal_joint.model import CardanJoint
-from cardan_joint.physics.life import LifeRule, life_rate
+from cardan_joint.physics.life import LifeRule, life_rate, step_damage
 from cardan_joint.physics.life_torque import input_torque
 from cardan_joint.physics.response import JointResponse, kernel
 
@@ -270,3 +270,17 @@ def test_without_life_the_joint_gives_the_same_numbers_and_lacks_only_the_life_r
         "life_consumed",
     }
     assert "life_consumed" not in without.state()
+
+
+def test_two_torque_zeros_an_ulp_apart_leave_no_panel_of_zero_length():
+    """A speed reversal with the bend crossing A_min at both ends of a long step
+    at 1000 rad/s puts two torque zeros an ulp apart: the ulp between them is
+    taken as it is (it once divided by its zero length)."""
+    rule = LifeRule(1000.0, 748562516.5098299, 1.6294291263585228, 0.05235987755982989)
+    case = (5.0144300866675975 + 4.255872885703014, -0.05235987755982989, 1000.0, -1000.0,
+            0.05235987755982989, 0.0, (0.004186995240441173, 0.0036225531104528874,
+            4.816940636013518), -50.0)  # fmt: skip
+    psi, b, w, a, rb, ab, inertia, load = case
+    got = step_damage(rule, 2.0, psi, b, w, a, rb, ab, inertia, load)
+    # 318 turns in one step: QUADPACK's own default limits are not 1e-9 there.
+    assert got == pytest.approx(damage_quadpack(case, 2.0, rule), rel=2e-2, abs=0.0)

@@ -7,8 +7,21 @@ import math
 import types
 from typing import Any
 
-from .expressions import MATH_CALLS, MATH_REFUSED, Expressions
-from .types import BOOL, FLOAT, INT, Module, Scalar, Table, Tuple, Type
+from .expressions import MATH_CALLS, MATH_REFUSED
+from .tuples import Subscripts
+from .types import (
+    BOOL,
+    FLOAT,
+    INT,
+    Function,
+    Module,
+    Rows,
+    Scalar,
+    Table,
+    Tuple,
+    Type,
+    type_of_annotation,
+)
 
 BUILTINS = ("abs", "float", "int", "min", "max", "len")
 
@@ -22,29 +35,48 @@ def accepts(parameter: Scalar | Tuple, argument: Type) -> bool:
     )
 
 
-class Calls(Expressions):
+class Calls(Subscripts):
     def _Call(self, node: ast.Call) -> tuple[str, Type]:
-        if any(isinstance(a, ast.Starred) for a in node.args) or any(
-            k.arg is None for k in node.keywords
-        ):
-            raise self.refuse(node, "no * or ** arguments in C")
+        if any(k.arg is None for k in node.keywords):
+            raise self.refuse(node, "no ** arguments in C")
         function = node.func
         target: Any = None
-        if isinstance(function, ast.Name) and function.id not in self.locals | self.bound:
+        if isinstance(function, ast.Name) and isinstance(self.bound.get(function.id), Function):
+            target = self.bound[function.id].function  # type: ignore[union-attr]
+        elif isinstance(function, ast.Name) and function.id not in self.locals | self.bound:
             if function.id not in self.namespace and function.id in BUILTINS:
                 return self.builtin(node, function.id)
             target = self.global_value(function.id, node)
+            if isinstance(target, type) and issubclass(target, tuple):
+                return self.named_tuple(node, target)
         elif isinstance(function, ast.Attribute):
             _, owner = self.value_of(function.value)
             if isinstance(owner, Module) and owner.module is math:
                 return self.math_call(node, function.attr)
             if isinstance(owner, Module):
                 target = getattr(owner.module, function.attr, None)
+        if any(isinstance(a, ast.Starred) for a in node.args):
+            if not isinstance(target, types.FunctionType):
+                raise self.refuse(node, "a tuple is spread (*) into the model's own functions only")
         if isinstance(target, types.FunctionType):
             return self.project_call(node, target)
         raise self.refuse(
             node, "only the model's own functions, math and abs/float/int/min/max are called in C"
         )
+
+    def named_tuple(self, node: ast.Call, target: type) -> tuple[str, Type]:
+        """A NamedTuple of numbers built from its items, given in order."""
+        kind = type_of_annotation(target, self.where(node))
+        if not isinstance(kind, Tuple) or node.keywords or len(node.args) != len(kind.items):
+            raise self.refuse(node, f"a {target.__name__} is built from its items, in order")
+        texts = []
+        for argument, item in zip(node.args, kind.items, strict=True):
+            text, given = self.scalar(argument)
+            if not accepts(item, given):
+                raise self.refuse(node, f"a {given} for a {item} field of {target.__name__}")
+            texts.append(text)
+        self.unit.struct(kind)
+        return f"(({kind.c}){{{', '.join(texts)}}})", kind
 
     def math_call(self, node: ast.Call, name: str) -> tuple[str, Type]:
         if name not in MATH_CALLS:
@@ -65,8 +97,14 @@ class Calls(Expressions):
             return self.extreme(node, name)
         if name == "len":
             _, sized = self.value_of(node.args[0])
-            if isinstance(sized, Table | Tuple):
-                size = sized.size if isinstance(sized, Table) else len(sized.items)
+            if isinstance(sized, Table | Tuple | Rows):
+                size = (
+                    sized.size
+                    if isinstance(sized, Table)
+                    else len(sized.sizes)
+                    if isinstance(sized, Rows)
+                    else len(sized.items)
+                )
                 return f"INT64_C({size})", INT
             raise self.refuse(node, "len() of a tuple or a constant table")
         text, kind = self.scalar(node.args[0])
@@ -95,9 +133,17 @@ class Calls(Expressions):
 
     def project_call(self, node: ast.Call, function: types.FunctionType) -> tuple[str, Type]:
         names = self.unit.parameter_names(function, self.where(node))
-        if len(node.args) > len(names):
+        # A tuple spread into the arguments (`f(*inputs)`) gives its items in order.
+        positional: list[Any] = []
+        for argument in node.args:
+            if isinstance(argument, ast.Starred):
+                texts, spread = self.fields(argument.value)
+                positional += list(zip(texts, spread.items, strict=True))
+            else:
+                positional.append(argument)
+        if len(positional) > len(names):
             raise self.refuse(node, f"{function.__name__} takes {len(names)} arguments")
-        given: dict[str, Any] = dict(zip(names, node.args, strict=False))
+        given: dict[str, Any] = dict(zip(names, positional, strict=False))
         for keyword in node.keywords:
             name = keyword.arg or "**"
             if name not in names or name in given:
@@ -108,18 +154,24 @@ class Calls(Expressions):
         )
         modules: dict[str, Any] = {}
         values: dict[str, tuple[str, Type]] = {}
+        shapes: dict[str, Tuple] = {}
         for name in names:
             if name in given:
-                text, kind = self.value_of(given[name])
+                value = given[name]
+                text, kind = value if isinstance(value, tuple) else self.value_of(value)
             elif name in defaults:
                 text, kind = self.outside(defaults[name], name, node)
             else:
                 raise self.refuse(node, f"no value for {function.__name__}'s {name}")
             if isinstance(kind, Module):
                 modules[name] = kind.module
+            elif isinstance(kind, Function):
+                modules[name] = kind.function
             else:
                 values[name] = text, kind
-        callee = self.unit.function(function, modules, self.where(node))
+                if isinstance(kind, Tuple):
+                    shapes[name] = kind
+        callee = self.unit.function(function, modules, self.where(node), shapes)
         if callee.optional:
             raise self.refuse(
                 node, f"{function.__name__} may return None: only the step itself may"

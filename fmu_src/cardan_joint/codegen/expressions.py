@@ -5,13 +5,16 @@ tuple-valued operand held in a temporary so it is evaluated once."""
 import ast
 import builtins
 import math
+import types
 from typing import Any
 
 from .types import (
     BOOL,
     FLOAT,
     INT,
+    Function,
     Module,
+    Rows,
     Scalar,
     Table,
     Tuple,
@@ -19,6 +22,7 @@ from .types import (
     Untranslatable,
     arithmetic,
     literal,
+    rows_of,
     table_of,
 )
 
@@ -33,7 +37,7 @@ COMPARE = {ast.Lt: "<", ast.LtE: "<=", ast.Gt: ">", ast.GtE: ">=", ast.Eq: "==",
 MATH_CALLS = {
     **{name: (1, FLOAT) for name in (
         "sin", "cos", "tan", "asin", "acos", "atan", "sinh", "cosh", "tanh", "asinh",
-        "acosh", "atanh", "exp", "expm1", "log1p", "log10", "log2", "sqrt", "fabs",
+        "acosh", "atanh", "exp", "expm1", "log", "log1p", "log10", "log2", "sqrt", "fabs",
         "erf", "erfc", "cbrt",
     )},
     "atan2": (2, FLOAT), "copysign": (2, FLOAT), "fmod": (2, FLOAT), "pow": (2, FLOAT),
@@ -46,7 +50,6 @@ MATH_REFUSED = {
     "hypot": "CPython computes math.hypot itself, not as the C library's hypot does: "
     "write sqrt(x * x + y * y) or a scaled form both sides compute alike",
     "fsum": "math.fsum keeps an exact partial sum list: write a compensated sum",
-    "log": "math.log takes an optional base: write math.log1p or log10/log2",
 }
 
 
@@ -59,7 +62,7 @@ class Expressions:
     """Mixed into `functions.FunctionTranslator`, which provides the scope."""
 
     locals: dict[str, Scalar | Tuple]
-    bound: dict[str, Module]
+    bound: dict[str, Module | Function]
     namespace: dict[str, Any]
     unit: Any
 
@@ -95,7 +98,9 @@ class Expressions:
     def simple(self, node: ast.expr) -> tuple[str, Type]:
         """An operand C may read twice: a name, a constant, or a temporary."""
         text, kind = self.value_of(node)
-        if isinstance(kind, Module | Table) or isinstance(node, ast.Name | ast.Constant):
+        if isinstance(kind, Module | Function | Table | Rows) or isinstance(
+            node, ast.Name | ast.Constant
+        ):
             return text, kind
         return self.hoist(text, kind), kind
 
@@ -109,13 +114,19 @@ class Expressions:
         raise self.refuse(node, f"{name} is not defined")
 
     def outside(self, value: Any, name: str, node: ast.AST) -> tuple[str, Type]:
-        """A value from outside the function: a module, or a module constant."""
+        """A value from outside the function: a module, one of the model's
+        functions (an argument bound at translation time), or a module constant."""
         if isinstance(value, type(math)):
             return name, Module(value)
+        if isinstance(value, types.FunctionType):
+            return name, Function(value)
         if isinstance(value, bool | int | float):
             return self.unit.constant(name, value, self.where(node)), literal(
                 value, self.where(node)
             )[1]
+        rows = rows_of(value, self.where(node)) if type(value) is tuple else None
+        if rows:
+            return self.unit.rows(name, *rows), rows[1]
         table = table_of(value, self.where(node)) if type(value) is tuple else None
         if table:
             return self.unit.table(name, *table), table[1]
@@ -134,9 +145,15 @@ class Expressions:
         return literal(node.value, self.where(node))
 
     def _Attribute(self, node: ast.Attribute) -> tuple[str, Type]:
-        _, owner = self.value_of(node.value)
+        text, owner = self.value_of(node.value)
+        if isinstance(owner, Tuple) and owner.names and node.attr in owner.names:
+            return self.items_of(node.value, text, owner)[
+                owner.names.index(node.attr)
+            ], owner.items[owner.names.index(node.attr)]
         if not isinstance(owner, Module):
-            raise self.refuse(node, "attributes are read from modules only (no objects in C)")
+            raise self.refuse(
+                node, "attributes are read from modules and NamedTuples only (no objects in C)"
+            )
         if owner.module is math:
             if node.attr not in MATH_CONSTANTS:
                 raise self.refuse(node, f"math.{node.attr} is not a constant C has")
@@ -235,56 +252,3 @@ class Expressions:
         kind = Tuple(kinds)
         self.unit.struct(kind)
         return f"(({kind.c}){{{', '.join(texts)}}})", kind
-
-    def _Tuple(self, node: ast.Tuple) -> tuple[str, Type]:
-        items = [self.scalar(element) for element in node.elts]
-        if not items:
-            raise self.refuse(node, "an empty tuple has no C struct")
-        return self.built([text for text, _ in items], tuple(kind for _, kind in items))
-
-    def _Subscript(self, node: ast.Subscript) -> tuple[str, Type]:
-        if isinstance(node.value, ast.Name | ast.Attribute):
-            text, table = self.value_of(node.value)
-            if isinstance(table, Table):
-                return self.entry(node, text, table)
-        items, kind = self.fields(node.value)
-        n = len(items)
-        bound = node.slice
-        if isinstance(bound, ast.Slice):
-            if bound.step is not None:
-                raise self.refuse(node, "a slice with a step")
-            start, stop = (self.index(b, node) if b else None for b in (bound.lower, bound.upper))
-            chosen = range(n)[slice(start, stop)]
-            return self.built([items[k] for k in chosen], tuple(kind.items[k] for k in chosen))
-        k = self.index(bound, node)
-        if not -n <= k < n:
-            raise self.refuse(node, f"index {k} is beyond the tuple's {n} items")
-        return items[k], kind.items[k]
-
-    def entry(self, node: ast.Subscript, name: str, table: Table) -> tuple[str, Type]:
-        """A constant table's item: by a constant (checked here) or by an int, which
-        the caller keeps in 0..size-1 (Python's negative indices are not C's)."""
-        if isinstance(node.slice, ast.Slice):
-            raise self.refuse(node, "a constant table is read an item at a time")
-        try:
-            k = self.index(node.slice, node)
-        except Untranslatable:
-            position, kind = self.scalar(node.slice)
-            if kind is not INT:
-                raise self.refuse(node, "a table's index is an int") from None
-            return f"{name}[{position}]", table.item
-        if not -table.size <= k < table.size:
-            raise self.refuse(node, f"index {k} is beyond the table's {table.size} items")
-        return f"{name}[{k % table.size}]", table.item
-
-    def index(self, node: ast.expr, whole: ast.AST) -> int:
-        """A constant index (C's struct fields are named, not computed)."""
-        if isinstance(node, ast.UnaryOp) and isinstance(node.op, ast.USub):
-            return -self.index(node.operand, whole)
-        if isinstance(node, ast.Constant) and type(node.value) is int:
-            return node.value
-        if isinstance(node, ast.Name) and node.id not in self.locals:
-            value = self.namespace.get(node.id)
-            if type(value) is int:  # a module constant
-                return value
-        raise self.refuse(whole, "a tuple is indexed by an integer constant only")

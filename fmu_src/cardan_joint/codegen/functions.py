@@ -1,5 +1,6 @@
 """One Python function as one C function: its parameters and locals typed
-(annotations, else float; a local takes the type of its first value), its
+(annotations, else float or the tuple its caller passes; a local takes the
+type of its first value), its
 statements in order, temporaries for values Python evaluates once."""
 
 import ast
@@ -10,7 +11,16 @@ from dataclasses import dataclass, field
 from typing import Any
 
 from .calls import Calls, accepts
-from .types import FLOAT, INT, Module, Scalar, Tuple, Untranslatable, type_of_annotation
+from .types import (
+    FLOAT,
+    INT,
+    Function,
+    Module,
+    Scalar,
+    Tuple,
+    Untranslatable,
+    type_of_annotation,
+)
 
 
 @dataclass
@@ -41,11 +51,21 @@ def source_of(function: types.FunctionType) -> tuple[ast.FunctionDef, str, int]:
 
 
 class FunctionTranslator(Calls):
-    def __init__(self, unit: Any, function: types.FunctionType, modules: dict, c_name: str) -> None:
+    def __init__(
+        self,
+        unit: Any,
+        function: types.FunctionType,
+        modules: dict,
+        c_name: str,
+        shapes: dict | None = None,
+    ) -> None:
         self.unit = unit
         self.tree, self.file, self.first = source_of(function)
         self.namespace = function.__globals__
-        self.bound = {name: Module(module) for name, module in modules.items()}
+        self.bound: dict[str, Module | Function] = {
+            name: Function(value) if isinstance(value, types.FunctionType) else Module(value)
+            for name, value in modules.items()
+        }
         self.locals: dict[str, Scalar | Tuple] = {}
         self.temporaries: list[tuple[str, Scalar | Tuple]] = []
         self.pending: list[str] = []
@@ -59,7 +79,10 @@ class FunctionTranslator(Calls):
         for argument in arguments.posonlyargs + arguments.args:
             if argument.arg in modules:
                 continue
-            kind = self.annotated(argument.annotation, argument) if argument.annotation else FLOAT
+            if argument.annotation:
+                kind = self.annotated(argument.annotation, argument)
+            else:
+                kind = (shapes or {}).get(argument.arg, FLOAT)
             self.locals[argument.arg] = kind
             parameters.append((argument.arg, kind))
         self.signature = Signature(c_name, parameters)

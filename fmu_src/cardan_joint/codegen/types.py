@@ -3,7 +3,7 @@ structs, and the literals that give C the very double Python holds."""
 
 import math
 import typing
-from dataclasses import dataclass
+from dataclasses import dataclass, field
 
 
 class Untranslatable(Exception):
@@ -29,9 +29,12 @@ SCALARS = {"float": FLOAT, "int": INT, "bool": BOOL}
 
 @dataclass(frozen=True)
 class Tuple:
-    """A fixed-length tuple of scalars: a C struct with fields v0, v1, ..."""
+    """A fixed-length tuple of scalars: a C struct with fields v0, v1, ...; a
+    NamedTuple's fields are read by name too (`rule.exponent`). The names do not
+    make it another type: a NamedTuple is the tuple of its items."""
 
     items: tuple[Scalar, ...]
+    names: tuple[str, ...] | None = field(default=None, compare=False)
 
     def __str__(self) -> str:
         return f"tuple[{', '.join(map(str, self.items))}]"
@@ -71,13 +74,34 @@ class Table:
 
 
 @dataclass(frozen=True)
+class Rows:
+    """A module constant tuple of tables of one item type, of any lengths (a
+    quadrature's rules by their number of points): one static C array of every
+    row and the start of each, read an item at a time (`NODES[n][i]`)."""
+
+    item: Scalar
+    sizes: tuple[int, ...]
+
+    def __str__(self) -> str:
+        return f"a constant table of {len(self.sizes)} rows of {self.item}s"
+
+
+@dataclass(frozen=True)
+class Function:
+    """One of the model's functions passed as an argument (`torque_at`): bound at
+    translation time, as a module is, so C calls its translation directly."""
+
+    function: typing.Any
+
+
+@dataclass(frozen=True)
 class Module:
     """A Python module as a value (`math`, or a parameter bound to it)."""
 
     module: typing.Any
 
 
-Type = Scalar | Tuple | Table | Module
+Type = Scalar | Tuple | Table | Rows | Module | Function
 
 
 def arithmetic(left: Scalar, right: Scalar) -> Scalar:
@@ -89,6 +113,12 @@ def type_of_annotation(annotation: object, where: str) -> Scalar | Tuple:
     """The C type of an evaluated annotation: float, int, bool or a tuple of them."""
     if annotation in (float, int, bool):
         return SCALARS[annotation.__name__]
+    if isinstance(annotation, type) and issubclass(annotation, tuple):
+        names = getattr(annotation, "_fields", ())
+        hints = typing.get_type_hints(annotation)
+        items = tuple(hints.get(name) for name in names)
+        if items and all(i in (float, int, bool) for i in items):
+            return Tuple(tuple(SCALARS[i.__name__] for i in items), names)  # type: ignore[union-attr]
     if typing.get_origin(annotation) is tuple:
         items = typing.get_args(annotation)
         if items and Ellipsis not in items and all(i in (float, int, bool) for i in items):
@@ -104,6 +134,22 @@ def table_of(value: tuple, where: str) -> tuple[list[str], Table] | None:
     if not items or len(kinds) != 1:
         return None
     return [text for text, _ in items], Table(kinds.pop(), len(items))
+
+
+def rows_of(value: tuple, where: str) -> tuple[list[str], Rows] | None:
+    """The items' C texts, row after row, and the type of a tuple of tables."""
+    if not value or not all(type(row) is tuple for row in value):
+        return None
+    texts: list[str] = []
+    kinds = set()
+    for row in value:
+        for item in row:
+            text, kind = literal(item, where)
+            texts.append(text)
+            kinds.add(kind)
+    if len(kinds) != 1:
+        return None
+    return texts, Rows(kinds.pop(), tuple(len(row) for row in value))
 
 
 def literal(value: object, where: str) -> tuple[str, Scalar]:

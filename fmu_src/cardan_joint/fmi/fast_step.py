@@ -19,10 +19,14 @@ section 7).
 
 Generated step (docs/codegen.md). A runtime built with the model's step in C
 calls fast_state_size() once: from then on the slave hands over, after every
-value of `known`, the model's step state (`step_state()`: state_size floats),
-and takes it back with fast_sync. The runtime takes each step it can in C:
-arguments (t, h, state, known), results (state, the moved inputs, outputs).
-A step C does not take goes to fast_step, as without the generated step.
+value of `known`, the model's step state (`step_state()`: state_size floats)
+and each output's armed watch limit (`outputs` floats, inf where none is
+armed), and takes the state back with fast_sync. The runtime takes each step
+it can in C: arguments (t, h, state, known), results (state, the moved inputs,
+outputs). A step C does not take goes to fast_step, as without the generated
+step. A step taken in C with an output past its limit (|value| > limit) is
+handed over at once (fast_sync, then fast_watch): the slave warns once, as
+after a step in Python.
 
 Calls return a status (ok 0, warning 1, discard 2, error 3: the FMI version's
 own IntEnum, or a plain int) or a tuple (status, values, ...) of a status and
@@ -31,7 +35,7 @@ Each call logs through the slave as any other call does; the loader forwards
 the log queue after it:
 - fast_state_size() -> int: the step state's size (0: the model has none);
   from then on fast_store and fast_step give the state after their values.
-- fast_store() -> (ok, known[, state]): every input and parameter. Call it after
+- fast_store() -> (ok, known[, state, limits]): every input and parameter. Call it after
   instantiation and after every call into the slave that can change them: a
   setReal forwarded to Python, exitInitializationMode, set or deserialized FMU
   state, reset.
@@ -43,6 +47,9 @@ the log queue after it:
   steps left it: clock t, its step state, the inputs and outputs of the last
   step (held for getReal, as fast_step holds them). Call it before any other
   call into the slave once a step was taken in C.
+- fast_watch() -> (ok, limits) | error: after a fast_sync of a step whose
+  output passed its limit: warns of each output past its own (logWatch), once,
+  and gives the limits still armed.
 - fast_step(t, h, inputs) -> (ok, outputs, inputs[, state]) | status: takes the
   inputs, steps; when taken, every output and then the inputs the step moved
   (speed, bend angle and rate advance over a step: a later getReal of them, or
@@ -103,6 +110,7 @@ class FastStep:
     _fault: Callable[[str, BaseException], None]
     _armed: Any
     _watch: Callable[[tuple], None]
+    _watch_limits: Callable[[], tuple]
     # fast_state_size() was called: replies carry the model's step state.
     _state_exchange = False
 
@@ -133,7 +141,8 @@ class FastStep:
         try:
             known = self._refs.known_of(self._model)
             if self._state_exchange:
-                return self._STATUS.ok, known, tuple(self._model.step_state())
+                state = tuple(self._model.step_state())
+                return self._STATUS.ok, known, state, self._watch_limits()
             return self._STATUS.ok, known
         except Exception as error:
             self._fault("fast_store", error)
@@ -165,6 +174,17 @@ class FastStep:
             return OK
         except Exception as error:
             self._fault("fast_sync", error)
+            return self._STATUS.error
+
+    def fast_watch(self):
+        """A step taken in C passed an armed watch (the slave was synced): warn
+        once, as `fast_step` does after a step in Python; the limits left."""
+        try:
+            if self._armed:
+                self._watch(self._outputs)
+            return OK, self._watch_limits()
+        except Exception as error:
+            self._fault("fast_watch", error)
             return self._STATUS.error
 
     def fast_step(self, current_time, step_size, inputs):

@@ -9,6 +9,7 @@ armed again. A set FMU state brings back the watches as they were when it was
 got: a run taken back to before a warning warns again if it passes again.
 """
 
+import math
 from collections.abc import Callable
 from typing import Any
 
@@ -48,6 +49,14 @@ class Watching:
         self._armed, messages = passed(self._armed, outputs, self._model.time)
         for message in messages:
             self._report(message, self._STATUS.warning, WATCH_CATEGORY)
+
+    def _watch_limits(self) -> tuple[float, ...]:
+        """Each output's armed limit, inf where none is armed: what a step in C
+        compares its outputs with (`fast_step.py`)."""
+        limits = [math.inf] * len(self.table.OUTPUTS)
+        for slot, limit in self._armed.checks if self._armed else ():
+            limits[slot] = limit
+        return tuple(limits)
 
     def _watch_step(self) -> None:
         """`_watch` on the plain step's path, which evaluates the outputs only if watched."""

@@ -87,7 +87,7 @@ def singularity_reach(peak):
 def peak_bend(h, b, rb, ab):
     """The largest |bend| over a step of `h` s from b at rate rb, acceleration ab."""
     peak = max(abs(b), abs(b + h * (rb + 0.5 * ab * h)))
-    if ab and 0.0 < -rb / ab < h:
+    if ab != 0.0 and 0.0 < -rb / ab < h:
         peak = max(peak, abs(b - 0.5 * rb * rb / ab))
     return peak
 

@@ -77,9 +77,9 @@ def singularity_time(w1, a1, h, reach):
     step: |w| tau + |a1| tau^2 / 2 = reach at the fastest speed of the step."""
     fastest = max(abs(w1), abs(w1 + a1 * h))
     acc = abs(a1)
-    if acc:
+    if acc != 0.0:
         return 2.0 * reach / (fastest + math.sqrt(fastest * fastest + 2.0 * acc * reach))
-    if fastest:
+    if fastest != 0.0:
         return reach / fastest
     return math.inf
 
@@ -105,26 +105,25 @@ def _root(torque_at, step, a, b, fa, fb):
 def _root_by(torque_at, step, a, fa, b):
     """The zero between a (T = fa there) and b, if T's sign differs at b; else -1."""
     fb = torque_at(b, step)[0]
-    if fa and fb and (fa < 0.0) != (fb < 0.0):
+    if fa != 0.0 and fb != 0.0 and (fa < 0.0) != (fb < 0.0):
         if a > b:
             return _root(torque_at, step, b, a, fb, fa)
         return _root(torque_at, step, a, b, fa, fb)
     return -1.0
 
 
-def _zero_in(torque_at, step, lo, hi, zero, q, points, change):
+def _zero_in(torque_at, step, lo, hi, zero: int, q, points: int, change: int):
     """A zero of T in (lo, hi), the panel's: between nodes change - 1 and
     `change` if they differ in sign, else between an end (not a known zero) and
     its nearest node; -1.0 if neither shows one."""
-    nodes = GAUSS_NODES[points]
-    first = node_time(lo, hi, nodes[0], zero, q)
-    if change:
-        before = node_time(lo, hi, nodes[change - 1], zero, q)
+    first = node_time(lo, hi, GAUSS_NODES[points][0], zero, q)
+    if change != 0:
+        before = node_time(lo, hi, GAUSS_NODES[points][change - 1], zero, q)
         return _root_by(
             torque_at, step, before, torque_at(before, step)[0],
-            node_time(lo, hi, nodes[change], zero, q),
+            node_time(lo, hi, GAUSS_NODES[points][change], zero, q),
         )  # fmt: skip
-    last = node_time(lo, hi, nodes[points - 1], zero, q)
+    last = node_time(lo, hi, GAUSS_NODES[points][points - 1], zero, q)
     # The node nearest each end: the first in u, except on a panel substituted at hi.
     near_lo, near_hi = (last, first) if zero < 0 else (first, last)
     if zero <= 0:
@@ -164,18 +163,22 @@ def step_integral(torque_at, step, h, w1, a1, b, rb, ab, min_angle, p, reach):
             hi = end
         zero = 1 if zero_lo else -1 if zero_end and hi == end else 0
         if zero_lo and zero_end and hi == end:
-            hi = 0.5 * (t + end)  # a panel substitutes at one end only
-        stretch, degree = (q, gamma) if zero else (1.0, 0.0)
+            # A panel substitutes at one end only; two zeros an ulp apart leave
+            # no middle: the ulp between them is taken plainly (its share is nil).
+            middle = 0.5 * (t + end)
+            hi, zero = (middle, 1) if middle > t else (end, 0)
+        stretch, degree = (q, gamma) if zero != 0 else (1.0, 0.0)
         longest = longest_panel(tau, budget, degree, stretch)
         if hi - t > longest:
             hi = t + longest
             zero = 1 if zero_lo else 0
-            stretch, degree = (q, gamma) if zero else (1.0, 0.0)
+            stretch, degree = (q, gamma) if zero != 0 else (1.0, 0.0)
         singular = singular_log_rho(hi - t, tau, stretch)
         n = min(max(points, points_for(singular, budget, degree)), MAX_POINTS)
-        value, coefficients, change = panel(
+        value, change, a0, a1, a2, a3, a_last = panel(
             torque_at, step, t, hi, zero, q, n, b, rb, ab, min_angle, p
         )
+        coefficients = (a0, a1, a2, a3, a_last)
         if scale < 0.0:
             scale = 0.25 * value
         scale = max(scale, total)
@@ -207,7 +210,7 @@ def step_integral(torque_at, step, h, w1, a1, b, rb, ab, min_angle, p, reach):
                 length, points = hi - t, min(MAX_POINTS, max(own, resolved, n + 1))
                 continue
         root = -1.0
-        if change or may_vanish(coefficients):
+        if change != 0 or may_vanish(coefficients):
             root = _zero_in(torque_at, step, t, hi, zero, q, n, change)
         if root > t:
             end, zero_end = root, True

@@ -106,7 +106,7 @@ def _low_spread(x, c1, c2, c3):
     return c1 * x + c2 * (1.5 * x * x - 0.5) + c3 * (2.5 * x * x - 1.5) * x
 
 
-def zero_free_on(log_rho, coefficients, points, substituted):
+def zero_free_on(log_rho, coefficients, points, substituted: bool) -> bool:
     """Whether T, with these Legendre coefficients (a_0..a_3, a_(n-1)) on the
     panel, keeps |T - a_0| <= 0.9 |a_0| on E_rho (rho = exp(`log_rho`)): there
     |P_k| is at most P_k(x) <= rho^k, x = cosh(log rho); a_1..a_3 take 0.8
@@ -121,7 +121,7 @@ def zero_free_on(log_rho, coefficients, points, substituted):
     return substituted or abs(a_last) * math.exp((points - 1.0) * log_rho) <= _TOP_TERM * size
 
 
-def zero_free_log_rho(coefficients, points, substituted):
+def zero_free_log_rho(coefficients, points, substituted: bool):
     """(the largest log rho on which a_1..a_3 keep to `zero_free_on`'s share,
     the largest on which a_(n-1) does); 0.0 where there is none. The first is
     T's own (its zeros'), the second grows with the points (how well they
@@ -134,7 +134,7 @@ def zero_free_log_rho(coefficients, points, substituted):
     if c1 + c2 + c3 >= _LOW_TERMS * size:
         return 0.0, 0.0
     low = math.inf
-    if c1 or c2 or c3:
+    if c1 != 0.0 or c2 != 0.0 or c3 != 0.0:
         x = 1.0
         for _ in range(_NEWTON_STEPS):
             slope = c1 + 3.0 * c2 * x + c3 * (7.5 * x * x - 1.5)
@@ -163,36 +163,33 @@ def node_time(lo, hi, u, zero, q):
     return lo + (hi - lo) * u
 
 
-def panel(torque_at, step, lo, hi, zero, q, points, b, rb, ab, min_angle, p):
-    """(the integral over [lo, hi], T's Legendre coefficients a_0..a_3, a_(n-1)
-    on it, the index i of the first node whose torque's sign differs from node
-    i - 1's or 0): the
-    `points`-point rule, substituted at the zero end (`zero` as `node_time`).
-    The integrand is A |w| |T|^p, A = max(|b + rb t + ab t^2 / 2|, `min_angle`),
-    (T, w) = `torque_at(t, step)`."""
-    nodes, weights = GAUSS_NODES[points], GAUSS_WEIGHTS[points]
-    first, second = FIRST_COEFFICIENT[points], SECOND_COEFFICIENT[points]
-    third, last = THIRD_COEFFICIENT[points], LAST_COEFFICIENT[points]
-    total = a0 = a1 = a2 = a3 = a_last = 0.0
+def panel(torque_at, step, lo, hi, zero: int, q, points: int, b, rb, ab, min_angle, p):
+    """(the integral over [lo, hi], the index i of the first node whose torque's
+    sign differs from node i - 1's or 0, then T's Legendre coefficients
+    a_0..a_3, a_(n-1) on it): the `points`-point rule, substituted at the zero
+    end (`zero` as `node_time`). The integrand is A |w| |T|^p, A = max(|b + rb t
+    + ab t^2 / 2|, `min_angle`), (T, w) = `torque_at(t, step)`."""
+    total, a0, a1, a2, a3, a_last = 0.0, 0.0, 0.0, 0.0, 0.0, 0.0
     change, before = 0, 0.0
     for i in range(points):
-        u = nodes[i]
+        u = GAUSS_NODES[points][i]
         t = node_time(lo, hi, u, zero, q)
         torque, speed = torque_at(t, step)
-        if change == 0 and before and torque and (before < 0.0) != (torque < 0.0):
+        if change == 0 and before != 0.0 and torque != 0.0 and (before < 0.0) != (torque < 0.0):
             change = i
         before = torque
         angle = max(abs(b + t * (rb + 0.5 * ab * t)), min_angle)
         rate = angle * abs(speed) * abs(torque) ** p
         value = torque
-        if zero:
+        if zero != 0:
             power = u ** (q - 1.0)
             rate *= q * power
             value = torque / (power * u)
-        total += weights[i] * rate
-        a0 += weights[i] * value
-        a1 += first[i] * value
-        a2 += second[i] * value
-        a3 += third[i] * value
-        a_last += last[i] * value
-    return total * (hi - lo), (a0, a1, a2, a3, a_last), change
+        weight = GAUSS_WEIGHTS[points][i]
+        total += weight * rate
+        a0 += weight * value
+        a1 += FIRST_COEFFICIENT[points][i] * value
+        a2 += SECOND_COEFFICIENT[points][i] * value
+        a3 += THIRD_COEFFICIENT[points][i] * value
+        a_last += LAST_COEFFICIENT[points][i] * value
+    return total * (hi - lo), change, a0, a1, a2, a3, a_last

@@ -14,10 +14,11 @@ from .response import crosspiece_motion, euler_moments, pose, yoke_reactions
 def input_torque(psi, b, w1, a1, rb, ab, I1, I2, I3, load_torque):
     """T1 at input-pin angle `psi`, bend `b` with its rate and acceleration,
     input speed and acceleration, cross inertias and load (response.py)."""
-    _, _, s, c, sb, cb, D, rD = pose(math, psi, b)
-    if not (I1 or I2 or I3):
+    s, c, sb, cb, D, rD = pose(math, psi, b)[2:]
+    if I1 == 0.0 and I2 == 0.0 and I3 == 0.0:
         return load_torque * cb / D
-    w2, a2, W1, W2, W3, dW1, dW2, dW3 = crosspiece_motion(s, c, sb, cb, D, rD, w1, a1, rb, ab)
+    # The cross's angular velocity and acceleration (the output speed aside).
+    W1, W2, W3, dW1, dW2, dW3 = crosspiece_motion(s, c, sb, cb, D, rD, w1, a1, rb, ab)[2:]
     M1, M2, M3 = euler_moments(I1, I2, I3, W1, W2, W3, dW1, dW2, dW3)
     return yoke_reactions(M1, M2, M3, s, c, sb, cb, rD, load_torque)[2]
 

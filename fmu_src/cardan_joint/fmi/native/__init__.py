@@ -32,6 +32,7 @@ _COMMON = (
     "calls.c",
     "fast_path.c",
     "fast_values.c",
+    "fast_references.c",
     "generated.c",
     "state_book.c",
     "slave_object.c",

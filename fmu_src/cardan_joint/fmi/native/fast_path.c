@@ -25,8 +25,8 @@ static const char CLAIM[] =
     "if found:\n"
     "    inputs, known_size, first_output, outputs = sizes\n"
     "    # The step state, handed over only to a runtime with the model's step in C.\n"
-    "    state_size = int(slave.fast_state_size()) if generated and hasattr(slave, "
-    "'fast_state_size') and hasattr(slave, 'fast_sync') else 0\n"
+    "    state_size = int(slave.fast_state_size()) if generated and all(hasattr(slave, m) "
+    "for m in ('fast_state_size', 'fast_sync', 'fast_watch')) else 0\n"
     "    # FMI 3: value reference -> flat indices (slave3._FLAT), as int64s: the\n"
     "    # count of references, each one's first index, the end, then the indices.\n"
     "    refs = getattr(slave, 'fast_flat', None)\n"
@@ -39,7 +39,7 @@ static const char CLAIM[] =
 
 /* In the order of enum fast_method. */
 static const char *const METHODS[] = {"fast_step", "fast_outputs", "fast_load", "fast_store",
-                                      "fast_sync"};
+                                      "fast_sync", "fast_watch"};
 
 /* One call into the slave with the GIL held; its status (an FMI status number). */
 static long call(struct instance *in, enum fast_method method, PyObject *a, PyObject *b,
@@ -69,7 +69,8 @@ static void forget(struct fast_path *fast)
 {
     PyObject **owned[] = {&fast->slave,      &fast->methods[0], &fast->methods[1],
                           &fast->methods[2], &fast->methods[3], &fast->methods[4],
-                          &fast->queue,      &fast->last_inputs, &fast->last_step};
+                          &fast->methods[5], &fast->queue,      &fast->last_inputs,
+                          &fast->last_step};
     for (size_t i = 0; i < sizeof owned / sizeof *owned; i++) {
         if (*owned[i])
             p_Py_DecRef(*owned[i]);
@@ -141,9 +142,14 @@ static int set_up(struct instance *in, struct fast_path *fast)
     if (scratch)
         fast->scratch = scratch;
     double *state = scratch ? realloc(fast->state, (fast->state_size + 1) * sizeof *state) : NULL;
-    if (!state)
+    if (state)
+        fast->state = state;
+    double *limits = state ? realloc(fast->limits, fast->outputs * sizeof *limits) : NULL;
+    if (!limits)
         return 0;
-    fast->state = state;
+    fast->limits = limits;
+    for (long k = 0; k < fast->outputs; k++) /* none armed until fast_store says */
+        limits[k] = INFINITY;
     fast->generated = fast->state_size > 0 && generated_attach(fast);
     int methods = fast->state_size > 0 ? FAST_METHODS : FAST_SYNC;
     for (int m = 0; m < methods; m++)
@@ -172,6 +178,7 @@ static void drop(struct instance *in)
     free(fast->scratch);
     free(fast->table);
     free(fast->state);
+    free(fast->limits);
     free(fast->arguments);
     free(fast->results);
     free(fast->held);
@@ -219,8 +226,8 @@ void catch_up(struct instance *in)
 }
 
 /* One call into the slave, the GIL taken for it: fast_step(time, step, inputs),
- * fast_outputs(inputs), fast_load(inputs), fast_store() or fast_sync(time,
- * state, held inputs, outputs). */
+ * fast_outputs(inputs, read), fast_load(inputs), fast_store(), fast_sync(time,
+ * state, held inputs, outputs) or fast_watch(). */
 long fast_call(struct instance *in, enum fast_method method, double time, double step)
 {
     struct fast_path *fast = in->fast;
@@ -242,9 +249,12 @@ long fast_call(struct instance *in, enum fast_method method, double time, double
             keep(&fast->last_step, arguments[1]);
         arguments[2] = inputs_tuple(fast);
         made = arguments[0] && arguments[1] && arguments[2];
-    } else if (method != FAST_STORE) {
+    } else if (method != FAST_STORE && method != FAST_WATCH) {
         arguments[0] = inputs_tuple(fast);
-        made = arguments[0] != NULL;
+        /* fast_outputs(inputs, read): only a read of a held output warns. */
+        if (method == FAST_OUTPUTS && arguments[0])
+            arguments[1] = read_indices(fast);
+        made = arguments[0] != NULL && (method != FAST_OUTPUTS || arguments[1] != NULL);
     }
     long status;
     if (made)

@@ -6,7 +6,15 @@
 #include "instance.h"
 
 /* The slave's methods, in the order fast_path.c looks them up. */
-enum fast_method { FAST_STEP, FAST_OUTPUTS, FAST_LOAD, FAST_STORE, FAST_SYNC, FAST_METHODS };
+enum fast_method {
+    FAST_STEP,
+    FAST_OUTPUTS,
+    FAST_LOAD,
+    FAST_STORE,
+    FAST_SYNC,
+    FAST_WATCH,
+    FAST_METHODS
+};
 
 struct fast_path {
     PyObject *slave, *methods[FAST_METHODS];
@@ -28,10 +36,17 @@ struct fast_path {
     int generated, behind;
     long state_size;
     double *state, *arguments, *results, *held, behind_time;
+    /* With the generated step: each output's armed watch limit (+inf: none),
+     * from fast_store; a step taken in C whose output passes one hands over to
+     * the slave (fast_watch), which warns once and disarms it. */
+    double *limits;
     /* FMI 3 (NULL for FMI 2, whose value references are the flat indices):
      * {n, start[0..n], indices...}: value reference vr < n holds the flat
      * indices indices[start[vr]] to indices[start[vr + 1] - 1]. */
     long long *table;
+    /* The value references a getReal reads, while it asks fast_outputs. */
+    const unsigned *reading;
+    size_t reading_count;
 };
 
 int fast_table(struct fast_path *fast, const char *bytes, size_t size);
@@ -59,6 +74,9 @@ void keep(PyObject **slot, PyObject *value);
 PyObject *tuple_of(const double *values, long n);
 /* With the GIL: the inputs (known[0..inputs)) as a tuple, kept as last_inputs. */
 PyObject *inputs_tuple(struct fast_path *fast);
+/* With the GIL: the flat indices of the value references being read
+ * (fast->reading), in order, as a tuple of ints (NULL: no memory). */
+PyObject *read_indices(const struct fast_path *fast);
 /* With the GIL: the status of a method's reply, its values written into the
  * arrays; -1 when it is malformed (nothing written). */
 long take_reply(struct fast_path *fast, enum fast_method method, PyObject *reply);

@@ -6,6 +6,7 @@
 #include "fast_path.h"
 #include "python_api.h"
 
+#include <math.h>
 #include <stdlib.h>
 #include <string.h>
 
@@ -81,7 +82,7 @@ struct part {
     long count;
 };
 
-static int destinations(const struct fast_path *fast, enum fast_method method, struct part part[3])
+static int destinations(const struct fast_path *fast, enum fast_method method, struct part part[4])
 {
     int n = 0;
     if (method == FAST_STEP || method == FAST_OUTPUTS)
@@ -92,6 +93,8 @@ static int destinations(const struct fast_path *fast, enum fast_method method, s
         part[n++] = (struct part){fast->known, fast->known_size};
     if ((method == FAST_STEP || method == FAST_STORE) && fast->state_size > 0)
         part[n++] = (struct part){fast->state, fast->state_size};
+    if ((method == FAST_STORE && fast->state_size > 0) || method == FAST_WATCH)
+        part[n++] = (struct part){fast->limits, fast->outputs};
     return n;
 }
 
@@ -105,7 +108,7 @@ long take_reply(struct fast_path *fast, enum fast_method method, PyObject *reply
         p_PyErr_Clear();
         return p_PyLong_AsLong(reply);
     }
-    struct part part[3];
+    struct part part[4];
     int parts = destinations(fast, method, part);
     long expected = 0, taken = 0;
     for (int k = 0; k < parts; k++)
@@ -131,25 +134,6 @@ long take_reply(struct fast_path *fast, enum fast_method method, PyObject *reply
     return p_PyLong_AsLong(py_tuple_item(reply, 0));
 }
 
-/* Takes the table of FMI 3's value references (none: FMI 2's are the flat
- * indices); 0 if it is malformed or names an index beyond the arrays. */
-int fast_table(struct fast_path *fast, const char *bytes, size_t size)
-{
-    free(fast->table);
-    fast->table = NULL;
-    if (size == 0)
-        return 1;
-    long long n = (long long)(size / 8), limit = fast->first_output + fast->outputs;
-    if (size % 8 || !(fast->table = malloc(size)))
-        return 0;
-    memcpy(fast->table, bytes, size);
-    long long refs = fast->table[0];
-    int ok = refs >= 1 && n >= refs + 2 && fast->table[refs + 1] == n - refs - 2;
-    for (long long i = refs + 2; ok && i < n; i++)
-        ok = fast->table[i] >= 0 && fast->table[i] < limit;
-    return ok;
-}
-
 /* Before any other call into the slave: it takes the host's latest inputs. */
 void fast_before(struct instance *in)
 {
@@ -171,47 +155,6 @@ void fast_after(struct instance *in)
         return;
     fast_call(in, FAST_STORE, 0, 0);
     fast->stale = 1;
-}
-
-/* The flat indices of value reference vr (0 if none: FMI 3's time, an unknown one). */
-long long flat_of(const struct fast_path *fast, unsigned vr, const long long **indices,
-                  long long *own)
-{
-    const long long *table = fast->table;
-    if (!table) {
-        *own = vr;
-        *indices = own;
-        return 1;
-    }
-    if (vr >= (unsigned long long)table[0])
-        return 0;
-    const long long *start = table + 1;
-    *indices = start + table[0] + 1 + start[vr];
-    return start[vr + 1] - start[vr];
-}
-
-int fast_serves(const struct instance *in, const unsigned vr[], size_t n, int inputs_only)
-{
-    const struct fast_path *fast = in->fast;
-    if (!fast)
-        return 0;
-    long long limit = inputs_only ? fast->inputs : fast->first_output + fast->outputs, own;
-    if (!fast->table) { /* FMI 2: each value reference is its flat index */
-        for (size_t i = 0; i < n; i++)
-            if (vr[i] >= limit)
-                return 0;
-        return 1;
-    }
-    for (size_t i = 0; i < n; i++) {
-        const long long *indices;
-        long long count = flat_of(fast, vr[i], &indices, &own);
-        if (count == 0)
-            return 0;
-        for (long long k = 0; k < count; k++)
-            if (indices[k] >= limit)
-                return 0;
-    }
-    return 1;
 }
 
 /* Call only when fast_serves(in, vr, n, 1); value holds every element in order. */
@@ -236,7 +179,9 @@ fmi2Status fast_get(struct instance *in, const unsigned vr[], size_t n, double v
     struct fast_path *fast = in->fast;
     long status = fmi2OK;
     if (fast->stale) {
+        fast->reading = vr, fast->reading_count = n;
         status = fast_call(in, FAST_OUTPUTS, 0, 0);
+        fast->reading = NULL, fast->reading_count = 0;
         fast->inputs_written = 0;
         /* Held outputs (warning) are evaluated, and warned about, at every read. */
         fast->stale = status != fmi2OK;
@@ -256,9 +201,19 @@ fmi2Status fast_get(struct instance *in, const unsigned vr[], size_t n, double v
     return status == fmi2Warning ? fmi2OK : (fmi2Status)status;
 }
 
+/* Whether an output of the step just taken in C is past its armed watch limit
+ * (as `framework.watches.any_passed` compares: NaN passes none). */
+static int watch_passed(const struct fast_path *fast)
+{
+    for (long k = 0; k < fast->outputs; k++)
+        if (fabs(fast->values[k]) > fast->limits[k])
+            return 1;
+    return 0;
+}
+
 /* doStep: in C when the generated step takes it (the slave catches up at its
- * next call), else in one call into Python; -1 when the instance has no fast
- * path. */
+ * next call, or at once to warn of a watch passed), else in one call into
+ * Python; -1 when the instance has no fast path. */
 int fast_step(struct instance *in, double time, double step)
 {
     struct fast_path *fast = in->fast;
@@ -268,7 +223,8 @@ int fast_step(struct instance *in, double time, double step)
         in->last_successful_time = fast->behind_time = time + step;
         fast->behind = 1;
         fast->inputs_written = fast->stale = 0;
-        return fmi2OK;
+        /* The slave warns once, as after a step in Python; the step stands. */
+        return watch_passed(fast) ? (int)fast_call(in, FAST_WATCH, 0, 0) : fmi2OK;
     }
     long status = fast_call(in, FAST_STEP, time, step);
     /* pythonfmu: the step's end when taken, its start when not (NaN before any). */

@@ -27,11 +27,12 @@ from .limits import (
     fits,
 )
 from .refusals import JointReason
-from .step import ANGLE, MOVED, STATE, joint_outputs, joint_step
+from .step import ANGLE, LIFE_STATE, STATE, joint_life_step, joint_outputs, joint_step
 
 _INPUTS = attrgetter(*table.INPUTS)
-# The parameters without life, the step's last arguments (the table's order).
+# The parameters, the step's last arguments (the table's order).
 _STEP_PARAMETERS = attrgetter(*table.WITHOUT_LIFE.PARAMETERS)
+_LIFE_STEP_PARAMETERS = attrgetter(*table.PARAMETERS)
 
 
 class CardanJoint(JointLife, ShaftModel):
@@ -196,35 +197,42 @@ class CardanJoint(JointLife, ShaftModel):
         `time` and return the outputs and the inputs after it (the table's
         orders), or the Refusal of the step (then only the inputs have changed).
 
-        The step is `step.joint_step`, the definition the FMU's C runtime is
-        generated from; a step it does not take goes through the checks of the
-        generic `run`, which name the refusal."""
+        The step is `step.joint_step` (`joint_life_step` with life on), the
+        definition the FMU's C runtime is generated from; a step it does not
+        take goes through the checks of the generic `run`, which name the
+        refusal."""
         self.set_inputs(inputs)
-        taken = joint_step(time, h, *self.step_state(), *inputs, *_STEP_PARAMETERS(self))
+        state_and_inputs = (*self.step_state(), *inputs)
+        if self.life:
+            taken = joint_life_step(time, h, *state_and_inputs, *_LIFE_STEP_PARAMETERS(self))
+        else:
+            taken = joint_step(time, h, *state_and_inputs, *_STEP_PARAMETERS(self))
         if taken is None:
             return ShaftModel.run(self, time, h, inputs)
-        start = self._life_start() if self.life else None  # from before the step
-        self._angle = taken[:ANGLE]
-        moved = taken[len(STATE) : MOVED]
+        state = len(self.step_names())
+        self.set_step_state(taken[:state])
+        moved = taken[state : state + len(inputs)]
         self.set_inputs(moved)
-        if start is not None:
-            self._add_damage(h, start)
         self.time = time + h
-        outputs = taken[MOVED:]
-        if self.life:
-            end_speed, end_beta, load = moved[0], moved[2], moved[5]
-            return self._with_life(outputs, outputs[2:], load, end_speed, end_beta), moved
-        return outputs, moved
+        return taken[state + len(inputs) :], moved
+
+    def step_names(self) -> tuple[str, ...]:
+        """The names of the step state's values (`step.STATE`, `LIFE_STATE`)."""
+        return LIFE_STATE if self.life else STATE
 
     def step_state(self) -> tuple:
-        """The values of `step.STATE`: what the step advances beside the inputs."""
-        return (*self._angle, *self._phase, self.parameter_fault is None)
+        """The values of `step_names()`: what the step advances beside the inputs."""
+        angle = (*self._angle, *self._phase, self.parameter_fault is None)
+        return (*angle, self.life_consumed, self.life_consumed_error) if self.life else angle
 
     def set_step_state(self, state) -> None:
         """Take a state a generated step advanced (`step_state`'s values); only the
-        angle moves over a step, the rest follows the parameters."""
+        angle and Miner's sum move over a step, the rest follows the parameters."""
         turns, fraction, fraction_error = state[:ANGLE]
         self._angle = (int(turns), float(fraction), float(fraction_error))
+        if self.life:
+            consumed, error = state[len(STATE) :]
+            self.life_consumed, self.life_consumed_error = float(consumed), float(error)
 
     # --- outputs -----------------------------------------------------------
 

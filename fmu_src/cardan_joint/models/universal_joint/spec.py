@@ -4,7 +4,7 @@ from ...framework.watches import Watch
 from .. import Model, ReferenceRun
 from . import variables
 from .model import CardanJoint
-from .step import joint_step
+from .step import joint_life_step, joint_step
 
 # What a joint's engineer wants to hear of, once (a build without life has none).
 TORQUE_WATCH = Watch(
@@ -32,8 +32,8 @@ MODEL = Model(
     default_settings={"life": True},
     setting_choices={"life": (True, False)},
     setting_help={"life": "bearing loads and catalogue life (--no-life: UniversalJointNoLife)"},
-    # The step in C without life; life's step stays in Python for now.
-    step=lambda settings: None if settings.get("life", True) else joint_step,
+    # The step in C, with life or without (docs/codegen.md).
+    step=lambda settings: joint_life_step if settings.get("life", True) else joint_step,
     name_for=lambda settings: (
         "UniversalJoint" if settings.get("life", True) else "UniversalJointNoLife"
     ),

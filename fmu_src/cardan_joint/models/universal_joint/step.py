@@ -2,12 +2,13 @@
 build translates into the FMU's C runtime (docs/codegen.md), so both give the
 same bits. Pure functions of floats: the inputs held over the step, the
 parameters, the input angle and yoke phase as exact revolutions
-(`physics.revolutions`); the life consumed is added around it (`life.py`).
+(`physics.revolutions`) and, with life on, Miner's sum (`joint_life_step`).
 """
 
 import math
 
 from ...framework.values import MAX_INCREMENT
+from ...physics.life import LifeRule, compensated_add, life_outputs, step_damage
 from ...physics.response import JointResponse, kernel
 from ...physics.revolutions import Turns, advanced, angle_value
 from . import variables as table
@@ -31,6 +32,17 @@ STATE = (
 )  # fmt: skip
 ANGLE = STATE.index("phase_turns")  # the input angle's values lead the state
 MOVED = len(STATE) + len(table.INPUTS)
+# With life on, Miner's sum and its compensation follow (`JointLife`).
+LIFE_STATE = (*STATE, "life_consumed", "life_consumed_error")
+_KINEMATIC_STATE = len(STATE)
+_MOVED_BY_LIFE_STEP = len(LIFE_STATE) + len(table.INPUTS)
+# The kernel's fields the bearing loads take, among the outputs after the angles.
+_TORQUE, _INPUT_MOMENT, _OUTPUT_MOMENT = (
+    JointResponse._fields.index(name)
+    for name in ("input_torque", "input_yoke_moment", "output_yoke_moment")
+)
+_SPEED, _BEND, _LOAD = (table.INPUTS.index(name) for name in ("input_speed", "bend_angle",
+                                                              "load_torque"))  # fmt: skip
 
 
 def joint_outputs(
@@ -60,6 +72,66 @@ def joint_outputs(
     return (input_angle, input_angle + r[_CARDAN_ERROR]) + r[:KINEMATIC_OUTPUTS]
 
 
+def takes_step(
+    h: float,
+    parameters_valid: bool,
+    speed: float,
+    acceleration: float,
+    beta: float,
+    rate: float,
+    bend_acceleration: float,
+    load: float,
+    max_bend_angle: float,
+) -> bool:
+    """Whether the step is taken here; otherwise the model's checks name the
+    refusal. NaN fails every comparison, so a NaN anywhere is never taken here."""
+    increment = h * (speed + 0.5 * acceleration * h)
+    end_speed = speed + acceleration * h
+    return (
+        0.0 < h < math.inf
+        and parameters_valid
+        and fits(speed, acceleration, beta, rate, bend_acceleration, load, max_bend_angle, h)
+        and abs(increment) <= MAX_INCREMENT
+        and abs(end_speed) <= SPEED_LIMIT
+    )
+
+
+def joint_advanced(
+    h: float,
+    turns: int,
+    fraction: float,
+    fraction_error: float,
+    phase_turns: int,
+    phase_fraction: float,
+    phase_error: float,
+    parameters_valid: bool,
+    speed: float,
+    acceleration: float,
+    beta: float,
+    rate: float,
+    bend_acceleration: float,
+    load: float,
+    I1: float,
+    I2: float,
+    I3: float,
+) -> tuple:
+    """A step `takes_step` takes, of `h` s with the inputs held (speed and bend
+    angle at constant acceleration): the state, the inputs after the step and
+    the outputs without life."""
+    increment = h * (speed + 0.5 * acceleration * h)
+    end_speed = speed + acceleration * h
+    angle = advanced((turns, fraction, fraction_error), increment)
+    end_beta = beta + h * (rate + 0.5 * bend_acceleration * h)
+    end_rate = rate + bend_acceleration * h
+    moved = (end_speed, acceleration, end_beta, end_rate, bend_acceleration, load)
+    phase = (phase_turns, phase_fraction, phase_error)
+    outputs = joint_outputs(
+        angle, phase, end_beta, end_speed, acceleration, end_rate, bend_acceleration, load,
+        I1, I2, I3,
+    )  # fmt: skip
+    return angle + phase + (parameters_valid,) + moved + outputs
+
+
 def joint_step(
     time: float,
     h: float,
@@ -83,32 +155,78 @@ def joint_step(
     crosspiece_inertia_3: float,
     max_bend_angle: float,
 ) -> tuple | None:
-    """A step of `h` s from `time` with the inputs held (speed and bend angle at
-    constant acceleration): the state, the inputs after the step and the outputs
-    without life (`STATE`), or None when the step is not taken here (the model's
-    checks then name the refusal). The yoke phase and start angle enter through
-    the state (`start` reduces them), not as parameters."""
-    speed, acceleration, load = input_speed, input_acceleration, load_torque
-    beta, rate, bend_acceleration = bend_angle, bend_angle_rate, bend_angle_acceleration
-    increment = h * (speed + 0.5 * acceleration * h)
-    end_speed = speed + acceleration * h
-    # NaN fails every comparison, so a NaN anywhere is never taken here.
-    if not (
-        0.0 < h < math.inf
-        and parameters_valid
-        and fits(speed, acceleration, beta, rate, bend_acceleration, load, max_bend_angle, h)
-        and abs(increment) <= MAX_INCREMENT
-        and abs(end_speed) <= SPEED_LIMIT
-    ):
+    """A step of `h` s from `time` without life: the state (`STATE`), the inputs
+    after the step and the outputs, or None when the step is not taken here.
+    The yoke phase and start angle enter through the state (`start` reduces
+    them), not as parameters."""
+    inputs = (input_speed, input_acceleration, bend_angle, bend_angle_rate,
+              bend_angle_acceleration, load_torque)  # fmt: skip
+    if not takes_step(h, parameters_valid, *inputs, max_bend_angle):
         return None
-    angle = advanced((turns, fraction, fraction_error), increment)
-    end_beta = beta + h * (rate + 0.5 * bend_acceleration * h)
-    end_rate = rate + bend_acceleration * h
-    moved = (end_speed, acceleration, end_beta, end_rate, bend_acceleration, load)
-    phase = (phase_turns, phase_fraction, phase_error)
-    inertia = (crosspiece_inertia_1, crosspiece_inertia_2, crosspiece_inertia_3)
-    outputs = joint_outputs(
-        angle, phase, end_beta, end_speed, acceleration, end_rate, bend_acceleration, load,
-        inertia[0], inertia[1], inertia[2],
+    return joint_advanced(
+        h, turns, fraction, fraction_error, phase_turns, phase_fraction, phase_error,
+        parameters_valid, *inputs, crosspiece_inertia_1, crosspiece_inertia_2,
+        crosspiece_inertia_3,
     )  # fmt: skip
-    return angle + phase + (parameters_valid,) + moved + outputs
+
+
+def joint_life_step(
+    time: float,
+    h: float,
+    turns: int,
+    fraction: float,
+    fraction_error: float,
+    phase_turns: int,
+    phase_fraction: float,
+    phase_error: float,
+    parameters_valid: bool,
+    life_consumed: float,
+    life_consumed_error: float,
+    input_speed: float,
+    input_acceleration: float,
+    bend_angle: float,
+    bend_angle_rate: float,
+    bend_angle_acceleration: float,
+    load_torque: float,
+    yoke_phase: float,
+    input_angle_start: float,
+    crosspiece_inertia_1: float,
+    crosspiece_inertia_2: float,
+    crosspiece_inertia_3: float,
+    max_bend_angle: float,
+    bearing_radius: float,
+    rated_torque: float,
+    life_constant: float,
+    life_exponent: float,
+    life_min_angle: float,
+) -> tuple | None:
+    """`joint_step` with life on: the state (`LIFE_STATE`), the inputs after
+    the step, the outputs and the four life outputs; Miner's sum gains the
+    step's damage (`life.step_damage`, from the values before the step)."""
+    inputs = (input_speed, input_acceleration, bend_angle, bend_angle_rate,
+              bend_angle_acceleration, load_torque)  # fmt: skip
+    if not takes_step(h, parameters_valid, *inputs, max_bend_angle):
+        return None
+    inertia = (crosspiece_inertia_1, crosspiece_inertia_2, crosspiece_inertia_3)
+    taken = joint_advanced(
+        h, turns, fraction, fraction_error, phase_turns, phase_fraction, phase_error,
+        parameters_valid, *inputs, *inertia,
+    )  # fmt: skip
+    rule = LifeRule(rated_torque, life_constant, life_exponent, life_min_angle)
+    psi = fraction + (phase_fraction + (fraction_error + phase_error))  # as `response`'s
+    damage = step_damage(
+        rule, h, psi, bend_angle, input_speed, input_acceleration, bend_angle_rate,
+        bend_angle_acceleration, inertia, load_torque,
+    )  # fmt: skip
+    consumed, consumed_error = life_consumed, life_consumed_error
+    if damage != 0.0:
+        consumed, consumed_error = compensated_add(consumed, consumed_error, damage)
+    moved = taken[_KINEMATIC_STATE:MOVED]
+    outputs = taken[MOVED:]
+    kernel_fields = outputs[2:]  # after the two angles
+    life = life_outputs(
+        rule, bearing_radius, consumed + consumed_error, kernel_fields[_TORQUE],
+        kernel_fields[_INPUT_MOMENT], kernel_fields[_OUTPUT_MOMENT], moved[_LOAD],
+        moved[_SPEED], moved[_BEND],
+    )  # fmt: skip
+    return taken[:_KINEMATIC_STATE] + (consumed, consumed_error) + moved + outputs + life

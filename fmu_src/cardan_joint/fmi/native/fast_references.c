@@ -1,0 +1,90 @@
+/* The one-call step's value references (the protocol: fmi/fast_step.py): FMI
+ * 3's table of each reference's flat indices (FMI 2's references are the flat
+ * indices), whether the arrays serve a call's references, and the flat indices
+ * a getReal reads, for the slave's fast_outputs. */
+#include "fast_path.h"
+#include "python_api.h"
+
+#include <stdlib.h>
+#include <string.h>
+
+/* Takes the table of FMI 3's value references (none: FMI 2's are the flat
+ * indices); 0 if it is malformed or names an index beyond the arrays. */
+int fast_table(struct fast_path *fast, const char *bytes, size_t size)
+{
+    free(fast->table);
+    fast->table = NULL;
+    if (size == 0)
+        return 1;
+    long long n = (long long)(size / 8), limit = fast->first_output + fast->outputs;
+    if (size % 8 || !(fast->table = malloc(size)))
+        return 0;
+    memcpy(fast->table, bytes, size);
+    long long refs = fast->table[0];
+    int ok = refs >= 1 && n >= refs + 2 && fast->table[refs + 1] == n - refs - 2;
+    for (long long i = refs + 2; ok && i < n; i++)
+        ok = fast->table[i] >= 0 && fast->table[i] < limit;
+    return ok;
+}
+
+/* The flat indices of value reference vr (0 if none: FMI 3's time, an unknown one). */
+long long flat_of(const struct fast_path *fast, unsigned vr, const long long **indices,
+                  long long *own)
+{
+    const long long *table = fast->table;
+    if (!table) {
+        *own = vr;
+        *indices = own;
+        return 1;
+    }
+    if (vr >= (unsigned long long)table[0])
+        return 0;
+    const long long *start = table + 1;
+    *indices = start + table[0] + 1 + start[vr];
+    return start[vr + 1] - start[vr];
+}
+
+int fast_serves(const struct instance *in, const unsigned vr[], size_t n, int inputs_only)
+{
+    const struct fast_path *fast = in->fast;
+    if (!fast)
+        return 0;
+    long long limit = inputs_only ? fast->inputs : fast->first_output + fast->outputs, own;
+    if (!fast->table) { /* FMI 2: each value reference is its flat index */
+        for (size_t i = 0; i < n; i++)
+            if (vr[i] >= limit)
+                return 0;
+        return 1;
+    }
+    for (size_t i = 0; i < n; i++) {
+        const long long *indices;
+        long long count = flat_of(fast, vr[i], &indices, &own);
+        if (count == 0)
+            return 0;
+        for (long long k = 0; k < count; k++)
+            if (indices[k] >= limit)
+                return 0;
+    }
+    return 1;
+}
+
+PyObject *read_indices(const struct fast_path *fast)
+{
+    long long own, total = 0;
+    const long long *indices;
+    for (size_t i = 0; i < fast->reading_count; i++)
+        total += flat_of(fast, fast->reading[i], &indices, &own);
+    PyObject *tuple = p_PyTuple_New((Py_ssize_t)total);
+    Py_ssize_t at = 0;
+    for (size_t i = 0; tuple && i < fast->reading_count; i++) {
+        long long count = flat_of(fast, fast->reading[i], &indices, &own);
+        for (long long k = 0; tuple && k < count; k++) {
+            PyObject *item = p_PyLong_FromLong((long)indices[k]);
+            if (!item || p_PyTuple_SetItem(tuple, at++, item)) {
+                p_Py_DecRef(tuple);
+                tuple = NULL;
+            }
+        }
+    }
+    return tuple;
+}
