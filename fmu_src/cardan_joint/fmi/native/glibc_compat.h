@@ -51,6 +51,16 @@ CARDAN_JOINT_OLD_VERSION(pthread_rwlock_wrlock, GLIBC_2.2.5)
 CARDAN_JOINT_OLD_VERSION(pthread_rwlock_unlock, GLIBC_2.2.5)
 CARDAN_JOINT_OLD_VERSION(pthread_attr_setstacksize, GLIBC_2.2.5)
 
+/* libm (glibc 2.29: GLIBC_2.29, the generated step's exp, log and pow): 2.29
+ * dropped the SVID error wrappers from the default versions; the old versions
+ * wrap the same functions and differ only in errno and in how an overflow or a
+ * domain error is reported, which the generated step guards before it calls. */
+CARDAN_JOINT_OLD_VERSION(exp, GLIBC_2.2.5)
+CARDAN_JOINT_OLD_VERSION(exp2, GLIBC_2.2.5)
+CARDAN_JOINT_OLD_VERSION(log, GLIBC_2.2.5)
+CARDAN_JOINT_OLD_VERSION(log2, GLIBC_2.2.5)
+CARDAN_JOINT_OLD_VERSION(pow, GLIBC_2.2.5)
+
 /* fcntl: glibc 2.28's headers may redirect it to fcntl64 (GLIBC_2.28); the
  * same function on x86_64.  stat, fstat and lstat (GLIBC_2.33) have no older
  * version of the same name: the runtime uses access() and fopen() instead. */
