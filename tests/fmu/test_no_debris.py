@@ -2,6 +2,7 @@
 removes what it unzipped, SIGTERM and SIGHUP end a run as Ctrl-C does, and a
 Ctrl-C inside an `FmuInstance` step reaches the host as KeyboardInterrupt."""
 
+import os
 import signal
 import subprocess
 import sys
@@ -108,10 +109,11 @@ def test_sigterm_and_sighup_end_a_run_as_ctrl_c_does(fmu_path, tmp_path, signum,
 
 
 # A loop of steps whose 50th sends the signal from inside the FMU's own Python
-# code (its model's step), where a Ctrl-C lands most of the time.
+# code (its model's step, entered with the step in Python), where a Ctrl-C
+# landed most of the time; with the step in C, a timer sends it while C steps.
 STEPPING = textwrap.dedent(
     """
-    import os, sys
+    import os, sys, threading
     from cardan_joint.host.instance import FmuInstance, StepRefusedError
 
     with FmuInstance.open(sys.argv[1], start_values={"bend_angle": 0.3}) as joint:
@@ -119,6 +121,8 @@ STEPPING = textwrap.dedent(
         joint.step(1e-3)
         fmu = next(m for n, m in sys.modules.items() if n.endswith(".universal_joint.model"))
         calls = []
+        if sys.argv[3] == "c":
+            threading.Timer(0.3, os.kill, (os.getpid(), int(sys.argv[2]))).start()
 
         def signalling(method):
             def call(*args):
@@ -143,9 +147,14 @@ STEPPING = textwrap.dedent(
 )
 
 
+@pytest.mark.parametrize("step", ["python", "c"])
 @pytest.mark.parametrize("signum", [signal.SIGINT, signal.SIGTERM])
-def test_ctrl_c_in_an_instance_loop_raises_keyboard_interrupt(fmu_path, signum):
-    process = _child([sys.executable, "-c", STEPPING, str(fmu_path), str(int(signum))])
+def test_ctrl_c_in_an_instance_loop_raises_keyboard_interrupt(fmu_path, signum, step):
+    python_step = {"CARDAN_JOINT_FMU_PYTHON_STEP": "1"} if step == "python" else {}
+    process = _child(
+        [sys.executable, "-c", STEPPING, str(fmu_path), str(int(signum)), step],
+        env={**os.environ, **python_step},
+    )
     try:
         out, err = process.communicate(timeout=30)
     finally:

@@ -23,6 +23,7 @@ from pathlib import Path
 from typing import Any
 
 from ..names import check_known
+from .fmpy_slave import fmpy_slave, logging_callbacks
 from .fmu_info import FmuInfo
 from .interrupts import STEP_INTERRUPTS
 from .unpacked import ExtractedFMU
@@ -30,19 +31,6 @@ from .unpacked import ExtractedFMU
 Message = tuple[int, str, str]  # (FMI status, category, text)
 # FMPy's opaque handle of a saved FMU state (fmi2FMUstate / fmi3FMUState pointer).
 FMUState = Any
-
-
-def _slave(model_description, unzipped: str, name: str):
-    from fmpy.fmi2 import FMU2Slave
-    from fmpy.fmi3 import FMU3Slave
-
-    fmi3 = model_description.fmiVersion.startswith("3")
-    return (FMU3Slave if fmi3 else FMU2Slave)(
-        guid=model_description.guid,
-        unzipDirectory=unzipped,
-        modelIdentifier=model_description.coSimulation.modelIdentifier,
-        instanceName=name,
-    )
 
 
 # FmuInstance hides FMI 3's call sequence, array getters and FMU-state names.
@@ -60,21 +48,6 @@ class _Recent(list):
         super().append(message)
         if self.also is not None:
             self.also.append(message)
-
-
-def logging_callbacks(sink: Any) -> Any:
-    """FMI 2 callbacks whose logger appends (status, category, message) to `sink`."""
-    from fmpy.fmi2 import defaultCallbacks, fmi2CallbackFunctions, fmi2CallbackLoggerTYPE
-
-    callbacks = fmi2CallbackFunctions()
-    callbacks.logger = fmi2CallbackLoggerTYPE(
-        lambda env, instance, status, category, message: sink.append(
-            (status, category.decode(), message.decode())
-        )
-    )
-    callbacks.allocateMemory = defaultCallbacks.allocateMemory
-    callbacks.freeMemory = defaultCallbacks.freeMemory
-    return callbacks
 
 
 def status_of(call, *args, **kwargs) -> int:
@@ -130,28 +103,23 @@ class FmuInstance:
         self.fmi3 = self.info.fmi3
         # Elements per variable (FMI 3 arrays; 1 for a scalar).
         self.sizes = {name: v.size for name, v in self.info.variables.items()}
-        self.fmu = _slave(model_description, str(unzipped), name)
+        self.fmu = fmpy_slave(model_description, str(unzipped), name)
         self._cleanup: list[Callable[[], None]] = []
         # The messages of the current call only: a refused step raises with them.
         self.recent = sink = _Recent(messages)
-        if self.fmi3:
-            # FMPy keeps the callback on the FMU object, so it outlives the instance.
-            self.callbacks = None
-            self.fmu.instantiate(
-                logMessage=lambda env, status, category, message: sink.append(
-                    (status, category.decode(), message.decode())
-                )
-            )
-        else:
-            # Kept on the instance: ctypes callbacks must outlive the FMU.
-            self.callbacks = logging_callbacks(sink)
-            self.fmu.instantiate(callbacks=self.callbacks, loggingOn=True)
-        self._cleanup.append(self.fmu.freeInstance)
-        # A stop signal during a step is raised after it, not inside the FMU's code
-        # (where the runtime could only call the step failed).
+        # A stop signal during a call into the FMU (instantiate, which may start its
+        # Python, or a step) is raised after the call, not inside the FMU's code,
+        # where the runtime could only call the call failed.
         STEP_INTERRUPTS.acquire()
         self._holding = True
+        held = STEP_INTERRUPTS.request
         try:
+            held.holding = True
+            try:
+                self._instantiate(sink)
+            finally:
+                held.holding = False
+            held.raise_requested()
             if self.fmi3:
                 self.fmu.enterInitializationMode(startTime=start_time)
             else:
@@ -165,6 +133,21 @@ class FmuInstance:
         except BaseException:
             self.close()
             raise
+
+    def _instantiate(self, sink: Any) -> None:
+        if self.fmi3:
+            # FMPy keeps the callback on the FMU object, so it outlives the instance.
+            self.callbacks = None
+            self.fmu.instantiate(
+                logMessage=lambda env, status, category, message: sink.append(
+                    (status, category.decode(), message.decode())
+                )
+            )
+        else:
+            # Kept on the instance: ctypes callbacks must outlive the FMU.
+            self.callbacks = logging_callbacks(sink)
+            self.fmu.instantiate(callbacks=self.callbacks, loggingOn=True)
+        self._cleanup.append(self.fmu.freeInstance)
 
     def exit_initialization_mode(self) -> int:
         """Leave initialization; the FMI status is kept as `init_status` (fmi2Error
