@@ -146,6 +146,9 @@ def test_ctrl_c_during_a_sweep_keeps_the_finished_cases(fmu_path, tmp_path):
         str(fmu_path),
     ]
     grid = ["--bend-angles", "5", "10", "15", "20", "--speeds", "1000", "2000", "3000"]
+    # Cases long enough that the sweep is still running when the signal lands,
+    # however loaded the machine that reads its progress bar.
+    grid += ["--revolutions", "20"]
     process = subprocess.Popen(
         [*command, *grid, "--out", str(tmp_path), "--progress"], stderr=subprocess.PIPE
     )
