@@ -8,14 +8,13 @@ writes what it computed up to the refusal; the FMU's warnings print one line
 each.
 """
 
-import signal
 import sys
 import textwrap
 from pathlib import Path
 
 from . import results
 from .host.fmu_info import FmuInfo
-from .host.interrupts import exit_status, signal_name
+from .host.interrupts import exit_status, interrupted
 from .host.progress import PROGRESS_MIN_STEPS
 from .host.run_inputs import read_input_csv, split_assignments, with_constants
 from .names import UsageError
@@ -102,12 +101,6 @@ def check_plot_format(plot: Path) -> None:
         )
 
 
-def _interrupted(interrupt: BaseException) -> str:
-    """ "interrupted", naming the signal unless it was Ctrl-C's."""
-    signum = getattr(interrupt, "signum", signal.SIGINT)
-    return "interrupted" if signum == signal.SIGINT else f"interrupted by {signal_name(signum)}"
-
-
 def _reasons(error) -> list[str]:
     return [
         text for status, _, text in error.messages if status in ("discard", "error", "fatal")
@@ -190,14 +183,14 @@ def simulate_command(args):
             )
         except SimulationInterrupted as interrupt:
             print(
-                f"{PROG} simulate: {_interrupted(interrupt)} at t = {interrupt.time:.6g} s of "
+                f"{PROG} simulate: {interrupted(interrupt)} at t = {interrupt.time:.6g} s of "
                 f"{length.stop_time:.6g} s: no file written",
                 file=sys.stderr,
             )
             return exit_status(interrupt)
         except KeyboardInterrupt as interrupt:  # after the run: while its last rows were written
             print(
-                f"{PROG} simulate: {_interrupted(interrupt)} while writing {output}: "
+                f"{PROG} simulate: {interrupted(interrupt)} while writing {output}: "
                 "no file written",
                 file=sys.stderr,
             )
@@ -222,7 +215,7 @@ def simulate_command(args):
         plot_run(sample, plot_variables, plot, title, info.display)
     except KeyboardInterrupt as interrupt:
         print(
-            f"{PROG} simulate: {_interrupted(interrupt)} while drawing {plot}: wrote {output} "
+            f"{PROG} simulate: {interrupted(interrupt)} while drawing {plot}: wrote {output} "
             f"({run.rows} rows), no plot",
             file=sys.stderr,
         )

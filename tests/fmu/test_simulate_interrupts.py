@@ -135,7 +135,13 @@ def test_simulate_raises_an_interrupt_at_a_step_boundary_not_a_refusal(fmu_path)
     assert signal.getsignal(signal.SIGINT) is signal.default_int_handler
 
 
-def test_ctrl_c_during_a_sweep_keeps_the_finished_cases(fmu_path, tmp_path):
+@pytest.mark.parametrize(
+    "stop, status, said",
+    [(signal.SIGINT, 130, "interrupted: "), (signal.SIGTERM, 143, "interrupted by SIGTERM: ")],
+)
+def test_a_stop_signal_during_a_sweep_keeps_the_finished_cases(
+    fmu_path, tmp_path, stop, status, said
+):
     command = [
         sys.executable,
         "-m",
@@ -158,11 +164,11 @@ def test_ctrl_c_during_a_sweep_keeps_the_finished_cases(fmu_path, tmp_path):
             byte = process.stderr.read(1)
             assert byte, seen.decode()
             seen += byte
-        process.send_signal(signal.SIGINT)
+        process.send_signal(stop)
         rest = process.communicate(timeout=60)[1].decode()
     finally:
         process.kill()
-    assert process.returncode == 130 and "Traceback" not in rest
-    assert "interrupted: " in rest and "run it again (without --fresh)" in rest
+    assert process.returncode == status and "Traceback" not in rest, rest
+    assert said in rest and "run it again (without --fresh)" in rest
     kept = list((tmp_path / "sweep.cases").glob("*deg_*rpm_*.json"))
     assert 0 < len(kept) < 48 and not (tmp_path / "sweep.csv").exists()

@@ -50,6 +50,12 @@ def raise_stop(signum: int, frame: Any = None) -> None:
     raise Stopped(signum)
 
 
+def interrupted(interrupt: BaseException) -> str:
+    """ "interrupted", naming the signal unless it was Ctrl-C's."""
+    signum = getattr(interrupt, "signum", signal.SIGINT)
+    return "interrupted" if signum == signal.SIGINT else f"interrupted by {signal_name(signum)}"
+
+
 def exit_status(interrupt: BaseException) -> int:
     """A shell's exit status for a process ended by this interrupt: 128 + the signal."""
     return 128 + getattr(interrupt, "signum", signal.SIGINT)

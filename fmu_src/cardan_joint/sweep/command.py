@@ -8,6 +8,7 @@ import sys
 from pathlib import Path
 
 from ..extras import MissingExtra, require
+from ..host.interrupts import exit_status, interrupted
 from ..names import UsageError
 from ..results import write_table
 from .execution import connect, run_dask, run_serial
@@ -268,13 +269,14 @@ def main(argv=None, prog=None, default_name="design_sweep") -> int:
             return 2
         try:
             table = _run(args, fmu, spec, store, progress)
-        except KeyboardInterrupt:
+        except KeyboardInterrupt as interrupt:  # Ctrl-C, SIGTERM, SIGHUP (cli.py)
             print(
-                f"{name}: interrupted: {store.written} cases computed in this run are kept in "
-                f"{store.folder}; run it again (without --fresh) to compute only the missing ones",
+                f"{name}: {interrupted(interrupt)}: {store.written} cases computed in this run "
+                f"are kept in {store.folder}; run it again (without --fresh) to compute only "
+                "the missing ones",
                 file=sys.stderr,
             )
-            return 130
+            return exit_status(interrupt)
     summary = _summary(table)
     print("\n".join(summary))
     if len(table) and (table["status"] == FAILED).all():  # nothing to show: earlier files stay
