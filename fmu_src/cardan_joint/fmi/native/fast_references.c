@@ -9,7 +9,9 @@
 #include <string.h>
 
 /* Takes the table of FMI 3's value references (none: FMI 2's are the flat
- * indices); 0 if it is malformed or names an index beyond the arrays. */
+ * indices); 0 if it is malformed: each reference's start from 0 up, never
+ * past the indices, and every index within the arrays (flat_of reads them all
+ * unchecked). */
 int fast_table(struct fast_path *fast, const char *bytes, size_t size)
 {
     free(fast->table);
@@ -21,7 +23,10 @@ int fast_table(struct fast_path *fast, const char *bytes, size_t size)
         return 0;
     memcpy(fast->table, bytes, size);
     long long refs = fast->table[0];
-    int ok = refs >= 1 && n >= refs + 2 && fast->table[refs + 1] == n - refs - 2;
+    int ok = refs >= 1 && n >= refs + 2 && fast->table[refs + 1] == n - refs - 2 &&
+             fast->table[1] == 0;
+    for (long long vr = 1; ok && vr <= refs; vr++)
+        ok = fast->table[vr] <= fast->table[vr + 1];
     for (long long i = refs + 2; ok && i < n; i++)
         ok = fast->table[i] >= 0 && fast->table[i] < limit;
     return ok;
