@@ -184,6 +184,28 @@ def scenario(instance):
     return seen
 
 
+def test_a_refused_fmu_state_leaves_the_outputs_served_as_they_were(extracted, monkeypatch):
+    """The runtime joins FMPy's Python: the state handle is the slave's own dict,
+    emptied of its start time after it was taken. The refused set changes
+    nothing: the next read is served from the arrays, nothing evaluated again."""
+    with extracted.instance("warm-up"):
+        pass
+    slave_class, _ = slave_classes(extracted)
+    counts = count_entries(monkeypatch, slave_class, ("fast_outputs", "fast_store"))
+    with extracted.instance("refused") as instance:
+        instance.set(**GOOD)
+        instance.step(1e-3)
+        saved = instance.get_state()
+        instance.step(1e-3)
+        before = bits(instance.values(*table.INPUTS, *instance.outputs))
+        seen = dict(counts)
+        del ctypes.cast(saved, ctypes.py_object).value["start_time"]
+        assert status_of(instance.set_state, saved) == 3
+        assert bits(instance.values(*table.INPUTS, *instance.outputs)) == before
+        assert counts == seen
+        instance.free_state(saved)
+
+
 def test_plain_calls_when_the_slave_has_no_fast_step_give_the_same_bits(extracted, monkeypatch):
     with extracted.instance("warm-up"):
         pass

@@ -142,7 +142,8 @@ fmi2Status transition(void *c, unsigned allowed, const char *function,
     struct instance *in = enter(c, allowed, function);
     if (!in)
         return fmi2Error;
-    fast_before(in);
+    if (fast_before(in))
+        return leave(in, fmi2Error);
     fmi2Status status = first ? first(in) : fmi2OK;
     if (status == fmi2OK)
         status = method ? slave_call(in, method) : reset_slave(in);

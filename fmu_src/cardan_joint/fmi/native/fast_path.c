@@ -214,15 +214,23 @@ void fast_reset(struct instance *in) { renew(in, 1); }
 
 /* Before any call into the slave once steps were taken in C: the slave takes
  * the state, clock, inputs and outputs they left (fast_sync).  A slave that
- * cannot (a fault, reported) is stepped in Python from then on. */
-void catch_up(struct instance *in)
+ * cannot (a fault, reported) is behind the instance for good: any call it
+ * answered would act on a state the host has left, so the instance enters
+ * the error state, where only reset (a new slave) and free are allowed. */
+int catch_up(struct instance *in)
 {
     struct fast_path *fast = in->fast;
     if (!fast->behind)
-        return;
+        return 0;
     fast->behind = 0;
-    if (fast_call(in, FAST_SYNC, fast->behind_time, 0) != fmi2OK)
-        fast->generated = 0;
+    if (fast_call(in, FAST_SYNC, fast->behind_time, 0) == fmi2OK)
+        return 0;
+    fast->generated = 0;
+    in->state = STATE_ERROR;
+    reportf(in, fmi2Error, "the slave could not take the state of the steps taken in C (to "
+            "t = %.17g s); it is behind the instance, which can only be reset or freed now",
+            fast->behind_time);
+    return -1;
 }
 
 /* One call into the slave, the GIL taken for it: fast_step(time, step, inputs),
@@ -231,8 +239,8 @@ void catch_up(struct instance *in)
 long fast_call(struct instance *in, enum fast_method method, double time, double step)
 {
     struct fast_path *fast = in->fast;
-    if (method != FAST_SYNC)
-        catch_up(in);
+    if (method != FAST_SYNC && catch_up(in))
+        return fmi2Error;
     PyGILState_STATE gil = p_PyGILState_Ensure();
     PyObject *arguments[4] = {NULL, NULL, NULL, NULL};
     int made = 1;

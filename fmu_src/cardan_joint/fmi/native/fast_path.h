@@ -62,8 +62,9 @@ int generated_take(struct fast_path *fast, double time, double step);
 int generated_attach(struct fast_path *fast);
 /* 1 when the build compiled the model's step in (the slave is asked for its state). */
 int generated_compiled(void);
-/* Before any call into the slave: it takes what the steps taken in C left. */
-void catch_up(struct instance *in);
+/* Before any call into the slave: it takes what the steps taken in C left; -1
+ * when it could not (the instance then in STATE_ERROR, said). */
+int catch_up(struct instance *in);
 /* With the GIL: a float of `value`, `last` itself (a reference added) when it
  * holds the same bits; NULL: no memory. */
 PyObject *float_like(PyObject *last, double value);

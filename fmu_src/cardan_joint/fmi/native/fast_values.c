@@ -134,17 +134,20 @@ long take_reply(struct fast_path *fast, enum fast_method method, PyObject *reply
     return p_PyLong_AsLong(py_tuple_item(reply, 0));
 }
 
-/* Before any other call into the slave: it takes the host's latest inputs. */
-void fast_before(struct instance *in)
+/* Before any other call into the slave: it takes what the steps in C left and
+ * the host's latest inputs; -1 when it could not catch up. */
+int fast_before(struct instance *in)
 {
     struct fast_path *fast = in->fast;
     if (!fast)
-        return;
-    catch_up(in);
+        return 0;
+    if (catch_up(in))
+        return -1;
     if (!fast->inputs_written)
-        return;
+        return 0;
     fast_call(in, FAST_LOAD, 0, 0);
     fast->inputs_written = 0;
+    return 0;
 }
 
 /* After any other call into the slave: it may have changed inputs or parameters. */
