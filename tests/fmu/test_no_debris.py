@@ -188,3 +188,76 @@ def test_ctrl_c_in_an_example_ends_it_in_one_line(fmu_path, tmp_path):
         process.kill()
     assert process.returncode == 130, err
     assert err.strip() == "driveshaft.py: interrupted"
+
+
+# A host on FMPy's own calls (no FmuInstance holding the signals), whose Python
+# runs its SIGINT handler: a Ctrl-C at the 5th step, sent from the model's own
+# step (in Python), lands in the slave. The host must get it back.
+PLAIN_HOST = textwrap.dedent(
+    """
+    import os, signal, sys
+    from fmpy import extract, read_model_description
+    from fmpy.fmi2 import FMU2Slave
+
+    description = read_model_description(sys.argv[1])
+    fmu = FMU2Slave(guid=description.guid, unzipDirectory=extract(sys.argv[1]),
+                    modelIdentifier=description.coSimulation.modelIdentifier, instanceName="i")
+    if sys.argv[2] == "plain":  # a slave without the one-call step: do_step and friends
+        fmu.instantiate()
+        fmu.freeInstance()
+        core = next(m for n, m in sys.modules.items() if n.endswith(".fmi.fast_step"))
+        del core.FastStep.fast_step
+    fmu.instantiate()
+    fmu.setupExperiment(startTime=0.0)
+    fmu.enterInitializationMode()
+    fmu.exitInitializationMode()
+    model = next(m for n, m in sys.modules.items() if n.endswith(".universal_joint.model"))
+    calls = []
+
+    def interrupted(method):
+        def call(self, *args):
+            calls.append(1)
+            if len(calls) == 5:
+                os.kill(os.getpid(), signal.SIGINT)
+            return method(self, *args)
+        return call
+
+    for name in ("run", "step"):  # the one-call step's, the plain step's
+        setattr(model.CardanJoint, name, interrupted(getattr(model.CardanJoint, name)))
+    try:
+        try:
+            for k in range(100):
+                fmu.doStep(k * 1e-3, 1e-3)
+            print("no step interrupted", flush=True)
+        except Exception as error:  # FMPy raises on the step's Error
+            print("step:", error, flush=True)
+            total = sum(range(100000))  # the host's Python goes on
+            print("no interrupt", flush=True)
+            sys.exit(4)
+    except KeyboardInterrupt:
+        print("KeyboardInterrupt after", len(calls), "steps", flush=True)
+        sys.exit(3)
+    """
+)
+
+
+@pytest.mark.parametrize("call", ["fast_step", "do_step"])
+def test_ctrl_c_that_lands_in_the_slave_is_handed_back_to_the_host(fmu_path, call):
+    """The runtime clears the KeyboardInterrupt the slave raised, says the step was
+    interrupted (Error: the instance can only be reset or freed, its slave having
+    stopped part way) and raises it again in the host's Python; through the
+    one-call step and through the slave's plain do_step."""
+    environment = {"CARDAN_JOINT_FMU_PYTHON_STEP": "1", "CARDAN_JOINT_FMU_STDERR": "1"}
+    process = _child(
+        [sys.executable, "-c", PLAIN_HOST, str(fmu_path), "plain" if call == "do_step" else ""],
+        env={**os.environ, **environment},
+    )
+    try:
+        out, err = process.communicate(timeout=60)
+    finally:
+        process.kill()
+    said = out.decode() + err.decode()
+    assert process.returncode == 3, said
+    assert out.decode().splitlines()[-1] == "KeyboardInterrupt after 5 steps", said
+    assert f"the slave's {call} was interrupted by a KeyboardInterrupt" in said
+    assert "Traceback" not in said

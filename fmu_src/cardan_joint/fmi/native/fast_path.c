@@ -54,10 +54,13 @@ static long call(struct instance *in, enum fast_method method, PyObject *a, PyOb
     long status = reply ? take_reply(fast, method, reply) : -1;
     if (reply)
         p_Py_DecRef(reply);
+    int interrupted = !reply && slave_interrupted(in, METHODS[method]);
     int raised = p_PyErr_Occurred() != NULL;
     p_PyErr_Clear();
     if (!fast->queue || p_PyList_Size(fast->queue) != 0)
         slave_drain(in, fast->slave);
+    if (interrupted)
+        return fmi2Error;
     if (raised || status < 0 || status > fmi2Fatal) {
         reportf(in, fmi2Error, "the slave's %s failed", METHODS[method]);
         return fmi2Error;

@@ -9,6 +9,7 @@
 PYTHON_FUNCTIONS(DEFINE)
 #undef DEFINE
 PyObject *py_none;
+PyObject *const *py_keyboard_interrupt;
 PyObject *(*p_PyObject_Vectorcall)(PyObject *, PyObject *const *, size_t, PyObject *);
 const void *py_float_type, *py_tuple_type;
 
@@ -23,8 +24,9 @@ static void resolve(void)
     PYTHON_FUNCTIONS(RESOLVE)
 #undef RESOLVE
     py_none = dlsym(RTLD_DEFAULT, "_Py_NoneStruct");
+    py_keyboard_interrupt = dlsym(RTLD_DEFAULT, "PyExc_KeyboardInterrupt");
     *(void **)&p_PyObject_Vectorcall = dlsym(RTLD_DEFAULT, "PyObject_Vectorcall");
-    resolved = py_none != NULL;
+    resolved = py_none != NULL && py_keyboard_interrupt != NULL;
 }
 
 void python_layout(void)

@@ -43,6 +43,7 @@ typedef int PyGILState_STATE; /* an enum in Python.h */
     X(int, PyBytes_AsStringAndSize, (PyObject *, char **, Py_ssize_t *))                  \
     X(PyObject *, PyMemoryView_FromMemory, (char *, Py_ssize_t, int))                     \
     X(PyObject *, PyErr_Occurred, (void)) X(void, PyErr_Clear, (void))                    \
+    X(int, PyErr_ExceptionMatches, (PyObject *)) X(void, PyErr_SetInterrupt, (void))      \
     X(void, PyErr_Fetch, (PyObject **, PyObject **, PyObject **))                         \
     X(PyObject *, PyObject_Repr, (PyObject *))                                            \
     X(void, Py_IncRef, (PyObject *)) X(void, Py_DecRef, (PyObject *))                     \
@@ -55,6 +56,8 @@ typedef int PyGILState_STATE; /* an enum in Python.h */
 PYTHON_FUNCTIONS(DECLARE)
 #undef DECLARE
 extern PyObject *py_none;
+/* The KeyboardInterrupt class (the address of PyExc_KeyboardInterrupt). */
+extern PyObject *const *py_keyboard_interrupt;
 
 /* 1 once every function above (and None) is found, else 0: call it before any. */
 int python_api(void);
@@ -131,5 +134,9 @@ int set_global(PyObject *globals, const char *name, PyObject *value);
  * raised): the slave's log to the host, then the exception as pythonfmu
  * reports it (Fatal). */
 fmi2Status slave_finish(struct instance *in, PyObject *result, const char *what);
+/* With the GIL, after a call into the slave that raised: 1 when it raised
+ * KeyboardInterrupt (said, the instance in STATE_ERROR, the interrupt handed
+ * back to the host's Python), 0 otherwise (the exception still set). */
+int slave_interrupted(struct instance *in, const char *what);
 
 #endif
