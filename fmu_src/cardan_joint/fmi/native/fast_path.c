@@ -46,11 +46,8 @@ static long call(struct instance *in, enum fast_method method, PyObject *a, PyOb
                  PyObject *c, PyObject *d)
 {
     struct fast_path *fast = in->fast;
-    PyObject *const arguments[] = {a, b, c, d};
-    size_t count = !a ? 0 : !b ? 1 : !c ? 2 : !d ? 3 : 4;
-    PyObject *reply = p_PyObject_Vectorcall
-                          ? p_PyObject_Vectorcall(fast->methods[method], arguments, count, NULL)
-                          : p_PyObject_CallFunctionObjArgs(fast->methods[method], a, b, c, d, NULL);
+    /* the arguments end at the first NULL */
+    PyObject *reply = p_PyObject_CallFunctionObjArgs(fast->methods[method], a, b, c, d, NULL);
     long status = reply ? take_reply(fast, method, reply) : -1;
     if (reply)
         p_Py_DecRef(reply);
@@ -72,8 +69,7 @@ static void forget(struct fast_path *fast)
 {
     PyObject **owned[] = {&fast->slave,      &fast->methods[0], &fast->methods[1],
                           &fast->methods[2], &fast->methods[3], &fast->methods[4],
-                          &fast->methods[5], &fast->queue,      &fast->last_inputs,
-                          &fast->last_step};
+                          &fast->methods[5], &fast->queue};
     for (size_t i = 0; i < sizeof owned / sizeof *owned; i++) {
         if (*owned[i])
             p_Py_DecRef(*owned[i]);
@@ -132,7 +128,6 @@ static int set_up(struct instance *in, struct fast_path *fast)
 {
     if (!claim(in, fast))
         return 0;
-    python_layout();
     double *known = realloc(fast->known, fast->known_size * sizeof *known);
     if (known)
         fast->known = known;
@@ -255,13 +250,11 @@ long fast_call(struct instance *in, enum fast_method method, double time, double
         made = arguments[0] && arguments[1] && arguments[2] && arguments[3];
     } else if (method == FAST_STEP) {
         arguments[0] = p_PyFloat_FromDouble(time);
-        arguments[1] = float_like(fast->last_step, step);
-        if (arguments[1])
-            keep(&fast->last_step, arguments[1]);
-        arguments[2] = inputs_tuple(fast);
+        arguments[1] = p_PyFloat_FromDouble(step);
+        arguments[2] = tuple_of(fast->known, fast->inputs);
         made = arguments[0] && arguments[1] && arguments[2];
     } else if (method != FAST_STORE && method != FAST_WATCH) {
-        arguments[0] = inputs_tuple(fast);
+        arguments[0] = tuple_of(fast->known, fast->inputs);
         /* fast_outputs(inputs, read): only a read of a held output warns. */
         if (method == FAST_OUTPUTS && arguments[0])
             arguments[1] = read_indices(fast);

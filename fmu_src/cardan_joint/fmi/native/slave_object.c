@@ -29,13 +29,9 @@ static const char CONSTRUCT[] =
 /* The slave's log queue to the host, as pythonfmu forwards it after its calls. */
 void slave_drain(struct instance *in, PyObject *slave)
 {
-    /* Interned once, for as long as the interpreter lives (the runtime never
-     * finalizes it): a lookup by a C string would make and hash a new str
-     * after every call, the one-call step's included. */
-    static PyObject *name;
-    if (!name)
-        name = p_PyUnicode_InternFromString("log_queue");
-    PyObject *queue = name ? p_PyObject_GetAttr(slave, name) : NULL;
+    /* By name at every call: a str kept across calls would outlive an
+     * interpreter the host finalizes and starts again. */
+    PyObject *queue = p_PyObject_GetAttrString(slave, "log_queue");
     Py_ssize_t n = queue ? p_PyList_Size(queue) : -1;
     for (Py_ssize_t i = 0; i < n; i++) {
         PyObject *item = p_PyList_GetItem(queue, i);
