@@ -200,3 +200,28 @@ def test_a_slave_that_cannot_catch_up_leaves_the_instance_in_the_error_state(
         instance.set(input_speed=100.0, bend_angle=0.3)
         assert instance.try_step(1e-3) == 0
         assert math.isfinite(instance.values("output_speed")[0])
+
+
+def test_a_step_state_beyond_the_arrays_is_refused_and_the_slave_called_plainly(
+    extracted, monkeypatch
+):
+    """A slave that says its step state holds 2**61 values (its arrays' sizes
+    would wrap around): the runtime says so and calls the slave plainly, with
+    the same values as the generated step."""
+    _, fast_step = slave_classes(extracted)
+
+    def run(instance):
+        instance.set(input_speed=100.0, bend_angle=0.3, load_torque=50.0)
+        return [instance.try_step(1e-3), bits(instance.values(*instance.outputs))]
+
+    with extracted.instance("sized") as instance:
+        expected = run(instance)
+    monkeypatch.setattr(fast_step, "fast_state_size", lambda self: 2**61)
+    messages: list = []
+    with extracted.instance("sized", messages=messages) as instance:
+        assert run(instance) == expected
+    assert (
+        "a step state of 2305843009213693952) is beyond what the runtime's arrays take"
+        in (messages[0][2])
+    ), messages
+    assert messages[0][0] == 1
