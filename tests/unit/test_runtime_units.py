@@ -126,6 +126,12 @@ TABLES = r"""
 #include <stdlib.h>
 #include <string.h>
 
+/* fast_references.c's check of the layout reports; the tables' check does not. */
+void reportf(struct instance *in, fmi2Status status, const char *format, ...)
+{
+    (void)in, (void)status, (void)format;
+}
+
 int main(int argc, char **argv)
 {
     for (int k = 1; k < argc; k++) {

@@ -92,27 +92,6 @@ static int read_flat_table(struct fast_path *fast, PyObject *table)
            fast_table(fast, bytes, (size_t)size);
 }
 
-/* More values of a kind than any model has: the arrays' sizes and the replies'
- * counts are sums and products of these, which must not overflow. */
-#define MOST_VALUES (1L << 20)
-
-/* Whether the slave's layout holds counts the arrays can take: else said, and
- * its values go through plain calls. */
-static int sizes_taken(struct instance *in, const struct fast_path *fast)
-{
-    int taken = 0 < fast->inputs && fast->inputs <= fast->known_size &&
-                fast->known_size <= MOST_VALUES && fast->known_size == fast->first_output &&
-                0 < fast->outputs && fast->outputs <= MOST_VALUES && 0 <= fast->state_size &&
-                fast->state_size <= MOST_VALUES;
-    if (!taken)
-        reportf(in, fmi2Warning, "the slave's layout (%ld inputs, %ld known values, %ld "
-                "outputs, a step state of %ld) is beyond what the runtime's arrays take (1 to "
-                "%ld of each, a state of 0 to %ld): its values go through plain calls",
-                fast->inputs, fast->known_size, fast->outputs, fast->state_size, MOST_VALUES,
-                MOST_VALUES);
-    return taken;
-}
-
 /* With the GIL: the instance's slave and its layout; 0 if none fits. */
 static int claim(struct instance *in, struct fast_path *fast)
 {

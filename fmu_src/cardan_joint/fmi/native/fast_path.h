@@ -46,6 +46,9 @@ struct fast_path {
     size_t reading_count;
 };
 
+/* Whether the slave's layout holds counts the arrays can take: else said (a
+ * Warning), and its values go through plain calls. */
+int sizes_taken(struct instance *in, const struct fast_path *fast);
 int fast_table(struct fast_path *fast, const char *bytes, size_t size);
 /* The flat indices of value reference vr, and how many (0: none). */
 long long flat_of(const struct fast_path *fast, unsigned vr, const long long **indices,
