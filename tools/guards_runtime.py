@@ -35,7 +35,14 @@ RUNTIME_MUTATIONS = (
         NATIVE + "slave_object.c",
         "    p_PyErr_SetInterrupt();",
         "",
-        ("tests/fmu/test_no_debris.py", "-k", "handed_back"),
+        ("tests/fmu/test_host_interrupts.py", "-k", "handed_back"),
+    ),
+    Mutation(
+        "runtime: a change of mode interrupted in the slave keeps the error state",
+        NATIVE + "calls.c",
+        "    if (status <= fmi2Error && in->state == was)",
+        "    if (status <= fmi2Error && in->state != STATE_FATAL)",
+        ("tests/fmu/test_host_interrupts.py", "-k", "initialization"),
     ),
     Mutation(
         "runtime: a refused FMU state leaves the arrays as they were",

@@ -185,7 +185,7 @@ def test_a_slave_that_cannot_catch_up_leaves_the_instance_in_the_error_state(
             assert call() == 3
             assert (
                 len(messages) == 1
-                and "after an error that left the slave behind" in (messages[0][2])
+                and "after an error that left the slave out of step" in (messages[0][2])
             ), messages
             assert f"{reset} to start again" in messages[0][2]
         monkeypatch.undo()  # the new slave takes the state again

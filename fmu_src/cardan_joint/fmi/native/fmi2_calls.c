@@ -26,8 +26,8 @@ const char *where(enum state state)
     case STATE_TERMINATED:
         return "after fmi2Terminate: call fmi2Reset to start again";
     case STATE_ERROR:
-        return "after an error that left the slave behind the instance: call fmi2Reset to "
-               "start again, or fmi2FreeInstance";
+        return "after an error that left the slave out of step with the instance: call "
+               "fmi2Reset to start again, or fmi2FreeInstance";
     default:
         return "after a fatal error: only fmi2FreeInstance is allowed";
     }

@@ -39,8 +39,8 @@ const char *where(enum state state)
     case STATE_TERMINATED:
         return "after fmi3Terminate: call fmi3Reset to start again";
     case STATE_ERROR:
-        return "after an error that left the slave behind the instance: call fmi3Reset to "
-               "start again, or fmi3FreeInstance";
+        return "after an error that left the slave out of step with the instance: call "
+               "fmi3Reset to start again, or fmi3FreeInstance";
     default:
         return "after a fatal error: only fmi3FreeInstance is allowed";
     }
