@@ -67,7 +67,8 @@ int set_global(PyObject *globals, const char *name, PyObject *value);
 
 /* With the GIL, after a call into the slave that returned `result` (NULL: it
  * raised): the slave's log to the host, then the exception as pythonfmu
- * reports it (Fatal). */
+ * reports it (Fatal), or a KeyboardInterrupt handed back (Error,
+ * slave_interrupted). */
 fmi2Status slave_finish(struct instance *in, PyObject *result, const char *what);
 /* With the GIL, after a call into the slave that raised: 1 when it raised
  * KeyboardInterrupt (said, the instance in STATE_ERROR, the interrupt handed
