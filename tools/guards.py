@@ -8,10 +8,17 @@ once, so a refactor cannot orphan a guard."""
 from guards_base import ROOT, Mutation
 from guards_generated import GENERATED_MUTATIONS
 from guards_plumbing import PLUMBING_MUTATIONS
+from guards_runtime import RUNTIME_MUTATIONS
 from guards_step import STEP_MUTATIONS
 from guards_values import VALUE_MUTATIONS
 
 COPIED = ("fmu_src", "tests", "build_fmu.py", "pyproject.toml", "README.md")
-MUTATIONS = (*VALUE_MUTATIONS, *STEP_MUTATIONS, *PLUMBING_MUTATIONS, *GENERATED_MUTATIONS)
+MUTATIONS = (
+    *VALUE_MUTATIONS,
+    *STEP_MUTATIONS,
+    *PLUMBING_MUTATIONS,
+    *GENERATED_MUTATIONS,
+    *RUNTIME_MUTATIONS,
+)
 
 __all__ = ["COPIED", "MUTATIONS", "ROOT", "Mutation"]

@@ -55,14 +55,14 @@ GENERATED_MUTATIONS = (
     Mutation(
         "generated step: the slave catches up before any other call",
         FAST_VALUES,
-        "    catch_up(in);\n    if (!fast->inputs_written)",
-        "    if (!fast->inputs_written)",
+        "    if (catch_up(in))\n        return -1;\n",
+        "",
         (RUNTIME_TESTS,),
     ),
     Mutation(
         "generated step: the slave catches up before it steps or evaluates",
         FAST_PATH,
-        "    if (method != FAST_SYNC)\n        catch_up(in);",
+        "    if (method != FAST_SYNC && catch_up(in))\n        return fmi2Error;",
         "",
         (RUNTIME_TESTS,),
     ),

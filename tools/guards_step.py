@@ -226,8 +226,8 @@ STEP_MUTATIONS = (
     Mutation(
         "one-call step: the inputs a step moved are written back",
         FAST_STEP,
-        "return OK, outputs, moved",
-        "return OK, outputs, tuple(inputs)",
+        "return self._STATUS.ok, outputs, moved",
+        "return self._STATUS.ok, outputs, tuple(inputs)",
         (FAST_STEP_TESTS, "-k", "normal_paths"),
     ),
     Mutation(

@@ -12,7 +12,7 @@ import random
 import pytest
 from test_fast_path import bits, count_entries, model_class, scenario, slave_classes
 
-from cardan_joint.host.instance import ExtractedFMU
+from cardan_joint.host.instance import ExtractedFMU, status_of
 from cardan_joint.models.universal_joint import variables as table
 
 BUILDS = {"no-life": ("--no-life",), "life": ()}
@@ -152,3 +152,76 @@ def test_a_load_past_the_rated_torque_warns_once_with_the_c_step(with_life, monk
     assert len(watched) == 1 and "input_torque" in watched[0][2], c_messages
     assert watched[0][0] == 1  # a Warning: the step stands
     assert (c_runs, python_runs) == (0, 30)
+
+
+def test_a_slave_that_cannot_catch_up_leaves_the_instance_in_the_error_state(
+    extracted, monkeypatch
+):
+    """The steps taken in C are handed to a slave whose fast_sync raises: every
+    later call but reset and free is refused with Error and says why, rather than
+    act on a slave behind the host; a reset makes a new slave that steps again
+    (and catches up before terminate)."""
+    _, fast_step = slave_classes(extracted)
+
+    def behind(self, *args):
+        raise RuntimeError("a slave that cannot take the state")
+
+    monkeypatch.setattr(fast_step, "fast_sync", behind)
+    messages: list = []
+    with extracted.instance("behind", messages=messages) as instance:
+        instance.set(input_speed=100.0, bend_angle=0.3)
+        assert instance.try_step(1e-3) == 0  # in C: the slave is behind
+        instance.set(load_torque=5.0)
+        assert status_of(instance.values, "input_torque") == 3  # the slave is asked
+        assert "could not take the state of the steps taken in C" in messages[-1][2]
+        reset = f"fmi{3 if instance.fmi3 else 2}Reset"
+        for call in (
+            lambda: instance.try_step(1e-3),
+            lambda: status_of(instance.values, "input_torque"),
+            lambda: status_of(instance.get_state),
+            lambda: instance.try_set(input_speed=1.0),
+        ):
+            del messages[:]
+            assert call() == 3
+            assert (
+                len(messages) == 1
+                and "after an error that left the slave out of step" in (messages[0][2])
+            ), messages
+            assert f"{reset} to start again" in messages[0][2]
+        monkeypatch.undo()  # the new slave takes the state again
+        instance.fmu.reset()
+        if instance.fmi3:
+            instance.fmu.enterInitializationMode(startTime=0.0)
+        else:
+            instance.fmu.setupExperiment(startTime=0.0)
+            instance.fmu.enterInitializationMode()
+        instance.fmu.exitInitializationMode()
+        instance.time = 0.0
+        instance.set(input_speed=100.0, bend_angle=0.3)
+        assert instance.try_step(1e-3) == 0
+        assert math.isfinite(instance.values("output_speed")[0])
+
+
+def test_a_step_state_beyond_the_arrays_is_refused_and_the_slave_called_plainly(
+    extracted, monkeypatch
+):
+    """A slave that says its step state holds 2**61 values (its arrays' sizes
+    would wrap around): the runtime says so and calls the slave plainly, with
+    the same values as the generated step."""
+    _, fast_step = slave_classes(extracted)
+
+    def run(instance):
+        instance.set(input_speed=100.0, bend_angle=0.3, load_torque=50.0)
+        return [instance.try_step(1e-3), bits(instance.values(*instance.outputs))]
+
+    with extracted.instance("sized") as instance:
+        expected = run(instance)
+    monkeypatch.setattr(fast_step, "fast_state_size", lambda self: 2**61)
+    messages: list = []
+    with extracted.instance("sized", messages=messages) as instance:
+        assert run(instance) == expected
+    assert (
+        "a step state of 2305843009213693952) is beyond what the runtime's arrays take"
+        in (messages[0][2])
+    ), messages
+    assert messages[0][0] == 1

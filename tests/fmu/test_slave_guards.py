@@ -130,10 +130,14 @@ def test_calls_for_other_variable_types_are_errors_not_exceptions(call, answer):
 
 
 def restored(slave, state, words):
-    """Set `state`; check it is refused with `words` and the slave keeps its state."""
+    """Set `state`; check it is refused with `words` and the slave keeps its state,
+    its outputs' cache included (a read after it is not evaluated again)."""
     before, saved = slave.get_real(ALL), slave._get_fmu_state()
-    slave._set_fmu_state(state)
+    cached = slave._outputs
+    assert cached is not None
+    assert slave._set_fmu_state(state) is True
     assert words in last(slave, Fmi2Status.error)
+    assert slave._outputs is cached
     assert slave.get_real(ALL) == before and slave._get_fmu_state() == saved
 
 

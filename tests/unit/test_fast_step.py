@@ -16,7 +16,6 @@ import struct
 import pytest
 from pythonfmu.enums import Fmi2Status
 
-from cardan_joint.fmi import fast_step
 from cardan_joint.fmi.references import FIRST_VALUE_REFERENCE
 from cardan_joint.fmi.slave import ModelSlave
 from cardan_joint.fmi.slave3 import ModelSlave3
@@ -209,10 +208,6 @@ def test_an_internal_fault_is_an_error_status_with_a_message():
     assert slave.fast_load(None) == Fmi2Status.error
     assert "internal error in fast_load" in slave.log_queue[-1].msg
     assert slave.fast_load(loader.given()) == Fmi2Status.ok
-
-
-def test_the_taken_steps_plain_ok_is_ok_in_both_versions():
-    assert CardanJointSlave._STATUS.ok == CardanJointSlave3._STATUS.ok == fast_step.OK == 0
 
 
 def test_the_layout_is_the_flat_index_and_the_same_for_fmi3():

@@ -87,3 +87,22 @@ def test_every_models_watch_rows_name_its_outputs_and_limits(key):
             for w in compile_watches((watch,), spec.table(settings))
         ]
         assert found, f"{key}: {watch} names no output and limit of any build"
+
+
+def test_the_limit_a_step_in_c_compares_is_the_smallest_armed_of_each_output():
+    """Two watches of one output, the tighter one first or last: a step in C
+    hands over to the slave at the first limit passed, whichever row says it."""
+    from cardan_joint.fmi.watching import Watching
+
+    table = propshaft_table(2)
+    slot = table.OUTPUTS.index("input_torque")
+    for rows in (
+        ROWS[:1] + (Watch("input_torque", 5000.0, "wide"),),
+        (Watch("input_torque", 5000.0, "wide"),) + ROWS[:1],
+    ):
+        watching = Watching()
+        watching.table = table
+        watching._armed = arm(compile_watches(rows, table), SimpleNamespace(rated_torque=1000.0))
+        limits = watching._watch_limits()
+        assert limits[slot] == 1000.0
+        assert all(limit == math.inf for k, limit in enumerate(limits) if k != slot)

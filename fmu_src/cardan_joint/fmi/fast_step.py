@@ -10,12 +10,8 @@ by `fast_layout()` (a class method: `References.layout`):
 Flat indices are the FMI 2 value references; an FMI 3 loader maps its value
 references onto them as `slave3._FLAT` does (time and arrays aside).
 Values cross as tuples of floats, in slot order: the loader passes the inputs
-(known[0:inputs]) as a tuple and converts what comes back itself. Packing a
-buffer from Python (struct.pack_into on a memoryview) costs about 1,200
-instructions per call plus 150 per value; the loader reads an exact float or
-tuple in place (any other object through the C API), and passes an input the
-host left as it was (bit for bit) as the same object again (benchmarks,
-section 7).
+(known[0:inputs]) as a tuple and converts what comes back itself, through the
+C API (a float subclass or an int as float() converts it).
 
 Generated step (docs/codegen.md). A runtime built with the model's step in C
 calls fast_state_size() once: from then on the slave hands over, after every
@@ -87,11 +83,6 @@ from typing import Any
 from ..framework.api import Stepped
 from ..framework.watches import any_passed
 from .references import References
-
-# ok in both versions' status enumerations, as a plain int for the taken step:
-# on CPython 3.11 reading the enumeration's member runs its metaclass's
-# attribute hook, a few hundred instructions a step.
-OK = 0
 
 
 class FastStep:
@@ -171,7 +162,7 @@ class FastStep:
             self._outputs = self._outputs_held = outputs
             self._inputs_held = inputs
             self._inputs_checked = True
-            return OK
+            return self._STATUS.ok
         except Exception as error:
             self._fault("fast_sync", error)
             return self._STATUS.error
@@ -182,7 +173,7 @@ class FastStep:
         try:
             if self._armed:
                 self._watch(self._outputs)
-            return OK, self._watch_limits()
+            return self._STATUS.ok, self._watch_limits()
         except Exception as error:
             self._fault("fast_watch", error)
             return self._STATUS.error
@@ -209,7 +200,7 @@ class FastStep:
             if armed and any_passed(armed, outputs):
                 self._watch(outputs)
             state = (tuple(model.step_state()),) if self._state_exchange else ()
-            return OK, outputs, moved, *state
+            return self._STATUS.ok, outputs, moved, *state
         except Exception as error:
             self._fault("fast_step", error)
             return self._STATUS.error

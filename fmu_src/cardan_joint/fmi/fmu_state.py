@@ -64,24 +64,30 @@ class FmuStates:
         passed = tuple(map(str, state.get("watches_passed", ())))
         return state["model"], start_time, initialized, held_outputs, held_inputs, passed
 
-    def _set_fmu_state(self, state):
+    def _set_fmu_state(self, state) -> bool:
+        """Take `state`; True when it is refused: then every value is as it was,
+        the outputs' cache included (the runtime keeps serving its arrays)."""
         try:
             model_state, start_time, initialized, outputs, inputs, passed = self._checked_state(
                 state
             )
             self._model.restore(model_state)  # all or nothing, and the last part that can fail
-            self._start_time, self._initialized = start_time, initialized
-            self._outputs_held, self._inputs_held = outputs, inputs
-            self._rearm(passed)
         except Exception as error:
             self._report(
                 f"{self._API}SetFMU{self._STATE} ignored, the {self.owner} keeps its "
                 f"state: {type(error).__name__}: {error}",
                 self._STATUS.error,
             )
-        finally:
-            self._outputs = None
-            self._inputs_checked = False
+            return True
+        self._outputs = None
+        self._inputs_checked = False
+        try:
+            self._start_time, self._initialized = start_time, initialized
+            self._outputs_held, self._inputs_held = outputs, inputs
+            self._rearm(passed)
+        except Exception as error:
+            self._fault(f"{self._API}SetFMU{self._STATE}", error)
+        return False
 
     # A class method: pythonfmu's loaders called it on the class.
     @classmethod

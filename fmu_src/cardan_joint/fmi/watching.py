@@ -51,11 +51,12 @@ class Watching:
             self._report(message, self._STATUS.warning, WATCH_CATEGORY)
 
     def _watch_limits(self) -> tuple[float, ...]:
-        """Each output's armed limit, inf where none is armed: what a step in C
-        compares its outputs with (`fast_step.py`)."""
+        """Each output's smallest armed limit, inf where none is armed: what a
+        step in C compares its outputs with (`fast_step.py`). The smallest, as
+        several watches of one output must hand over at the first one passed."""
         limits = [math.inf] * len(self.table.OUTPUTS)
         for slot, limit in self._armed.checks if self._armed else ():
-            limits[slot] = limit
+            limits[slot] = min(limits[slot], limit)
         return tuple(limits)
 
     def _watch_step(self) -> None:

@@ -142,13 +142,16 @@ fmi2Status transition(void *c, unsigned allowed, const char *function,
     struct instance *in = enter(c, allowed, function);
     if (!in)
         return fmi2Error;
-    fast_before(in);
+    enum state was = in->state;
+    if (fast_before(in))
+        return leave(in, fmi2Error);
     fmi2Status status = first ? first(in) : fmi2OK;
     if (status == fmi2OK)
         status = method ? slave_call(in, method) : reset_slave(in);
     status = leave(in, status);
     fast_after(in);
-    if (status <= fmi2Error && in->state != STATE_FATAL)
+    /* unless the call left the instance fatal, or in error (an interrupted slave) */
+    if (status <= fmi2Error && in->state == was)
         in->state = next;
     return status;
 }

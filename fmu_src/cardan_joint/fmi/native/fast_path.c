@@ -46,18 +46,18 @@ static long call(struct instance *in, enum fast_method method, PyObject *a, PyOb
                  PyObject *c, PyObject *d)
 {
     struct fast_path *fast = in->fast;
-    PyObject *const arguments[] = {a, b, c, d};
-    size_t count = !a ? 0 : !b ? 1 : !c ? 2 : !d ? 3 : 4;
-    PyObject *reply = p_PyObject_Vectorcall
-                          ? p_PyObject_Vectorcall(fast->methods[method], arguments, count, NULL)
-                          : p_PyObject_CallFunctionObjArgs(fast->methods[method], a, b, c, d, NULL);
+    /* the arguments end at the first NULL */
+    PyObject *reply = p_PyObject_CallFunctionObjArgs(fast->methods[method], a, b, c, d, NULL);
     long status = reply ? take_reply(fast, method, reply) : -1;
     if (reply)
         p_Py_DecRef(reply);
+    int interrupted = !reply && slave_interrupted(in, METHODS[method]);
     int raised = p_PyErr_Occurred() != NULL;
     p_PyErr_Clear();
     if (!fast->queue || p_PyList_Size(fast->queue) != 0)
         slave_drain(in, fast->slave);
+    if (interrupted)
+        return fmi2Error;
     if (raised || status < 0 || status > fmi2Fatal) {
         reportf(in, fmi2Error, "the slave's %s failed", METHODS[method]);
         return fmi2Error;
@@ -69,8 +69,7 @@ static void forget(struct fast_path *fast)
 {
     PyObject **owned[] = {&fast->slave,      &fast->methods[0], &fast->methods[1],
                           &fast->methods[2], &fast->methods[3], &fast->methods[4],
-                          &fast->methods[5], &fast->queue,      &fast->last_inputs,
-                          &fast->last_step};
+                          &fast->methods[5], &fast->queue};
     for (size_t i = 0; i < sizeof owned / sizeof *owned; i++) {
         if (*owned[i])
             p_Py_DecRef(*owned[i]);
@@ -113,7 +112,8 @@ static int claim(struct instance *in, struct fast_path *fast)
         fast->first_output = global_long(globals, "first_output");
         fast->outputs = global_long(globals, "outputs");
         fast->state_size = global_long(globals, "state_size");
-        found = fast->state_size >= 0 && read_flat_table(fast, p_PyDict_GetItemString(globals, "flat_table"));
+        found = sizes_taken(in, fast) &&
+                read_flat_table(fast, p_PyDict_GetItemString(globals, "flat_table"));
     }
     if (result)
         p_Py_DecRef(result);
@@ -129,7 +129,6 @@ static int set_up(struct instance *in, struct fast_path *fast)
 {
     if (!claim(in, fast))
         return 0;
-    python_layout();
     double *known = realloc(fast->known, fast->known_size * sizeof *known);
     if (known)
         fast->known = known;
@@ -214,15 +213,23 @@ void fast_reset(struct instance *in) { renew(in, 1); }
 
 /* Before any call into the slave once steps were taken in C: the slave takes
  * the state, clock, inputs and outputs they left (fast_sync).  A slave that
- * cannot (a fault, reported) is stepped in Python from then on. */
-void catch_up(struct instance *in)
+ * cannot (a fault, reported) is behind the instance for good: any call it
+ * answered would act on a state the host has left, so the instance enters
+ * the error state, where only reset (a new slave) and free are allowed. */
+int catch_up(struct instance *in)
 {
     struct fast_path *fast = in->fast;
     if (!fast->behind)
-        return;
+        return 0;
     fast->behind = 0;
-    if (fast_call(in, FAST_SYNC, fast->behind_time, 0) != fmi2OK)
-        fast->generated = 0;
+    if (fast_call(in, FAST_SYNC, fast->behind_time, 0) == fmi2OK)
+        return 0;
+    fast->generated = 0;
+    in->state = STATE_ERROR;
+    reportf(in, fmi2Error, "the slave could not take the state of the steps taken in C (to "
+            "t = %.17g s); it is behind the instance, which can only be reset or freed now",
+            fast->behind_time);
+    return -1;
 }
 
 /* One call into the slave, the GIL taken for it: fast_step(time, step, inputs),
@@ -231,8 +238,8 @@ void catch_up(struct instance *in)
 long fast_call(struct instance *in, enum fast_method method, double time, double step)
 {
     struct fast_path *fast = in->fast;
-    if (method != FAST_SYNC)
-        catch_up(in);
+    if (method != FAST_SYNC && catch_up(in))
+        return fmi2Error;
     PyGILState_STATE gil = p_PyGILState_Ensure();
     PyObject *arguments[4] = {NULL, NULL, NULL, NULL};
     int made = 1;
@@ -244,13 +251,11 @@ long fast_call(struct instance *in, enum fast_method method, double time, double
         made = arguments[0] && arguments[1] && arguments[2] && arguments[3];
     } else if (method == FAST_STEP) {
         arguments[0] = p_PyFloat_FromDouble(time);
-        arguments[1] = float_like(fast->last_step, step);
-        if (arguments[1])
-            keep(&fast->last_step, arguments[1]);
-        arguments[2] = inputs_tuple(fast);
+        arguments[1] = p_PyFloat_FromDouble(step);
+        arguments[2] = tuple_of(fast->known, fast->inputs);
         made = arguments[0] && arguments[1] && arguments[2];
     } else if (method != FAST_STORE && method != FAST_WATCH) {
-        arguments[0] = inputs_tuple(fast);
+        arguments[0] = tuple_of(fast->known, fast->inputs);
         /* fast_outputs(inputs, read): only a read of a held output warns. */
         if (method == FAST_OUTPUTS && arguments[0])
             arguments[1] = read_indices(fast);

@@ -19,9 +19,6 @@ enum fast_method {
 struct fast_path {
     PyObject *slave, *methods[FAST_METHODS];
     PyObject *queue; /* the slave's log_queue: drained only when it holds a message */
-    /* The last call's inputs tuple and step size: a value a host leaves as it
-     * was (a steady input, a fixed step) crosses again as the same object. */
-    PyObject *last_inputs, *last_step;
     long inputs, known_size, first_output, outputs;
     int stale;          /* the outputs array is not current */
     int inputs_written; /* the slave has not taken the host's latest inputs yet */
@@ -49,6 +46,9 @@ struct fast_path {
     size_t reading_count;
 };
 
+/* Whether the slave's layout holds counts the arrays can take: else said (a
+ * Warning), and its values go through plain calls. */
+int sizes_taken(struct instance *in, const struct fast_path *fast);
 int fast_table(struct fast_path *fast, const char *bytes, size_t size);
 /* The flat indices of value reference vr, and how many (0: none). */
 long long flat_of(const struct fast_path *fast, unsigned vr, const long long **indices,
@@ -62,18 +62,11 @@ int generated_take(struct fast_path *fast, double time, double step);
 int generated_attach(struct fast_path *fast);
 /* 1 when the build compiled the model's step in (the slave is asked for its state). */
 int generated_compiled(void);
-/* Before any call into the slave: it takes what the steps taken in C left. */
-void catch_up(struct instance *in);
-/* With the GIL: a float of `value`, `last` itself (a reference added) when it
- * holds the same bits; NULL: no memory. */
-PyObject *float_like(PyObject *last, double value);
-/* With the GIL: *slot holds `value` (a reference of its own) for the next call,
- * the object it held before released. */
-void keep(PyObject **slot, PyObject *value);
+/* Before any call into the slave: it takes what the steps taken in C left; -1
+ * when it could not (the instance then in STATE_ERROR, said). */
+int catch_up(struct instance *in);
 /* With the GIL: n doubles as a new tuple of floats (NULL: no memory). */
 PyObject *tuple_of(const double *values, long n);
-/* With the GIL: the inputs (known[0..inputs)) as a tuple, kept as last_inputs. */
-PyObject *inputs_tuple(struct fast_path *fast);
 /* With the GIL: the flat indices of the value references being read
  * (fast->reading), in order, as a tuple of ints (NULL: no memory). */
 PyObject *read_indices(const struct fast_path *fast);

@@ -1,15 +1,38 @@
-/* The one-call step's value references (the protocol: fmi/fast_step.py): FMI
- * 3's table of each reference's flat indices (FMI 2's references are the flat
- * indices), whether the arrays serve a call's references, and the flat indices
- * a getReal reads, for the slave's fast_outputs. */
+/* The one-call step's layout and value references (the protocol:
+ * fmi/fast_step.py): the counts the slave gives, checked before any array is
+ * sized from them; FMI 3's table of each reference's flat indices (FMI 2's
+ * references are the flat indices), whether the arrays serve a call's
+ * references, and the flat indices a getReal reads, for the slave's
+ * fast_outputs. */
 #include "fast_path.h"
 #include "python_api.h"
 
 #include <stdlib.h>
 #include <string.h>
 
+/* More values of a kind than any model has: the arrays' sizes and the replies'
+ * counts are sums and products of these, which must not overflow. */
+#define MOST_VALUES (1L << 20)
+
+int sizes_taken(struct instance *in, const struct fast_path *fast)
+{
+    int taken = 0 < fast->inputs && fast->inputs <= fast->known_size &&
+                fast->known_size <= MOST_VALUES && fast->known_size == fast->first_output &&
+                0 < fast->outputs && fast->outputs <= MOST_VALUES && 0 <= fast->state_size &&
+                fast->state_size <= MOST_VALUES;
+    if (!taken)
+        reportf(in, fmi2Warning, "the slave's layout (%ld inputs, %ld known values, %ld "
+                "outputs, a step state of %ld) is beyond what the runtime's arrays take (1 to "
+                "%ld of each, a state of 0 to %ld): its values go through plain calls",
+                fast->inputs, fast->known_size, fast->outputs, fast->state_size, MOST_VALUES,
+                MOST_VALUES);
+    return taken;
+}
+
 /* Takes the table of FMI 3's value references (none: FMI 2's are the flat
- * indices); 0 if it is malformed or names an index beyond the arrays. */
+ * indices); 0 if it is malformed: each reference's start from 0 up, never
+ * past the indices, and every index within the arrays (flat_of reads them all
+ * unchecked). */
 int fast_table(struct fast_path *fast, const char *bytes, size_t size)
 {
     free(fast->table);
@@ -21,7 +44,10 @@ int fast_table(struct fast_path *fast, const char *bytes, size_t size)
         return 0;
     memcpy(fast->table, bytes, size);
     long long refs = fast->table[0];
-    int ok = refs >= 1 && n >= refs + 2 && fast->table[refs + 1] == n - refs - 2;
+    int ok = refs >= 1 && n >= refs + 2 && fast->table[refs + 1] == n - refs - 2 &&
+             fast->table[1] == 0;
+    for (long long vr = 1; ok && vr <= refs; vr++)
+        ok = fast->table[vr] <= fast->table[vr + 1];
     for (long long i = refs + 2; ok && i < n; i++)
         ok = fast->table[i] >= 0 && fast->table[i] < limit;
     return ok;

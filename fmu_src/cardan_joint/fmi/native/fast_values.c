@@ -10,49 +10,6 @@
 #include <stdlib.h>
 #include <string.h>
 
-/* A float of `value`: `last` itself (a reference added) when it holds the same
- * bits, or a new one (NULL: no memory). */
-PyObject *float_like(PyObject *last, double value)
-{
-    if (last) {
-        double was = py_float_value(last);
-        if (memcmp(&was, &value, sizeof value) == 0) {
-            p_Py_IncRef(last);
-            return last;
-        }
-    }
-    return p_PyFloat_FromDouble(value);
-}
-
-/* The inputs (known[0..inputs)) as a tuple of floats, or NULL: the last call's
- * tuple when every value is as it was, else a new one that reuses the last
- * one's unchanged items; kept for the next call.  A float made and freed costs
- * more than comparing its bits. */
-PyObject *inputs_tuple(struct fast_path *fast)
-{
-    PyObject *last = fast->last_inputs;
-    long n = fast->inputs, same = 0;
-    for (long i = 0; last && i < n; i++) {
-        double was = py_float_value(py_tuple_item(last, i));
-        same += memcmp(&was, &fast->known[i], sizeof was) == 0;
-    }
-    if (last && same == n) {
-        p_Py_IncRef(last);
-        return last;
-    }
-    PyObject *tuple = p_PyTuple_New(n);
-    for (long i = 0; tuple && i < n; i++) {
-        PyObject *item = float_like(last ? py_tuple_item(last, i) : NULL, fast->known[i]);
-        if (!item || p_PyTuple_SetItem(tuple, i, item)) {
-            p_Py_DecRef(tuple);
-            tuple = NULL;
-        }
-    }
-    if (tuple)
-        keep(&fast->last_inputs, tuple);
-    return tuple;
-}
-
 PyObject *tuple_of(const double *values, long n)
 {
     PyObject *tuple = p_PyTuple_New(n);
@@ -64,14 +21,6 @@ PyObject *tuple_of(const double *values, long n)
         }
     }
     return tuple;
-}
-
-void keep(PyObject **slot, PyObject *value)
-{
-    p_Py_IncRef(value);
-    if (*slot)
-        p_Py_DecRef(*slot);
-    *slot = value;
 }
 
 /* Where a method's values go, in order (the protocol: fmi/fast_step.py): the
@@ -103,7 +52,7 @@ static int destinations(const struct fast_path *fast, enum fast_method method, s
  * of them converts and they are as many as the method gives; -1 otherwise. */
 long take_reply(struct fast_path *fast, enum fast_method method, PyObject *reply)
 {
-    Py_ssize_t size = py_tuple_size(reply);
+    Py_ssize_t size = p_PyTuple_Size(reply);
     if (size < 0) {
         p_PyErr_Clear();
         return p_PyLong_AsLong(reply);
@@ -114,14 +63,13 @@ long take_reply(struct fast_path *fast, enum fast_method method, PyObject *reply
     for (int k = 0; k < parts; k++)
         expected += part[k].count;
     for (Py_ssize_t item = 1; item < size; item++) {
-        PyObject *values = py_tuple_item(reply, item);
-        Py_ssize_t count = py_tuple_size(values);
+        PyObject *values = p_PyTuple_GetItem(reply, item);
+        Py_ssize_t count = p_PyTuple_Size(values);
         if (count < 0 || count > expected - taken)
             return -1;
-        PyObject *const *items = py_tuple_items(values);
         double *scratch = fast->scratch + taken;
         for (Py_ssize_t i = 0; i < count; i++) {
-            scratch[i] = py_float_value(items ? items[i] : p_PyTuple_GetItem(values, i));
+            scratch[i] = p_PyFloat_AsDouble(p_PyTuple_GetItem(values, i));
             if (scratch[i] == -1.0 && p_PyErr_Occurred())
                 return -1;
         }
@@ -131,20 +79,23 @@ long take_reply(struct fast_path *fast, enum fast_method method, PyObject *reply
         return -1;
     for (int k = 0, at = 0; k < parts; at += part[k].count, k++)
         memcpy(part[k].into, fast->scratch + at, (size_t)part[k].count * sizeof(double));
-    return p_PyLong_AsLong(py_tuple_item(reply, 0));
+    return p_PyLong_AsLong(p_PyTuple_GetItem(reply, 0));
 }
 
-/* Before any other call into the slave: it takes the host's latest inputs. */
-void fast_before(struct instance *in)
+/* Before any other call into the slave: it takes what the steps in C left and
+ * the host's latest inputs; -1 when it could not catch up. */
+int fast_before(struct instance *in)
 {
     struct fast_path *fast = in->fast;
     if (!fast)
-        return;
-    catch_up(in);
+        return 0;
+    if (catch_up(in))
+        return -1;
     if (!fast->inputs_written)
-        return;
+        return 0;
     fast_call(in, FAST_LOAD, 0, 0);
     fast->inputs_written = 0;
+    return 0;
 }
 
 /* After any other call into the slave: it may have changed inputs or parameters. */

@@ -25,6 +25,9 @@ const char *where(enum state state)
         return "after initialization";
     case STATE_TERMINATED:
         return "after fmi2Terminate: call fmi2Reset to start again";
+    case STATE_ERROR:
+        return "after an error that left the slave out of step with the instance: call "
+               "fmi2Reset to start again, or fmi2FreeInstance";
     default:
         return "after a fatal error: only fmi2FreeInstance is allowed";
     }
@@ -96,7 +99,8 @@ fmi2Status fmi2Reset(fmi2Component c)
         struct instance *in = ENTER(c, fmi2##get_or_set##Type);                          \
         if (!in || !arrays_given(in, function, n, vr, value))                            \
             return fmi2Error;                                                            \
-        fast_before(in);                                                                 \
+        if (fast_before(in))                                                             \
+            return leave(in, fmi2Error);                                                 \
         fmi2Status status = leave(in, slave_##get_or_set(in, #member, kind, vr, n, value, n)); \
         fast_after(in);                                                                  \
         return status;                                                                   \
@@ -127,7 +131,8 @@ static fmi2Status set_real(struct instance *in, const fmi2ValueReference vr[], s
         fast_set(in, vr, n, value);
         return leave(in, fmi2OK);
     }
-    fast_before(in);
+    if (fast_before(in))
+        return leave(in, fmi2Error);
     fmi2Status status = leave(in, slave_set(in, "set_real", 'd', vr, n, value, n));
     fast_after(in);
     return status;
@@ -177,7 +182,8 @@ fmi2Status fmi2GetReal(fmi2Component c, const fmi2ValueReference vr[], size_t n,
         return fmi2Error;
     if (fast_serves(in, vr, n, 0))
         return leave(in, fast_get(in, vr, n, value));
-    fast_before(in);
+    if (fast_before(in))
+        return leave(in, fmi2Error);
     fmi2Status status = leave(in, slave_get(in, "get_real", 'd', vr, n, value, n));
     fast_after(in);
     return status;

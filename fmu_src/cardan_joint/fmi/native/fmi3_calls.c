@@ -146,7 +146,8 @@ fmi3Status fmi3GetFloat64(fmi3Instance c, const fmi3ValueReference vr[], size_t 
         return fmi3OK;
     if (fast_serves(in, vr, nvr, 0))
         return (fmi3Status)leave(in, fast_get(in, vr, nvr, values));
-    fast_before(in);
+    if (fast_before(in))
+        return (fmi3Status)leave(in, fmi2Error);
     fmi2Status status = leave(in, slave_get(in, "get_float64", 'd', vr, nvr, values, n_values));
     fast_after(in);
     return (fmi3Status)status;
@@ -159,7 +160,8 @@ static fmi3Status set_float64(struct instance *in, const fmi3ValueReference vr[]
         fast_set(in, vr, nvr, values);
         return (fmi3Status)leave(in, fmi2OK);
     }
-    fast_before(in);
+    if (fast_before(in))
+        return (fmi3Status)leave(in, fmi2Error);
     fmi2Status status = leave(in, slave_set(in, "set_float64", 'd', vr, nvr, values, n_values));
     fast_after(in);
     return (fmi3Status)status;

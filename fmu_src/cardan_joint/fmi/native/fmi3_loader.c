@@ -38,6 +38,9 @@ const char *where(enum state state)
         return "in step mode";
     case STATE_TERMINATED:
         return "after fmi3Terminate: call fmi3Reset to start again";
+    case STATE_ERROR:
+        return "after an error that left the slave out of step with the instance: call "
+               "fmi3Reset to start again, or fmi3FreeInstance";
     default:
         return "after a fatal error: only fmi3FreeInstance is allowed";
     }

@@ -19,6 +19,9 @@ enum state {
     STATE_STEP_COMPLETE = 4,
     STATE_TERMINATED = 8,
     STATE_FATAL = 16,
+    /* The slave lost track of the instance (it could not take the steps taken
+     * in C): only reset and free, as FMI asks after an error. */
+    STATE_ERROR = 32,
 };
 
 #include "masks.h"
@@ -79,12 +82,14 @@ fmi2Status state_deserialize(void *c, const char bytes[], size_t size, fmi2FMUst
                              unsigned allowed, const char *function);
 /* The one-call step (fast_path.c): set up after instantiate (NULL when the slave
  * cannot take it), re-found after reset; fast_before/fast_after go around every
- * other call into the slave; fast_serves says whether fast_set (inputs_only) or
- * fast_get can answer these value references in C. */
+ * other call into the slave (fast_before: -1 when the slave could not catch up,
+ * the instance then in STATE_ERROR: the call must not reach it); fast_serves
+ * says whether fast_set (inputs_only) or fast_get can answer these value
+ * references in C. */
 void fast_attach(struct instance *in);
 void fast_detach(struct instance *in);
 void fast_reset(struct instance *in);
-void fast_before(struct instance *in);
+int fast_before(struct instance *in);
 void fast_after(struct instance *in);
 int fast_serves(const struct instance *in, const unsigned vr[], size_t n, int inputs_only);
 void fast_set(struct instance *in, const unsigned vr[], size_t n, const double value[]);
@@ -118,7 +123,8 @@ fmi2Status slave_get(struct instance *in, const char *method, char kind, const u
 fmi2Status slave_set(struct instance *in, const char *method, char kind, const unsigned vr[],
                      size_t n, const void *value, size_t n_values);
 fmi2Status slave_get_state(struct instance *in, fmi2FMUstate *state);
-fmi2Status slave_set_state(struct instance *in, fmi2FMUstate state);
+/* `refused`: the slave kept every value as it was (its outputs' cache too). */
+fmi2Status slave_set_state(struct instance *in, fmi2FMUstate state, int *refused);
 fmi2Status slave_free_state(fmi2FMUstate *state);
 fmi2Status slave_state_bytes(struct instance *in, fmi2FMUstate state, char *bytes, size_t *size);
 fmi2Status slave_state_from_bytes(struct instance *in, const char *bytes, size_t size,

@@ -9,7 +9,7 @@
 #define CARDAN_JOINT_MASKS_H
 
 #define ALIVE (STATE_INSTANTIATED | STATE_INITIALIZATION | STATE_STEP_COMPLETE | STATE_TERMINATED)
-#define ANY (ALIVE | STATE_FATAL)
+#define ANY (ALIVE | STATE_FATAL | STATE_ERROR)
 /* Reading before initialization is beyond FMI 2.0 but harmless: start values. */
 #define READABLE ALIVE
 #define SETTABLE (STATE_INSTANTIATED | STATE_INITIALIZATION | STATE_STEP_COMPLETE)
@@ -25,7 +25,7 @@
 #define MASK_fmi2EnterInitializationMode          STATE_INSTANTIATED
 #define MASK_fmi2ExitInitializationMode           STATE_INITIALIZATION
 #define MASK_fmi2Terminate                        STATE_STEP_COMPLETE
-#define MASK_fmi2Reset                            ALIVE
+#define MASK_fmi2Reset                            (ALIVE | STATE_ERROR)
 #define MASK_fmi2DoStep                           STATE_STEP_COMPLETE
 #define MASK_fmi2GetReal                          READABLE
 #define MASK_fmi2GetInteger                       READABLE
@@ -57,7 +57,7 @@
 #define MASK_fmi3EnterInitializationMode          STATE_INSTANTIATED
 #define MASK_fmi3ExitInitializationMode           STATE_INITIALIZATION
 #define MASK_fmi3Terminate                        STATE_STEP_COMPLETE
-#define MASK_fmi3Reset                            ALIVE
+#define MASK_fmi3Reset                            (ALIVE | STATE_ERROR)
 #define MASK_fmi3DoStep                           STATE_STEP_COMPLETE
 #define MASK_fmi3GetFloat32                       READABLE
 #define MASK_fmi3GetFloat64                       READABLE

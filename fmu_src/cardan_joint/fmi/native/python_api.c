@@ -9,8 +9,7 @@
 PYTHON_FUNCTIONS(DEFINE)
 #undef DEFINE
 PyObject *py_none;
-PyObject *(*p_PyObject_Vectorcall)(PyObject *, PyObject *const *, size_t, PyObject *);
-const void *py_float_type, *py_tuple_type;
+PyObject *const *py_keyboard_interrupt;
 
 static int resolved;
 static pthread_once_t once = PTHREAD_ONCE_INIT;
@@ -23,37 +22,8 @@ static void resolve(void)
     PYTHON_FUNCTIONS(RESOLVE)
 #undef RESOLVE
     py_none = dlsym(RTLD_DEFAULT, "_Py_NoneStruct");
-    *(void **)&p_PyObject_Vectorcall = dlsym(RTLD_DEFAULT, "PyObject_Vectorcall");
-    resolved = py_none != NULL;
-}
-
-void python_layout(void)
-{
-    static int checked; /* the GIL orders the callers */
-    if (checked)
-        return;
-    checked = 1;
-    const void *float_type = dlsym(RTLD_DEFAULT, "PyFloat_Type");
-    const void *tuple_type = dlsym(RTLD_DEFAULT, "PyTuple_Type");
-    PyObject *x = float_type && tuple_type ? p_PyFloat_FromDouble(0.3125) : NULL;
-    PyObject *t = x ? p_PyTuple_New(1) : NULL;
-    int holds = 0;
-    if (t) {
-        p_Py_IncRef(x); /* the tuple takes a reference */
-        const struct py_float_layout *fl = (const void *)x;
-        const struct py_tuple_layout *tl = (const void *)t;
-        /* The type first: only a matching one says the fields after it are there. */
-        holds = !p_PyTuple_SetItem(t, 0, x) && fl->head.type == float_type &&
-                tl->head.type == tuple_type && fl->value == 0.3125 && tl->size == 1 &&
-                tl->items[0] == x;
-        p_Py_DecRef(t);
-    }
-    if (x)
-        p_Py_DecRef(x);
-    /* Published only once found: until then every reader calls the API. */
-    if (holds)
-        py_float_type = float_type, py_tuple_type = tuple_type;
-    p_PyErr_Clear();
+    py_keyboard_interrupt = dlsym(RTLD_DEFAULT, "PyExc_KeyboardInterrupt");
+    resolved = py_none != NULL && py_keyboard_interrupt != NULL;
 }
 
 int python_api(void)

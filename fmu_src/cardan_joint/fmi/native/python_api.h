@@ -13,7 +13,6 @@
 typedef ssize_t Py_ssize_t;
 typedef int PyGILState_STATE; /* an enum in Python.h */
 #define PY_FILE_INPUT 257     /* the same in every CPython 3 */
-#define PYBUF_WRITE 0x200
 
 #define PYTHON_FUNCTIONS(X)                                                                \
     X(PyGILState_STATE, PyGILState_Ensure, (void))                                        \
@@ -25,8 +24,6 @@ typedef int PyGILState_STATE; /* an enum in Python.h */
     X(Py_ssize_t, PyTuple_Size, (PyObject *))                                             \
     X(PyObject *, PyTuple_GetItem, (PyObject *, Py_ssize_t))                              \
     X(PyObject *, PyObject_GetAttrString, (PyObject *, const char *))                     \
-    X(PyObject *, PyObject_GetAttr, (PyObject *, PyObject *))                             \
-    X(PyObject *, PyUnicode_InternFromString, (const char *))                             \
     X(PyObject *, PyList_New, (Py_ssize_t))                                               \
     X(int, PyList_SetItem, (PyObject *, Py_ssize_t, PyObject *))                          \
     X(PyObject *, PyList_GetItem, (PyObject *, Py_ssize_t))                               \
@@ -41,8 +38,8 @@ typedef int PyGILState_STATE; /* an enum in Python.h */
     X(PyObject *, PyUnicode_DecodeFSDefault, (const char *))                              \
     X(PyObject *, PyBytes_FromStringAndSize, (const char *, Py_ssize_t))                  \
     X(int, PyBytes_AsStringAndSize, (PyObject *, char **, Py_ssize_t *))                  \
-    X(PyObject *, PyMemoryView_FromMemory, (char *, Py_ssize_t, int))                     \
     X(PyObject *, PyErr_Occurred, (void)) X(void, PyErr_Clear, (void))                    \
+    X(int, PyErr_ExceptionMatches, (PyObject *)) X(void, PyErr_SetInterrupt, (void))      \
     X(void, PyErr_Fetch, (PyObject **, PyObject **, PyObject **))                         \
     X(PyObject *, PyObject_Repr, (PyObject *))                                            \
     X(void, Py_IncRef, (PyObject *)) X(void, Py_DecRef, (PyObject *))                     \
@@ -55,70 +52,11 @@ typedef int PyGILState_STATE; /* an enum in Python.h */
 PYTHON_FUNCTIONS(DECLARE)
 #undef DECLARE
 extern PyObject *py_none;
+/* The KeyboardInterrupt class (the address of PyExc_KeyboardInterrupt). */
+extern PyObject *const *py_keyboard_interrupt;
 
 /* 1 once every function above (and None) is found, else 0: call it before any. */
 int python_api(void);
-
-/* Where the process has it (CPython 3.11 on): a call with the arguments in an
- * array, without the variadic call's counting and copying; NULL otherwise. */
-extern PyObject *(*p_PyObject_Vectorcall)(PyObject *, PyObject *const *, size_t, PyObject *);
-
-/* A release build's float and tuple (CPython 3.10-3.13): a reference count and
- * a type, then the value, or the size and the items.  The step's reply is read
- * through them, one load per value where the API costs a call or two; the
- * types are set only once python_layout() has found the layout on objects the
- * API made (NULL otherwise, or for any other build: the API's calls). */
-struct py_head {
-    Py_ssize_t refcount;
-    const void *type;
-};
-struct py_float_layout {
-    struct py_head head;
-    double value;
-};
-struct py_tuple_layout {
-    struct py_head head;
-    Py_ssize_t size;
-    PyObject *items[]; /* `size` of them */
-};
-extern const void *py_float_type, *py_tuple_type;
-
-/* With the GIL: find whether floats and tuples are laid out as above. */
-void python_layout(void);
-
-/* A tuple's size, or -1 (an error set) if `o` is no tuple. */
-static inline Py_ssize_t py_tuple_size(PyObject *o)
-{
-    const struct py_tuple_layout *tuple = (const void *)o;
-    if (tuple->head.type == py_tuple_type && py_tuple_type)
-        return tuple->size;
-    return p_PyTuple_Size(o);
-}
-
-/* The items of an exact tuple in place, or NULL (then PyTuple_GetItem). */
-static inline PyObject *const *py_tuple_items(PyObject *o)
-{
-    const struct py_tuple_layout *tuple = (const void *)o;
-    if (tuple->head.type == py_tuple_type && py_tuple_type)
-        return tuple->items;
-    return NULL;
-}
-
-/* Item i < py_tuple_size(o) of a tuple. */
-static inline PyObject *py_tuple_item(PyObject *o, Py_ssize_t i)
-{
-    PyObject *const *items = py_tuple_items(o);
-    return items ? items[i] : p_PyTuple_GetItem(o, i);
-}
-
-/* As PyFloat_AsDouble (-1.0 with an error set when `o` converts to no float). */
-static inline double py_float_value(PyObject *o)
-{
-    const struct py_float_layout *x = (const void *)o;
-    if (x->head.type == py_float_type && py_float_type)
-        return x->value;
-    return p_PyFloat_AsDouble(o);
-}
 
 /* With the GIL: run `code` with `globals` (a new dict holding __builtins__ and
  * the caller's names); the result of PyRun_String (NULL: it raised). */
@@ -129,7 +67,12 @@ int set_global(PyObject *globals, const char *name, PyObject *value);
 
 /* With the GIL, after a call into the slave that returned `result` (NULL: it
  * raised): the slave's log to the host, then the exception as pythonfmu
- * reports it (Fatal). */
+ * reports it (Fatal), or a KeyboardInterrupt handed back (Error,
+ * slave_interrupted). */
 fmi2Status slave_finish(struct instance *in, PyObject *result, const char *what);
+/* With the GIL, after a call into the slave that raised: 1 when it raised
+ * KeyboardInterrupt (said, the instance in STATE_ERROR, the interrupt handed
+ * back to the host's Python), 0 otherwise (the exception still set). */
+int slave_interrupted(struct instance *in, const char *what);
 
 #endif

@@ -17,6 +17,7 @@
 #include <stdalign.h>
 #include <stdint.h>
 #include <stdio.h>
+#include <stdlib.h>
 #include <string.h>
 #include <unistd.h>
 #include <wchar.h>
@@ -92,10 +93,20 @@ static int start_by_names(void *library, int minor, const struct python_location
         snprintf(error, size, "Python %s: no memory for its configuration", python->library);
         return -1;
     }
-    char entries[sizeof python->path], *items[256];
-    size_t n = 0;
+    /* As many entries as the path holds: one more than its separators at most. */
+    char entries[sizeof python->path];
+    size_t n = 0, room = 1;
     snprintf(entries, sizeof entries, "%s", python->path);
-    for (char *save, *entry = strtok_r(entries, ":", &save); entry && n < 256;
+    for (const char *c = entries; *c; c++)
+        room += *c == ':';
+    char **items = malloc(room * sizeof *items);
+    if (!items) {
+        snprintf(error, size, "Python %s: no memory for its %zu path entries", python->library,
+                 room);
+        PyInitConfig_Free(config);
+        return -1;
+    }
+    for (char *save, *entry = strtok_r(entries, ":", &save); entry;
          entry = strtok_r(NULL, ":", &save))
         items[n++] = entry;
     const char *failed = PyInitConfig_SetInt(config, "utf8_mode", 1) ? "utf8_mode"
@@ -118,6 +129,7 @@ static int start_by_names(void *library, int minor, const struct python_location
                  FIX_HINT, python->library, python->home, python->path,
                  message ? message : "exit requested");
     PyInitConfig_Free(config);
+    free(items);
     return failed ? -1 : started < 0 ? -2 : 0;
 }
 

@@ -29,13 +29,9 @@ static const char CONSTRUCT[] =
 /* The slave's log queue to the host, as pythonfmu forwards it after its calls. */
 void slave_drain(struct instance *in, PyObject *slave)
 {
-    /* Interned once, for as long as the interpreter lives (the runtime never
-     * finalizes it): a lookup by a C string would make and hash a new str
-     * after every call, the one-call step's included. */
-    static PyObject *name;
-    if (!name)
-        name = p_PyUnicode_InternFromString("log_queue");
-    PyObject *queue = name ? p_PyObject_GetAttr(slave, name) : NULL;
+    /* By name at every call: a str kept across calls would outlive an
+     * interpreter the host finalizes and starts again. */
+    PyObject *queue = p_PyObject_GetAttrString(slave, "log_queue");
     Py_ssize_t n = queue ? p_PyList_Size(queue) : -1;
     for (Py_ssize_t i = 0; i < n; i++) {
         PyObject *item = p_PyList_GetItem(queue, i);
@@ -60,12 +56,32 @@ void slave_drain(struct instance *in, PyObject *slave)
     p_PyErr_Clear();
 }
 
+/* A host that runs Python's own signal handlers (its Python, FMPy's) takes
+ * Ctrl-C as KeyboardInterrupt at the next bytecode its main thread runs: the
+ * slave's, during a call.  The interrupt is the host's: it gets it back, raised
+ * at its own Python's next check.  The slave stopped part way through the call,
+ * so its state is no longer known: the instance can only be reset or freed. */
+int slave_interrupted(struct instance *in, const char *what)
+{
+    if (!p_PyErr_Occurred() || !p_PyErr_ExceptionMatches(*py_keyboard_interrupt))
+        return 0;
+    p_PyErr_Clear();
+    p_PyErr_SetInterrupt();
+    in->state = STATE_ERROR;
+    reportf(in, fmi2Error, "the slave's %s was interrupted by a KeyboardInterrupt (Ctrl-C) "
+            "of the host's Python, which gets it back; the slave stopped part way, so the "
+            "instance can only be reset or freed now", what);
+    return 1;
+}
+
 fmi2Status slave_finish(struct instance *in, PyObject *result, const char *what)
 {
     fmi2Status status = fmi2OK;
+    if (!result && slave_interrupted(in, what))
+        status = fmi2Error;
     if (in->object)
         slave_drain(in, in->object);
-    if (!result) {
+    if (!result && status == fmi2OK) {
         PyObject *type = NULL, *value = NULL, *traceback = NULL;
         p_PyErr_Fetch(&type, &value, &traceback);
         PyObject *repr = value ? p_PyObject_Repr(value) : NULL;

@@ -134,10 +134,11 @@ fmi2Status slave_get_state(struct instance *in, fmi2FMUstate *state)
     return status;
 }
 
-fmi2Status slave_set_state(struct instance *in, fmi2FMUstate state)
+fmi2Status slave_set_state(struct instance *in, fmi2FMUstate state, int *refused)
 {
     PyGILState_STATE gil = p_PyGILState_Ensure();
     PyObject *result = p_PyObject_CallMethod(in->object, "_set_fmu_state", "(O)", state);
+    *refused = result && p_PyObject_IsTrue(result) == 1;
     fmi2Status status = slave_finish(in, result, "_set_fmu_state");
     if (result)
         p_Py_DecRef(result);

@@ -68,7 +68,8 @@ fmi2Status state_get(void *c, fmi2FMUstate *state, unsigned allowed, const char 
     struct instance *in = enter(c, allowed, function);
     if (!in || !prepare_new_state(in, state, function))
         return fmi2Error;
-    fast_before(in);
+    if (fast_before(in))
+        return leave(in, fmi2Error);
     fmi2Status status = leave(in, slave_get_state(in, state));
     if (*state)
         keep_state(in, *state);
@@ -80,9 +81,12 @@ fmi2Status state_set(void *c, fmi2FMUstate state, unsigned allowed, const char *
     struct instance *in = enter(c, allowed, function);
     if (!in || !known_state(in, state, function))
         return fmi2Error;
-    fast_before(in);
-    fmi2Status status = leave(in, slave_set_state(in, state));
-    fast_after(in);
+    if (fast_before(in))
+        return leave(in, fmi2Error);
+    int refused = 0;
+    fmi2Status status = leave(in, slave_set_state(in, state, &refused));
+    if (!refused) /* a refused state leaves the instance as it was: the arrays hold */
+        fast_after(in);
     restore_mode(in, status);
     return status;
 }
