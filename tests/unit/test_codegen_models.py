@@ -60,7 +60,7 @@ def test_every_written_step_in_c_gives_the_python_steps_bits(written):
     differ, taken, refused = compared(spec, settings, step, c_step, CASES)
     assert differ == 0
     # Both decisions are exercised: the cases are not all refused, nor all taken.
-    assert taken > CASES // 2 and refused > CASES // 50, (taken, refused)
+    assert taken > CASES // 5 and refused > CASES // 50, (taken, refused)
 
 
 MUTANTS = {
