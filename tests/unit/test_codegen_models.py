@@ -3,7 +3,8 @@ setting: its generated C gives the Python step's bits for every output, state
 value and moved input, and the same decision to take or refuse each step, over
 random steps drawn from the model's variable table (`step_cases`); and a
 generator whose products are sums, or whose strict comparisons are loose, is
-caught for each. A model that opts in is covered here without a line of its own.
+caught for each; and the model's own `run` gives the bits of the step its spec
+names. A model that opts in is covered here without a line of its own.
 The Motor, Load and InertiaLoad also take, through their written step, exactly
 the steps and refusals of the checks' own path."""
 
@@ -61,6 +62,24 @@ def test_every_written_step_in_c_gives_the_python_steps_bits(written):
     assert differ == 0
     # Both decisions are exercised: the cases are not all refused, nor all taken.
     assert taken > CASES // 5 and refused > CASES // 50, (taken, refused)
+
+
+def test_each_models_run_takes_the_step_its_spec_names(written):
+    """The model's own `run` gives the bits of the step the build translates:
+    one definition for Python and C."""
+    spec, settings, step, _ = written
+    checked = 0
+    for case in cases(spec, settings, seed=9, count=CASES // 4):
+        python = step(*case.arguments)
+        if python is not None:
+            model, state, inputs = case.model, case.state_size, case.input_count
+            outputs, moved = model.run(*case.arguments[:2], model.inputs())
+            assert bits(model.step_state()) == bits(python[:state])
+            assert bits(moved) == bits(python[state : state + inputs])
+            assert bits(outputs) == bits(python[state + inputs :])
+            checked += 1
+        case.follow(python)
+    assert checked > CASES // 20
 
 
 MUTANTS = {
