@@ -24,21 +24,23 @@ FLOORS = {
 }
 
 
-def floor_config(kind: str) -> dict:
+def floor_config(kind: str, table=table) -> dict:
+    """The floor's configuration: `table`'s Real variables (default: the joint's)."""
     if kind not in FLOORS:
         raise ValueError(f"floor kind must be one of {sorted(FLOORS)}, got {kind!r}")
     variables = [(v.name, v.causality, v.variability, v.initial, v.start) for v in table.VARIABLES]
     return {"value_access": kind, "variables": variables}
 
 
-def build_floor_fmu(dest, kind: str, loader: bool = True) -> Path:
+def build_floor_fmu(dest, kind: str, loader: bool = True, table=table) -> Path:
     """Build the `kind` floor FMU into `dest` ("plain" or "bare"); return its path.
     Without `loader`, the FMU is pythonfmu's alone (its C++ binary, no project code).
+    `table`: the model whose Real variables it has (default: the joint's).
 
     Each kind gets its own folder (both FMUs are named Floor.fmu) and its own
     module name, derived from the script and its configuration.
     """
-    config = json.dumps(floor_config(kind), indent=1)
+    config = json.dumps(floor_config(kind, table), indent=1)
     digest = hashlib.sha256(SLAVE.read_bytes() + config.encode()).hexdigest()[:12]
     folder = Path(dest).resolve() / f"floor_{kind}{'' if loader else '_pythonfmu'}"
     staging = folder / "staging"

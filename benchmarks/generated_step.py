@@ -77,10 +77,16 @@ def step_alone(work: Path, speed: float) -> Path:
     values = [0.0, STEP, *map(float, state), *map(float, known)][: len(generated.arguments)]
     folder = work / f"alone_{int(speed)}"
     folder.mkdir()
+    return loop_program(folder, generated, values, len(state), len(table.INPUTS))
+
+
+def loop_program(folder: Path, generated, values: list, state: int, inputs: int) -> Path:
+    """`LOOP` around the generated step, from the arguments `values`, compiled
+    with the runtime's flags into `folder`."""
     (folder / "step.c").write_text(generated.source)
     (folder / "loop.c").write_text(LOOP % dict(
         arguments=", ".join(map(repr, values)), results=generated.results, step=STEP,
-        state=len(state), inputs=len(table.INPUTS),
+        state=state, inputs=inputs,
     ))  # fmt: skip
     program = folder / "loop"
     flags = [flag for flag in C_FLAGS if flag != "-shared"]  # the runtime's, for a program

@@ -15,6 +15,13 @@ GENERATED = "fmu_src/cardan_joint/fmi/native/generated.c"
 BIT_TEST = ("tests/unit/test_codegen_joint.py", "-k", "python_steps_bits")
 BUILD_TESTS = "tests/unit/test_codegen_build.py"
 RUNTIME_TESTS = "tests/fmu/test_generated_step.py"
+WRITTEN_STEP = "fmu_src/cardan_joint/framework/written_step.py"
+MOTOR_STEP = "fmu_src/cardan_joint/models/motor/step.py"
+LOAD_STEP = "fmu_src/cardan_joint/models/load/step.py"
+INERTIA_LOAD_STEP = "fmu_src/cardan_joint/models/inertia_load/step.py"
+# A written step takes only what the checks take (the C and the Python step
+# run the same source, so only this comparison sees its own guards).
+CHECKS_TAKE = ("tests/unit/test_codegen_models.py", "-k", "checks_take")
 
 GENERATED_MUTATIONS = (
     Mutation(
@@ -86,5 +93,61 @@ GENERATED_MUTATIONS = (
         "hi, zero = (middle, 1) if middle > t else (end, 0)",
         "hi, zero = middle, 1",
         ("tests/unit/test_life.py", "-k", "ulp_apart"),
+    ),
+    Mutation(
+        "written step: the step size checked",
+        WRITTEN_STEP,
+        "return 0.0 < h < math.inf and parameters_valid",
+        "return parameters_valid",
+        CHECKS_TAKE,
+    ),
+    Mutation(
+        "written step: the parameters checked",
+        WRITTEN_STEP,
+        "return 0.0 < h < math.inf and parameters_valid",
+        "return 0.0 < h < math.inf",
+        CHECKS_TAKE,
+    ),
+    Mutation(
+        "motor's step: the load torque's range",
+        MOTOR_STEP,
+        "LOAD_LOW <= load_torque <= LOAD_HIGH",
+        "True",
+        CHECKS_TAKE,
+    ),
+    Mutation(
+        "motor's step: the rotor speed at the step's end",
+        MOTOR_STEP,
+        "    if not within:\n        return None\n",
+        "",
+        CHECKS_TAKE,
+    ),
+    Mutation(
+        "inertia load's step: the drive torque's range",
+        INERTIA_LOAD_STEP,
+        "DRIVE_LOW <= drive_torque <= DRIVE_HIGH",
+        "True",
+        CHECKS_TAKE,
+    ),
+    Mutation(
+        "inertia load's step: the load speed at the step's end",
+        INERTIA_LOAD_STEP,
+        "    if not within:\n        return None\n",
+        "",
+        CHECKS_TAKE,
+    ),
+    Mutation(
+        "load's step: the speed's range",
+        LOAD_STEP,
+        "SPEED_LOW <= speed <= SPEED_HIGH",
+        "True",
+        CHECKS_TAKE,
+    ),
+    Mutation(
+        "load's step: the acceleration's range",
+        LOAD_STEP,
+        "ACCELERATION_LOW <= acceleration <= ACCELERATION_HIGH",
+        "True",
+        CHECKS_TAKE,
     ),
 )

@@ -9,10 +9,10 @@ from guards_base import (
     FMU_STATE,
     GUARDS,
     HONEST,
-    MODEL,
     REFERENCES,
     RESTORED,
     ROBUSTNESS_CALLS,
+    ROTOR_MODEL,
     SLAVE,
     SLAVE_GUARDS,
     STEPPED,
@@ -21,6 +21,7 @@ from guards_base import (
     WATCH_UNIT_TESTS,
     WATCHES,
     WATCHING,
+    WRITTEN_STEP,
     Mutation,
 )
 
@@ -62,9 +63,9 @@ STEP_MUTATIONS = (
         (GUARDS, "-k", "speed_range"),
     ),
     Mutation(
-        "joint's one-call step: its inline path only for a step `step` takes",
-        MODEL,
-        "            return ShaftModel.run(self, time, h, inputs)\n",
+        "a written step's model: a step it does not take goes through the checks",
+        WRITTEN_STEP,
+        "            return super().run(time, step_size, inputs)\n",
         "            pass\n",
         (FAST_STEP_TESTS, "-k", "normal_paths"),
     ),
@@ -80,9 +81,9 @@ STEP_MUTATIONS = (
     # checks are the ones above).
     Mutation(
         "motor, inertia load: rotor speed at the step's end",
-        STEPPED,
-        "        if not abs(speed) <= limit:\n",
-        "        if False:\n",
+        ROTOR_MODEL,
+        "abs(end_speed) <= speed_limit",
+        "True",
         (
             "tests/fmu/test_driveline.py",
             "tests/fmu/test_inertia_load.py",

@@ -58,7 +58,7 @@ def model_class(slave_class):
     package = package.rsplit(".fmi.", 1)[0]
     module = sys.modules[f"{package}.models.{slave_class.model_folder}.model"]
     own = (v for v in vars(module).values() if isinstance(v, type))
-    return next(v for v in own if v.__module__ == module.__name__ and "run" in vars(v))
+    return next(v for v in own if v.__module__ == module.__name__ and hasattr(v, "run"))
 
 
 def count_entries(monkeypatch, slave_class, names, counts=None):

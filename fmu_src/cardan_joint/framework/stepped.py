@@ -3,8 +3,9 @@
 size, parameters, inputs) and then the model's `_advance` and the clock. A
 model's folder adds its equations (`models/<name>/model.py`); nothing else is
 on the step's path. `ShaftModel` is a model driven at an input shaft kept as
-exact revolutions, `RotorModel` one rotor advanced by the rotor's exact step
-(`physics.rotor`).
+exact revolutions. A model whose step is written once as a function of floats,
+which the build translates into C, runs it through `written_step.WrittenStep`
+(`rotor_model.RotorModel`: one rotor advanced by the rotor's exact step).
 
 Every stepped model gives the model API (`api.Stepped`) the FMU slaves' core
 relies on; the saved state is `values.SavedState`.
@@ -14,10 +15,8 @@ import math
 from collections.abc import Callable, Iterator
 from functools import cache
 from operator import attrgetter
-from typing import Any
 
 from ..physics.revolutions import Turns, advanced, angle_value
-from ..physics.rotor import exact_rotor_step
 from ..variable_schema import Variable
 from .api import Table
 from .refusal import Reason, Refusal, crossed_limit
@@ -32,7 +31,7 @@ from .values import (
 
 
 @cache
-def _getter(names: tuple[str, ...]):
+def values_getter(names: tuple[str, ...]):
     """A getter of the tuple of `names`' values (attrgetter gives one name's bare value)."""
     getter = attrgetter(*names)
     return getter if len(names) > 1 else lambda model: (getter(model),)
@@ -130,7 +129,7 @@ class SteppedModel(ValueChecks, SavedState):
 
     def inputs(self) -> tuple[float, ...]:
         """The inputs' values, in the table's order."""
-        return _getter(self.table.INPUTS)(self)
+        return values_getter(self.table.INPUTS)(self)
 
     def set_inputs(self, values) -> None:
         """Set every input, `values` in the table's order."""
@@ -211,48 +210,3 @@ class ShaftModel(SteppedModel):
             self._angle = angle
 
         return put
-
-
-class RotorModel(SteppedModel):
-    """A stepped model whose state is one rotor (the motor, the inertia load):
-    speed and angle from their start parameters, advanced by the exact rotor
-    step, a speed beyond `speed_start`'s range refused with `_SPEED_REASON`."""
-
-    _SPEED_REASON: Any
-    _TORQUE_INPUT: str  # the input named in the speed refusal
-    speed_start: float
-    angle_start: float
-    speed: float
-    angle: float
-
-    def start(self, time: float) -> None:
-        super().start(time)
-        valid = not self.parameter_fault
-        self.speed = self.speed_start if valid else 0.0
-        self.angle = self.angle_start if valid else 0.0
-
-    def own_state(self) -> dict:
-        return {"speed": self.speed, "angle": self.angle}
-
-    def own_state_from(self, state: dict) -> Callable[[], None]:
-        speed, angle = float(state["speed"]), float(state["angle"])
-
-        def put() -> None:
-            self.speed, self.angle = speed, angle
-
-        return put
-
-    def _rotor(self) -> tuple[float, float, float]:
-        """(inertia, damping, torque held over the step) of the rotor now."""
-        raise NotImplementedError(f"{type(self).__name__} must name its rotor")
-
-    def _advance(self, h: float) -> Refusal | None:
-        speed, increment = exact_rotor_step(self.speed, *self._rotor(), h)
-        limit = bounds(self.table.BY_NAME["speed_start"])[1]
-        if not abs(speed) <= limit:
-            torque = self._TORQUE_INPUT
-            details = {torque: getattr(self, torque), "step_size": h}
-            return Refusal(self._SPEED_REASON, "speed", speed, limit, self.time, "rad/s", details)
-        self.angle += increment
-        self.speed = speed
-        return None

@@ -28,5 +28,5 @@ def exact_rotor_step(speed: float, inertia: float, damping: float, torque: float
     acceleration = (torque - damping * speed) / inertia
     z = -damping * h / inertia
     # expm1 keeps full precision when h is much shorter than the time constant.
-    phi1 = math.expm1(z) / z if z else 1.0
+    phi1 = math.expm1(z) / z if z != 0.0 else 1.0
     return speed + acceleration * h * phi1, h * (speed + acceleration * h * _phi2(z))

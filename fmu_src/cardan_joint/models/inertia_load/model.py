@@ -4,11 +4,13 @@ J d(omega)/dt = drive_torque - drag omega - constant_torque, the drive torque he
 over a step: the Motor's linear rotor equation, solved exactly by the same
 `physics.rotor.exact_rotor_step` (drag = 0 included). The constant torque is a
 torque, not a friction: at standstill it turns the load backwards unless the
-drive torque balances it. Same protocol and checks as the Motor.
+drive torque balances it. Same protocol and checks as the Motor; the step is
+`step.inertia_load_step`, which the FMU's C runtime is generated from.
 """
 
-from ...framework.stepped import RotorModel
+from ...framework.rotor_model import RotorModel
 from .refusals import InertiaLoadReason
+from .step import inertia_load_step, load_outputs, load_rotor
 from .variables import INERTIA_LOAD
 
 
@@ -25,13 +27,15 @@ class InertiaLoad(RotorModel):
     speed_start: float
     angle_start: float
 
-    def _net_torque(self) -> float:
-        return self.drive_torque - self.constant_torque
+    def written_step(self):
+        return inertia_load_step
 
     def _rotor(self) -> tuple[float, float, float]:
-        return self.inertia, self.drag, self._net_torque()
+        return load_rotor(self.drive_torque, self.inertia, self.drag, self.constant_torque)
 
     def outputs(self) -> tuple:
         """Values of `INERTIA_LOAD.OUTPUTS`: speed, acceleration, angle."""
-        acceleration = (self._net_torque() - self.drag * self.speed) / self.inertia
-        return (self.speed, acceleration, self.angle)
+        return load_outputs(
+            self.speed, self.angle, self.drive_torque, self.inertia, self.drag,
+            self.constant_torque,
+        )  # fmt: skip

@@ -2,6 +2,7 @@
 
 from .. import Model, ReferenceRun, stepped
 from .model import InertiaLoad
+from .step import inertia_load_step
 from .variables import INERTIA_LOAD
 
 MODEL = Model(
@@ -13,6 +14,7 @@ MODEL = Model(
     table_for=lambda settings: INERTIA_LOAD,
     make=stepped(InertiaLoad),
     owner="load",
+    step=lambda settings: inertia_load_step,  # the step in C (docs/codegen.md)
     # The drive torque ramps through the constant torque (20 N.m): the load
     # first turns backwards, then runs up.
     reference=ReferenceRun(

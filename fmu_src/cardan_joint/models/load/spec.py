@@ -2,6 +2,7 @@
 
 from .. import Model, ReferenceRun, stepped
 from .model import Load
+from .step import load_step
 from .variables import LOAD
 
 MODEL = Model(
@@ -10,6 +11,7 @@ MODEL = Model(
     table_for=lambda settings: LOAD,
     make=stepped(Load),
     owner="load",
+    step=lambda settings: load_step,  # the step in C (docs/codegen.md)
     # The shaft runs up at a constant 10 rad/s2 from rest: the torque grows from
     # the constant torque and the inertia's share by the drag's.
     reference=ReferenceRun(

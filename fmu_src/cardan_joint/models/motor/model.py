@@ -3,10 +3,12 @@ characteristic T(omega) = T_s (1 - omega / omega_0) (stall torque T_s, no-load
 speed omega_0) against a load torque T_L held over the step. With k = T_s / omega_0
 the rotor obeys J d(omega)/dt = T_s - k omega - T_L, a linear ODE solved exactly
 over a step (`physics.rotor.exact_rotor_step`): no integration error at any step.
+The step is `step.motor_step`, which the FMU's C runtime is generated from.
 """
 
-from ...framework.stepped import RotorModel
+from ...framework.rotor_model import RotorModel
 from .refusals import MotorReason
+from .step import motor_outputs, motor_rotor, motor_step, motor_torque
 from .variables import MOTOR
 
 
@@ -26,10 +28,10 @@ class Motor(RotorModel):
     @property
     def drag_constant(self) -> float:
         """k = T_s / omega_0, the characteristic's slope (N.m.s/rad)."""
-        return self.stall_torque / self.no_load_speed
+        return self._rotor()[1]
 
     def torque(self, speed: float) -> float:
-        return self.stall_torque * (1.0 - speed / self.no_load_speed)
+        return motor_torque(speed, self.stall_torque, self.no_load_speed)
 
     def equilibrium_speed(self) -> float:
         """Speed at which the motor torque balances the load torque."""
@@ -38,10 +40,17 @@ class Motor(RotorModel):
     def time_constant(self) -> float:
         return self.rotor_inertia / self.drag_constant
 
+    def written_step(self):
+        return motor_step
+
     def _rotor(self) -> tuple[float, float, float]:
-        return self.rotor_inertia, self.drag_constant, self.stall_torque - self.load_torque
+        return motor_rotor(
+            self.load_torque, self.stall_torque, self.no_load_speed, self.rotor_inertia
+        )
 
     def outputs(self) -> tuple:
         """Values of `MOTOR.OUTPUTS`: speed, acceleration, angle, motor torque."""
-        torque = self.torque(self.speed)
-        return (self.speed, (torque - self.load_torque) / self.rotor_inertia, self.angle, torque)
+        return motor_outputs(
+            self.speed, self.angle, self.load_torque, self.stall_torque, self.no_load_speed,
+            self.rotor_inertia,
+        )  # fmt: skip

@@ -2,6 +2,7 @@
 
 from .. import Model, stepped
 from .model import Motor
+from .step import motor_step
 from .variables import MOTOR
 
 MODEL = Model(
@@ -13,4 +14,5 @@ MODEL = Model(
     table_for=lambda settings: MOTOR,
     make=stepped(Motor),
     owner="motor",
+    step=lambda settings: motor_step,  # the step in C (docs/codegen.md)
 )

@@ -14,6 +14,7 @@ from operator import attrgetter
 from ...framework.refusal import Refusal
 from ...framework.stepped import ShaftModel
 from ...framework.values import Table, angle_limit_problem, set_start_values
+from ...framework.written_step import WrittenStep
 from ...physics.response import JointResponse, kernel
 from ...physics.revolutions import split_turns
 from ...variable_schema import Variable
@@ -27,15 +28,12 @@ from .limits import (
     fits,
 )
 from .refusals import JointReason
-from .step import ANGLE, LIFE_STATE, STATE, joint_life_step, joint_outputs, joint_step
+from .step import ANGLE, STATE, joint_life_step, joint_outputs, joint_step
 
 _INPUTS = attrgetter(*table.INPUTS)
-# The parameters, the step's last arguments (the table's order).
-_STEP_PARAMETERS = attrgetter(*table.WITHOUT_LIFE.PARAMETERS)
-_LIFE_STEP_PARAMETERS = attrgetter(*table.PARAMETERS)
 
 
-class CardanJoint(JointLife, ShaftModel):
+class CardanJoint(WrittenStep, JointLife, ShaftModel):
     table: Table = table
     _input_ranges = INPUT_RANGES
     _parameter_ranges = PARAMETER_RANGES
@@ -192,36 +190,15 @@ class CardanJoint(JointLife, ShaftModel):
 
     # --- the FMU's step ------------------------------------------------------
 
-    def run(self, time: float, h: float, inputs) -> "tuple | Refusal":
-        """The FMU's step: take `inputs` (the table's order), advance `h` s from
-        `time` and return the outputs and the inputs after it (the table's
-        orders), or the Refusal of the step (then only the inputs have changed).
-
-        The step is `step.joint_step` (`joint_life_step` with life on), the
-        definition the FMU's C runtime is generated from; a step it does not
-        take goes through the checks of the generic `run`, which name the
-        refusal."""
-        self.set_inputs(inputs)
-        state_and_inputs = (*self.step_state(), *inputs)
-        if self.life:
-            taken = joint_life_step(time, h, *state_and_inputs, *_LIFE_STEP_PARAMETERS(self))
-        else:
-            taken = joint_step(time, h, *state_and_inputs, *_STEP_PARAMETERS(self))
-        if taken is None:
-            return ShaftModel.run(self, time, h, inputs)
-        state = len(self.step_names())
-        self.set_step_state(taken[:state])
-        moved = taken[state : state + len(inputs)]
-        self.set_inputs(moved)
-        self.time = time + h
-        return taken[state + len(inputs) :], moved
-
-    def step_names(self) -> tuple[str, ...]:
-        """The names of the step state's values (`step.STATE`, `LIFE_STATE`)."""
-        return LIFE_STATE if self.life else STATE
+    def written_step(self):
+        """The step (`WrittenStep.run`): `step.joint_step`, `joint_life_step` with
+        life on, the definition the FMU's C runtime is generated from; a step it
+        does not take goes through the generic checks, which name the refusal."""
+        return joint_life_step if self.life else joint_step
 
     def step_state(self) -> tuple:
-        """The values of `step_names()`: what the step advances beside the inputs."""
+        """What the step advances beside the inputs: `step.STATE`'s values
+        (`LIFE_STATE`'s with life on)."""
         angle = (*self._angle, *self._phase, self.parameter_fault is None)
         return (*angle, self.life_consumed, self.life_consumed_error) if self.life else angle
 
