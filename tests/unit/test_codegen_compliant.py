@@ -13,7 +13,7 @@ import random
 
 import pytest
 from generated_c import CStep, bits
-from test_codegen_joint import MUTANTS, THREE_DEGREES, operating_point
+from test_codegen_joint import MUTANTS, operating_point
 
 from cardan_joint.codegen import expressions, generate
 from cardan_joint.framework.refusal import Refusal
