@@ -12,7 +12,13 @@ import math
 
 from ...framework.values import MAX_INCREMENT, bounds
 from ...physics.life import LifeRule, _damage
-from ...physics.response import JointResponse, kernel
+from ...physics.response import (
+    cardan_error_at,
+    crosspiece_motion,
+    euler_moments,
+    pose,
+    yoke_reactions,
+)
 from ..universal_joint import variables as joint_table
 from ..universal_joint.step import (
     LIFE_STATE,
@@ -46,10 +52,6 @@ assert all(
 # The joint's outputs (`joint_outputs`): the angles, then the kernel's fields.
 _INPUT_ANGLE, _KINEMATIC_SPEED, _OFFSET = 0, 2, 4
 _PASSED = 4  # the joint's outputs from cardan_error on are the compliant joint's too
-_INPUT_TORQUE, _SPEED_RATIO, _CARDAN_ERROR, _OUTPUT_SPEED = (
-    JointResponse._fields.index(name)
-    for name in ("input_torque", "speed_ratio", "cardan_error", "output_speed")
-)
 
 
 # --- the spring-damper layer, from the rigid drive's kinematic values -------
@@ -130,19 +132,20 @@ def spring_outputs(
 def spring_loaded_torque(t: float, step) -> tuple[float, float]:
     """(T1, input speed) `t` s into a step of the joint under the spring:
     `step` = `life_torque.joint_torque`'s with the spring's start (lag, the
-    output shaft's speed and acceleration, k, c) in place of the load. T1 is
-    affine in the load with slope cos b / D (the speed ratio), so one kernel
-    call gives both the kinematics the spring needs and the torque."""
+    output shaft's speed and acceleration, k, c) in place of the load. The
+    kernel's parts T1 and the spring need (`response`): T1 is affine in the
+    load with slope cos b / D (the speed ratio), so the kinematics give the
+    spring's torque and T1 without load gives T1 under it."""
     psi, b, w1, a1, rb, ab, I1, I2, I3, lag, wo, ao, stiffness, damping = step
     speed = w1 + a1 * t
-    r = kernel(
-        math, psi + t * (w1 + 0.5 * a1 * t), b + t * (rb + 0.5 * ab * t), speed, a1,
-        rb + ab * t, ab, I1, I2, I3, 0.0, 1.0,
-    )  # fmt: skip
+    s, c, sb, cb, D, rD = pose(math, psi + t * (w1 + 0.5 * a1 * t), b + t * (rb + 0.5 * ab * t))[2:]
+    motion = crosspiece_motion(s, c, sb, cb, D, rD, speed, a1, rb + ab * t, ab)
+    M1, M2, M3 = euler_moments(I1, I2, I3, *motion[2:])
+    unloaded = yoke_reactions(M1, M2, M3, s, c, sb, cb, rD, 0.0)[2]
     load = spring_load(
-        t, r[_CARDAN_ERROR], r[_OUTPUT_SPEED], lag, w1, a1, wo, ao, stiffness, damping
+        t, cardan_error_at(math, s, c, sb, cb), motion[0], lag, w1, a1, wo, ao, stiffness, damping
     )
-    return r[_INPUT_TORQUE] + r[_SPEED_RATIO] * load, speed
+    return unloaded + cb / D * load, speed
 
 
 def compliant_joint_step(
