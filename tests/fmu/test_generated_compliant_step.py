@@ -12,6 +12,7 @@ import random
 import pytest
 from test_fast_path import bits, count_entries, model_class, slave_classes
 from test_generated_step import both
+from test_generated_step import random_run as joint_random_run
 
 from cardan_joint.host.instance import ExtractedFMU
 from cardan_joint.models.compliant_joint.variables import COMPLIANT_JOINT as table
@@ -101,26 +102,7 @@ def random_inputs(rng: random.Random) -> dict:
 
 
 def random_run(seed: int):
-    def run(instance):
-        rng = random.Random(seed)
-        seen = [instance.exit_initialization_mode()]
-        states = []
-        for _ in range(300):
-            instance.set(**random_inputs(rng))
-            seen.append(instance.try_step(rng.choice([1e-4, 1e-3, 1e-3, 0.01, 0.5])))
-            if rng.random() < 0.5:  # a read after the step, or the next step at once
-                seen.append(bits(instance.values(*table.INPUTS, *instance.outputs)))
-            draw = rng.random()
-            if draw < 0.05:
-                states.append(instance.get_state())
-            elif draw < 0.08 and states:
-                instance.set_state(rng.choice(states))
-                seen.append(bits(instance.values(*instance.outputs)))
-        for state in states:
-            instance.free_state(state)
-        return seen
-
-    return run
+    return joint_random_run(seed, random_inputs, table.INPUTS)
 
 
 @pytest.mark.parametrize("seed", [1, 2])

@@ -14,6 +14,7 @@ import random
 import pytest
 from generated_c import CStep, bits
 from test_codegen_joint import MUTANTS, operating_point
+from test_codegen_joint import cases as joint_cases
 
 from cardan_joint.codegen import expressions, generate
 from cardan_joint.framework.refusal import Refusal
@@ -70,10 +71,7 @@ def refusable(rng: random.Random, point: list) -> list:
 
 
 def cases(seed: int, count: int):
-    rng = random.Random(seed)
-    for _ in range(count):
-        point = compliant_point(rng)
-        yield refusable(rng, point) if rng.random() < 0.25 else point
+    return joint_cases(seed, count, compliant_point, refusable)
 
 
 @pytest.fixture(scope="module")
