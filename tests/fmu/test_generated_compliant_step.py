@@ -3,7 +3,7 @@ the default build takes every step it can in C, without entering Python, and
 gives the same bits, statuses and messages as the same FMU stepping in Python,
 FMI 2.0 and 3.0: over every kind of call the runtime serves (steps, reads of
 moved inputs, a read after an input write, refusals, FMU states got, set and
-serialized, the twist's watch) and over random runs with refusals, FMU states
+serialized, the twist's watch, a reset) and over random runs with refusals, FMU states
 set back, long steps and loads of both signs."""
 
 import math
@@ -64,6 +64,18 @@ def scenario(instance):
     record(bits(instance.values(*table.INPUTS, *outputs)))
     instance.free_state(state)
     instance.free_state(restored)
+    fmu = instance.fmu  # a reset: the state from the parameters again, then steps in C
+    fmu.reset()
+    if instance.fmi3:
+        fmu.enterInitializationMode(startTime=0.0)
+    else:
+        fmu.setupExperiment(startTime=0.0)
+        fmu.enterInitializationMode()
+    fmu.exitInitializationMode()
+    instance.time = 0.0
+    instance.set(**GOOD)
+    record(instance.try_step(1e-3))
+    record(bits(instance.values(*table.INPUTS, *outputs)))
     return seen
 
 
@@ -77,7 +89,7 @@ def test_every_kind_of_call_gives_the_python_steps_bits_and_messages(extracted, 
     # The twist first (then, as the load grows, the torque and life).
     assert watched[0][0] == 1 and watched[0][2].startswith("twist_angle"), c_messages
     # In C: every taken step (the refused one goes to the slave, which says why).
-    assert python_counts["run"] == python_counts["fast_step"] == 26, (python_counts, c_counts)
+    assert python_counts["run"] == python_counts["fast_step"] == 27, (python_counts, c_counts)
     assert c_counts["run"] == c_counts["fast_step"] == 1 and c_counts["fast_sync"] >= 3
 
 
