@@ -15,6 +15,8 @@ GENERATED = "fmu_src/cardan_joint/fmi/native/generated.c"
 BIT_TEST = ("tests/unit/test_codegen_joint.py", "-k", "python_steps_bits")
 BUILD_TESTS = "tests/unit/test_codegen_build.py"
 RUNTIME_TESTS = "tests/fmu/test_generated_step.py"
+COMPLIANT_STEP = "fmu_src/cardan_joint/models/compliant_joint/step.py"
+COMPLIANT_TESTS = "tests/unit/test_codegen_compliant.py"
 
 GENERATED_MUTATIONS = (
     Mutation(
@@ -79,6 +81,27 @@ GENERATED_MUTATIONS = (
         "fast->reading = vr, fast->reading_count = n;",
         "fast->reading = vr, fast->reading_count = 0;",
         ("tests/fmu/test_fast_path.py", "-k", "plain_calls"),
+    ),
+    Mutation(
+        "compliant step: the output shaft's speed in its range",
+        COMPLIANT_STEP,
+        "abs(output_speed) <= OUTPUT_SPEED_LIMIT",
+        "abs(output_speed) <= 1e300",
+        (COMPLIANT_TESTS, "-k", "past_its_limit"),
+    ),
+    Mutation(
+        "compliant step: the output shaft's acceleration in its range",
+        COMPLIANT_STEP,
+        "abs(output_acceleration) <= OUTPUT_ACCELERATION_LIMIT",
+        "abs(output_acceleration) <= 1e300",
+        (COMPLIANT_TESTS, "-k", "past_its_limit"),
+    ),
+    Mutation(
+        "compliant step: the twist's change per step bounded",
+        COMPLIANT_STEP,
+        "and abs(change) <= MAX_INCREMENT",
+        "and abs(change) <= 1e300",
+        (COMPLIANT_TESTS, "-k", "twist_limit"),
     ),
     Mutation(
         "life integral: two torque zeros an ulp apart",
