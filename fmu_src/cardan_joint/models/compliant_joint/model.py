@@ -239,7 +239,8 @@ class CompliantJoint(CompliantDrive):
         self.set_inputs(inputs)
         taken = compliant_joint_step(time, h, *self.step_state(), *inputs, *_STEP_PARAMETERS(self))
         if taken is None:
-            return SteppedModel.run(self, time, h, inputs)
+            # The checked step every compliant drive runs (`CompliantDrive.run`).
+            return SteppedModel.run(self, time, h, inputs)  # type: ignore[arg-type]
         state = len(STATE)
         self.set_step_state(taken[:state])
         moved = taken[state : state + len(inputs)]
