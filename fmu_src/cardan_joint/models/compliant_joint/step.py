@@ -35,7 +35,6 @@ from .variables import COMPLIANT_JOINT
 # The step state: the rigid joint's with life, then the lag = input angle -
 # output angle (the spring's own state, `CompliantDrive`).
 STATE = (*LIFE_STATE, "lag")
-MOVED_BY_STEP = len(STATE) + len(COMPLIANT_JOINT.INPUTS)
 # `joint_advanced`'s results: its state, its moved inputs, its outputs.
 _JOINT = len(JOINT_STATE)
 _END_SPEED, _END_BEND, _END_RATE = (
@@ -49,9 +48,15 @@ assert all(
     bounds(COMPLIANT_JOINT.BY_NAME[n])[0] == -bounds(COMPLIANT_JOINT.BY_NAME[n])[1]
     for n in ("output_speed", "output_acceleration")
 ), "the output shaft's ranges must be symmetric"
-# The joint's outputs (`joint_outputs`): the angles, then the kernel's fields.
-_INPUT_ANGLE, _KINEMATIC_SPEED, _OFFSET = 0, 2, 4
-_PASSED = 4  # the joint's outputs from cardan_error on are the compliant joint's too
+# The joint's outputs (`joint_outputs`, the table's order) the spring takes;
+# from the cardan error on, they are the compliant joint's outputs too.
+_INPUT_ANGLE, _KINEMATIC_SPEED, _OFFSET = (
+    joint_table.OUTPUTS.index(name) for name in ("input_angle", "output_speed", "cardan_error")
+)
+_PASSED = _OFFSET
+assert (
+    COMPLIANT_JOINT.OUTPUTS[-len(joint_table.OUTPUTS[_PASSED:]) :] == joint_table.OUTPUTS[_PASSED:]
+), "the compliant joint's outputs end with the joint's from cardan_error on"
 
 
 # --- the spring-damper layer, from the rigid drive's kinematic values -------
