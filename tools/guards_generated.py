@@ -22,6 +22,8 @@ INERTIA_LOAD_STEP = "fmu_src/cardan_joint/models/inertia_load/step.py"
 # A written step takes only what the checks take (the C and the Python step
 # run the same source, so only this comparison sees its own guards).
 CHECKS_TAKE = ("tests/unit/test_codegen_models.py", "-k", "checks_take")
+COMPLIANT_STEP = "fmu_src/cardan_joint/models/compliant_joint/step.py"
+COMPLIANT_TESTS = "tests/unit/test_codegen_compliant.py"
 
 GENERATED_MUTATIONS = (
     Mutation(
@@ -86,6 +88,27 @@ GENERATED_MUTATIONS = (
         "fast->reading = vr, fast->reading_count = n;",
         "fast->reading = vr, fast->reading_count = 0;",
         ("tests/fmu/test_fast_path.py", "-k", "plain_calls"),
+    ),
+    Mutation(
+        "compliant step: the output shaft's speed in its range",
+        COMPLIANT_STEP,
+        "abs(output_speed) <= OUTPUT_SPEED_LIMIT",
+        "abs(output_speed) <= 1e300",
+        (COMPLIANT_TESTS, "-k", "past_its_limit"),
+    ),
+    Mutation(
+        "compliant step: the output shaft's acceleration in its range",
+        COMPLIANT_STEP,
+        "abs(output_acceleration) <= OUTPUT_ACCELERATION_LIMIT",
+        "abs(output_acceleration) <= 1e300",
+        (COMPLIANT_TESTS, "-k", "past_its_limit"),
+    ),
+    Mutation(
+        "compliant step: the twist's change per step bounded",
+        COMPLIANT_STEP,
+        "and abs(change) <= MAX_INCREMENT",
+        "and abs(change) <= 1e300",
+        (COMPLIANT_TESTS, "-k", "twist_limit"),
     ),
     Mutation(
         "life integral: two torque zeros an ulp apart",

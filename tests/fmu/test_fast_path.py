@@ -57,8 +57,11 @@ def model_class(slave_class):
     package = next(c for c in slave_class.__mro__ if c.__name__ == "FastStep").__module__
     package = package.rsplit(".fmi.", 1)[0]
     module = sys.modules[f"{package}.models.{slave_class.model_folder}.model"]
-    own = (v for v in vars(module).values() if isinstance(v, type))
-    return next(v for v in own if v.__module__ == module.__name__ and hasattr(v, "run"))
+    own = [v for v in vars(module).values() if isinstance(v, type)]
+    running = [v for v in own if v.__module__ == module.__name__ and hasattr(v, "run")]
+    # The model's own class: no other that runs derives from it (a compliant
+    # drive's base runs too).
+    return next(v for v in running if not any(issubclass(o, v) for o in running if o is not v))
 
 
 def count_entries(monkeypatch, slave_class, names, counts=None):

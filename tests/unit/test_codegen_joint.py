@@ -92,11 +92,13 @@ def refusable(rng: random.Random, point: list) -> list:
     return point
 
 
-def cases(seed: int, count: int):
+def cases(seed: int, count: int, point_of=None, refused=None):
+    """Random points (`operating_point`'s, or `point_of`'s), a quarter of them
+    made refusable (`refusable`, or `refused`)."""
     rng = random.Random(seed)
     for _ in range(count):
-        point = operating_point(rng)
-        yield refusable(rng, point) if rng.random() < 0.25 else point
+        point = (point_of or operating_point)(rng)
+        yield (refused or refusable)(rng, point) if rng.random() < 0.25 else point
 
 
 @pytest.fixture(scope="module", params=STEPS)

@@ -138,12 +138,8 @@ def kernel(
     sc = s * c
     sbc = sb * c  # p1 . z2
     sbs = sb * s
-    ccb = cb * c
 
-    # Kinematics. 1 - cos b is written sin^2 b / (1 + cos b) for full relative
-    # precision at small bend; the atan's denominator stays positive below
-    # 90 deg, so the cardan error never jumps branch.
-    cardan_error = xp.atan(sb * sb / (1.0 + cb) * sc / (ccb * c + s * s))
+    cardan_error = cardan_error_at(xp, s, c, sb, cb)
     speed_ratio = cb / D
     w2, a2, W1, W2, W3, dW1, dW2, dW3 = crosspiece_motion(s, c, sb, cb, D, rD, w1, a1, rb, ab)
     M1, M2, M3 = euler_moments(I1, I2, I3, W1, W2, W3, dW1, dW2, dW3)
@@ -247,3 +243,11 @@ def yoke_reactions(M1, M2, M3, s, c, sb, cb, rD, load_torque):
     Dd = -(load_torque + M1 * (sb * c)) / rD
     B = M3 - Dd
     return Dd, B, (M2 * (sb * s) + B * cb) / rD
+
+
+def cardan_error_at(xp, s, c, sb, cb):
+    """The cardan error (output angle - input angle) at the pose `pose` gives.
+    1 - cos b is written sin^2 b / (1 + cos b) for full relative precision at
+    small bend; the atan's denominator stays positive below 90 deg, so the
+    cardan error never jumps branch."""
+    return xp.atan(sb * sb / (1.0 + cb) * (s * c) / (cb * c * c + s * s))

@@ -22,9 +22,16 @@ from ...framework.refusal import Refusal
 from ...framework.stepped import SteppedModel, ValueChecks
 from ...framework.values import MAX_INCREMENT, set_start_values, value_ranges
 from ..universal_joint.model import CardanJoint
+from ..universal_joint.step import LIFE_STATE
 from .refusals import CompliantReason
+from .step import STATE, compliant_joint_step, spring_load, spring_outputs, twist_change
 from .variables import COMPLIANT_JOINT
 
+# The step's parameters: the table's, but the one the slave's watch alone reads.
+_STEP_PARAMETERS = attrgetter(
+    *(name for name in COMPLIANT_JOINT.PARAMETERS if name != "twist_angle_warning")
+)
+_VALID = LIFE_STATE.index("parameters_valid")
 # The rigid drive's outputs the compliant one replaces with its own.
 _REPLACED = ("input_angle", "output_angle", "output_speed", "output_acceleration")
 
@@ -122,10 +129,7 @@ class CompliantDrive(ValueChecks):
             return problem
         h, rigid = step_size, self.rigid
         speed, acceleration = self.output_speed, self.output_acceleration
-        # Input angle increment minus output angle increment, both exact polynomials.
-        change = h * (
-            (rigid.input_speed - speed) + 0.5 * (rigid.input_acceleration - acceleration) * h
-        )
+        change = twist_change(h, rigid.input_speed, rigid.input_acceleration, speed, acceleration)
         if not abs(change) <= MAX_INCREMENT:
             details = {"step_size": h}
             return Refusal(
@@ -152,13 +156,12 @@ class CompliantDrive(ValueChecks):
     def _spring_over_step(self, speed: float, acceleration: float):
         """The spring's torque t s into the step, from the rigid drive's kinematic
         offset and speed then (`outputs`' formula): the load its life integrates."""
-        rigid, lag = self.rigid, self._lag
-        slip, slip_rate = rigid.input_speed - speed, rigid.input_acceleration - acceleration
-        stiffness, damping = self.torsional_stiffness, self.torsional_damping
+        rigid = self.rigid
+        spring = (self._lag, rigid.input_speed, rigid.input_acceleration, speed, acceleration,
+                  self.torsional_stiffness, self.torsional_damping)  # fmt: skip
 
         def torque(t: float, offset: float, kinematic_speed: float) -> float:
-            twist = offset + (lag + t * (slip + 0.5 * slip_rate * t))
-            return stiffness * twist + damping * (kinematic_speed - (speed + acceleration * t))
+            return spring_load(t, offset, kinematic_speed, *spring)
 
         return torque
 
@@ -174,19 +177,17 @@ class CompliantDrive(ValueChecks):
 
     def outputs(self) -> tuple:
         """Values of the table's outputs, in order."""
-        offset, kinematic_speed = self._kinematics()
-        twist = offset + self._lag
-        stiffness = self.torsional_stiffness
-        torque = stiffness * twist + self.torsional_damping * (kinematic_speed - self.output_speed)
         rigid = self.rigid
-        rigid.load_torque = torque
+        spring = spring_outputs(
+            rigid.input_angle, self._lag, *self._kinematics(), self.output_speed,
+            self.torsional_stiffness, self.torsional_damping,
+        )  # fmt: skip
+        rigid.load_torque = spring[3]  # the output torque
         try:
             values = rigid.outputs()
         finally:
             rigid.load_torque = 0.0
-        angle = values[0]  # every rigid drive's first output is its input angle
-        spring = (angle, angle - self._lag, twist, torque, kinematic_speed)
-        return (*spring, 0.5 * stiffness * twist * twist, *(values[i] for i in self._passed))
+        return (*spring, *(values[i] for i in self._passed))
 
     # --- saved state ---------------------------------------------------------
 
@@ -230,6 +231,34 @@ class CompliantJoint(CompliantDrive):
 
     def __init__(self, **values: float) -> None:
         super().__init__(CardanJoint(), COMPLIANT_JOINT, "compliant joint", **values)
+
+    def run(self, time: float, h: float, inputs) -> "tuple | Refusal":
+        """The FMU's step (`SteppedModel.run`'s contract): `step.compliant_joint_step`,
+        the definition the FMU's C runtime is generated from; a step it does not
+        take goes through the generic checks, which name the refusal."""
+        self.set_inputs(inputs)
+        taken = compliant_joint_step(time, h, *self.step_state(), *inputs, *_STEP_PARAMETERS(self))
+        if taken is None:
+            # The checked step every compliant drive runs (`CompliantDrive.run`).
+            return SteppedModel.run(self, time, h, inputs)  # type: ignore[arg-type]
+        state = len(STATE)
+        self.set_step_state(taken[:state])
+        moved = taken[state : state + len(inputs)]
+        self.set_inputs(moved)
+        self.time = time + h
+        return taken[state + len(inputs) :], moved
+
+    def step_state(self) -> tuple:
+        """The values of `step.STATE`: the rigid joint's, with this drive's
+        parameters' validity, and the lag."""
+        joint = self.rigid.step_state()
+        valid = self.parameter_fault is None
+        return (*joint[:_VALID], valid, *joint[_VALID + 1 :], self._lag)
+
+    def set_step_state(self, state) -> None:
+        """Take a state a generated step advanced (`step_state`'s values)."""
+        self.rigid.set_step_state(state[: len(LIFE_STATE)])
+        self._lag = float(state[len(LIFE_STATE)])
 
     def _kinematics(self) -> tuple[float, float]:
         r = self.rigid.response()

@@ -4,6 +4,7 @@ from ...framework.watches import Watch
 from .. import Model, ReferenceRun, stepped
 from ..universal_joint.spec import LIFE_WATCH, TORQUE_WATCH
 from .model import CompliantJoint
+from .step import compliant_joint_step
 from .variables import COMPLIANT_JOINT
 
 # Every compliant drive's spring: wound past the twist its maker states.
@@ -22,6 +23,8 @@ MODEL = Model(
     live_outputs=("input_angle", "output_angle"),
     owner="joint",
     watches=(TORQUE_WATCH, LIFE_WATCH, TWIST_WATCH),
+    # The step in C (docs/codegen.md).
+    step=lambda settings: compliant_joint_step,
     # The input shaft as the UniversalJoint's; the output shaft a little slower
     # and faster in turn, so the spring winds up and back.
     reference=ReferenceRun(

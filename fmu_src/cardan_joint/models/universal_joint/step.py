@@ -218,15 +218,34 @@ def joint_life_step(
         rule, h, psi, bend_angle, input_speed, input_acceleration, bend_angle_rate,
         bend_angle_acceleration, inertia, load_torque,
     )  # fmt: skip
-    consumed, consumed_error = life_consumed, life_consumed_error
-    if damage != 0.0:
-        consumed, consumed_error = compensated_add(consumed, consumed_error, damage)
+    consumed = life_added(life_consumed, life_consumed_error, damage)
     moved = taken[_KINEMATIC_STATE:MOVED]
     outputs = taken[MOVED:]
+    life = life_of(rule, bearing_radius, consumed, outputs, moved[_LOAD], moved[_SPEED],
+                   moved[_BEND])  # fmt: skip
+    return taken[:_KINEMATIC_STATE] + consumed + moved + outputs + life
+
+
+def life_added(consumed: float, consumed_error: float, damage: float) -> tuple[float, float]:
+    """Miner's sum and its compensation with a step's damage added."""
+    if damage != 0.0:
+        return compensated_add(consumed, consumed_error, damage)
+    return consumed, consumed_error
+
+
+def life_of(
+    rule: LifeRule,
+    bearing_radius: float,
+    consumed: tuple[float, float],
+    outputs,
+    load: float,
+    speed: float,
+    bend: float,
+) -> tuple[float, float, float, float]:
+    """The four life outputs after a step, from the joint's outputs
+    (`joint_outputs`) and Miner's sum with its compensation."""
     kernel_fields = outputs[2:]  # after the two angles
-    life = life_outputs(
-        rule, bearing_radius, consumed + consumed_error, kernel_fields[_TORQUE],
-        kernel_fields[_INPUT_MOMENT], kernel_fields[_OUTPUT_MOMENT], moved[_LOAD],
-        moved[_SPEED], moved[_BEND],
+    return life_outputs(
+        rule, bearing_radius, consumed[0] + consumed[1], kernel_fields[_TORQUE],
+        kernel_fields[_INPUT_MOMENT], kernel_fields[_OUTPUT_MOMENT], load, speed, bend,
     )  # fmt: skip
-    return taken[:_KINEMATIC_STATE] + (consumed, consumed_error) + moved + outputs + life
