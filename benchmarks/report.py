@@ -8,6 +8,8 @@ section order, replaces its sections' own tables, and says so under the
 summary table; every other line stays as the full run wrote it.
 """
 
+import re
+
 TABLE_HEAD = ("| benchmark | result | goal | met |", "|---|---|---|---|")
 ALONE = "Re-measured alone"
 
@@ -18,7 +20,9 @@ def key(row: str) -> str:
 
 
 def section(row: str) -> int:
-    return int(row[2:].split(".", 1)[0])
+    """A summary row's section number (an older file's "7a." counts as 7)."""
+    found = re.match(r"\| (\d+)", row)
+    return int(found.group(1)) if found else 0
 
 
 def full(header: str, rows: list[str], footnote: str, blocks: dict[str, str]) -> str:
