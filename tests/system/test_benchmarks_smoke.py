@@ -48,8 +48,8 @@ def run_benchmarks(*arguments):
 
 def model_rows(lines, lead):
     """Which cases the rows starting with `lead` name, in order."""
-    return [line[len(lead):].split(": ", 1)[-1].split(" the ")[0].strip()
-            for line in lines if line.startswith(lead)]  # fmt: skip
+    keys = [line.split(" | ", 1)[0] for line in lines if line.startswith(lead)]
+    return [key[len(lead) :].split(": ", 1)[-1].split(" the ")[0].strip() for key in keys]
 
 
 def test_every_model_found_has_a_case(monkeypatch):
