@@ -92,7 +92,7 @@ def test_quick_run_writes_every_row(fmu_path, tmp_path):
     assert len(note) == 1 and again[note[0] + 1] == "" and again[note[0] - 1] == ""
     assert "`python -m benchmarks instructions --models Load --quick`" in again[note[0]]
     del again[note[0] : note[0] + 2]
-    load = [i for i, line in enumerate(lines) if "C host" in line and ": Load, the" in line]
+    load = [i for i, line in enumerate(lines) if line.startswith(PER_MODEL[0]) and "Load" in line]
     assert len(load) == 1
     assert [line for i, line in enumerate(again) if i not in load] == [
         line for i, line in enumerate(lines) if i not in load
