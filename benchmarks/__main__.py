@@ -1,4 +1,4 @@
-"""python -m benchmarks [--quick] [--output FILE] [--fmu FILE]: see benchmarks.runner."""
+"""python -m benchmarks [SECTION ...] [--models MODEL ...] [--quick]: see benchmarks.runner."""
 
 import sys
 

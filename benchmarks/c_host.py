@@ -14,6 +14,8 @@ import subprocess
 import sys
 import time
 
+from .cases import Case
+from .floor import JOINT
 from .step_cost import instantiate, step_loop
 from .timing import ROOT, met, us
 
@@ -32,7 +34,7 @@ def compile_c_host(workdir):
 
 def c_host_seconds(host, unzipped, steps):
     run = subprocess.run(
-        [str(host), "bench", unzipped, str(steps)],
+        [str(host), "bench", unzipped, str(steps), *Case(JOINT).host_inputs()],
         env={"PATH": "/usr/bin:/bin"},
         capture_output=True,
         text=True,
@@ -51,9 +53,8 @@ def fmpy_loop_seconds(unzipped, steps):
         joint.close()
 
 
-def c_host_cost(fmus, sizes, workdir):
+def c_host_cost(host, fmus, sizes):
     """Median seconds per step {(fmu, host): s} over `sizes.runs` interleaved rounds."""
-    host = compile_c_host(workdir)
     chosen = {"joint": fmus["joint"], "plain": fmus["plain"]}
     times = {(name, where): [] for name in chosen for where in HOSTS}
     for _ in range(sizes.runs):

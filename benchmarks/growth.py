@@ -28,13 +28,14 @@ def worker_tracemalloc(unzipped, steps):
     return {"retained_bytes": current - baseline, "peak_bytes": peak - baseline}
 
 
-def growth(fmus, sizes, cost):
+def growth(fmus, sizes, cost=None):
     """Per-step cost of the joint and the plain floor at each run length (the
-    length of section 1 reuses its runs), peak RSS, and tracemalloc of the joint."""
+    length of section 1 reuses its runs, `cost`, when it ran), peak RSS, and
+    tracemalloc of the joint."""
     pair = {name: fmus[name] for name in ("plain", "joint")}
     rows = []
     for steps in sizes.growth_steps:
-        if steps == sizes.steps:
+        if cost and steps == sizes.steps:
             runs = cost["loop"]
         else:
             # Short runs are cheap and noisy: as many as section 1; one long run.

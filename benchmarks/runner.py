@@ -1,19 +1,21 @@
-"""The benchmarks' runner: every measurement in one run, one markdown report.
+"""The benchmarks' runner: every section in one run, one markdown report, or
+some sections (and models) alone, their rows replaced in the report.
 
-    python -m benchmarks [--quick] [--output FILE] [--fmu FILE]
+    python -m benchmarks [SECTION ...] [--models MODEL ...] [--minors N ...]
+                         [--quick] [--output FILE] [--fmu FILE]
 
-Measures, each in its module, and writes benchmarks/results.md:
+Sections, each in its module:
 
-1. `step_cost`: cost per step of the FMU under FMPy's low-level loop and under
-   `simulate_fmu`, next to floor FMUs (`floor`) whose do_step does nothing;
+1. `fmpy` (step_cost): the default build (UniversalJoint) under FMPy's low-level
+   loop and `simulate_fmu`, next to floor FMUs (`floor`) whose do_step does nothing;
 2. `accuracy`: against Tătaru's numerical method (the seed's ODE under RK4);
 3. `vectorized`: `joint_response` on numpy arrays against a scalar loop;
 4. `growth`: per-step cost and memory as the run grows;
 5. `c_host`: the same step in a C host against FMPy's loop;
-6. `one_call`: the joint against the plain floor in each host (issue 21's
-   goals) and the joint's Python alone (physics, slave, one-call step);
-7. `instructions`: instructions per step (callgrind) of the joint against
-   pythonfmu's own plain floor and against its Python step, on CPython 3.10-3.13.
+6. `instructions`: instructions per step (callgrind) of each model's default
+   build against its own empty pythonfmu FMU, on CPython 3.10-3.13 (`cases`);
+7. `step_alone` (generated_step): the generated step alone, the physical limit;
+8. `long_run`: 10^6 revolutions of the default build in the C host.
 
 Not part of the test run: tests/system/test_benchmarks_smoke.py only checks that
 `--quick` writes the tables.
@@ -23,269 +25,116 @@ import argparse
 import sys
 import tempfile
 import time
-from dataclasses import dataclass
 from pathlib import Path
 
 from cardan_joint.extras import MissingExtra, require
 
-# The runtime's joint and its floors: the joint built without life (docs/life.md).
-from cardan_joint.models.universal_joint.variables import WITHOUT_LIFE as table
-
-from .accuracy import accuracy, accuracy_rows, accuracy_table, worker_accuracy
-from .c_host import c_host_cost, c_host_rows
-from .floor import FLOORS, build_floor_fmu, build_joint_fmu, unzip
-from .growth import growth, growth_rows, growth_table, worker_tracemalloc
-from .instructions import MINORS, instruction_rows, instructions, worker_instructions
-from .one_call import one_call_rows, python_step, worker_python_step, worker_python_steps
-from .step_cost import (
-    LOOP_CHUNK,
-    SIMULATE_CHUNK,
-    STEP_SIZE,
-    cost_rows,
-    step_cost,
-    worker_loop,
-    worker_simulate,
-)
+from .cases import cases_of
+from .instructions import MINORS
+from .measure import SECTIONS, Bench, measure
+from .report import ALONE, full, merged
+from .step_cost import LOOP_CHUNK, SIMULATE_CHUNK, STEP_SIZE
 from .timing import ROOT, machine
-from .vectorized import vector_rows, vectorized, worker_scalar, worker_trigonometry, worker_vector
+from .workers import run_worker
 
 DEFAULT_OUTPUT = ROOT / "benchmarks" / "results.md"
 QUICK_OUTPUT = ROOT / "results" / "benchmarks_quick.md"
 COMMAND = "python -m benchmarks"
 
 
-@dataclass(frozen=True)
-class Sizes:
-    runs: int  # runs of the low-level loop (median taken)
-    simulate_runs: int  # runs of simulate_fmu
-    steps: int  # steps per FMU per run
-    growth_steps: tuple  # run lengths of the growth benchmark
-    memory_steps: tuple  # run lengths traced by tracemalloc
-    vector_samples: int
-    scalar_samples: int
-    instruction_steps: tuple  # the two run lengths whose difference callgrind counts
-    instruction_minors: tuple  # CPython 3.<minor> counted
+def header(command: str, minutes: float) -> str:
+    return (
+        f"# Benchmarks\n\nMeasured on {machine()}, by `{command}` in {minutes:.1f} min: one run "
+        "on a shared machine, so absolute times move with other users' load; ratios are "
+        "measured side by side: each run is a fresh process that loads the FMUs, then steps "
+        f"them in turns of {LOOP_CHUNK:,} steps ({SIMULATE_CHUNK:,} under `simulate_fmu`); "
+        "instruction counts (callgrind) do not move with the load."
+    )
 
 
-FULL = Sizes(
-    runs=7,
-    simulate_runs=5,
-    steps=100_000,
-    growth_steps=(1_000, 100_000, 1_000_000),
-    memory_steps=(1_000, 100_000),
-    vector_samples=1_000_000,
-    scalar_samples=100_000,
-    instruction_steps=(100, 600),
-    instruction_minors=MINORS,
-)
-QUICK = Sizes(
-    runs=1,
-    simulate_runs=1,
-    steps=300,
-    growth_steps=(10, 300, 1_000),
-    memory_steps=(10, 100),
-    vector_samples=2_000,
-    scalar_samples=200,
-    instruction_steps=(1, 3),
-    instruction_minors=(sys.version_info.minor,),
+FOOTNOTE = (
+    "Floors: pythonfmu FMUs built from `benchmarks/floor_slave.py` with the model's Real "
+    "variables (same names, causality, variability, initial, start) and a `do_step` that does "
+    "nothing. Sections 1, 4, 5: the UniversalJoint's, with the project's loader as its binary; "
+    "*plain*: values through pythonfmu's own `get_real`/`set_real`; *bare*: through list "
+    "indexing. Sections 6 and 7: each model's own plain floor as pythonfmu packs it (its own "
+    "binary), libpython preloaded into the host. "
+    f"Communication step {STEP_SIZE} s; times are wall-clock unless marked CPU."
 )
 
-# What `python -m benchmarks --worker REQUEST` runs (timing.in_fresh_process).
-WORKERS = {
-    "loop": worker_loop,
-    "simulate": worker_simulate,
-    "tracemalloc": worker_tracemalloc,
-    "accuracy": worker_accuracy,
-    "vector": worker_vector,
-    "scalar": worker_scalar,
-    "trigonometry": worker_trigonometry,
-    "python_step": worker_python_step,
-    "python_steps": worker_python_steps,
-    "instructions": worker_instructions,
-}
+
+def command_line(args) -> str:
+    words = [COMMAND, *args.sections]
+    for option, values in (("--models", args.models), ("--minors", args.minors)):
+        if values:
+            words += [option, *map(str, values)]
+    return " ".join(words + (["--quick"] if args.quick else []))
 
 
-def run_worker(request: str) -> None:
-    import json
-
-    arguments = json.loads(request)
-    kind = arguments.pop("kind")
-    print(json.dumps(WORKERS[kind](**arguments)))
-
-
-def summary_table(results, sizes):
-    return "\n".join(
-        [
-            "| benchmark | result | goal | met |",
-            "|---|---|---|---|",
-            *cost_rows(results["cost"], sizes),
-            *accuracy_rows(results["accuracy"]),
-            *vector_rows(results["vector"], sizes),
-            *growth_rows(results["growth"]),
-            *c_host_rows(results["c_host"], sizes),
-            *one_call_rows(results["python"], results["cost"], results["c_host"], sizes),
-            *instruction_rows(results["instructions"], sizes),
-        ]
+def parse(argv):
+    parser = argparse.ArgumentParser(
+        prog="python -m benchmarks",
+        description="Benchmarks of the project's FMUs: every section, or the sections named.",
     )
-
-
-def report(results, sizes, quick, elapsed):
-    command = COMMAND + (" --quick" if quick else "")
-    return "\n".join(
-        [
-            "# Benchmarks",
-            "",
-            f"Measured on {machine()}, by `{command}` in {elapsed / 60:.1f} min: one run on a "
-            "shared machine, so absolute times move with other users' load; ratios are measured "
-            f"side by side: each run is a fresh process that loads the FMUs, then steps them in "
-            f"turns of {LOOP_CHUNK:,} steps ({SIMULATE_CHUNK:,} under `simulate_fmu`).",
-            "",
-            summary_table(results, sizes),
-            "",
-            "Floors: pythonfmu FMUs built from `benchmarks/floor_slave.py` with the joint's "
-            f"{len(table.VARIABLES)} Real variables (same causality, variability, initial, start) "
-            "and a `do_step` that does nothing. *plain*: values through pythonfmu's own "
-            "`get_real`/`set_real`; *bare*: through list indexing. "
-            f"Communication step {STEP_SIZE} s; times are wall-clock unless marked CPU.",
-            "",
-            "## Accuracy after 1 s against Tătaru's numerical method (ω1 = 10 rad/s)",
-            "",
-            "Exact: the closed form atan(tan ψ / cos β) − ψ at 40 digits (mpmath). "
-            "RK4: the seed's ODE (ω1' = 0, ω3' = B ω1, φ1' = ω1, φ3' = ω3) at the same step. "
-            "FMU: `simulate_fmu` at that communication step.",
-            "",
-            accuracy_table(results["accuracy"]),
-            "",
-            "## Growth with the run length (FMU2Slave loop)",
-            "",
-            "Runs as in section 1, the joint beside the plain floor. Peak RSS: VmHWM of the "
-            "worker process (interpreter, numpy, FMPy and both FMUs), from /proc/self/status; "
-            "`getrusage().ru_maxrss` is not used because Linux carries it over fork and exec "
-            "from the parent. Python heap: tracemalloc over the joint's stepping alone, after 10 "
-            "warm-up steps, with garbage collected.",
-            "",
-            growth_table(results["growth"]),
-            "",
-        ]
-    )
-
-
-def run_all(sizes, joint_fmu, workdir):
-    fmus = {kind: unzip(build_floor_fmu(workdir, kind), workdir) for kind in FLOORS}
-    # The runtime's joint is built without life (docs/life.md); the life-on
-    # build is timed beside it in section 1's loop.
-    fmus["joint"] = unzip(joint_fmu or build_joint_fmu(workdir, life=False), workdir)
-    with_life = unzip(build_joint_fmu(workdir / "life"), workdir)
-    cost = step_cost(fmus, sizes, with_life)
-    return {
-        "cost": cost,
-        "accuracy": accuracy(fmus["joint"]),
-        "vector": vectorized(sizes),
-        "growth": growth(fmus, sizes, cost),
-        "c_host": c_host_cost(fmus, sizes, workdir),
-        "python": python_step(sizes),
-        "instructions": instructions(
-            fmus["joint"],
-            unzip(build_floor_fmu(workdir, "plain", loader=False), workdir),
-            workdir,
-            sizes,
-            with_life,
-        ),
-    }
-
-
-INSTRUCTION_ROWS = "| 7"
-REMEASURED = "Rows 7a-7d re-measured alone"
-
-
-def instructions_only(sizes, joint_fmu, workdir, output: Path, elapsed_since: float) -> str:
-    """Section 7 alone (callgrind counts, deterministic under load): its rows
-    replace those of the results file, which says so under its table."""
-    lines = output.read_text().splitlines()
-    if not any(line.startswith(INSTRUCTION_ROWS) for line in lines):
-        raise SystemExit(f"{output} has no section 7 rows to replace: run the full benchmark")
-    joint = unzip(joint_fmu or build_joint_fmu(workdir, life=False), workdir)
-    with_life = unzip(build_joint_fmu(workdir / "life"), workdir)
-    floor = unzip(build_floor_fmu(workdir, "plain", loader=False), workdir)
-    rows = instruction_rows(instructions(joint, floor, workdir, sizes, with_life), sizes)
-    # An earlier note goes with the blank line that follows it.
-    notes = {i for i, line in enumerate(lines) if line.startswith(REMEASURED)}
-    dropped = notes | {i + 1 for i in notes if i + 1 < len(lines) and not lines[i + 1]}
-    kept: list[str] = []
-    at: int | None = None
-    for i, line in enumerate(lines):
-        if line.startswith(INSTRUCTION_ROWS) and at is None:
-            at = len(kept)  # where the summary table had them
-        if i not in dropped and not line.startswith(INSTRUCTION_ROWS):
-            kept.append(line)
-    minutes = (time.perf_counter() - elapsed_since) / 60
-    note = (
-        f"{REMEASURED} on {machine()}, by `{COMMAND} --instructions-only` in {minutes:.1f} min "
-        "(the other rows are from the full run above)."
-    )
-    return "\n".join([*kept[:at], *rows, "", note, *kept[at:]]) + "\n"
+    parser.add_argument("sections", nargs="*", metavar="SECTION",
+                        help=f"run these sections alone ({', '.join(SECTIONS)}; default: all) "
+                        "and replace their rows in the results file")  # fmt: skip
+    parser.add_argument("--models", nargs="+", metavar="MODEL",
+                        help="sections 6 and 7: these models only (default: every case of "
+                        "benchmarks/cases.py)")  # fmt: skip
+    parser.add_argument("--minors", nargs="+", type=int, metavar="N",
+                        help=f"section 6: CPython 3.N only (default: {MINORS})")  # fmt: skip
+    parser.add_argument("--quick", action="store_true",
+                        help="tiny sizes: checks that it runs, measures nothing")  # fmt: skip
+    parser.add_argument("--output", type=Path, default=None,
+                        help="markdown file to write (default: benchmarks/results.md; with "
+                        f"--quick, {QUICK_OUTPUT.relative_to(ROOT)}: a smoke run never replaces "
+                        "the measured tables)")  # fmt: skip
+    parser.add_argument("--fmu", type=Path,
+                        help="a built default UniversalJoint FMU for sections 1-5 and 8 "
+                        "(default: build the working tree's)")  # fmt: skip
+    parser.add_argument("--worker", help=argparse.SUPPRESS)
+    args = parser.parse_args(argv)
+    unknown = [name for name in args.sections if name not in SECTIONS]
+    if unknown:
+        parser.error(f"no section {', '.join(unknown)}: the sections are {', '.join(SECTIONS)}")
+    return args
 
 
 def main(argv=None):
-    parser = argparse.ArgumentParser(
-        prog="python -m benchmarks", description="Benchmarks of the UniversalJoint FMU."
-    )
-    parser.add_argument(
-        "--quick",
-        action="store_true",
-        help="tiny sizes: checks that everything runs, measures nothing",
-    )
-    parser.add_argument(
-        "--output",
-        type=Path,
-        default=None,
-        help="markdown file to write (default: benchmarks/results.md; with --quick, "
-        f"{QUICK_OUTPUT.relative_to(ROOT)}: a smoke run never replaces the measured tables)",
-    )
-    parser.add_argument(
-        "--fmu",
-        type=Path,
-        help="a built joint FMU without life (default: build the working tree's "
-        "UniversalJointNoLife.fmu, `build_fmu.py --no-life`)",
-    )
-    parser.add_argument(
-        "--instructions-only",
-        action="store_true",
-        help="section 7 alone (callgrind instruction counts): replace its rows in the "
-        "results file and keep the others",
-    )
-    parser.add_argument("--worker", help=argparse.SUPPRESS)
-    args = parser.parse_args(argv)
+    args = parse(argv)
     if args.worker:
         run_worker(args.worker)
         return 0
-    try:
-        require("mpmath", "bench", "python -m benchmarks (the accuracy benchmark's exact values)")
-    except MissingExtra as error:
-        print(f"benchmarks: {error}", file=sys.stderr)
-        return 1
-    sizes = QUICK if args.quick else FULL
+    sections = args.sections or list(SECTIONS)
+    if "accuracy" in sections:
+        try:
+            require("mpmath", "bench", "python -m benchmarks (section 2's exact values)")
+        except MissingExtra as error:
+            print(f"benchmarks: {error}", file=sys.stderr)
+            return 1
+    cases = cases_of(args.models)
     started = time.perf_counter()
-    if args.instructions_only:
-        output = args.output or (QUICK_OUTPUT if args.quick else DEFAULT_OUTPUT)
-        with tempfile.TemporaryDirectory(prefix="cardan_benchmarks_") as workdir:
-            text = instructions_only(sizes, args.fmu, Path(workdir), output, started)
-        output.write_text(text)
-        print(f"section 7 rows replaced in {output}")
-        return 0
-    with tempfile.TemporaryDirectory(prefix="cardan_benchmarks_") as workdir:
-        results = run_all(sizes, args.fmu, Path(workdir))
-    text = report(results, sizes, args.quick, time.perf_counter() - started)
     output = args.output or (QUICK_OUTPUT if args.quick else DEFAULT_OUTPUT)
-    if args.quick:
-        print(
-            f"quick run: every benchmark ran on tiny sizes (its numbers measure nothing); "
-            f"tables in {output}"
-        )
+    with tempfile.TemporaryDirectory(prefix="cardan_benchmarks_") as workdir:
+        bench = Bench(Path(workdir), args.quick, args.fmu, cases, args.minors)
+        rows, blocks = measure(sections, bench)
+    minutes = (time.perf_counter() - started) / 60
+    command = command_line(args)
+    partial = args.sections or args.models or args.minors
+    if partial and output.exists():
+        note = f"{ALONE} on {machine()}, by `{command}` in {minutes:.1f} min."
+        text = merged(output.read_text(), rows, blocks, note)
     else:
-        print(text)
+        text = full(header(command, minutes), rows, FOOTNOTE, blocks)
     output.parent.mkdir(parents=True, exist_ok=True)
     output.write_text(text)
+    if args.quick:
+        print(f"quick run: the sections ran on tiny sizes (their numbers measure nothing); "
+              f"tables in {output}")  # fmt: skip
+    else:
+        print("\n".join(rows))
+        print(f"written to {output}")
     return 0
 
 

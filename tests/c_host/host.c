@@ -11,7 +11,8 @@
  *                                           instance driven from two threads in turn
  *   host cycles DIR N                       N instantiate/step/free cycles
  *   host fuzz DIR SEED COUNT                random legal and illegal calls (fuzz.c)
- *   host bench DIR STEPS [SPEED]            µs per (set 6 inputs, doStep, get outputs)
+ *   host bench DIR STEPS [name=value ...]   µs per (set the named inputs, doStep of
+ *                                           1 ms, get every output)
  *
  * Logger calls go to stderr as "LOG <status> <category>: <message>".
  */
@@ -62,6 +63,8 @@ static void read_model_description(const char *dir)
     if (!guid || sscanf(guid, "guid=\"%127[^\"]", fmu.guid) != 1)
         fail("no guid in %s", path);
     for (char *v = strstr(xml, "<ScalarVariable"); v; v = strstr(v + 1, "<ScalarVariable")) {
+        if (fmu.n_variables == (int)(sizeof fmu.variables / sizeof fmu.variables[0]))
+            fail("more than %d variables in %s", fmu.n_variables, path);
         struct variable *var = &fmu.variables[fmu.n_variables++];
         char *end = strchr(v, '>');
         char *name = strstr(v, " name=\""), *vr = strstr(v, "valueReference=\"");
@@ -122,20 +125,30 @@ void initialize(fmi2Component c)
     check(fmu.ExitInitializationMode(c), "ExitInitializationMode");
 }
 
+/* name=value arguments: their value references and values. */
+static void parse_settings(int n, char **settings, fmi2ValueReference *vr, double *values)
+{
+    if (n > 64)
+        fail("at most 64 name=value settings, got %d", n);
+    for (int i = 0; i < n; i++) {
+        char name[64];
+        if (sscanf(settings[i], "%63[^=]=%lf", name, &values[i]) != 2)
+            fail("expected name=value, got %s", settings[i]);
+        vr[i] = reference(name);
+    }
+}
+
 /* The communication points FMPy's simulate_fmu uses: start + k * dt. */
 static int run(const char *dir, int steps, double dt, int n_settings, char **settings,
                int every_row)
 {
     load(dir);
     fmi2Component c = start("run", fmi2False);
-    for (int i = 0; i < n_settings; i++) {
-        char name[64];
-        double value;
-        if (sscanf(settings[i], "%63[^=]=%lf", name, &value) != 2)
-            fail("expected name=value, got %s", settings[i]);
-        fmi2ValueReference vr = reference(name);
-        check(fmu.SetReal(c, &vr, 1, &value), "SetReal");
-    }
+    fmi2ValueReference set[64];
+    double values[64];
+    parse_settings(n_settings, settings, set, values);
+    for (int i = 0; i < n_settings; i++)
+        check(fmu.SetReal(c, &set[i], 1, &values[i]), "SetReal");
     initialize(c);
     fmi2ValueReference vr[64];
     double y[64];
@@ -213,22 +226,18 @@ static double now(void)
     return t.tv_sec + 1e-9 * t.tv_nsec;
 }
 
-static int bench(const char *dir, int steps, double speed)
+static int bench(const char *dir, int steps, int n_inputs, char **inputs)
 {
-    static const char *names[] = {"input_speed", "input_acceleration", "bend_angle",
-                                  "bend_angle_rate", "bend_angle_acceleration", "load_torque"};
-    const double values[] = {speed, 5.0, 0.3, 0.01, 0.0, 50.0};  /* as the benchmarks */
     load(dir);
     fmi2Component c = start("bench", fmi2False);
     initialize(c);
-    fmi2ValueReference in[6], out[64];
-    double y[64];
-    for (int i = 0; i < 6; i++)
-        in[i] = reference(names[i]);
+    fmi2ValueReference in[64], out[64];
+    double values[64], y[64];
+    parse_settings(n_inputs, inputs, in, values);
     int n = outputs(out);
     double began = now(), h = 1e-3;
     for (int k = 0; k < steps; k++) {
-        fmu.SetReal(c, in, 6, values);
+        fmu.SetReal(c, in, n_inputs, values);
         check(fmu.DoStep(c, k * h, h, fmi2True), "DoStep");
         fmu.GetReal(c, out, n, y);
     }
@@ -256,8 +265,8 @@ int main(int argc, char **argv)
         return cycles(argv[2], atoi(argv[3]));
     if (argc == 5 && strcmp(argv[1], "fuzz") == 0)
         return fuzz(argv[2], strtoul(argv[3], NULL, 10), atoi(argv[4]));
-    if ((argc == 4 || argc == 5) && strcmp(argv[1], "bench") == 0)
-        return bench(argv[2], atoi(argv[3]), argc == 5 ? atof(argv[4]) : 100.0);
+    if (argc >= 4 && strcmp(argv[1], "bench") == 0)
+        return bench(argv[2], atoi(argv[3]), argc - 4, argv + 4);
     fprintf(stderr, "usage: see the comment at the top of host.c\n");
     return 2;
 }
