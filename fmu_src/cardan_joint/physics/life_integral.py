@@ -218,9 +218,8 @@ def step_integral(torque_at, step, h, w1, a1, b, rb, ab, min_angle, p, reach):
             and (value == 0.0 or zero_free_on(required, coefficients, n, zero != 0))
         ) or hi - t <= _SHORTEST * h:
             total += value
-            # The next panel starts from this one's points and length, twice
-            # it if this one was taken at the first try: the step's panels
-            # are alike.
+            # The next panel starts from this one's points and twice its
+            # length: a piece's panels are alike.
             length = 2.0 * (hi - t)
             t, zero_lo = hi, zero < 0
             if t == end:  # a new piece: its panels start from the longest again
