@@ -16,7 +16,7 @@ from life_reference import case_of, damage, damage_quadpack
 
 from cardan_joint.models.universal_joint.model import CardanJoint
 from cardan_joint.physics.life import LifeRule, life_rate, step_damage
-from cardan_joint.physics.life_torque import input_torque, turned
+from cardan_joint.physics.life_torque import input_torque
 from cardan_joint.physics.response import JointResponse, kernel
 
 RULE = LifeRule(1000.0, 1.5e6, 10.0 / 3.0, math.radians(3.0))
@@ -134,26 +134,6 @@ def test_the_reduced_torque_is_the_kernels():
             assert reduced == full.input_torque
         else:
             assert reduced == pytest.approx(full.input_torque, rel=1e-14, abs=0.0)
-
-
-def test_a_small_turn_of_the_bend_gives_its_sine_and_cosine_as_the_library_would():
-    # The addition formulas with the turn's Taylor terms, against the library's
-    # sin and cos of the turned angle; beyond the small turn, the library's own.
-    rng = random.Random(8)
-    for _ in range(20000):
-        b = rng.uniform(-1.5, 1.5)
-        turn = rng.choice((-1.0, 1.0)) * 10.0 ** rng.uniform(-12.0, -1.0)
-        sine, cosine = turned(b, math.sin(b), math.cos(b), turn)
-        with mp.workdps(40):
-            exact = mp.mpf(b) + mp.mpf(turn)
-            # What the library's sin and cos of the rounded sum b + turn err by.
-            near = 2.0 * math.ulp(abs(b) + abs(turn))
-            if abs(turn) <= 0.01:  # beyond, the library's of the rounded sum
-                assert abs(sine - float(mp.sin(exact))) <= near + math.ulp(sine)
-                assert abs(cosine - float(mp.cos(exact))) <= near + math.ulp(cosine)
-            else:
-                assert (sine, cosine) == (math.sin(b + turn), math.cos(b + turn))
-    assert turned(0.3, math.sin(0.3), math.cos(0.3), 0.0) == (math.sin(0.3), math.cos(0.3))
 
 
 # Steps crossing the 3-degree floor, torque reversals from the cross's inertia,

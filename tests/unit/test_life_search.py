@@ -3,11 +3,12 @@ of an independent adaptive quadrature (`life_reference.damage_quadpack`: the
 full kernel's rate, kinks by dense sampling and brentq, QUADPACK) over random
 steps at 200-1000 rad/s with a massive cross and loads of both signs; and the
 torque evaluations of a step bounded by its events, not by its speed or the
-load's sign."""
+load's sign, each cheap: a zero's location, a node's bend."""
 
 import math
 import random
 
+import mpmath
 import pytest
 from life_reference import case_of, damage_quadpack, random_fast_step
 
@@ -107,3 +108,26 @@ def test_a_torque_zero_is_located_to_the_last_bits_in_a_few_evaluations():
             assert at == 0.0 or before == 0.0 or after == 0.0 or (before < 0.0) != (after < 0.0)
     assert zeros > 80
     assert calls[0] < 10 * zeros, calls[0] / zeros
+
+
+def test_a_small_turn_of_the_bend_gives_its_sine_and_cosine_as_the_library_would():
+    # The addition formulas with the turn's Taylor terms, against the library's
+    # sin and cos of the turned angle; beyond the small turn, the library's own.
+    rng = random.Random(8)
+    for _ in range(20000):
+        b = rng.uniform(-1.5, 1.5)
+        turn = rng.choice((-1.0, 1.0)) * 10.0 ** rng.uniform(-12.0, -1.0)
+        sine, cosine = life_torque.turned(b, math.sin(b), math.cos(b), turn)
+        with mpmath.workdps(40):
+            exact = mpmath.mpf(b) + mpmath.mpf(turn)
+            # What the library's sin and cos of the rounded sum b + turn err by.
+            near = 2.0 * math.ulp(abs(b) + abs(turn))
+            if abs(turn) <= 0.01:  # beyond, the library's of the rounded sum
+                assert abs(sine - float(mpmath.sin(exact))) <= near + math.ulp(sine)
+                assert abs(cosine - float(mpmath.cos(exact))) <= near + math.ulp(cosine)
+            else:
+                assert (sine, cosine) == (math.sin(b + turn), math.cos(b + turn))
+    assert life_torque.turned(0.3, math.sin(0.3), math.cos(0.3), 0.0) == (
+        math.sin(0.3),
+        math.cos(0.3),
+    )
