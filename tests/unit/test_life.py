@@ -285,3 +285,13 @@ def test_two_torque_zeros_an_ulp_apart_leave_no_panel_of_zero_length():
     got = step_damage(rule, 2.0, psi, b, w, a, rb, ab, inertia, load)
     # 318 turns in one step: QUADPACK's own default limits are not 1e-9 there.
     assert got == pytest.approx(damage_quadpack(case, 2.0, rule), rel=2e-2, abs=0.0)
+
+
+def test_a_joint_without_torque_takes_its_steps_and_consumes_no_life():
+    # |T|^p at T = 0 is 0 (its logarithm is never taken): a massless cross, no load.
+    joint = CardanJoint(input_speed=100.0, bend_angle=0.3, load_torque=0.0,
+                        crosspiece_inertia_1=0.0, crosspiece_inertia_2=0.0,
+                        crosspiece_inertia_3=0.0)  # fmt: skip
+    for _ in range(5):
+        assert joint.step(1e-3) is None
+    assert dict(zip(joint.table.OUTPUTS, joint.outputs()))["life_consumed"] == 0.0
