@@ -95,7 +95,7 @@ def peak_bend(h, b, rb, ab):
 def step_damage(rule: LifeRule, h, psi, b, w1, a1, rb, ab, inertia, load) -> float:
     """Miner's damage of a joint over a step of `h` s from input-pin angle `psi`
     (the joint's inputs held or ramped over the step as it steps them)."""
-    step = (psi, b, w1, a1, rb, ab, inertia[0], inertia[1], inertia[2], load)
+    step = (psi, b, w1, a1, rb, ab, *inertia, load, math.sin(b), math.cos(b))
     return _damage(rule, joint_torque, step, h, b, w1, a1, rb, ab)
 
 
@@ -117,10 +117,10 @@ _OUTPUT_SPEED = JointResponse._fields.index("output_speed")
 
 def loaded_torque(t, step):
     """(T1, input speed) t s into a step under a load that follows the joint's
-    motion: `step` = `joint_torque`'s with `load_at(t, cardan_error,
-    output_speed)` in place of the load. T1 is affine in the load with slope
-    cos b / D (the speed ratio), so one kernel call gives both the kinematics
-    the load needs and the torque."""
+    motion: `step` = (psi, b, w1, a1, rb, ab, I1, I2, I3, load_at) at the
+    step's start, `load_at(t, cardan_error, output_speed)` the load. T1 is
+    affine in the load with slope cos b / D (the speed ratio), so one kernel
+    call gives both the kinematics the load needs and the torque."""
     psi, b, w1, a1, rb, ab, I1, I2, I3, load_at = step
     speed = w1 + a1 * t
     r = kernel(

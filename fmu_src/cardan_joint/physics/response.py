@@ -3,7 +3,7 @@
 This one function is the single home of the equations: the FMU calls it once
 per step on floats (through `math`), design sweeps call it on numpy arrays, and
 the single-quantity functions of `quantities` pick from it. Its parts the
-input torque alone needs (`pose`, `crosspiece_motion`, `euler_moments`,
+input torque alone needs (`pose_of`, `crosspiece_motion`, `euler_moments`,
 `yoke_reactions`) are functions of their own, which the life integral's
 torque (`life_torque`) calls too.
 
@@ -185,15 +185,18 @@ def kernel(
 
 
 def pose(xp, psi, bend_angle):
-    """(sin psi/2, cos psi/2, sin psi, cos psi, sin b, cos b, D, sqrt D). Half
-    angles first: the quaternion needs them, and sin/cos psi follow from them
-    without two more trigonometric calls."""
+    """(sin psi/2, cos psi/2, sin psi, cos psi, sin b, cos b, D, sqrt D)."""
+    return pose_of(xp, psi, xp.sin(bend_angle), xp.cos(bend_angle))
+
+
+def pose_of(xp, psi, sb, cb):
+    """`pose` from the bend's sine `sb` and cosine `cb`. Half angles first: the
+    quaternion needs them, and sin/cos psi follow from them without two more
+    trigonometric calls."""
     sh = xp.sin(0.5 * psi)
     ch = xp.cos(0.5 * psi)
     s = 2.0 * sh * ch
     c = (ch - sh) * (ch + sh)
-    sb = xp.sin(bend_angle)
-    cb = xp.cos(bend_angle)
     sbs = sb * s
     # D = 1 - (sin b cos psi)^2, written as a sum of squares: no cancellation
     # near the lock-up, where D -> cos^2 b.
