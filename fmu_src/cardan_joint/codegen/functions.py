@@ -13,7 +13,6 @@ from typing import Any
 from .calls import Calls, accepts
 from .types import (
     FLOAT,
-    INT,
     Function,
     Module,
     Scalar,
@@ -250,40 +249,6 @@ class FunctionTranslator(Unrolled, Calls):
         body = self.nested(node.body, depth + 1)
         self.loops.pop()
         return head + body + [f"{pad}}}"]
-
-    def _For(self, node: ast.For, depth: int) -> list[str]:
-        pad = "    " * depth
-        call = node.iter
-        if (
-            node.orelse
-            or not isinstance(node.target, ast.Name)
-            or not (
-                isinstance(call, ast.Call)
-                and isinstance(call.func, ast.Name)
-                and call.func.id == "range"
-            )
-            or call.keywords
-            or not 1 <= len(call.args) <= 3
-        ):
-            raise self.refuse(node, "a for loop runs over range(...) with a name, no else")
-        if self.over_a_tuple(call.args):
-            return self.unrolled_for(node, call.args, depth)
-        bounds = [self.scalar(a) for a in call.args]
-        if any(kind is not INT for _, kind in bounds):
-            raise self.refuse(node, "range() takes ints")
-        step = self.index(call.args[2], node) if len(call.args) == 3 else 1
-        if step == 0:
-            raise self.refuse(node, "range() with a step of 0")
-        start = bounds[0][0] if len(bounds) > 1 else "0"
-        stop = self.hoist(bounds[-1 if len(bounds) == 1 else 1][0], INT)
-        self.assign(node.target.id, start, INT, node)  # the loop variable is a count
-        name = node.target.id + "_"
-        test = "<" if step > 0 else ">"
-        head = f"{pad}for ({name} = {start}; {name} {test} {stop}; {name} += {step}) {{"
-        self.loops.append(False)
-        body = self.nested(node.body, depth + 1)
-        self.loops.pop()
-        return [head, *body, f"{pad}}}"]
 
     def _Return(self, node: ast.Return, depth: int) -> list[str]:
         pad = "    " * depth

@@ -1,15 +1,16 @@
-"""Loops over a tuple's positions, unrolled: `for k in range(len(t))` (bounds
-that are ints known at translation time, one of them the length of a tuple)
-becomes one copy of the body per k, k a constant in each, so `t[k]` and
-`t[3 * k + 1]` read a struct's fields and a tuple may grow by an item a copy
-(`speeds = speeds + (w,)`). A propshaft's joints are such a loop."""
+"""`for` loops: over `range(...)` a C loop; over a tuple's positions
+(`for k in range(len(t))`: bounds that are ints known at translation time,
+one of them the length of a tuple) unrolled, one copy of the body per k, k a
+constant in each, so `t[k]` and `t[3 * k + 1]` read a struct's fields and a
+tuple may grow by an item a copy (`speeds = speeds + (w,)`). A propshaft's
+joints are such a loop."""
 
 import ast
 import operator
 from collections.abc import Callable
 from typing import Any
 
-from .types import Rows, Table, Tuple, Untranslatable
+from .types import INT, Rows, Table, Tuple, Untranslatable
 
 # The int operations a constant index or bound may use, as Python computes them.
 _CONSTANT_OPERATIONS = {
@@ -39,6 +40,44 @@ class Unrolled:
     refuse: Callable[[ast.AST, str], Untranslatable]
     value_of: Callable[[ast.expr], Any]
     nested: Callable[..., list[str]]
+    scalar: Callable[[ast.expr], Any]
+    hoist: Callable[[str, Any], str]
+    assign: Callable[[str, str, Any, ast.AST], str]
+    index: Callable[[ast.expr, ast.AST], int]
+
+    def _For(self, node: ast.For, depth: int) -> list[str]:
+        pad = "    " * depth
+        call = node.iter
+        if (
+            node.orelse
+            or not isinstance(node.target, ast.Name)
+            or not (
+                isinstance(call, ast.Call)
+                and isinstance(call.func, ast.Name)
+                and call.func.id == "range"
+            )
+            or call.keywords
+            or not 1 <= len(call.args) <= 3
+        ):
+            raise self.refuse(node, "a for loop runs over range(...) with a name, no else")
+        if self.over_a_tuple(call.args):
+            return self.unrolled_for(node, call.args, depth)
+        bounds = [self.scalar(a) for a in call.args]
+        if any(kind is not INT for _, kind in bounds):
+            raise self.refuse(node, "range() takes ints")
+        step = self.index(call.args[2], node) if len(call.args) == 3 else 1
+        if step == 0:
+            raise self.refuse(node, "range() with a step of 0")
+        start = bounds[0][0] if len(bounds) > 1 else "0"
+        stop = self.hoist(bounds[-1 if len(bounds) == 1 else 1][0], INT)
+        self.assign(node.target.id, start, INT, node)  # the loop variable is a count
+        name = node.target.id + "_"
+        test = "<" if step > 0 else ">"
+        head = f"{pad}for ({name} = {start}; {name} {test} {stop}; {name} += {step}) {{"
+        self.loops.append(False)
+        body = self.nested(node.body, depth + 1)
+        self.loops.pop()
+        return [head, *body, f"{pad}}}"]
 
     def constant_int(self, node: ast.expr) -> int | None:
         """The value of an int known at translation time: a literal, a module
