@@ -48,14 +48,14 @@ def random_inputs(rng: random.Random) -> dict:
     return values
 
 
-def random_run(seed: int, steps: int = 150):
+def random_run(seed: int, steps: int = 100):
     def run(instance):
         rng = random.Random(seed)
         seen = [instance.exit_initialization_mode()]
         states = []
         for _ in range(steps):
             instance.set(**random_inputs(rng))
-            seen.append(instance.try_step(rng.choice([1e-4, 1e-3, 1e-3, 0.01, 0.3])))
+            seen.append(instance.try_step(rng.choice([1e-4, 1e-3, 1e-3, 0.01, 0.1])))
             if rng.random() < 0.5:  # a read after the step, or the next step at once
                 seen.append(bits(instance.values(*INPUTS, *instance.outputs)))
             draw = rng.random()
