@@ -96,6 +96,38 @@ def extremes(x: float, y: float) -> tuple[float, float, float, float]:
     return max(x, y), min(x, y), max(y, x), min(y, x)
 
 
+RECORD = 2  # items per joint in `over_joints`' layout
+
+
+def _accumulated(values):
+    """A tuple built item by item over a tuple's positions; its items' sum."""
+    built = ()
+    total = 0.0
+    for k in range(len(values) - 1, -1, -1):
+        built = (values[k] * k,) + built
+        total = total + built[0]
+    return built + (total,)
+
+
+def over_joints(x: float, y: float) -> tuple:
+    """Loops over a tuple's positions, unrolled: constant indices computed from
+    the loop's variable and len(), a tuple grown by an item a copy, a value
+    carried from copy to copy, a kept loop and an if inside, a caller-shaped
+    tuple of each length, the variable's last value after the loop."""
+    layout = (x, y, x * y, y - x, 0.5 * x, -y)
+    speeds = ()
+    w = 1.0
+    for k in range(len(layout) // RECORD):
+        w = w * layout[RECORD * k] + layout[RECORD * k + 1]
+        if w > 0.0:
+            w = -0.5 * w
+        for _ in range(k):
+            w = w + 0.25
+        speeds = speeds + (w, w * k)
+    last = k
+    return _accumulated(speeds) + _accumulated(layout[1:-1]) + (last * w,) + speeds[-2:]
+
+
 def misordered(
     time: float,
     h: float,
@@ -146,7 +178,36 @@ def with_retyped(x: float) -> float:
     return y
 
 
+def with_exit_in_unrolled(x: float) -> float:
+    pair = (x, x)
+    for k in range(len(pair)):
+        if pair[k] > 0.0:
+            break
+    return x
+
+
+def with_tuple_retyped_in_branch(x: float) -> tuple:
+    pair = (x, x)
+    if x > 0.0:
+        pair = pair + (x,)
+    return pair
+
+
+def with_index_by_variable(x: float, n: int) -> float:
+    pair = (x, x)
+    return pair[n]
+
+
+def with_empty_tuple_returned(x: float) -> tuple:
+    nothing = ()
+    return nothing
+
+
 REFUSED = {
+    with_exit_in_unrolled: "break",
+    with_tuple_retyped_in_branch: "pair = pair + (x,)",
+    with_index_by_variable: "pair[n]",
+    with_empty_tuple_returned: "return nothing",
     with_list: "[x, x]",
     with_hypot: "math.hypot(x, 1.0)",
     with_object: "x.real",

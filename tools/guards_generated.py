@@ -14,6 +14,9 @@ LIFE_INTEGRAL = "fmu_src/cardan_joint/physics/life_integral.py"
 GENERATED = "fmu_src/cardan_joint/fmi/native/generated.c"
 BIT_TEST = ("tests/unit/test_codegen_joint.py", "-k", "python_steps_bits")
 BUILD_TESTS = "tests/unit/test_codegen_build.py"
+FUNCTIONS = "fmu_src/cardan_joint/codegen/functions.py"
+UNROLLED = "fmu_src/cardan_joint/codegen/unrolled.py"
+REFUSALS = ("tests/unit/test_codegen.py", "-k", "untranslatable")
 RUNTIME_TESTS = "tests/fmu/test_generated_step.py"
 WRITTEN_STEP = "fmu_src/cardan_joint/framework/written_step.py"
 MOTOR_STEP = "fmu_src/cardan_joint/models/motor/step.py"
@@ -109,6 +112,20 @@ GENERATED_MUTATIONS = (
         "and abs(change) <= MAX_INCREMENT",
         "and abs(change) <= 1e300",
         (COMPLIANT_TESTS, "-k", "twist_limit"),
+    ),
+    Mutation(
+        "generated step: a tuple takes a new shape in straight-line code only",
+        FUNCTIONS,
+        "isinstance(kind, Tuple) and not self.branching)",
+        "isinstance(kind, Tuple))",
+        REFUSALS,
+    ),
+    Mutation(
+        "generated step: no break out of an unrolled loop",
+        UNROLLED,
+        "if self.loops and self.loops[-1]:",
+        "if False:",
+        REFUSALS,
     ),
     Mutation(
         "life integral: two torque zeros an ulp apart",

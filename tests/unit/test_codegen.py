@@ -20,6 +20,7 @@ from cardan_joint.codegen import Untranslatable, generate
         (samples.choices, lambda rng: (rng.uniform(-9.0, 9.0), rng.uniform(-9.0, 9.0))),
         (samples.quadrature, lambda rng: (rng.uniform(-9.0, 9.0), rng.uniform(-9.0, 9.0))),
         (samples.shapes, lambda rng: (rng.uniform(-9.0, 9.0), rng.uniform(-9.0, 9.0))),
+        (samples.over_joints, lambda rng: (rng.uniform(-3.0, 3.0), rng.uniform(-3.0, 3.0))),
         (
             samples.extremes,
             lambda rng: tuple(rng.choice([math.nan, 1.0, -0.0, 0.0, rng.random()]) for _ in "xy"),

@@ -167,6 +167,8 @@ class Calls(Subscripts):
                 modules[name] = kind.module
             elif isinstance(kind, Function):
                 modules[name] = kind.function
+            elif kind == Tuple(()):
+                raise self.refuse(node, "an empty tuple has no C value: it only starts a tuple")
             else:
                 values[name] = text, kind
                 if isinstance(kind, Tuple):

@@ -62,6 +62,8 @@ class Expressions:
     """Mixed into `functions.FunctionTranslator`, which provides the scope."""
 
     locals: dict[str, Scalar | Tuple]
+    c_names: dict[str, str]
+    unrolled: dict[str, int]
     bound: dict[str, Module | Function]
     namespace: dict[str, Any]
     unit: Any
@@ -135,8 +137,10 @@ class Expressions:
         )
 
     def _Name(self, node: ast.Name) -> tuple[str, Type]:
+        if node.id in self.unrolled:  # an unrolled loop's variable (`unrolled`)
+            return f"INT64_C({self.unrolled[node.id]})", INT
         if node.id in self.locals:
-            return node.id + "_", self.locals[node.id]
+            return self.c_names.get(node.id, node.id + "_"), self.locals[node.id]
         if node.id in self.bound:
             return node.id, self.bound[node.id]
         return self.outside(self.global_value(node.id, node), node.id, node)
@@ -228,7 +232,7 @@ class Expressions:
         test = self.truth(node.test)
         body, body_type = self.value_of(node.body)
         other, other_type = self.value_of(node.orelse)
-        if body_type != other_type:
+        if body_type != other_type or body_type == Tuple(()):
             raise self.refuse(
                 node, f"both branches must have one type ({body_type} and {other_type})"
             )
@@ -244,11 +248,15 @@ class Expressions:
         return self.items_of(node, text, kind), kind
 
     def items_of(self, node: ast.expr, text: str, kind: Tuple) -> list[str]:
+        if not kind.items:  # the empty tuple a tuple is built from
+            return []
         if not isinstance(node, ast.Name):
             text = self.hoist(text, kind)
         return [f"{text}.v{k}" for k in range(len(kind.items))]
 
     def built(self, texts: list[str], kinds: tuple[Scalar, ...]) -> tuple[str, Type]:
         kind = Tuple(kinds)
+        if not kinds:  # no C value: only a start for `+` (`functions.assign`)
+            return "", kind
         self.unit.struct(kind)
         return f"(({kind.c}){{{', '.join(texts)}}})", kind

@@ -13,7 +13,6 @@ from typing import Any
 from .calls import Calls, accepts
 from .types import (
     FLOAT,
-    INT,
     Function,
     Module,
     Scalar,
@@ -21,6 +20,7 @@ from .types import (
     Untranslatable,
     type_of_annotation,
 )
+from .unrolled import Unrolled
 
 
 @dataclass
@@ -50,7 +50,7 @@ def source_of(function: types.FunctionType) -> tuple[ast.FunctionDef, str, int]:
     return tree, inspect.getsourcefile(function) or "?", first
 
 
-class FunctionTranslator(Calls):
+class FunctionTranslator(Unrolled, Calls):
     def __init__(
         self,
         unit: Any,
@@ -67,6 +67,14 @@ class FunctionTranslator(Calls):
             for name, value in modules.items()
         }
         self.locals: dict[str, Scalar | Tuple] = {}
+        # The C variable of each local (a tuple rebound to another shape gets a
+        # new one) and the type each C variable is declared with.
+        self.c_names: dict[str, str] = {}
+        self.declared: dict[str, Scalar | Tuple] = {}
+        self.unrolled: dict[str, int] = {}
+        self.unrolling: set[str] = set()
+        self.loops: list[bool] = []
+        self.branching = 0  # inside an if, a while or a loop C keeps
         self.temporaries: list[tuple[str, Scalar | Tuple]] = []
         self.pending: list[str] = []
         self.body: list[str] = []
@@ -125,8 +133,7 @@ class FunctionTranslator(Calls):
         self.block(self.tree.body, 1)
         if self.signature.returns is None:
             raise self.refuse(self.tree, "it returns no value")
-        declarations = [f"    {kind.c} {name}_;" for name, kind in self.locals.items()
-                        if name not in dict(self.signature.parameters)]  # fmt: skip
+        declarations = [f"    {kind.c} {name};" for name, kind in self.declared.items()]
         declarations += [f"    {kind.c} {name};" for name, kind in self.temporaries]
         self.signature.text = [self.signature.prototype(), "{", *declarations, *self.body, "}"]
         return self.signature
@@ -143,23 +150,43 @@ class FunctionTranslator(Calls):
             self.pending = []
             lines = method(statement, depth)
             pad = "    " * depth
-            self.body += [pad + line for line in self.pending] + lines
+            self.body += [pad + line for line in self.pending] + [line for line in lines if line]
 
-    def nested(self, statements: list[ast.stmt], depth: int) -> list[str]:
+    def nested(self, statements: list[ast.stmt], depth: int, straight: bool = False) -> list[str]:
+        """The statements' C; not `straight`: a branch's or a kept loop's body."""
         outer, pending, self.body = self.body, self.pending, []
+        self.branching += not straight
         self.block(statements, depth)
+        self.branching -= not straight
         inner, self.body, self.pending = self.body, outer, pending
         return inner
 
     def assign(self, name: str, text: str, kind: Any, node: ast.AST) -> str:
+        """`name = text`; "" for an empty tuple, which C does not hold."""
         if not isinstance(kind, Scalar | Tuple):
             raise self.refuse(node, f"{name} would hold {kind}: C keeps numbers and tuples")
+        if name in self.unrolling:
+            raise self.refuse(node, f"{name} is an unrolled loop's constant")
+        self.unrolled.pop(name, None)
         known = self.locals.setdefault(name, kind)
+        if name not in self.c_names:
+            self.c_names[name] = f"{name}_"
+            if name not in dict(self.signature.parameters):
+                self.declared[f"{name}_"] = kind
         if known != kind:
-            raise self.refuse(
-                node, f"{name} holds {known} values, not {kind}: C keeps one type per name"
-            )
-        return f"{name}_ = {text};"
+            # A tuple built item by item takes a new shape each time: a new C
+            # variable, where no branch or kept loop needs one type at its end.
+            if not (isinstance(known, Tuple) and isinstance(kind, Tuple) and not self.branching):
+                raise self.refuse(
+                    node, f"{name} holds {known} values, not {kind}: C keeps one type per name"
+                )
+            self.c_names[name] = f"{name}__{len(self.declared)}"
+            self.declared[self.c_names[name]] = kind
+            self.locals[name] = kind
+        if isinstance(kind, Tuple) and not kind.items:
+            self.declared.pop(self.c_names[name], None)
+            return ""
+        return f"{self.c_names[name]} = {text};"
 
     def _Assign(self, node: ast.Assign, depth: int) -> list[str]:
         pad = "    " * depth
@@ -218,36 +245,10 @@ class FunctionTranslator(Calls):
         inner = "    " * (depth + 1)
         head = [f"{pad}for (;;) {{", *(inner + line for line in before), f"{inner}if (!{test})",
                 f"{inner}    break;"]  # fmt: skip
-        return head + self.nested(node.body, depth + 1) + [f"{pad}}}"]
-
-    def _For(self, node: ast.For, depth: int) -> list[str]:
-        pad = "    " * depth
-        call = node.iter
-        if (
-            node.orelse
-            or not isinstance(node.target, ast.Name)
-            or not (
-                isinstance(call, ast.Call)
-                and isinstance(call.func, ast.Name)
-                and call.func.id == "range"
-            )
-            or call.keywords
-            or not 1 <= len(call.args) <= 3
-        ):
-            raise self.refuse(node, "a for loop runs over range(...) with a name, no else")
-        bounds = [self.scalar(a) for a in call.args]
-        if any(kind is not INT for _, kind in bounds):
-            raise self.refuse(node, "range() takes ints")
-        step = self.index(call.args[2], node) if len(call.args) == 3 else 1
-        if step == 0:
-            raise self.refuse(node, "range() with a step of 0")
-        start = bounds[0][0] if len(bounds) > 1 else "0"
-        stop = self.hoist(bounds[-1 if len(bounds) == 1 else 1][0], INT)
-        self.assign(node.target.id, start, INT, node)  # the loop variable is a count
-        name = node.target.id + "_"
-        test = "<" if step > 0 else ">"
-        head = f"{pad}for ({name} = {start}; {name} {test} {stop}; {name} += {step}) {{"
-        return [head, *self.nested(node.body, depth + 1), f"{pad}}}"]
+        self.loops.append(False)
+        body = self.nested(node.body, depth + 1)
+        self.loops.pop()
+        return head + body + [f"{pad}}}"]
 
     def _Return(self, node: ast.Return, depth: int) -> list[str]:
         pad = "    " * depth
@@ -261,6 +262,8 @@ class FunctionTranslator(Calls):
                 )
             return [f"{pad}return 0;"]
         text, kind = self.value_of(node.value)
+        if kind == Tuple(()):
+            raise self.refuse(node, "an empty tuple has no C value: it only starts a tuple")
         if signature.returns is None and isinstance(kind, Scalar | Tuple):
             signature.returns = kind
         if not accepts(signature.returns, kind):
@@ -270,9 +273,11 @@ class FunctionTranslator(Calls):
         return [f"{pad}return {text};"]
 
     def _Break(self, node: ast.Break, depth: int) -> list[str]:
+        self.leaves_loop(node)
         return ["    " * depth + "break;"]
 
     def _Continue(self, node: ast.Continue, depth: int) -> list[str]:
+        self.leaves_loop(node)
         return ["    " * depth + "continue;"]
 
     def _Pass(self, node: ast.Pass, depth: int) -> list[str]:

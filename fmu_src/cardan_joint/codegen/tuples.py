@@ -2,6 +2,7 @@
 a constant table's item by an int, a table of rows' item by two ints."""
 
 import ast
+from collections.abc import Callable
 
 from .expressions import Expressions
 from .types import INT, Rows, Scalar, Table, Type, Untranslatable
@@ -9,6 +10,8 @@ from .types import INT, Rows, Scalar, Table, Type, Untranslatable
 
 class Subscripts(Expressions):
     """Mixed into `calls.Calls`, below `functions.FunctionTranslator`."""
+
+    constant_int: Callable[[ast.expr], int | None]  # `unrolled.Unrolled`'s
 
     def _Tuple(self, node: ast.Tuple) -> tuple[str, Type]:
         items: list[tuple[str, Scalar]] = []
@@ -18,8 +21,6 @@ class Subscripts(Expressions):
                 items += zip(texts, spread.items, strict=True)
             else:
                 items.append(self.scalar(element))
-        if not items:
-            raise self.refuse(node, "an empty tuple has no C struct")
         return self.built([text for text, _ in items], tuple(kind for _, kind in items))
 
     def _Subscript(self, node: ast.Subscript) -> tuple[str, Type]:
@@ -76,13 +77,9 @@ class Subscripts(Expressions):
         return f"{name}[{name}_start[{row}] + {item}]", rows.item
 
     def index(self, node: ast.expr, whole: ast.AST) -> int:
-        """A constant index (C's struct fields are named, not computed)."""
-        if isinstance(node, ast.UnaryOp) and isinstance(node.op, ast.USub):
-            return -self.index(node.operand, whole)
-        if isinstance(node, ast.Constant) and type(node.value) is int:
-            return node.value
-        if isinstance(node, ast.Name) and node.id not in self.locals:
-            value = self.namespace.get(node.id)
-            if type(value) is int:  # a module constant
-                return value
-        raise self.refuse(whole, "a tuple is indexed by an integer constant only")
+        """A constant index (C's struct fields are named, not computed): see
+        `unrolled.Unrolled.constant_int`."""
+        value = self.constant_int(node)
+        if value is None:
+            raise self.refuse(whole, "a tuple is indexed by an integer constant only")
+        return value

@@ -17,7 +17,6 @@ is exact: the power balance T_1 omega_0 = T_L omega_N + dE/dt holds term by term
 Scalars (the FMU, once per step) or numpy arrays (the fluctuation search).
 """
 
-import math
 from typing import Any, NamedTuple
 
 from ...physics._backend import namespace
@@ -30,6 +29,20 @@ _SPEED = JointResponse._fields.index("output_speed")
 _ACCELERATION = JointResponse._fields.index("output_acceleration")
 _ENERGY = JointResponse._fields.index("crosspiece_kinetic_energy")
 _TORQUE = JointResponse._fields.index("input_torque")
+
+# A layout as plain numbers (`layout_values`), joint after joint: its working
+# angle beta_k, pin offset b_k, twist c_k, the yoke phasing phi_{k-1} before it
+# (0 at joint 1) and its input shaft's polar inertia (0 for the input shaft).
+WORKING_ANGLE, PIN_OFFSET, TWIST, PHASE, INERTIA = range(5)
+LAYOUT_FIELDS = 5
+# `chain_values`' result, joint after joint: its output shaft's offset o_k,
+# speed and acceleration, its pin angle psi_k, input torque T_k and load L_k;
+# then the input torque and the kinetic energy.
+OFFSET, SPEED, ACCELERATION, PIN, TORQUE, LOAD = range(6)
+CHAIN_FIELDS = 6
+# The forward pass's record holds T0_k (at no load) and the speed ratio s_k
+# where the result holds T_k and L_k.
+_FREE_TORQUE, _RATIO = TORQUE, LOAD
 
 
 class ChainState(NamedTuple):
@@ -45,6 +58,55 @@ class ChainState(NamedTuple):
     loads: tuple[Any, ...] = ()
 
 
+def layout_values(geometry: Layout, shaft_inertias) -> tuple[float, ...]:
+    """The layout's numbers `chain_values` takes (`LAYOUT_FIELDS` per joint)."""
+    phases = (0.0, *geometry.phases)
+    inertias = (0.0, *shaft_inertias)
+    return tuple(
+        value
+        for k, joint in enumerate(geometry.joints)
+        for value in (joint.working_angle, joint.pin_offset, joint.twist, phases[k], inertias[k])
+    )
+
+
+def chain_values(xp, angle, angle_error, speed, acceleration, layout, I1, I2, I3, load_torque):
+    """The chain at input angle `angle` (+ `angle_error`, the low part of a
+    double-double angle), input speed and acceleration, as one flat tuple
+    (`CHAIN_FIELDS` per joint, then the input torque and the energy); `layout`
+    from `layout_values`. Written in the generator's subset: the propshaft's
+    step (`step.py`) runs it in C; `xp` is numpy for arrays."""
+    offset, w, a, energy = 0.0, speed, acceleration, 0.0
+    forward = ()  # per joint: o_k, omega_k, alpha_k, psi_k, T0_k (at no load), s_k
+    for k in range(len(layout) // LAYOUT_FIELDS):
+        joint = layout[LAYOUT_FIELDS * k : LAYOUT_FIELDS * (k + 1)]
+        phase = joint[PHASE]
+        psi = angle + (angle_error + (offset + k * HALF_PI + phase - joint[PIN_OFFSET]))
+        r = kernel(xp, psi, joint[WORKING_ANGLE], w, a, 0.0, 0.0, I1, I2, I3, 0.0, 1.0)
+        offset = offset + phase + joint[TWIST] + r[_CARDAN_ERROR]
+        w, a = r[_SPEED], r[_ACCELERATION]
+        energy = energy + r[_ENERGY]
+        forward = forward + (offset, w, a, psi, r[_TORQUE], r[_SPEED_RATIO])
+    load = load_torque
+    torque = load
+    backward = ()  # per joint: T_k, L_k
+    for k in range(len(layout) // LAYOUT_FIELDS - 1, -1, -1):
+        torque = (
+            forward[CHAIN_FIELDS * k + _FREE_TORQUE] + forward[CHAIN_FIELDS * k + _RATIO] * load
+        )
+        backward = (torque, load) + backward
+        if k > 0:
+            inertia = layout[LAYOUT_FIELDS * k + INERTIA]
+            load = torque + inertia * forward[CHAIN_FIELDS * (k - 1) + ACCELERATION]
+    for k in range(1, len(layout) // LAYOUT_FIELDS):
+        w = forward[CHAIN_FIELDS * (k - 1) + SPEED]
+        energy = energy + 0.5 * layout[LAYOUT_FIELDS * k + INERTIA] * w * w
+    values = ()
+    for k in range(len(layout) // LAYOUT_FIELDS):
+        values = values + forward[CHAIN_FIELDS * k : CHAIN_FIELDS * k + 4]
+        values = values + backward[2 * k : 2 * k + 2]
+    return values + (torque, energy)
+
+
 def chain(
     geometry: Layout,
     angle,
@@ -57,45 +119,18 @@ def chain(
 ) -> ChainState:
     """Every shaft's motion and the input torque at input angle `angle` (+ `angle_error`,
     the low part of a double-double angle), input speed and acceleration."""
+    joints = len(geometry.joints)
+    inertias = shaft_inertias or (0.0,) * (joints - 1)
     I1, I2, I3 = crosspiece_inertia
-    offset = 0.0
-    phases = (0.0,) + geometry.phases
-    offsets, speeds, accelerations, free_torques, ratios, pins = [], [], [], [], [], []
-    energy = 0.0
-    w, a = speed, acceleration
-    for k, joint in enumerate(geometry.joints):
-        base = offset + k * HALF_PI + phases[k] - joint.pin_offset
-        psi, beta = angle + (angle_error + base), joint.working_angle
-        pins.append(psi)
-        xp = math if psi.__class__ is float and beta.__class__ is float else namespace(psi, beta)
-        r = kernel(xp, psi, beta, w, a, 0.0, 0.0, I1, I2, I3, 0.0, 1.0)
-        offset = offset + phases[k] + joint.twist + r[_CARDAN_ERROR]
-        w, a = r[_SPEED], r[_ACCELERATION]
-        offsets.append(offset)
-        speeds.append(w)
-        accelerations.append(a)
-        free_torques.append(r[_TORQUE])
-        ratios.append(r[_SPEED_RATIO])
-        energy = energy + r[_ENERGY]
-    inertias = shaft_inertias or (0.0,) * (len(geometry.joints) - 1)
-    load = load_torque
-    torque = load
-    torques, loads = [], []
-    for k in range(len(geometry.joints) - 1, -1, -1):
-        torque = free_torques[k] + ratios[k] * load
-        torques.append(torque)
-        loads.append(load)
-        if k:
-            load = torque + inertias[k - 1] * accelerations[k - 1]
-    for J, w_k in zip(inertias, speeds):
-        energy = energy + 0.5 * J * w_k * w_k
+    values = chain_values(
+        namespace(angle, angle_error), angle, angle_error, speed, acceleration,
+        layout_values(geometry, inertias), I1, I2, I3, load_torque,
+    )  # fmt: skip
+
+    def each(field):
+        return tuple(values[CHAIN_FIELDS * k + field] for k in range(joints))
+
     return ChainState(
-        tuple(offsets),
-        tuple(speeds),
-        tuple(accelerations),
-        torque,
-        energy,
-        tuple(pins),
-        tuple(reversed(torques)),
-        tuple(reversed(loads)),
-    )
+        each(OFFSET), each(SPEED), each(ACCELERATION), values[-2], values[-1], each(PIN),
+        each(TORQUE), each(LOAD),
+    )  # fmt: skip

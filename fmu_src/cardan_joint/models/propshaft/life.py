@@ -5,42 +5,18 @@ shaft speed, torque T_k and load L_k from the chain (`chain.ChainState`).
 Over a step the input shaft is polynomial, so every shaft's speed and every
 joint's torque are closed forms of the time (the chain at the input angle of
 that instant): each joint's damage is `life_integral.step_integral` of them,
-the chain evaluated once per node for all joints where their nodes coincide."""
+`step.chain_damages` (the step's own). Under a load that follows the motion
+(the compliant propshaft's spring, whose step runs in Python) the chain at
+zero load gives the kinematics the load needs, and the chain is evaluated
+once per node for all joints where their nodes coincide."""
 
-import math
 from typing import Any
 
 from ...framework.stepped import ShaftModel
-from ...physics.life import (
-    bearing_forces,
-    compensated_add,
-    life_rate,
-    rate_scale,
-    singularity_reach,
-)
+from ...physics.life import compensated_add, rate_scale, singularity_reach
 from ...physics.life_integral import step_integral
-from ...physics.response import JointResponse, kernel
 from .chain import chain
-
-_MOMENTS = tuple(
-    JointResponse._fields.index(name) for name in ("input_yoke_moment", "output_yoke_moment")
-)
-
-
-def joint_outputs(rule, radius, state, working_angles, speed, acceleration, crosspiece):
-    """((input force, output force, life rate) of each joint) for a chain `state`
-    at input speed and acceleration `speed`, `acceleration`."""
-    values = []
-    w, a = speed, acceleration
-    for k, beta in enumerate(working_angles):
-        torque, load = state.torques[k], state.loads[k]
-        r = kernel(math, state.pins[k], beta, w, a, 0.0, 0.0, *crosspiece, load, 1.0)
-        moments = (r[i] for i in _MOMENTS)
-        values.append(
-            (*bearing_forces(torque, *moments, load, radius), life_rate(torque, w, beta, rule))
-        )
-        w, a = state.speeds[k], state.accelerations[k]
-    return values
+from .step import chain_damages
 
 
 def _chain_torque(t, step):
@@ -98,26 +74,10 @@ class PropshaftLife:
     input_acceleration: float
     load_torque: float
     _shifts: tuple
+    _layout_values: tuple
     # Set over a step by a layer whose load follows the motion (the compliant
     # drive's spring): load(t, kinematic offset, kinematic output speed), N.m.
     load_over_step: Any = None
-
-    def _life_outputs(self, state) -> tuple:
-        """Each joint's bearing forces, life rate and life consumed."""
-        if self.parameter_fault:  # no load or life then
-            return tuple(v for total, error in self._life for v in (*[math.nan] * 3, total + error))
-        rows = joint_outputs(
-            self._life_rule,
-            self.bearing_radius,
-            state,
-            self.layout.working_angles,
-            self.input_speed,
-            self.input_acceleration,
-            self._crosspiece,
-        )
-        return tuple(
-            v for row, (total, error) in zip(rows, self._life) for v in (*row, total + error)
-        )
 
     def _advance(self, h: float):
         """The input shaft (`ShaftModel`), then each joint's damage over the step."""
@@ -128,8 +88,16 @@ class PropshaftLife:
             return problem
 
         spring = self.load_over_step
+        if spring is None:  # the step's own damages (`step.chain_damages`)
+            I1, I2, I3 = self._crosspiece
+            damages = chain_damages(
+                self._life_rule, h, fraction, error, speed, acceleration, self.load_torque,
+                I1, I2, I3, self._layout_values,
+            )  # fmt: skip
+            self._life = added(self._life, damages)
+            return None
 
-        def chain_at(t, load=None):
+        def chain_at(t, load):
             return chain(
                 self.layout,
                 fraction,
@@ -137,7 +105,7 @@ class PropshaftLife:
                 acceleration,
                 self._crosspiece,
                 self._inertia,
-                self.load_torque if load is None else load,
+                load,
                 error + t * (speed + 0.5 * acceleration * t),
             )
 
@@ -147,12 +115,7 @@ class PropshaftLife:
             return chain_at(t, spring(t, offset, free.speeds[-1]))
 
         damages = step_damages(
-            self._life_rule,
-            h,
-            chain_at if spring is None else loaded_at,
-            self.layout.working_angles,
-            speed,
-            acceleration,
+            self._life_rule, h, loaded_at, self.layout.working_angles, speed, acceleration
         )
         self._life = added(self._life, damages)
         return None

@@ -12,17 +12,21 @@ import math
 from ...framework.refusal import Refusal
 from ...framework.stepped import ShaftModel
 from ...framework.values import angle_limit_problem, set_start_values, value_ranges
-from ...physics.life import rule_of
-from ...physics.revolutions import angle_value, split_turns
-from .chain import chain
+from ...physics.life import LifeRule, rule_of
+from ...physics.revolutions import split_turns
+from .chain import chain, layout_values
 from .checks import angle_warnings
 from .critical_speed import critical_speed, critical_speed_warnings
+from .entries import STEPS
 from .fluctuation import equivalent_angle, speed_ratio_fluctuation
 from .geometry import HALF_PI, TWO_PI, Layout, layout
 from .life import PropshaftLife
 from .refusals import PropshaftReason
+from .step import propshaft_outputs, state_names
 from .variables import propshaft_table
 
+# Without life the outputs are computed with a rule whose values they leave out.
+_NO_LIFE = (1.0, LifeRule(1.0, 1.0, 1.0, 0.0))
 _TUBE_PARTS = ("outer_diameter", "inner_diameter", "length", "youngs_modulus", "density")
 
 
@@ -82,8 +86,8 @@ class Propshaft(PropshaftLife, ShaftModel):
             self.crosspiece_inertia_2,
             self.crosspiece_inertia_3,
         )
-        if self.life:
-            self._life_rule = rule_of(self)
+        self._life_rule = rule_of(self) if self.life else _NO_LIFE[1]
+        self._radius = self.bearing_radius if self.life else _NO_LIFE[0]
         self.layout = self._geometry()
         self._critical_speeds = tuple(
             critical_speed(*(getattr(self, f"shaft_{k}_{part}") for part in _TUBE_PARTS))
@@ -96,6 +100,7 @@ class Propshaft(PropshaftLife, ShaftModel):
         _, fraction, error = self._angle
         offsets = chain(self.layout, fraction, 0.0, 0.0, angle_error=error).offsets
         self._shifts = tuple(TWO_PI * round(o / TWO_PI) for o in offsets)
+        self._layout_values = layout_values(self.layout, self._inertia)
 
     def _angle_problem(self):
         problem = self._value_problem(self.table.PARAMETERS, self._parameter_ranges)
@@ -167,6 +172,55 @@ class Propshaft(PropshaftLife, ShaftModel):
 
     # --- stepping ----------------------------------------------------------
 
+    def run(self, time: float, h: float, inputs) -> "tuple | Refusal":
+        """The FMU's step: take `inputs` (the table's order), advance `h` s from
+        `time` and return the outputs and the inputs after it, or the Refusal
+        of the step (then only the inputs have changed).
+
+        The step is `step.propshaft_<N>_step`, the definition the FMU's C
+        runtime is generated from; a step it does not take goes through the
+        checks of the generic `run`, which name the refusal."""
+        if not self.life:
+            return ShaftModel.run(self, time, h, inputs)
+        self.set_inputs(inputs)
+        taken = STEPS[self.joints](time, h, *self.step_state(), *inputs)
+        if taken is None:
+            return ShaftModel.run(self, time, h, inputs)
+        state = len(state_names(self.joints))
+        self.set_step_state(taken[:state])
+        moved = taken[state : state + len(inputs)]
+        self.set_inputs(moved)
+        self.time = time + h
+        return taken[state + len(inputs) :], moved
+
+    def step_state(self) -> tuple:
+        """The values of `step.state_names`: what the step advances (the input
+        angle, each joint's Miner's sum) and what `start` fixed, which it reads."""
+        valid = self.parameter_fault is None
+        fixed = (
+            self._fixed()
+            if valid
+            else (0.0,) * (len(state_names(self.joints)) - 4 - 2 * self.joints)
+        )
+        sums = tuple(v for total_and_error in self._life for v in total_and_error)
+        return (*self._angle, valid, *fixed, *sums)
+
+    def _fixed(self) -> tuple:
+        """The step state's values `start` fixes, in `state_names`' order."""
+        rule = self._life_rule
+        return (
+            *self._layout_values, *self._shifts, *self._critical_speeds,
+            *self._geometry_outputs()[-2:], *self._crosspiece, self._radius, *rule,
+        )  # fmt: skip
+
+    def set_step_state(self, state) -> None:
+        """Take a state a generated step advanced (`step_state`'s values): only the
+        angle and the Miner's sums move over a step, the rest follows the parameters."""
+        turns, fraction, fraction_error = state[:3]
+        self._angle = (int(turns), float(fraction), float(fraction_error))
+        sums = state[len(state) - 2 * self.joints :]
+        self._life = [(float(sums[k]), float(sums[k + 1])) for k in range(0, len(sums), 2)]
+
     def input_problem(self, step_size: float = 0.0):
         """Why the inputs cannot be used over the next step, or None."""
         if all(abs(getattr(self, name)) <= high for name, high in self._limits):
@@ -202,25 +256,17 @@ class Propshaft(PropshaftLife, ShaftModel):
         return self._fluctuation[1]
 
     def outputs(self) -> tuple:
-        """Values of the table's outputs, in order; raises nothing for valid inputs."""
-        _, fraction, error = self._angle
-        state = self._chain(fraction, error)
-        gamma0 = angle_value(self._angle)
-        angles = [gamma0 + (o - shift) for o, shift in zip(state.offsets, self._shifts)]
-        values = [gamma0]
-        for k in range(self.joints - 1):
-            values += [angles[k], state.speeds[k], state.accelerations[k]]
-        return (
-            *values,
-            angles[-1],
-            state.speeds[-1],
-            state.accelerations[-1],
-            state.input_torque,
-            state.kinetic_energy,
-            *self._geometry_outputs(),
-            *(abs(w) / c for w, c in zip(state.speeds, self._critical_speeds)),
-            *(self._life_outputs(state) if self.life else ()),
-        )
+        """Values of the table's outputs, in order (`step.propshaft_outputs`, the
+        step's own); raises nothing for valid inputs and parameters."""
+        joints = self.joints
+        I1, I2, I3 = self._crosspiece
+        values = propshaft_outputs(
+            self._angle, self.input_speed, self.input_acceleration, self.load_torque,
+            self._layout_values, self._shifts, self._critical_speeds,
+            self._geometry_outputs()[-2:], I1, I2, I3, self._life_rule, self._radius,
+            tuple(v for total_and_error in self._life for v in total_and_error),
+        )  # fmt: skip
+        return values if self.life else values[: len(values) - 4 * joints]
 
     def _geometry_outputs(self) -> tuple:
         """Working angles, fluctuation and equivalent angle: fixed with the layout,

@@ -5,6 +5,7 @@ from collections.abc import Mapping
 from ...framework.watches import Watch
 from .. import Model, StartValueError
 from ..universal_joint.spec import TORQUE_WATCH
+from .entries import STEPS
 from .model import Propshaft
 from .variables import JOINTS, propshaft_table
 
@@ -61,4 +62,6 @@ MODEL = Model(
     check_settings=check_joints("Propshaft"),
     name_for=joints_namer("Propshaft"),
     warns=True,
+    # The step in C, one entry per number of joints (docs/codegen.md).
+    step=lambda settings: STEPS[settings.get("joints", 2)],
 )

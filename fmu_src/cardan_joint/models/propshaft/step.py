@@ -1,0 +1,180 @@
+"""The propshaft's step, written once: the definition `Propshaft.run` runs and
+the build translates into the FMU's C runtime (docs/codegen.md), so both give
+the same bits. Pure functions of floats and fixed-size tuples: the input angle
+as exact revolutions, the layout `start` fixes (`chain.layout_values`, the
+branch shifts, the tubes' critical speeds, the fluctuation) and each joint's
+Miner's sum travel in the state (`state_names`); a loop over the joints is a
+loop over a tuple's positions, which the generator unrolls.
+
+The life of a step: each joint's damage is `step_integral` of its torque T_k
+and its input shaft's speed, both the chain at that instant (`chain_torque`).
+"""
+
+import math
+
+from ...framework.values import MAX_INCREMENT, bounds
+from ...physics.life import LifeRule, compensated_add, life_outputs, rate_scale, singularity_reach
+from ...physics.life_integral import step_integral
+from ...physics.response import JointResponse, kernel
+from ...physics.revolutions import advanced, angle_value
+from .chain import (
+    ACCELERATION,
+    CHAIN_FIELDS,
+    LAYOUT_FIELDS,
+    LOAD,
+    PIN,
+    SPEED,
+    TORQUE,
+    WORKING_ANGLE,
+    chain_values,
+)
+from .variables import propshaft_table
+
+_BY_NAME = propshaft_table().BY_NAME  # every layout's inputs have the same ranges
+SPEED_LIMIT, _ACCELERATION_LIMIT, _LOAD_LIMIT = (
+    bounds(_BY_NAME[name])[1] for name in ("input_speed", "input_acceleration", "load_torque")
+)
+_INPUT_MOMENT, _OUTPUT_MOMENT = (
+    JointResponse._fields.index(name) for name in ("input_yoke_moment", "output_yoke_moment")
+)
+# `chain_torque`'s step: (joint k, the input angle's fraction and error, the
+# input speed, acceleration and the load at the step's start, the cross's
+# inertias), then the layout.
+_STEP_HEAD = 9
+
+
+def state_names(joints: int) -> tuple[str, ...]:
+    """The step state's names for `joints` joints: what the entries take after
+    (time, h) and before the inputs, and `Propshaft.step_state()` gives."""
+    layout = ("working_angle", "pin_offset", "twist", "phase", "inertia")
+    return (
+        "turns", "fraction", "fraction_error", "parameters_valid",
+        *(f"joint_{k}_{name}" for k in range(1, joints + 1) for name in layout),
+        *(f"shaft_{k}_shift" for k in range(1, joints + 1)),
+        *(f"shaft_{k}_critical_speed" for k in range(1, joints)),
+        "speed_ratio_fluctuation", "equivalent_angle",
+        "crosspiece_inertia_1", "crosspiece_inertia_2", "crosspiece_inertia_3",
+        "bearing_radius", "rated_torque", "life_constant", "life_exponent", "life_min_angle",
+        *(f"joint_{k}_life_consumed{part}" for k in range(1, joints + 1)
+          for part in ("", "_error")),
+    )  # fmt: skip
+
+
+def takes_step(h: float, parameters_valid: bool, speed: float, acceleration: float,
+               load: float) -> bool:  # fmt: skip
+    """Whether the step is taken here; otherwise the model's checks name the
+    refusal. NaN fails every comparison, so a NaN anywhere is never taken here."""
+    increment = h * (speed + 0.5 * acceleration * h)
+    end_speed = speed + acceleration * h
+    return (
+        0.0 < h < math.inf
+        and parameters_valid
+        and abs(speed) <= SPEED_LIMIT
+        and abs(acceleration) <= _ACCELERATION_LIMIT
+        and abs(load) <= _LOAD_LIMIT
+        and abs(increment) <= MAX_INCREMENT
+        and abs(end_speed) <= SPEED_LIMIT
+    )
+
+
+def chain_torque(t, step):
+    """(T_k, joint k's input shaft speed) t s into the step (`_STEP_HEAD`): the
+    chain at that instant, the input shaft at constant acceleration."""
+    joint, fraction, error, speed, acceleration, load, I1, I2, I3 = step[:_STEP_HEAD]
+    layout = step[_STEP_HEAD:]
+    input_speed = speed + acceleration * t
+    values = chain_values(
+        math, fraction, error + t * (speed + 0.5 * acceleration * t), input_speed, acceleration,
+        layout, I1, I2, I3, load,
+    )  # fmt: skip
+    torque = values[TORQUE]
+    for k in range(1, len(layout) // LAYOUT_FIELDS):
+        if k == joint:
+            torque = values[CHAIN_FIELDS * k + TORQUE]
+            input_speed = values[CHAIN_FIELDS * (k - 1) + SPEED]
+    return torque, input_speed
+
+
+def chain_damages(rule, h, fraction, error, speed, acceleration, load, I1, I2, I3,
+                  layout):  # fmt: skip
+    """Each joint's Miner damage over a step of `h` s from the input angle's
+    `fraction` (+ `error`), the input shaft at `speed` and constant
+    `acceleration`. The torques share the singularities of the largest working
+    angle."""
+    peak = layout[WORKING_ANGLE]
+    for k in range(1, len(layout) // LAYOUT_FIELDS):
+        peak = max(peak, layout[LAYOUT_FIELDS * k + WORKING_ANGLE])
+    reach = singularity_reach(peak)
+    scale = rate_scale(rule) / 3600.0
+    damages = ()
+    for k in range(len(layout) // LAYOUT_FIELDS):
+        step = (k, fraction, error, speed, acceleration, load, I1, I2, I3) + layout
+        beta = layout[LAYOUT_FIELDS * k + WORKING_ANGLE]
+        integral = step_integral(
+            chain_torque, step, h, speed, acceleration, beta, 0.0, 0.0, rule.min_angle,
+            rule.exponent, reach,
+        )  # fmt: skip
+        damages = damages + (scale * integral,)
+    return damages
+
+
+def propshaft_outputs(angle, speed, acceleration, load, layout, shifts, critical_speeds, fixed, I1,
+                      I2, I3, rule, radius, sums):  # fmt: skip
+    """The outputs at input angle `angle` (`Turns`), in the table's order: every shaft's
+    angle (`shifts` put it on its branch), speed and acceleration, the input
+    torque and energy, the `fixed` geometry outputs, each tube's speed over its
+    critical speed, each joint's bearing forces, life rate and Miner's sum
+    (`sums`: total and error per joint)."""
+    fraction, error = angle[1], angle[2]
+    values = chain_values(math, fraction, error, speed, acceleration, layout, I1, I2, I3, load)
+    start = angle_value(angle)
+    outputs = (start,)
+    for k in range(len(shifts)):
+        offset = values[CHAIN_FIELDS * k]
+        outputs = outputs + (start + (offset - shifts[k]),)
+        outputs = outputs + values[CHAIN_FIELDS * k + SPEED : CHAIN_FIELDS * k + ACCELERATION + 1]
+    outputs = outputs + values[-2:]
+    for k in range(len(shifts)):
+        outputs = outputs + (layout[LAYOUT_FIELDS * k + WORKING_ANGLE],)
+    outputs = outputs + fixed
+    for k in range(len(critical_speeds)):
+        outputs = outputs + (abs(values[CHAIN_FIELDS * k + SPEED]) / critical_speeds[k],)
+    w, a = speed, acceleration
+    for k in range(len(shifts)):
+        joint = values[CHAIN_FIELDS * k : CHAIN_FIELDS * (k + 1)]
+        beta = layout[LAYOUT_FIELDS * k + WORKING_ANGLE]
+        r = kernel(math, joint[PIN], beta, w, a, 0.0, 0.0, I1, I2, I3, joint[LOAD], 1.0)
+        outputs = outputs + life_outputs(
+            rule, radius, sums[2 * k] + sums[2 * k + 1], joint[TORQUE], r[_INPUT_MOMENT],
+            r[_OUTPUT_MOMENT], joint[LOAD], w, beta,
+        )  # fmt: skip
+        w, a = joint[SPEED], joint[ACCELERATION]
+    return outputs
+
+
+def propshaft_advanced(h, angle, parameters_valid, layout, shifts, critical_speeds, fixed,
+                       crosspiece, life, sums, speed, acceleration, load):  # fmt: skip
+    """A step `takes_step` takes, of `h` s with the input shaft at constant
+    acceleration and the load held: the state (`state_names`), the inputs
+    after the step and the outputs. Each joint's Miner's sum gains its damage
+    (from the values before the step), compensated."""
+    fraction, error = angle[1], angle[2]
+    I1, I2, I3 = crosspiece
+    radius, rated_torque, life_constant, life_exponent, min_angle = life
+    rule = LifeRule(rated_torque, life_constant, life_exponent, min_angle)
+    end_speed = speed + acceleration * h
+    end = advanced(angle, h * (speed + 0.5 * acceleration * h))
+    damages = chain_damages(rule, h, fraction, error, speed, acceleration, load, I1, I2, I3,
+                            layout)  # fmt: skip
+    added = ()
+    for k in range(len(damages)):
+        total, total_error = sums[2 * k], sums[2 * k + 1]
+        if damages[k] != 0.0:
+            total, total_error = compensated_add(total, total_error, damages[k])
+        added = added + (total, total_error)
+    outputs = propshaft_outputs(
+        end, end_speed, acceleration, load, layout, shifts, critical_speeds, fixed, I1, I2, I3,
+        rule, radius, added,
+    )  # fmt: skip
+    state = end + (parameters_valid,) + layout + shifts + critical_speeds + fixed + crosspiece
+    return state + life + added + (end_speed, acceleration, load) + outputs
