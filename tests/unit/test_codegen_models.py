@@ -60,8 +60,9 @@ def test_every_written_step_in_c_gives_the_python_steps_bits(written):
     spec, settings, step, c_step = written
     differ, taken, refused = compared(spec, settings, step, c_step, CASES)
     assert differ == 0
-    # Both decisions are exercised: the cases are not all refused, nor all taken.
-    assert taken > CASES // 5 and refused > CASES // 50, (taken, refused)
+    # Both decisions are exercised: the cases are not all refused, nor all taken
+    # (a 3-joint propshaft's guards refuse four in five of the table's draws).
+    assert taken > CASES // 10 and refused > CASES // 50, (taken, refused)
 
 
 def test_each_models_run_takes_the_step_its_spec_names(written):
