@@ -41,10 +41,14 @@ def typical(rng: random.Random, variable) -> float:
 
 def sized(rng: random.Random, variable) -> float:
     """A parameter in use: a third of its start value to a little more than it
-    (a design near the default), or `typical` for one that starts at zero."""
+    (a design near the default); one that starts at zero stays there half the
+    time, or is 1e-3 to 0.1 of either sign (a propshaft's shaft angles and
+    phases: larger ones would put most 4-joint layouts past their guards)."""
     if variable.start:
         return variable.start * 10.0 ** rng.uniform(-0.5, 0.04)
-    return typical(rng, variable)
+    if rng.random() < 0.5:
+        return 0.0
+    return math.copysign(10.0 ** rng.uniform(-3.0, -1.0), rng.uniform(-1.0, 1.0))
 
 
 def extreme(rng: random.Random, variable) -> float:
