@@ -19,7 +19,7 @@ BAD = (math.nan, math.inf, -math.inf)
 STEP_SIZES = (0.0, -1e-3, math.nan, math.inf, 1e300)
 # A long step at a high speed costs a life integral over every turn of it: the
 # steps drawn turn at most this far (rad) at the inputs' speeds.
-LONGEST_TURN = 2000.0
+LONGEST_TURN = 200.0
 
 
 def _bounds(variable) -> tuple[float, float]:
@@ -39,13 +39,15 @@ def typical(rng: random.Random, variable) -> float:
     return magnitude if rng.random() < 0.5 else -magnitude
 
 
-def sized(rng: random.Random, variable) -> float:
-    """A parameter in use: a third of its start value to a little more than it
-    (a design near the default); one that starts at zero stays there half the
-    time, or is 1e-3 to 0.1 of either sign (a propshaft's shaft angles and
-    phases: larger ones would put most 4-joint layouts past their guards)."""
+def sized(rng: random.Random, variable, scale: float) -> float:
+    """A parameter in use: its start value times `scale` (a design near the
+    default, scaled alike in each unit, so a tube's bore stays below its outer
+    diameter and a shaft's angle below the guard); one that starts at zero stays
+    there half the time, or is 1e-3 to 0.1 of either sign (a propshaft's shaft
+    angles and phases: larger ones would put most 4-joint layouts past their
+    guards)."""
     if variable.start:
-        return variable.start * 10.0 ** rng.uniform(-0.5, 0.04)
+        return variable.start * scale
     if rng.random() < 0.5:
         return 0.0
     return math.copysign(10.0 ** rng.uniform(-3.0, -1.0), rng.uniform(-1.0, 1.0))
@@ -85,8 +87,13 @@ def input_value(rng: random.Random, variable, bad: float) -> float:
 def parameters(rng: random.Random, table) -> dict[str, float]:
     """Every parameter in use; now and then one at an extreme of its range, or
     one beyond it (the parameters then refuse every step)."""
-    values = {n: _within(sized(rng, table.BY_NAME[n]), *_bounds(table.BY_NAME[n]))
-              for n in table.PARAMETERS}  # fmt: skip
+    # A third of the start values to a little more, one factor per unit.
+    scales: dict[str, float] = {}
+    values = {}
+    for n in table.PARAMETERS:
+        variable = table.BY_NAME[n]
+        scale = scales.setdefault(variable.unit, 10.0 ** rng.uniform(-0.5, 0.04))
+        values[n] = _within(sized(rng, variable, scale), *_bounds(variable))
     name = rng.choice(table.PARAMETERS)
     draw = rng.random()
     if draw < 0.1:
