@@ -31,6 +31,20 @@ RUNTIME_MUTATIONS = (
         ("tests/unit/test_runtime_units.py", "-k", "table"),
     ),
     Mutation(
+        "runtime: a value reference beyond the slave's is not served from the arrays",
+        NATIVE + "fast_references.c",
+        "if (vr[i] >= references || !(fast->serves[vr[i]] & needed))",
+        "if (!(fast->serves[vr[i] % references] & needed))",
+        ("tests/fmu/test_fast_path.py", "-k", "plain_calls"),
+    ),
+    Mutation(
+        "runtime: only inputs are written into the arrays",
+        NATIVE + "fast_references.c",
+        "!(fast->serves[vr[i]] & needed)",
+        "!fast->serves[vr[i]]",
+        ("tests/fmu/test_fast_path.py", "-k", "plain_calls"),
+    ),
+    Mutation(
         "runtime: a KeyboardInterrupt in the slave is handed back to the host",
         NATIVE + "slave_object.c",
         "    p_PyErr_SetInterrupt();",

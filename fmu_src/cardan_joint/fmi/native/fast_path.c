@@ -129,15 +129,12 @@ static int set_up(struct instance *in, struct fast_path *fast)
 {
     if (!claim(in, fast))
         return 0;
-    double *known = realloc(fast->known, fast->known_size * sizeof *known);
-    if (known)
-        fast->known = known;
-    double *values = known ? realloc(fast->values, fast->outputs * sizeof *values) : NULL;
-    if (values)
-        fast->values = values;
+    double *flat = realloc(fast->flat, (fast->known_size + fast->outputs) * sizeof *flat);
+    if (flat)
+        fast->flat = fast->known = flat, fast->values = flat + fast->first_output;
     /* A reply converts here first: a malformed one writes nothing. */
     long reply_size = fast->outputs + fast->known_size + fast->state_size;
-    double *scratch = values ? realloc(fast->scratch, reply_size * sizeof *scratch) : NULL;
+    double *scratch = flat ? realloc(fast->scratch, reply_size * sizeof *scratch) : NULL;
     if (scratch)
         fast->scratch = scratch;
     double *state = scratch ? realloc(fast->state, (fast->state_size + 1) * sizeof *state) : NULL;
@@ -172,10 +169,11 @@ static void drop(struct instance *in)
 {
     struct fast_path *fast = in->fast;
     forget(fast);
-    free(fast->known);
-    free(fast->values);
+    free(fast->flat);
     free(fast->scratch);
     free(fast->table);
+    free(fast->serves);
+    free(fast->single);
     free(fast->state);
     free(fast->limits);
     free(fast->arguments);

@@ -22,7 +22,9 @@ struct fast_path {
     long inputs, known_size, first_output, outputs;
     int stale;          /* the outputs array is not current */
     int inputs_written; /* the slave has not taken the host's latest inputs yet */
-    double *known, *values;
+    /* One block, flat[i] the value of flat index i: the known values (inputs,
+     * parameters), then `values`, the outputs (first_output == known_size). */
+    double *flat, *known, *values;
     double *scratch; /* outputs + known_size + state_size: a reply converted before it is written */
     /* The generated step (generated_step.c, docs/codegen.md), when the build
      * compiled one in and the slave hands over its step state: state_size
@@ -41,6 +43,13 @@ struct fast_path {
      * {n, start[0..n], indices...}: value reference vr < n holds the flat
      * indices indices[start[vr]] to indices[start[vr + 1] - 1]. */
     long long *table;
+    /* With a table: each value reference's SERVES_* flags, set once when
+     * the table is taken, so that a call's references are checked by a look-up
+     * each instead of a walk over their indices. */
+    unsigned char *serves;
+    /* With a table: each value reference's one flat index, or -1 when it has
+     * none or several (flat_of then); most have one, read without a loop. */
+    long long *single;
     /* The value references a getReal reads, while it asks fast_outputs. */
     const unsigned *reading;
     size_t reading_count;
@@ -50,9 +59,32 @@ struct fast_path {
  * Warning), and its values go through plain calls. */
 int sizes_taken(struct instance *in, const struct fast_path *fast);
 int fast_table(struct fast_path *fast, const char *bytes, size_t size);
-/* The flat indices of value reference vr, and how many (0: none). */
-long long flat_of(const struct fast_path *fast, unsigned vr, const long long **indices,
-                  long long *own);
+/* The one flat index of value reference vr, or -1 (flat_of then); only for a
+ * reference fast_serves has taken. */
+static inline long long single_index(const struct fast_path *fast, unsigned vr)
+{
+    return fast->single ? fast->single[vr] : (long long)vr;
+}
+/* A value reference's flags in fast->serves: it has flat indices (all within
+ * the arrays, as fast_table checked), and they are all inputs. */
+enum { SERVES_VALUE = 1, SERVES_INPUT = 2 };
+/* The flat indices of value reference vr, and how many (0: none).  Inline:
+ * every Real read and input write takes it once per reference. */
+static inline long long flat_of(const struct fast_path *fast, unsigned vr,
+                                const long long **indices, long long *own)
+{
+    const long long *table = fast->table;
+    if (!table) { /* no table: the references are the flat indices */
+        *own = vr;
+        *indices = own;
+        return 1;
+    }
+    if (vr >= (unsigned long long)table[0])
+        return 0; /* FMI 3's time, or a reference the slave does not have */
+    const long long *start = table + 1;
+    *indices = start + table[0] + 1 + start[vr];
+    return start[vr + 1] - start[vr];
+}
 long fast_call(struct instance *in, enum fast_method method, double time, double step);
 /* The generated step: 1 when it took the step (the arrays written), 0 when the
  * slave must (generated_step.c, compiled in only with the model's step). */

@@ -29,6 +29,28 @@ int sizes_taken(struct instance *in, const struct fast_path *fast)
     return taken;
 }
 
+/* Each reference's SERVES_* flags and single index, from a table fast_table
+ * has checked. */
+static int flag_references(struct fast_path *fast)
+{
+    long long refs = fast->table[0];
+    fast->serves = malloc((size_t)refs);
+    fast->single = malloc((size_t)refs * sizeof *fast->single);
+    if (!fast->serves || !fast->single)
+        return 0;
+    for (long long vr = 0; vr < refs; vr++) {
+        const long long *indices;
+        long long own, count = flat_of(fast, (unsigned)vr, &indices, &own);
+        unsigned char flags = count > 0 ? SERVES_VALUE | SERVES_INPUT : 0;
+        for (long long k = 0; k < count; k++)
+            if (indices[k] >= fast->inputs)
+                flags &= (unsigned char)~SERVES_INPUT;
+        fast->serves[vr] = flags;
+        fast->single[vr] = count == 1 ? indices[0] : -1;
+    }
+    return 1;
+}
+
 /* Takes the table of FMI 3's value references (none: FMI 2's are the flat
  * indices); 0 if it is malformed: each reference's start from 0 up, never
  * past the indices, and every index within the arrays (flat_of reads them all
@@ -36,7 +58,11 @@ int sizes_taken(struct instance *in, const struct fast_path *fast)
 int fast_table(struct fast_path *fast, const char *bytes, size_t size)
 {
     free(fast->table);
+    free(fast->serves);
+    free(fast->single);
     fast->table = NULL;
+    fast->serves = NULL;
+    fast->single = NULL;
     if (size == 0)
         return 1;
     long long n = (long long)(size / 8), limit = fast->first_output + fast->outputs;
@@ -50,24 +76,7 @@ int fast_table(struct fast_path *fast, const char *bytes, size_t size)
         ok = fast->table[vr] <= fast->table[vr + 1];
     for (long long i = refs + 2; ok && i < n; i++)
         ok = fast->table[i] >= 0 && fast->table[i] < limit;
-    return ok;
-}
-
-/* The flat indices of value reference vr (0 if none: FMI 3's time, an unknown one). */
-long long flat_of(const struct fast_path *fast, unsigned vr, const long long **indices,
-                  long long *own)
-{
-    const long long *table = fast->table;
-    if (!table) {
-        *own = vr;
-        *indices = own;
-        return 1;
-    }
-    if (vr >= (unsigned long long)table[0])
-        return 0;
-    const long long *start = table + 1;
-    *indices = start + table[0] + 1 + start[vr];
-    return start[vr + 1] - start[vr];
+    return ok && flag_references(fast);
 }
 
 int fast_serves(const struct instance *in, const unsigned vr[], size_t n, int inputs_only)
@@ -75,22 +84,18 @@ int fast_serves(const struct instance *in, const unsigned vr[], size_t n, int in
     const struct fast_path *fast = in->fast;
     if (!fast)
         return 0;
-    long long limit = inputs_only ? fast->inputs : fast->first_output + fast->outputs, own;
-    if (!fast->table) { /* FMI 2: each value reference is its flat index */
+    if (!fast->table) { /* each value reference is its flat index */
+        long long limit = inputs_only ? fast->inputs : fast->first_output + fast->outputs;
         for (size_t i = 0; i < n; i++)
             if (vr[i] >= limit)
                 return 0;
         return 1;
     }
-    for (size_t i = 0; i < n; i++) {
-        const long long *indices;
-        long long count = flat_of(fast, vr[i], &indices, &own);
-        if (count == 0)
+    unsigned long long references = (unsigned long long)fast->table[0];
+    unsigned char needed = inputs_only ? SERVES_INPUT : SERVES_VALUE;
+    for (size_t i = 0; i < n; i++)
+        if (vr[i] >= references || !(fast->serves[vr[i]] & needed))
             return 0;
-        for (long long k = 0; k < count; k++)
-            if (indices[k] >= limit)
-                return 0;
-    }
     return 1;
 }
 

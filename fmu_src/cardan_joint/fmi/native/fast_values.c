@@ -112,14 +112,16 @@ void fast_after(struct instance *in)
 void fast_set(struct instance *in, const unsigned vr[], size_t n, const double value[])
 {
     struct fast_path *fast = in->fast;
-    long long own;
-    for (size_t i = 0; !fast->table && i < n; i++)
-        fast->known[vr[i]] = value[i];
-    for (size_t i = 0; fast->table && i < n; i++) {
+    for (size_t i = 0; i < n; i++) {
+        long long at = single_index(fast, vr[i]);
+        if (at >= 0) {
+            fast->flat[at] = *value++;
+            continue;
+        }
         const long long *indices;
-        long long count = flat_of(fast, vr[i], &indices, &own);
+        long long own, count = flat_of(fast, vr[i], &indices, &own);
         for (long long k = 0; k < count; k++)
-            fast->known[indices[k]] = *value++;
+            fast->flat[indices[k]] = *value++;
     }
     fast->stale = fast->inputs_written = 1;
 }
@@ -137,18 +139,18 @@ fmi2Status fast_get(struct instance *in, const unsigned vr[], size_t n, double v
         /* Held outputs (warning) are evaluated, and warned about, at every read. */
         fast->stale = status != fmi2OK;
     }
-    long long own, first_output = fast->first_output;
-    for (size_t i = 0; !fast->table && i < n; i++)
-        value[i] = vr[i] < first_output ? fast->known[vr[i]] : fast->values[vr[i] - first_output];
-    for (size_t i = 0; fast->table && i < n; i++) {
+    for (size_t i = 0; i < n; i++) {
+        long long at = single_index(fast, vr[i]);
+        if (at >= 0) {
+            *value++ = fast->flat[at];
+            continue;
+        }
         const long long *indices;
-        long long count = flat_of(fast, vr[i], &indices, &own);
+        long long own, count = flat_of(fast, vr[i], &indices, &own);
         for (long long k = 0; k < count; k++)
-            *value++ = indices[k] < fast->first_output
-                           ? fast->known[indices[k]]
-                           : fast->values[indices[k] - fast->first_output];
+            *value++ = fast->flat[indices[k]];
     }
-    /* pythonfmu's getReal answers OK: the warning is in the log (leave() sees it). */
+/* pythonfmu's getReal answers OK: the warning is in the log (leave() sees it). */
     return status == fmi2Warning ? fmi2OK : (fmi2Status)status;
 }
 

@@ -124,10 +124,11 @@ static const char *fixed_parameter(const struct instance *in, fmi2ValueReference
     return NULL;
 }
 
+/* inputs_only: fast_serves(in, vr, n, 1), as the caller found it. */
 static fmi2Status set_real(struct instance *in, const fmi2ValueReference vr[], size_t n,
-                           const fmi2Real value[])
+                           const fmi2Real value[], int inputs_only)
 {
-    if (fast_serves(in, vr, n, 1)) {
+    if (inputs_only) {
         fast_set(in, vr, n, value);
         return leave(in, fmi2OK);
     }
@@ -153,7 +154,7 @@ fmi2Status fmi2SetReal(fmi2Component c, const fmi2ValueReference vr[], size_t n,
     for (size_t i = 0; in->state == STATE_STEP_COMPLETE && !inputs_only && i < n; i++)
         refused += fixed_parameter(in, vr[i]) != NULL;
     if (!refused)
-        return set_real(in, vr, n, value);
+        return set_real(in, vr, n, value, inputs_only);
     fmi2ValueReference *kept_vr = malloc(n * sizeof *kept_vr);
     fmi2Real *kept_value = malloc(n * sizeof *kept_value);
     if (!kept_vr || !kept_value) {
@@ -170,7 +171,8 @@ fmi2Status fmi2SetReal(fmi2Component c, const fmi2ValueReference vr[], size_t n,
         else
             kept_vr[kept] = vr[i], kept_value[kept++] = value[i];
     }
-    fmi2Status status = kept ? set_real(in, kept_vr, kept, kept_value) : fmi2OK;
+    fmi2Status status =
+        kept ? set_real(in, kept_vr, kept, kept_value, fast_serves(in, kept_vr, kept, 1)) : fmi2OK;
     free(kept_vr), free(kept_value);
     return status > fmi2Error ? status : fmi2Error;
 }
