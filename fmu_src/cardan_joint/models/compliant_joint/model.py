@@ -24,7 +24,14 @@ from ...framework.values import MAX_INCREMENT, set_start_values, value_ranges
 from ..universal_joint.model import CardanJoint
 from ..universal_joint.step import LIFE_STATE
 from .refusals import CompliantReason
-from .step import STATE, compliant_joint_step, spring_load, spring_outputs, twist_change
+from .step import (
+    STATE,
+    compliant_joint_step,
+    spring_load,
+    spring_loaded_torque,
+    spring_outputs,
+    twist_change,
+)
 from .variables import COMPLIANT_JOINT
 
 # The step's parameters: the table's, but the one the slave's watch alone reads.
@@ -155,7 +162,8 @@ class CompliantDrive(ValueChecks):
 
     def _spring_over_step(self, speed: float, acceleration: float):
         """The spring's torque t s into the step, from the rigid drive's kinematic
-        offset and speed then (`outputs`' formula): the load its life integrates."""
+        offset and speed then (`outputs`' formula): the load its life integrates
+        (`PropshaftLife`'s hook; the joint's is `CompliantJoint`'s)."""
         rigid = self.rigid
         spring = (self._lag, rigid.input_speed, rigid.input_acceleration, speed, acceleration,
                   self.torsional_stiffness, self.torsional_damping)  # fmt: skip
@@ -259,6 +267,12 @@ class CompliantJoint(CompliantDrive):
         """Take a state a generated step advanced (`step_state`'s values)."""
         self.rigid.set_step_state(state[: len(LIFE_STATE)])
         self._lag = float(state[len(LIFE_STATE)])
+
+    def _spring_over_step(self, speed: float, acceleration: float):
+        """The joint's life under the spring, as the generated step takes it:
+        `step.spring_loaded_torque` from the spring's start (`JointLife`'s hook)."""
+        spring = (self._lag, speed, acceleration, self.torsional_stiffness, self.torsional_damping)
+        return spring_loaded_torque, spring
 
     def _kinematics(self) -> tuple[float, float]:
         r = self.rigid.response()
