@@ -48,16 +48,18 @@ def random_inputs(rng: random.Random) -> dict:
     return values
 
 
-def random_run(seed: int, steps: int = 100):
+def random_run(seed: int, steps: int = 100, inputs=INPUTS, inputs_of=random_inputs):
+    """A run of `steps` random steps: `inputs_of(rng)` the `inputs` of each."""
+
     def run(instance):
         rng = random.Random(seed)
         seen = [instance.exit_initialization_mode()]
         states = []
         for _ in range(steps):
-            instance.set(**random_inputs(rng))
+            instance.set(**inputs_of(rng))
             seen.append(instance.try_step(rng.choice([1e-4, 1e-3, 1e-3, 0.01, 0.1])))
             if rng.random() < 0.5:  # a read after the step, or the next step at once
-                seen.append(bits(instance.values(*INPUTS, *instance.outputs)))
+                seen.append(bits(instance.values(*inputs, *instance.outputs)))
             draw = rng.random()
             if draw < 0.05:
                 states.append(instance.get_state())

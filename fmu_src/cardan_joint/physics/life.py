@@ -19,7 +19,6 @@ from typing import NamedTuple
 
 from .life_integral import FLAT_REACH, step_integral
 from .life_torque import joint_torque
-from .response import JointResponse, kernel
 
 _RAD_TO_DEG = 180.0 / math.pi
 _RAD_S_TO_RPM = 30.0 / math.pi
@@ -109,33 +108,16 @@ def _damage(rule: LifeRule, torque_at, step, h, b, w1, a1, rb, ab) -> float:
     return total * rate_scale(rule) / 3600.0
 
 
-_INPUT_TORQUE = JointResponse._fields.index("input_torque")
-_SPEED_RATIO = JointResponse._fields.index("speed_ratio")
-_CARDAN_ERROR = JointResponse._fields.index("cardan_error")
-_OUTPUT_SPEED = JointResponse._fields.index("output_speed")
-
-
-def loaded_torque(t, step):
-    """(T1, input speed) t s into a step under a load that follows the joint's
-    motion: `step` = (psi, b, w1, a1, rb, ab, I1, I2, I3, load_at) at the
-    step's start, `load_at(t, cardan_error, output_speed)` the load. T1 is
-    affine in the load with slope cos b / D (the speed ratio), so one kernel
-    call gives both the kinematics the load needs and the torque."""
-    psi, b, w1, a1, rb, ab, I1, I2, I3, load_at = step
-    speed = w1 + a1 * t
-    r = kernel(
-        math, psi + t * (w1 + 0.5 * a1 * t), b + t * (rb + 0.5 * ab * t), speed, a1,
-        rb + ab * t, ab, I1, I2, I3, 0.0, 1.0,
-    )  # fmt: skip
-    load = load_at(t, r[_CARDAN_ERROR], r[_OUTPUT_SPEED])
-    return r[_INPUT_TORQUE] + r[_SPEED_RATIO] * load, speed
-
-
-def step_damage_loaded(rule: LifeRule, h, psi, b, w1, a1, rb, ab, inertia, load_at) -> float:
+def step_damage_loaded(
+    rule: LifeRule, h, psi, b, w1, a1, rb, ab, inertia, torque_at, load
+) -> float:
     """`step_damage` with a load that follows the joint's motion over the step (a
-    spring at the output): `load_at(t, cardan_error, output_speed)`, N.m."""
-    step = (psi, b, w1, a1, rb, ab, inertia[0], inertia[1], inertia[2], load_at)
-    return _damage(rule, loaded_torque, step, h, b, w1, a1, rb, ab)
+    spring at the output): `torque_at(t, step)` gives (T1, input speed) t s into
+    it, `step` = (psi, b, w1, a1, rb, ab, I1, I2, I3, *load, sin b, cos b) at
+    the step's start, `load` the parameters of the load's law (the spring's
+    start). The generated step and the Python one both come here: same bits."""
+    step = (psi, b, w1, a1, rb, ab, *inertia, *load, math.sin(b), math.cos(b))
+    return _damage(rule, torque_at, step, h, b, w1, a1, rb, ab)
 
 
 def life_outputs(

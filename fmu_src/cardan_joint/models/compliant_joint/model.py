@@ -24,7 +24,12 @@ from ...framework.values import MAX_INCREMENT, set_start_values, value_ranges
 from ..universal_joint.model import CardanJoint
 from ..universal_joint.step import LIFE_STATE
 from .refusals import CompliantReason
-from .step import STATE, compliant_joint_step, spring_load, spring_outputs, twist_change
+from .step import (
+    compliant_joint_step,
+    spring_loaded_torque,
+    spring_outputs,
+    twist_change,
+)
 from .variables import COMPLIANT_JOINT
 
 # The step's parameters: the table's, but the one the slave's watch alone reads.
@@ -120,7 +125,31 @@ class CompliantDrive(ValueChecks):
 
     # --- stepping ------------------------------------------------------------
 
-    run = SteppedModel.run  # the FMU's step: inputs, step, outputs
+    def run(self, time: float, h: float, inputs) -> "tuple | Refusal":
+        """The FMU's step (`SteppedModel.run`'s contract): the drive's written
+        step (`_written_step`), the definition the FMU's C runtime is generated
+        from; a step it does not take goes through the checks, which name the
+        refusal."""
+        self.set_inputs(inputs)
+        state = self.step_state()
+        taken = self._written_step(time, h, state, inputs)
+        if taken is None:
+            return SteppedModel.run(self, time, h, inputs)  # type: ignore[arg-type]
+        self.set_step_state(taken[: len(state)])
+        moved = taken[len(state) : len(state) + len(inputs)]
+        self.set_inputs(moved)
+        self.time = time + h
+        return taken[len(state) + len(inputs) :], moved
+
+    def _written_step(self, time: float, h: float, state: tuple, inputs) -> tuple | None:
+        """The step's entry (`step_state()`'s values, then the inputs...), or None."""
+        raise NotImplementedError(f"{type(self).__name__} must name its step")
+
+    def step_state(self) -> tuple:
+        raise NotImplementedError(f"{type(self).__name__} must give its step state")
+
+    def set_step_state(self, state) -> None:
+        raise NotImplementedError(f"{type(self).__name__} must take its step state")
 
     def step(self, step_size: float) -> Refusal | None:
         """Advance by `step_size`; None, or the Refusal (then nothing has changed)."""
@@ -153,17 +182,10 @@ class CompliantDrive(ValueChecks):
         self.output_speed = speed + acceleration * h
         return None
 
-    def _spring_over_step(self, speed: float, acceleration: float):
-        """The spring's torque t s into the step, from the rigid drive's kinematic
-        offset and speed then (`outputs`' formula): the load its life integrates."""
-        rigid = self.rigid
-        spring = (self._lag, rigid.input_speed, rigid.input_acceleration, speed, acceleration,
-                  self.torsional_stiffness, self.torsional_damping)  # fmt: skip
-
-        def torque(t: float, offset: float, kinematic_speed: float) -> float:
-            return spring_load(t, offset, kinematic_speed, *spring)
-
-        return torque
+    def _spring_over_step(self, speed: float, acceleration: float) -> tuple:
+        """(torque_at, load): the rigid drive's life under the spring over the
+        step, as the generated step takes it (the rigid drive's `load_over_step`)."""
+        raise NotImplementedError(f"{type(self).__name__} must give its spring's torque")
 
     # --- outputs -------------------------------------------------------------
 
@@ -232,21 +254,8 @@ class CompliantJoint(CompliantDrive):
     def __init__(self, **values: float) -> None:
         super().__init__(CardanJoint(), COMPLIANT_JOINT, "compliant joint", **values)
 
-    def run(self, time: float, h: float, inputs) -> "tuple | Refusal":
-        """The FMU's step (`SteppedModel.run`'s contract): `step.compliant_joint_step`,
-        the definition the FMU's C runtime is generated from; a step it does not
-        take goes through the generic checks, which name the refusal."""
-        self.set_inputs(inputs)
-        taken = compliant_joint_step(time, h, *self.step_state(), *inputs, *_STEP_PARAMETERS(self))
-        if taken is None:
-            # The checked step every compliant drive runs (`CompliantDrive.run`).
-            return SteppedModel.run(self, time, h, inputs)  # type: ignore[arg-type]
-        state = len(STATE)
-        self.set_step_state(taken[:state])
-        moved = taken[state : state + len(inputs)]
-        self.set_inputs(moved)
-        self.time = time + h
-        return taken[state + len(inputs) :], moved
+    def _written_step(self, time: float, h: float, state: tuple, inputs) -> tuple | None:
+        return compliant_joint_step(time, h, *state, *inputs, *_STEP_PARAMETERS(self))
 
     def step_state(self) -> tuple:
         """The values of `step.STATE`: the rigid joint's, with this drive's
@@ -259,6 +268,12 @@ class CompliantJoint(CompliantDrive):
         """Take a state a generated step advanced (`step_state`'s values)."""
         self.rigid.set_step_state(state[: len(LIFE_STATE)])
         self._lag = float(state[len(LIFE_STATE)])
+
+    def _spring_over_step(self, speed: float, acceleration: float):
+        """The joint's life under the spring, as the generated step takes it:
+        `step.spring_loaded_torque` from the spring's start (`JointLife`'s hook)."""
+        spring = (self._lag, speed, acceleration, self.torsional_stiffness, self.torsional_damping)
+        return spring_loaded_torque, spring
 
     def _kinematics(self) -> tuple[float, float]:
         r = self.rigid.response()

@@ -11,12 +11,13 @@ speed), so every compliant drive shares them (the CompliantPropshaft too).
 import math
 
 from ...framework.values import MAX_INCREMENT, bounds
-from ...physics.life import LifeRule, _damage
+from ...physics.life import LifeRule, step_damage_loaded
+from ...physics.life_torque import turned
 from ...physics.response import (
     cardan_error_at,
     crosspiece_motion,
     euler_moments,
-    pose,
+    pose_of,
     yoke_reactions,
 )
 from ..universal_joint import variables as joint_table
@@ -137,13 +138,15 @@ def spring_outputs(
 def spring_loaded_torque(t: float, step) -> tuple[float, float]:
     """(T1, input speed) `t` s into a step of the joint under the spring:
     `step` = `life_torque.joint_torque`'s with the spring's start (lag, the
-    output shaft's speed and acceleration, k, c) in place of the load. The
-    kernel's parts T1 and the spring need (`response`): T1 is affine in the
-    load with slope cos b / D (the speed ratio), so the kinematics give the
-    spring's torque and T1 without load gives T1 under it."""
-    psi, b, w1, a1, rb, ab, I1, I2, I3, lag, wo, ao, stiffness, damping = step
+    output shaft's speed and acceleration, k, c) in place of the load, the
+    bend's sine and cosine at the start last. The kernel's parts T1 and the
+    spring need (`response`): T1 is affine in the load with slope cos b / D
+    (the speed ratio), so the kinematics give the spring's torque and T1
+    without load gives T1 under it."""
+    psi, b, w1, a1, rb, ab, I1, I2, I3, lag, wo, ao, stiffness, damping, sb0, cb0 = step
     speed = w1 + a1 * t
-    s, c, sb, cb, D, rD = pose(math, psi + t * (w1 + 0.5 * a1 * t), b + t * (rb + 0.5 * ab * t))[2:]
+    sb, cb = turned(b, sb0, cb0, t * (rb + 0.5 * ab * t))
+    s, c, sb, cb, D, rD = pose_of(math, psi + t * (w1 + 0.5 * a1 * t), sb, cb)[2:]
     motion = crosspiece_motion(s, c, sb, cb, D, rD, speed, a1, rb + ab * t, ab)
     M1, M2, M3 = euler_moments(I1, I2, I3, *motion[2:])
     unloaded = yoke_reactions(M1, M2, M3, s, c, sb, cb, rD, 0.0)[2]
@@ -211,11 +214,9 @@ def compliant_joint_step(
     rule = LifeRule(rated_torque, life_constant, life_exponent, life_min_angle)
     psi = fraction + (phase_fraction + (fraction_error + phase_error))  # as `response`'s
     spring = (lag, output_speed, output_acceleration, stiffness, damping)
-    step = (psi, bend_angle, input_speed, input_acceleration, bend_angle_rate,
-            bend_angle_acceleration, *inertia, *spring)  # fmt: skip
-    damage = _damage(
-        rule, spring_loaded_torque, step, h, bend_angle, input_speed, input_acceleration,
-        bend_angle_rate, bend_angle_acceleration,
+    damage = step_damage_loaded(
+        rule, h, psi, bend_angle, input_speed, input_acceleration, bend_angle_rate,
+        bend_angle_acceleration, inertia, spring_loaded_torque, spring,
     )  # fmt: skip
     consumed = life_added(life_consumed, life_consumed_error, damage)
     end_lag = lag + change

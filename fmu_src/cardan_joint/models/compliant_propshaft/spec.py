@@ -5,6 +5,7 @@ from ..compliant_joint.spec import TWIST_WATCH
 from ..propshaft.spec import PROPSHAFT_WATCHES, check_joints, joints_namer
 from ..propshaft.variables import JOINTS
 from .model import CompliantPropshaft
+from .step import STEPS
 from .variables import compliant_propshaft_table
 
 MODEL = Model(
@@ -24,4 +25,6 @@ MODEL = Model(
     check_settings=check_joints("CompliantPropshaft"),
     name_for=joints_namer("CompliantPropshaft"),
     warns=True,
+    # The step in C, one entry per number of joints (docs/codegen.md).
+    step=lambda settings: STEPS[settings.get("joints", 2)],
 )

@@ -38,8 +38,8 @@ _INPUT_MOMENT, _OUTPUT_MOMENT = (
     JointResponse._fields.index(name) for name in ("input_yoke_moment", "output_yoke_moment")
 )
 # `chain_torque`'s step: (joint k, the input angle's fraction and error, the
-# input speed, acceleration and the load at the step's start, the cross's
-# inertias), then the layout.
+# input speed and acceleration at the step's start, the cross's inertias, the
+# load), then the layout (`chain_damages`).
 _STEP_HEAD = 9
 
 
@@ -80,7 +80,7 @@ def takes_step(h: float, parameters_valid: bool, speed: float, acceleration: flo
 def chain_torque(t, step):
     """(T_k, joint k's input shaft speed) t s into the step (`_STEP_HEAD`): the
     chain at that instant, the input shaft at constant acceleration."""
-    joint, fraction, error, speed, acceleration, load, I1, I2, I3 = step[:_STEP_HEAD]
+    joint, fraction, error, speed, acceleration, I1, I2, I3, load = step[:_STEP_HEAD]
     layout = step[_STEP_HEAD:]
     input_speed = speed + acceleration * t
     values = chain_values(
@@ -95,12 +95,15 @@ def chain_torque(t, step):
     return torque, input_speed
 
 
-def chain_damages(rule, h, fraction, error, speed, acceleration, load, I1, I2, I3,
+def chain_damages(rule, h, torque_at, fraction, error, speed, acceleration, crosspiece, load,
                   layout):  # fmt: skip
     """Each joint's Miner damage over a step of `h` s from the input angle's
     `fraction` (+ `error`), the input shaft at `speed` and constant
-    `acceleration`. The torques share the singularities of the largest working
-    angle."""
+    `acceleration`: `torque_at(t, step)` gives (T_k, joint k's input shaft
+    speed), step = (k, fraction, error, speed, acceleration, the cross's
+    inertias, *`load`) + layout; `load` the held load (`chain_torque`) or the
+    parameters of a load that follows the motion. The torques share the
+    singularities of the largest working angle."""
     peak = layout[WORKING_ANGLE]
     for k in range(1, len(layout) // LAYOUT_FIELDS):
         peak = max(peak, layout[LAYOUT_FIELDS * k + WORKING_ANGLE])
@@ -108,14 +111,26 @@ def chain_damages(rule, h, fraction, error, speed, acceleration, load, I1, I2, I
     scale = rate_scale(rule) / 3600.0
     damages = ()
     for k in range(len(layout) // LAYOUT_FIELDS):
-        step = (k, fraction, error, speed, acceleration, load, I1, I2, I3) + layout
+        step = (k, fraction, error, speed, acceleration, *crosspiece, *load) + layout
         beta = layout[LAYOUT_FIELDS * k + WORKING_ANGLE]
         integral = step_integral(
-            chain_torque, step, h, speed, acceleration, beta, 0.0, 0.0, rule.min_angle,
+            torque_at, step, h, speed, acceleration, beta, 0.0, 0.0, rule.min_angle,
             rule.exponent, reach,
         )  # fmt: skip
         damages = damages + (scale * integral,)
     return damages
+
+
+def sums_added(sums, damages):
+    """Each joint's Miner's sum (total, error after each other) plus its
+    damage, compensated."""
+    added = ()
+    for k in range(len(damages)):
+        total, total_error = sums[2 * k], sums[2 * k + 1]
+        if damages[k] != 0.0:
+            total, total_error = compensated_add(total, total_error, damages[k])
+        added = added + (total, total_error)
+    return added
 
 
 def propshaft_outputs(angle, speed, acceleration, load, layout, shifts, critical_speeds, fixed, I1,
@@ -164,14 +179,9 @@ def propshaft_advanced(h, angle, parameters_valid, layout, shifts, critical_spee
     rule = LifeRule(rated_torque, life_constant, life_exponent, min_angle)
     end_speed = speed + acceleration * h
     end = advanced(angle, h * (speed + 0.5 * acceleration * h))
-    damages = chain_damages(rule, h, fraction, error, speed, acceleration, load, I1, I2, I3,
-                            layout)  # fmt: skip
-    added = ()
-    for k in range(len(damages)):
-        total, total_error = sums[2 * k], sums[2 * k + 1]
-        if damages[k] != 0.0:
-            total, total_error = compensated_add(total, total_error, damages[k])
-        added = added + (total, total_error)
+    damages = chain_damages(rule, h, chain_torque, fraction, error, speed, acceleration,
+                            crosspiece, (load,), layout)  # fmt: skip
+    added = sums_added(sums, damages)
     outputs = propshaft_outputs(
         end, end_speed, acceleration, load, layout, shifts, critical_speeds, fixed, I1, I2, I3,
         rule, radius, added,

@@ -32,8 +32,8 @@ class JointLife:
     life_exponent: float
     life_min_angle: float
     # Set over a step by a layer whose load follows the motion (the compliant
-    # drive's spring): load(t, kinematic offset, kinematic output speed), N.m.
-    load_over_step: Callable | None = None
+    # joint's spring): (torque_at, load), `life.step_damage_loaded`'s.
+    load_over_step: tuple[Callable, tuple] | None = None
 
     def _start_life(self) -> None:
         """The rule from the parameters (fixed until the next start), no damage yet."""
@@ -68,9 +68,10 @@ class JointLife:
         else:
             # The held load gives way to the moving one.
             psi, bend, speed, acceleration, rate, bend_acceleration, inertia, _ = start
+            torque_at, spring = load
             damage = step_damage_loaded(
                 self._life_rule, h, psi, bend, speed, acceleration, rate, bend_acceleration,
-                inertia, load,
+                inertia, torque_at, spring,
             )  # fmt: skip
         if damage:
             self.life_consumed, self.life_consumed_error = compensated_add(

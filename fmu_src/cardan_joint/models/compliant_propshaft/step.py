@@ -1,0 +1,242 @@
+"""The CompliantPropshaft's step, written once: the definition
+`CompliantPropshaft.run` runs and the build translates into the FMU's C
+runtime (docs/codegen.md), so both give the same bits. The propshaft's step
+(`propshaft.step`) with the spring-damper layer's functions
+(`compliant_joint.step`) at its output: the chain steps with no load (its
+kinematics do not depend on it); its joints' life integrates the chain under
+the spring's moving torque (`spring_chain_torque`).
+"""
+
+import math
+from collections.abc import Callable
+
+from ...physics.life import LifeRule
+from ...physics.revolutions import advanced, angle_value
+from ..compliant_joint.step import spring_load, spring_outputs, spring_takes_step, twist_change
+from ..propshaft.chain import CHAIN_FIELDS, OFFSET, SPEED, chain_values
+from ..propshaft.step import (
+    chain_damages,
+    chain_torque,
+    propshaft_outputs,
+    state_names,
+    sums_added,
+    takes_step,
+)
+
+# The spring's part of the step state, after the propshaft's (`state_names`).
+SPRING_STATE = ("lag", "stiffness", "damping")
+# `spring_chain_torque`'s step: `chain_torque`'s head without the load, then
+# the spring's (the last shaft's branch shift, lag, output shaft's speed and
+# acceleration, k, c), then the layout.
+_STEP_HEAD = 14
+
+
+def compliant_state_names(joints: int) -> tuple[str, ...]:
+    """The step state's names: the propshaft's, then the spring's."""
+    return (*state_names(joints), *SPRING_STATE)
+
+
+def spring_chain_torque(t, step):
+    """(T_k, joint k's input shaft speed) t s into the step under the spring:
+    the chain at no load gives the kinematics the spring's torque needs (the
+    last shaft's offset and speed), the chain under that torque T_k."""
+    joint, fraction, error, speed, acceleration, I1, I2, I3 = step[:8]
+    shift, lag, output_speed, output_acceleration, stiffness, damping = step[8:_STEP_HEAD]
+    layout = step[_STEP_HEAD:]
+    free = chain_values(
+        math, fraction, error + t * (speed + 0.5 * acceleration * t), speed + acceleration * t,
+        acceleration, layout, I1, I2, I3, 0.0,
+    )  # fmt: skip
+    load = spring_load(
+        t, free[len(free) - 2 - CHAIN_FIELDS + OFFSET] - shift,
+        free[len(free) - 2 - CHAIN_FIELDS + SPEED], lag, speed, acceleration,
+        output_speed, output_acceleration, stiffness, damping,
+    )  # fmt: skip
+    return chain_torque(t, (joint, fraction, error, speed, acceleration, I1, I2, I3, load) + layout)
+
+
+def compliant_takes_step(h: float, parameters_valid: bool, speed: float, acceleration: float,
+                         output_speed: float, output_acceleration: float) -> bool:  # fmt: skip
+    """Whether the step is taken here (the chain's inputs with no load, the
+    spring's); otherwise the model's checks name the refusal."""
+    change = twist_change(h, speed, acceleration, output_speed, output_acceleration)
+    return takes_step(h, parameters_valid, speed, acceleration, 0.0) and spring_takes_step(
+        output_speed, output_acceleration, change
+    )
+
+
+def compliant_propshaft_advanced(h, angle, parameters_valid: bool, layout, shifts, critical_speeds,
+                                 fixed, crosspiece, life, sums, spring, speed, acceleration,
+                                 output_speed, output_acceleration):  # fmt: skip
+    """A step `compliant_takes_step` takes, of `h` s: the state
+    (`compliant_state_names`), the inputs after the step and the outputs. The
+    spring's torque at the step's end is the chain's load for the outputs;
+    over the step, the load each joint's Miner's sum integrates (from the
+    values before the step)."""
+    lag, stiffness, damping = spring
+    change = twist_change(h, speed, acceleration, output_speed, output_acceleration)
+    I1, I2, I3 = crosspiece
+    radius, rated_torque, life_constant, life_exponent, min_angle = life
+    rule = LifeRule(rated_torque, life_constant, life_exponent, min_angle)
+    load = (shifts[len(shifts) - 1], lag, output_speed, output_acceleration, stiffness, damping)
+    damages = chain_damages(rule, h, spring_chain_torque, angle[1], angle[2], speed, acceleration,
+                            crosspiece, load, layout)  # fmt: skip
+    added = sums_added(sums, damages)
+    end_speed = speed + acceleration * h
+    end = advanced(angle, h * (speed + 0.5 * acceleration * h))
+    end_lag = lag + change
+    end_output_speed = output_speed + output_acceleration * h
+    free = chain_values(math, end[1], end[2], end_speed, acceleration, layout, I1, I2, I3, 0.0)
+    # The last joint's values in the chain's: its output shaft's offset and speed.
+    offset = free[CHAIN_FIELDS * (len(shifts) - 1) + OFFSET] - shifts[len(shifts) - 1]
+    spring_values = spring_outputs(
+        angle_value(end), end_lag, offset, free[CHAIN_FIELDS * (len(shifts) - 1) + SPEED],
+        end_output_speed, stiffness, damping,
+    )  # fmt: skip
+    rigid = propshaft_outputs(
+        end, end_speed, acceleration, spring_values[3], layout, shifts, critical_speeds, fixed,
+        I1, I2, I3, rule, radius, added,
+    )  # fmt: skip
+    # The rigid outputs but the input angle and the last shaft's (the spring's own).
+    passed = rigid[1 : 3 * len(shifts) - 2] + rigid[3 * len(shifts) + 1 :]
+    state = end + (parameters_valid,) + layout + shifts + critical_speeds + fixed + crosspiece
+    moved = (end_speed, acceleration, end_output_speed, output_acceleration)
+    return state + life + added + (end_lag, stiffness, damping) + moved + spring_values + passed
+
+
+def compliant_propshaft_2_step(
+    time, h, turns: int, fraction, fraction_error, parameters_valid: bool,
+    joint_1_working_angle, joint_1_pin_offset, joint_1_twist, joint_1_phase, joint_1_inertia,
+    joint_2_working_angle, joint_2_pin_offset, joint_2_twist, joint_2_phase, joint_2_inertia,
+    shaft_1_shift, shaft_2_shift, shaft_1_critical_speed,
+    speed_ratio_fluctuation, equivalent_angle, crosspiece_inertia_1, crosspiece_inertia_2,
+    crosspiece_inertia_3,
+    bearing_radius, rated_torque, life_constant, life_exponent, life_min_angle,
+    joint_1_life_consumed, joint_1_life_consumed_error,
+    joint_2_life_consumed, joint_2_life_consumed_error,
+    lag, stiffness, damping,
+    input_speed, input_acceleration, output_speed, output_acceleration,
+) -> tuple | None:  # fmt: skip
+    """The 2-joint CompliantPropshaft's step (`compliant_state_names(2)`,
+    then the inputs): `compliant_propshaft_advanced`, or None when the step
+    is not taken here (the model's checks then name the refusal)."""
+    if not compliant_takes_step(h, parameters_valid, input_speed, input_acceleration,
+                                output_speed, output_acceleration):  # fmt: skip
+        return None
+    layout = (
+        joint_1_working_angle, joint_1_pin_offset, joint_1_twist, joint_1_phase, joint_1_inertia,
+        joint_2_working_angle, joint_2_pin_offset, joint_2_twist, joint_2_phase, joint_2_inertia,
+    )  # fmt: skip
+    sums = (
+        joint_1_life_consumed, joint_1_life_consumed_error,
+        joint_2_life_consumed, joint_2_life_consumed_error,
+    )  # fmt: skip
+    return compliant_propshaft_advanced(
+        h, (turns, fraction, fraction_error), parameters_valid, layout,
+        (shaft_1_shift, shaft_2_shift),
+        (shaft_1_critical_speed,),
+        (speed_ratio_fluctuation, equivalent_angle),
+        (crosspiece_inertia_1, crosspiece_inertia_2, crosspiece_inertia_3),
+        (bearing_radius, rated_torque, life_constant, life_exponent, life_min_angle),
+        sums, (lag, stiffness, damping), input_speed, input_acceleration, output_speed,
+        output_acceleration,
+    )  # fmt: skip
+
+
+def compliant_propshaft_3_step(
+    time, h, turns: int, fraction, fraction_error, parameters_valid: bool,
+    joint_1_working_angle, joint_1_pin_offset, joint_1_twist, joint_1_phase, joint_1_inertia,
+    joint_2_working_angle, joint_2_pin_offset, joint_2_twist, joint_2_phase, joint_2_inertia,
+    joint_3_working_angle, joint_3_pin_offset, joint_3_twist, joint_3_phase, joint_3_inertia,
+    shaft_1_shift, shaft_2_shift, shaft_3_shift, shaft_1_critical_speed, shaft_2_critical_speed,
+    speed_ratio_fluctuation, equivalent_angle, crosspiece_inertia_1, crosspiece_inertia_2,
+    crosspiece_inertia_3,
+    bearing_radius, rated_torque, life_constant, life_exponent, life_min_angle,
+    joint_1_life_consumed, joint_1_life_consumed_error,
+    joint_2_life_consumed, joint_2_life_consumed_error,
+    joint_3_life_consumed, joint_3_life_consumed_error,
+    lag, stiffness, damping,
+    input_speed, input_acceleration, output_speed, output_acceleration,
+) -> tuple | None:  # fmt: skip
+    """The 3-joint CompliantPropshaft's step (`compliant_state_names(3)`,
+    then the inputs): `compliant_propshaft_advanced`, or None when the step
+    is not taken here (the model's checks then name the refusal)."""
+    if not compliant_takes_step(h, parameters_valid, input_speed, input_acceleration,
+                                output_speed, output_acceleration):  # fmt: skip
+        return None
+    layout = (
+        joint_1_working_angle, joint_1_pin_offset, joint_1_twist, joint_1_phase, joint_1_inertia,
+        joint_2_working_angle, joint_2_pin_offset, joint_2_twist, joint_2_phase, joint_2_inertia,
+        joint_3_working_angle, joint_3_pin_offset, joint_3_twist, joint_3_phase, joint_3_inertia,
+    )  # fmt: skip
+    sums = (
+        joint_1_life_consumed, joint_1_life_consumed_error,
+        joint_2_life_consumed, joint_2_life_consumed_error,
+        joint_3_life_consumed, joint_3_life_consumed_error,
+    )  # fmt: skip
+    return compliant_propshaft_advanced(
+        h, (turns, fraction, fraction_error), parameters_valid, layout,
+        (shaft_1_shift, shaft_2_shift, shaft_3_shift),
+        (shaft_1_critical_speed, shaft_2_critical_speed),
+        (speed_ratio_fluctuation, equivalent_angle),
+        (crosspiece_inertia_1, crosspiece_inertia_2, crosspiece_inertia_3),
+        (bearing_radius, rated_torque, life_constant, life_exponent, life_min_angle),
+        sums, (lag, stiffness, damping), input_speed, input_acceleration, output_speed,
+        output_acceleration,
+    )  # fmt: skip
+
+
+def compliant_propshaft_4_step(
+    time, h, turns: int, fraction, fraction_error, parameters_valid: bool,
+    joint_1_working_angle, joint_1_pin_offset, joint_1_twist, joint_1_phase, joint_1_inertia,
+    joint_2_working_angle, joint_2_pin_offset, joint_2_twist, joint_2_phase, joint_2_inertia,
+    joint_3_working_angle, joint_3_pin_offset, joint_3_twist, joint_3_phase, joint_3_inertia,
+    joint_4_working_angle, joint_4_pin_offset, joint_4_twist, joint_4_phase, joint_4_inertia,
+    shaft_1_shift, shaft_2_shift, shaft_3_shift, shaft_4_shift, shaft_1_critical_speed,
+    shaft_2_critical_speed, shaft_3_critical_speed,
+    speed_ratio_fluctuation, equivalent_angle, crosspiece_inertia_1, crosspiece_inertia_2,
+    crosspiece_inertia_3,
+    bearing_radius, rated_torque, life_constant, life_exponent, life_min_angle,
+    joint_1_life_consumed, joint_1_life_consumed_error,
+    joint_2_life_consumed, joint_2_life_consumed_error,
+    joint_3_life_consumed, joint_3_life_consumed_error,
+    joint_4_life_consumed, joint_4_life_consumed_error,
+    lag, stiffness, damping,
+    input_speed, input_acceleration, output_speed, output_acceleration,
+) -> tuple | None:  # fmt: skip
+    """The 4-joint CompliantPropshaft's step (`compliant_state_names(4)`,
+    then the inputs): `compliant_propshaft_advanced`, or None when the step
+    is not taken here (the model's checks then name the refusal)."""
+    if not compliant_takes_step(h, parameters_valid, input_speed, input_acceleration,
+                                output_speed, output_acceleration):  # fmt: skip
+        return None
+    layout = (
+        joint_1_working_angle, joint_1_pin_offset, joint_1_twist, joint_1_phase, joint_1_inertia,
+        joint_2_working_angle, joint_2_pin_offset, joint_2_twist, joint_2_phase, joint_2_inertia,
+        joint_3_working_angle, joint_3_pin_offset, joint_3_twist, joint_3_phase, joint_3_inertia,
+        joint_4_working_angle, joint_4_pin_offset, joint_4_twist, joint_4_phase, joint_4_inertia,
+    )  # fmt: skip
+    sums = (
+        joint_1_life_consumed, joint_1_life_consumed_error,
+        joint_2_life_consumed, joint_2_life_consumed_error,
+        joint_3_life_consumed, joint_3_life_consumed_error,
+        joint_4_life_consumed, joint_4_life_consumed_error,
+    )  # fmt: skip
+    return compliant_propshaft_advanced(
+        h, (turns, fraction, fraction_error), parameters_valid, layout,
+        (shaft_1_shift, shaft_2_shift, shaft_3_shift, shaft_4_shift),
+        (shaft_1_critical_speed, shaft_2_critical_speed, shaft_3_critical_speed),
+        (speed_ratio_fluctuation, equivalent_angle),
+        (crosspiece_inertia_1, crosspiece_inertia_2, crosspiece_inertia_3),
+        (bearing_radius, rated_torque, life_constant, life_exponent, life_min_angle),
+        sums, (lag, stiffness, damping), input_speed, input_acceleration, output_speed,
+        output_acceleration,
+    )  # fmt: skip
+
+
+# The entry for each number of joints (the spec's `step`).
+STEPS: dict[int, Callable[..., tuple | None]] = {
+    2: compliant_propshaft_2_step,
+    3: compliant_propshaft_3_step,
+    4: compliant_propshaft_4_step,
+}
