@@ -11,8 +11,9 @@ import pytest
 from cardan_joint.framework.refusal import Refusal
 from cardan_joint.framework.stepped import SteppedModel
 from cardan_joint.models.compliant_propshaft import model
+from cardan_joint.models.compliant_propshaft.entries import STEPS
 from cardan_joint.models.compliant_propshaft.model import CompliantPropshaft
-from cardan_joint.models.compliant_propshaft.step import STEPS, compliant_state_names
+from cardan_joint.models.compliant_propshaft.step import compliant_state_names
 from cardan_joint.models.compliant_propshaft.variables import compliant_propshaft_table
 
 INPUTS = compliant_propshaft_table(2).INPUTS

@@ -65,6 +65,7 @@ class Expressions:
     c_names: dict[str, str]
     unrolled: dict[str, int]
     bound: dict[str, Module | Function]
+    numbers: dict[str, bool | int | float]
     namespace: dict[str, Any]
     unit: Any
 
@@ -143,6 +144,8 @@ class Expressions:
             return self.c_names.get(node.id, node.id + "_"), self.locals[node.id]
         if node.id in self.bound:
             return node.id, self.bound[node.id]
+        if node.id in self.numbers:
+            return self.outside(self.numbers[node.id], node.id, node)
         return self.outside(self.global_value(node.id, node), node.id, node)
 
     def _Constant(self, node: ast.Constant) -> tuple[str, Type]:

@@ -65,7 +65,10 @@ class FunctionTranslator(Unrolled, Calls):
         self.bound: dict[str, Module | Function] = {
             name: Function(value) if isinstance(value, types.FunctionType) else Module(value)
             for name, value in modules.items()
+            if not isinstance(value, bool | int | float)
         }
+        # A number bound to a parameter (a step entry's limit) is a constant.
+        self.numbers = {n: v for n, v in modules.items() if isinstance(v, bool | int | float)}
         self.locals: dict[str, Scalar | Tuple] = {}
         # The C variable of each local (a tuple rebound to another shape gets a
         # new one) and the type each C variable is declared with.

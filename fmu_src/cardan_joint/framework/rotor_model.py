@@ -1,16 +1,19 @@
 """A stepped model whose state is one rotor (the motor, the inertia load): speed
 and angle from their start parameters, advanced by the exact rotor step
 (`physics.rotor`), a speed beyond `speed_start`'s range refused. Its step is
-written once in its folder's `step.py` (`WrittenStep`) with `rotor_moved`,
+written once, `rotor_step` with the model's own rotor and outputs (its
+folder's `step.py`, `rotor_entry`), and moves the rotor by `rotor_moved`,
 which the checks' path (`_advance`) takes too."""
 
 from collections.abc import Callable
 from typing import Any
 
+from ..codegen import GroupedEntry
+from ..codegen.entry import Group
 from ..physics.rotor import exact_rotor_step
 from .refusal import Refusal
 from .values import bounds
-from .written_step import WrittenStep
+from .written_step import WrittenStep, grouped_step, sound_step
 
 # The step state of a rotor's written step, in its parameters' order.
 ROTOR_STATE = ("speed", "angle", "parameters_valid")
@@ -35,6 +38,41 @@ def rotor_moved(
     the step is refused and the rotor stays)."""
     end_speed, increment = exact_rotor_step(speed, inertia, damping, torque, h)
     return end_speed, angle + increment, abs(end_speed) <= speed_limit
+
+
+def rotor_step(time, h, speed, angle, parameters_valid: bool, torque, parameters, starts,
+               torque_low, torque_high, speed_limit, rotor_of,
+               outputs_of) -> tuple | None:  # fmt: skip
+    """A step of `h` s from `time` of a rotor driven by `torque`, held over the
+    step: the state (`ROTOR_STATE`), the torque and the outputs
+    (`outputs_of(speed, angle, torque, *parameters)`), or None when the step
+    is not taken here (a NaN, a value out of its range, a speed past the
+    limit): the model's checks then name the refusal. `rotor_of(torque,
+    *parameters)` gives its equation's (inertia, damping, torque). The start
+    values enter through the state (`start`), not as parameters."""
+    if not (sound_step(h, parameters_valid) and torque_low <= torque <= torque_high):
+        return None
+    inertia, damping, drive = rotor_of(torque, *parameters)
+    end_speed, end_angle, within = rotor_moved(h, speed, angle, inertia, damping, drive,
+                                               speed_limit)  # fmt: skip
+    if not within:
+        return None
+    outputs = outputs_of(end_speed, end_angle, torque, *parameters)
+    return (end_speed, end_angle, parameters_valid, torque) + outputs
+
+
+def rotor_entry(name: str, table, torque: str, rotor_of: Callable, outputs_of: Callable
+                ) -> GroupedEntry:  # fmt: skip
+    """The step entry `name` of the rotor model of `table`, whose input `torque`
+    drives it (`rotor_step`): its parameters before the start values are
+    `rotor_of`'s and `outputs_of`'s; the limits are the table's ranges."""
+    low, high = bounds(table.BY_NAME[torque])
+    starts = ("speed_start", "angle_start")
+    groups: dict[str, Group] = {"torque": torque, "starts": starts,
+              "parameters": tuple(n for n in table.PARAMETERS if n not in starts)}  # fmt: skip
+    bound = {"torque_low": low, "torque_high": high, "speed_limit": rotor_speed_limit(table),
+             "rotor_of": rotor_of, "outputs_of": outputs_of}  # fmt: skip
+    return grouped_step(name, rotor_step, ROTOR_STATE, table, groups, bound)
 
 
 class RotorModel(WrittenStep):

@@ -11,8 +11,10 @@ limit, time.
 """
 
 import math
-from collections.abc import Callable, Sequence
+from collections.abc import Callable, Mapping, Sequence
 
+from ..codegen import GroupedEntry
+from ..codegen.entry import Group
 from .refusal import Refusal
 from .stepped import SteppedModel, values_getter
 
@@ -21,6 +23,21 @@ def sound_step(h: float, parameters_valid: bool) -> bool:
     """Whether the step's size and the parameters (checked at `start`) let a step
     be taken: the first two of every model's checks. NaN fails the comparison."""
     return 0.0 < h < math.inf and parameters_valid
+
+
+def grouped_step(
+    name: str,
+    function: Callable,
+    state: Sequence[str],
+    table,
+    groups: Mapping[str, Group] | None = None,
+    bound: Mapping[str, object] | None = None,
+) -> GroupedEntry:
+    """The step entry `name`: `function` takes the runtime's flat arguments (time,
+    h, the step state's names `state`, then the table's inputs and parameters)
+    grouped into tuples as `groups` says, or bound (`codegen.GroupedEntry`)."""
+    names = ("time", "h", *state, *table.INPUTS, *table.PARAMETERS)
+    return GroupedEntry(name, function, names, groups, bound)
 
 
 class WrittenStep(SteppedModel):

@@ -11,6 +11,7 @@ speed), so every compliant drive shares them (the CompliantPropshaft too).
 import math
 
 from ...framework.values import MAX_INCREMENT, bounds
+from ...framework.written_step import grouped_step
 from ...physics.life import LifeRule, step_damage_loaded
 from ...physics.life_torque import turned
 from ...physics.response import (
@@ -156,18 +157,26 @@ def spring_loaded_torque(t: float, step) -> tuple[float, float]:
     return unloaded + cb / D * load, speed
 
 
-def compliant_joint_step(
+# The step state's and parameters' names each tuple of `compliant_joint_advanced`
+# takes (`codegen.GroupedEntry`).
+GROUPS = {
+    "angle": ("turns", "fraction", "fraction_error"),
+    "phase": ("phase_turns", "phase_fraction", "phase_error"),
+    "miner": ("life_consumed", "life_consumed_error"),
+    "starts": ("yoke_phase", "input_angle_start", "twist_angle_start"),
+    "spring": ("torsional_stiffness", "torsional_damping"),
+    "inertia": ("crosspiece_inertia_*",),
+    "life": ("bearing_radius", "rated_torque", "life_constant", "life_exponent", "life_min_angle"),
+}
+
+
+def compliant_joint_advanced(
     time: float,
     h: float,
-    turns: int,
-    fraction: float,
-    fraction_error: float,
-    phase_turns: int,
-    phase_fraction: float,
-    phase_error: float,
+    angle: tuple[int, float, float],
+    phase: tuple[int, float, float],
     parameters_valid: bool,
-    life_consumed: float,
-    life_consumed_error: float,
+    miner,
     lag: float,
     input_speed: float,
     input_acceleration: float,
@@ -176,27 +185,20 @@ def compliant_joint_step(
     bend_angle: float,
     bend_angle_rate: float,
     bend_angle_acceleration: float,
-    yoke_phase: float,
-    input_angle_start: float,
-    twist_angle_start: float,
-    torsional_stiffness: float,
-    torsional_damping: float,
-    crosspiece_inertia_1: float,
-    crosspiece_inertia_2: float,
-    crosspiece_inertia_3: float,
+    starts,
+    spring,
+    inertia,
     max_bend_angle: float,
-    bearing_radius: float,
-    rated_torque: float,
-    life_constant: float,
-    life_exponent: float,
-    life_min_angle: float,
+    life,
 ) -> tuple | None:
-    """A step of `h` s from `time`: the state (`STATE`), the inputs after the
-    step and the outputs, or None when the step is not taken here (the model's
-    checks then name the refusal). The rigid joint steps with no load (its
-    kinematics do not depend on it); the spring's torque at the step's end is
-    its load for the outputs, and the spring's torque over the step for the
-    damage Miner's sum gains (from the values before the step)."""
+    """A step of `h` s from `time` (`STATE`, the inputs and the parameters,
+    grouped as `GROUPS` says): the state, the inputs after the step and the
+    outputs, or None when the step is not taken here (the model's checks then
+    name the refusal). The rigid joint steps with no load (its kinematics do
+    not depend on it); the spring's torque at the step's end is its load for
+    the outputs, and the spring's torque over the step for the damage Miner's
+    sum gains (from the values before the step). The start angles enter
+    through the state (`start` reduces them)."""
     joint_inputs = (input_speed, input_acceleration, bend_angle, bend_angle_rate,
                     bend_angle_acceleration, 0.0)  # fmt: skip
     change = twist_change(h, input_speed, input_acceleration, output_speed, output_acceleration)
@@ -205,24 +207,19 @@ def compliant_joint_step(
         and spring_takes_step(output_speed, output_acceleration, change)
     ):
         return None
-    inertia = (crosspiece_inertia_1, crosspiece_inertia_2, crosspiece_inertia_3)
-    stiffness, damping = torsional_stiffness, torsional_damping
-    free = joint_advanced(
-        h, turns, fraction, fraction_error, phase_turns, phase_fraction, phase_error,
-        parameters_valid, *joint_inputs, *inertia,
-    )  # fmt: skip
+    stiffness, damping = spring
+    free = joint_advanced(h, *angle, *phase, parameters_valid, *joint_inputs, *inertia)
+    bearing_radius, rated_torque, life_constant, life_exponent, life_min_angle = life
     rule = LifeRule(rated_torque, life_constant, life_exponent, life_min_angle)
-    psi = fraction + (phase_fraction + (fraction_error + phase_error))  # as `response`'s
-    spring = (lag, output_speed, output_acceleration, stiffness, damping)
+    psi = angle[1] + (phase[1] + (angle[2] + phase[2]))  # as `response`'s
+    loading = (lag, output_speed, output_acceleration, stiffness, damping)
     damage = step_damage_loaded(
         rule, h, psi, bend_angle, input_speed, input_acceleration, bend_angle_rate,
-        bend_angle_acceleration, inertia, spring_loaded_torque, spring,
+        bend_angle_acceleration, inertia, spring_loaded_torque, loading,
     )  # fmt: skip
-    consumed = life_added(life_consumed, life_consumed_error, damage)
+    consumed = life_added(miner[0], miner[1], damage)
     end_lag = lag + change
     end_output_speed = output_speed + output_acceleration * h
-    angle = free[:3]
-    phase = free[3:6]
     end_speed, end_beta, end_rate = free[_END_SPEED], free[_END_BEND], free[_END_RATE]
     kinematic = free[MOVED:]  # the joint's outputs without load
     spring_values = spring_outputs(
@@ -231,10 +228,17 @@ def compliant_joint_step(
     )  # fmt: skip
     load = spring_values[3]
     outputs = joint_outputs(
-        angle, phase, end_beta, end_speed, input_acceleration, end_rate,
+        free[:3], free[3:6], end_beta, end_speed, input_acceleration, end_rate,
         bend_angle_acceleration, load, *inertia,
     )  # fmt: skip
-    life = life_of(rule, bearing_radius, consumed, outputs, load, end_speed, end_beta)
+    life_values = life_of(rule, bearing_radius, consumed, outputs, load, end_speed, end_beta)
     moved = (end_speed, input_acceleration, end_output_speed, output_acceleration, end_beta,
              end_rate, bend_angle_acceleration)  # fmt: skip
-    return (*free[:_JOINT], *consumed, end_lag, *moved, *spring_values, *outputs[_PASSED:], *life)
+    return (*free[:_JOINT], *consumed, end_lag, *moved, *spring_values, *outputs[_PASSED:],
+            *life_values)  # fmt: skip
+
+
+# The entry (the spec's `step`): the runtime's flat arguments, grouped.
+compliant_joint_step = grouped_step(
+    "compliant_joint_step", compliant_joint_advanced, STATE, COMPLIANT_JOINT, GROUPS
+)

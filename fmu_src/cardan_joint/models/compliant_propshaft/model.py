@@ -5,7 +5,8 @@ same layer, inputs, parameters and outputs as the `CompliantJoint`'s."""
 from ..compliant_joint.model import CompliantDrive
 from ..propshaft import Propshaft
 from ..propshaft.step import state_names
-from .step import STEPS, spring_chain_torque
+from .entries import STEPS
+from .step import spring_chain_torque
 from .variables import compliant_propshaft_table
 
 _VALID = state_names(2).index("parameters_valid")

@@ -4,8 +4,8 @@ from .. import Model
 from ..compliant_joint.spec import TWIST_WATCH
 from ..propshaft.spec import PROPSHAFT_WATCHES, check_joints, joints_namer
 from ..propshaft.variables import JOINTS
+from .entries import STEPS
 from .model import CompliantPropshaft
-from .step import STEPS
 from .variables import compliant_propshaft_table
 
 MODEL = Model(

@@ -3,14 +3,10 @@ translates into the FMU's C runtime (docs/codegen.md), so both give the same
 bits. Pure functions of floats: the rotor's speed and angle (the state), the
 load torque held over the step and the motor's parameters."""
 
-from ...framework.rotor_model import ROTOR_STATE, rotor_moved, rotor_speed_limit
-from ...framework.values import bounds
-from ...framework.written_step import sound_step
+from ...framework.rotor_model import ROTOR_STATE, rotor_entry
 from .variables import MOTOR
 
 STATE = ROTOR_STATE
-SPEED_LIMIT = rotor_speed_limit(MOTOR)
-LOAD_LOW, LOAD_HIGH = bounds(MOTOR.BY_NAME["load_torque"])
 
 
 def motor_torque(speed: float, stall_torque: float, no_load_speed: float) -> float:
@@ -38,30 +34,5 @@ def motor_outputs(
     return speed, (torque - load_torque) / rotor_inertia, angle, torque
 
 
-def motor_step(
-    time: float,
-    h: float,
-    speed: float,
-    angle: float,
-    parameters_valid: bool,
-    load_torque: float,
-    stall_torque: float,
-    no_load_speed: float,
-    rotor_inertia: float,
-    speed_start: float,
-    angle_start: float,
-) -> tuple | None:
-    """A step of `h` s from `time`: the state (`STATE`), the load torque and the
-    outputs, or None when the step is not taken here (a NaN, a value out of its
-    range, a speed past the limit): the model's checks then name the refusal.
-    The start values enter through the state (`start`), not as parameters."""
-    if not (sound_step(h, parameters_valid) and LOAD_LOW <= load_torque <= LOAD_HIGH):
-        return None
-    rotor = motor_rotor(load_torque, stall_torque, no_load_speed, rotor_inertia)
-    end_speed, end_angle, within = rotor_moved(h, speed, angle, *rotor, SPEED_LIMIT)
-    if not within:
-        return None
-    outputs = motor_outputs(
-        end_speed, end_angle, load_torque, stall_torque, no_load_speed, rotor_inertia
-    )
-    return (end_speed, end_angle, parameters_valid, load_torque) + outputs
+# The step (the spec's `step`): the rotor's, driven by the load torque.
+motor_step = rotor_entry("motor_step", MOTOR, "load_torque", motor_rotor, motor_outputs)
