@@ -36,6 +36,18 @@ class CStep:
         return tuple(self.results)
 
 
+def mismatches(step, c_step, cases) -> tuple[int, int, int]:
+    """(cases whose bits or decision differ, steps taken, steps refused): the
+    Python step and its C on each case's arguments."""
+    differ = taken = count = 0
+    for arguments in cases:
+        python = step(*arguments)
+        differ += bits(python) != bits(c_step(*arguments))
+        taken += python is not None
+        count += 1
+    return differ, taken, count - taken
+
+
 def bits(values) -> bytes | None:
     """The exact bits of a result (ints as the doubles C hands back), None for None."""
     if values is None:

@@ -4,7 +4,7 @@ build's check of the runtime's convention, and the runtime keeping the slave in
 step with the steps it takes in C: its watches, the reads it passes on, and
 the life integral the default build's step runs."""
 
-from guards_base import Mutation
+from guards_base import ROTOR_MODEL, Mutation
 
 EXPRESSIONS = "fmu_src/cardan_joint/codegen/expressions.py"
 STEP_SOURCE = "fmu_src/cardan_joint/build/step_source.py"
@@ -19,14 +19,15 @@ UNROLLED = "fmu_src/cardan_joint/codegen/unrolled.py"
 REFUSALS = ("tests/unit/test_codegen.py", "-k", "untranslatable")
 RUNTIME_TESTS = "tests/fmu/test_generated_step.py"
 WRITTEN_STEP = "fmu_src/cardan_joint/framework/written_step.py"
-MOTOR_STEP = "fmu_src/cardan_joint/models/motor/step.py"
 LOAD_STEP = "fmu_src/cardan_joint/models/load/step.py"
-INERTIA_LOAD_STEP = "fmu_src/cardan_joint/models/inertia_load/step.py"
 # A written step takes only what the checks take (the C and the Python step
 # run the same source, so only this comparison sees its own guards).
 CHECKS_TAKE = ("tests/unit/test_codegen_models.py", "-k", "checks_take")
 COMPLIANT_STEP = "fmu_src/cardan_joint/models/compliant_joint/step.py"
 COMPLIANT_TESTS = "tests/unit/test_codegen_compliant.py"
+ENTRY = "fmu_src/cardan_joint/codegen/entry.py"
+UNIT = "fmu_src/cardan_joint/codegen/unit.py"
+ENTRY_TESTS = ("tests/unit/test_codegen_entry.py",)
 
 GENERATED_MUTATIONS = (
     Mutation(
@@ -149,29 +150,15 @@ GENERATED_MUTATIONS = (
         CHECKS_TAKE,
     ),
     Mutation(
-        "motor's step: the load torque's range",
-        MOTOR_STEP,
-        "LOAD_LOW <= load_torque <= LOAD_HIGH",
+        "rotor step (Motor, InertiaLoad): the torque's range",
+        ROTOR_MODEL,
+        "torque_low <= torque <= torque_high",
         "True",
         CHECKS_TAKE,
     ),
     Mutation(
-        "motor's step: the rotor speed at the step's end",
-        MOTOR_STEP,
-        "    if not within:\n        return None\n",
-        "",
-        CHECKS_TAKE,
-    ),
-    Mutation(
-        "inertia load's step: the drive torque's range",
-        INERTIA_LOAD_STEP,
-        "DRIVE_LOW <= drive_torque <= DRIVE_HIGH",
-        "True",
-        CHECKS_TAKE,
-    ),
-    Mutation(
-        "inertia load's step: the load speed at the step's end",
-        INERTIA_LOAD_STEP,
+        "rotor step (Motor, InertiaLoad): the rotor speed at the step's end",
+        ROTOR_MODEL,
         "    if not within:\n        return None\n",
         "",
         CHECKS_TAKE,
@@ -189,5 +176,33 @@ GENERATED_MUTATIONS = (
         "ACCELERATION_LOW <= acceleration <= ACCELERATION_HIGH",
         "True",
         CHECKS_TAKE,
+    ),
+    Mutation(
+        "grouped entry: a parameter takes the argument it names",
+        ENTRY,
+        "            if count == 0:",
+        "            if False:",
+        ENTRY_TESTS,
+    ),
+    Mutation(
+        "grouped entry: every group names a parameter",
+        ENTRY,
+        "        if groups:",
+        "        if False:",
+        ENTRY_TESTS,
+    ),
+    Mutation(
+        "grouped entry: Python takes exactly its flat arguments",
+        ENTRY,
+        "        if len(values) != len(self.arguments):",
+        "        if False:",
+        ENTRY_TESTS,
+    ),
+    Mutation(
+        "grouped entry: a group's tuple has its size in C",
+        UNIT,
+        "if (size is None) != isinstance(kind, Scalar) or len(items) != (size or 1):",
+        "if False:",
+        ENTRY_TESTS,
     ),
 )

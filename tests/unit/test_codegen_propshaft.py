@@ -10,7 +10,7 @@ import math
 import random
 
 import pytest
-from generated_c import CStep, bits
+from generated_c import CStep, bits, mismatches
 from test_codegen_joint import MUTANTS
 
 from cardan_joint.codegen import expressions, generate
@@ -84,17 +84,6 @@ def stepped(request, tmp_path_factory):
     step = STEPS[request.param]
     c = CStep(generate(step, step.__name__), tmp_path_factory.mktemp(step.__name__))
     return step, c, request.param
-
-
-def mismatches(step, c_step, points) -> tuple[int, int, int]:
-    """(cases whose bits or decision differ, steps taken, steps refused)."""
-    differ = taken = 0
-    points = list(points)
-    for point in points:
-        python = step(*point)
-        differ += bits(python) != bits(c_step(*point))
-        taken += python is not None
-    return differ, taken, len(points) - taken
 
 
 def test_the_entries_take_the_state_and_inputs_by_name():
