@@ -25,7 +25,7 @@ LOAD_STEP = "fmu_src/cardan_joint/models/load/step.py"
 CHECKS_TAKE = ("tests/unit/test_codegen_models.py", "-k", "checks_take")
 COMPLIANT_STEP = "fmu_src/cardan_joint/models/compliant_joint/step.py"
 COMPLIANT_TESTS = "tests/unit/test_codegen_compliant.py"
-ENTRY = "fmu_src/cardan_joint/codegen/entry.py"
+ENTRY = "fmu_src/cardan_joint/framework/grouped_entry.py"
 UNIT = "fmu_src/cardan_joint/codegen/unit.py"
 ENTRY_TESTS = ("tests/unit/test_codegen_entry.py",)
 

@@ -1,8 +1,8 @@
 """A step entry whose function takes its flat arguments grouped into tuples
-(`codegen.GroupedEntry`, docs/codegen.md "How a model opts in"): one definition
-serves every number of grouped values, its C takes the flat arguments and
-gives the Python's bits, and an entry whose groups do not fit its arguments is
-refused, naming the parameter."""
+(`framework.grouped_entry.GroupedEntry`, docs/codegen.md "Arguments in
+groups"): one definition serves every number of grouped values, its C takes
+the flat arguments and gives the Python's bits, and an entry whose groups do
+not fit its arguments is refused, naming the parameter."""
 
 import inspect
 import math
@@ -12,7 +12,8 @@ import re
 import pytest
 from generated_c import CStep, mismatches
 
-from cardan_joint.codegen import GroupedEntry, Untranslatable, generate
+from cardan_joint.codegen import Untranslatable, generate
+from cardan_joint.framework.grouped_entry import GroupedEntry
 
 GROUPS = {
     "angle": ("turns", "fraction", "fraction_error"),

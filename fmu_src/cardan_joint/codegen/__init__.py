@@ -3,16 +3,16 @@ that performs the same IEEE operations in the same order (docs/codegen.md).
 
 `generate(function, name)` gives the C source of `function` and every function
 it calls; a construct outside the subset raises `Untranslatable`, naming the
-construct and its file:line; `function` may be a `GroupedEntry`, a step whose
-flat arguments its function takes grouped into tuples. `FLOAT_FLAGS` are the compiler flags the
-generated C needs to give CPython's bits.
+construct and its file:line. `function` may be an entry whose function takes
+the flat arguments grouped into tuples (`framework.grouped_entry`).
+`FLOAT_FLAGS` are the compiler flags the generated C needs to give CPython's
+bits.
 """
 
-from .entry import GroupedEntry
 from .types import Untranslatable
 from .unit import Generated, generate
 
 # No fused multiply-add, no reassociation: each operation rounds as CPython's does.
 FLOAT_FLAGS = ("-ffp-contract=off", "-fno-fast-math")
 
-__all__ = ["FLOAT_FLAGS", "Generated", "GroupedEntry", "Untranslatable", "generate"]
+__all__ = ["FLOAT_FLAGS", "Generated", "Untranslatable", "generate"]

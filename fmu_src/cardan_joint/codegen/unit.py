@@ -6,9 +6,8 @@ module constants and tuple structs they use, and the entry's flat C interface
 import inspect
 import types
 from dataclasses import dataclass
-from typing import cast
+from typing import Protocol, cast
 
-from .entry import GroupedEntry
 from .functions import FunctionTranslator, Signature
 from .types import BOOL, FLOAT, INT, Rows, Scalar, Table, Tuple, Untranslatable, literal
 
@@ -20,6 +19,17 @@ HEADER = """\
 #include <math.h>
 #include <stdint.h>
 """
+
+
+class Grouped(Protocol):
+    """A step entry whose function takes the flat arguments grouped
+    (`framework.grouped_entry.GroupedEntry`, which the FMU ships; the
+    generator stays on the host)."""
+
+    function: object
+    bound: dict[str, object]  # parameters bound at translation time
+    sizes: tuple[int | None, ...]  # per other parameter: one value, or its tuple's size
+    arguments: tuple[str, ...]  # the flat arguments
 
 
 @dataclass(frozen=True)
@@ -178,12 +188,12 @@ class Unit:
         return "\n".join(parts) + "\n"
 
 
-def generate(step: types.FunctionType | GroupedEntry, name: str) -> Generated:
-    """C for the step (a function of the flat arguments, or a `GroupedEntry`) and
+def generate(step: types.FunctionType | Grouped, name: str) -> Generated:
+    """C for the step (a function of the flat arguments, or a `Grouped` entry) and
     everything it calls, entered as `name`; raises Untranslatable naming the
     first construct it has no C for, and its file:line."""
     unit = Unit()
-    if isinstance(step, GroupedEntry):
+    if not isinstance(step, types.FunctionType):
         function, bound, sizes = cast(types.FunctionType, step.function), step.bound, step.sizes
     else:
         function, bound = step, {}
@@ -196,5 +206,5 @@ def generate(step: types.FunctionType | GroupedEntry, name: str) -> Generated:
     source = unit.source(origin, name, signature, sizes)
     returns = signature.returns
     results = len(returns.items) if isinstance(returns, Tuple) else 1
-    arguments = step.arguments if isinstance(step, GroupedEntry) else taken
+    arguments = taken if isinstance(step, types.FunctionType) else step.arguments
     return Generated(source, name, tuple(arguments), results)

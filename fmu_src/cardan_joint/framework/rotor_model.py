@@ -8,9 +8,8 @@ which the checks' path (`_advance`) takes too."""
 from collections.abc import Callable
 from typing import Any
 
-from ..codegen import GroupedEntry
-from ..codegen.entry import Group
 from ..physics.rotor import exact_rotor_step
+from .grouped_entry import Group, GroupedEntry
 from .refusal import Refusal
 from .values import bounds
 from .written_step import WrittenStep, grouped_step, sound_step

@@ -13,8 +13,7 @@ limit, time.
 import math
 from collections.abc import Callable, Mapping, Sequence
 
-from ..codegen import GroupedEntry
-from ..codegen.entry import Group
+from .grouped_entry import Group, GroupedEntry
 from .refusal import Refusal
 from .stepped import SteppedModel, values_getter
 
@@ -35,7 +34,7 @@ def grouped_step(
 ) -> GroupedEntry:
     """The step entry `name`: `function` takes the runtime's flat arguments (time,
     h, the step state's names `state`, then the table's inputs and parameters)
-    grouped into tuples as `groups` says, or bound (`codegen.GroupedEntry`)."""
+    grouped into tuples as `groups` says, or bound (`grouped_entry.GroupedEntry`)."""
     names = ("time", "h", *state, *table.INPUTS, *table.PARAMETERS)
     return GroupedEntry(name, function, names, groups, bound)
 

@@ -158,7 +158,7 @@ def spring_loaded_torque(t: float, step) -> tuple[float, float]:
 
 
 # The step state's and parameters' names each tuple of `compliant_joint_advanced`
-# takes (`codegen.GroupedEntry`).
+# takes (`framework.grouped_entry.GroupedEntry`).
 GROUPS = {
     "angle": ("turns", "fraction", "fraction_error"),
     "phase": ("phase_turns", "phase_fraction", "phase_error"),

@@ -1,9 +1,10 @@
 """A step entry whose function takes its flat arguments grouped into tuples
-(docs/codegen.md, "How a model opts in"): the runtime passes the arguments
+(docs/codegen.md, "Arguments in groups"): the runtime passes the arguments
 flat, by the variable table's names, and the function takes the ones a
 formula uses together as one tuple (a joint layout, the Miner's sums). So one
 definition serves every number of joints and no entry lists its arguments
-one by one."""
+one by one. The generator (`codegen.generate`) reads the same plan: the
+function, its bound values, each group's size and the flat arguments."""
 
 import inspect
 from collections.abc import Callable, Mapping, Sequence
@@ -66,6 +67,7 @@ class GroupedEntry:
             raise TypeError(f"{name}: {function.__name__} has no parameter {sorted(groups)}")
         self.plan = tuple(plan)
         self.arguments = tuple(names[:start])
+        # `inspect.signature` of the entry: its flat arguments.
         self.__signature__ = inspect.Signature(
             [inspect.Parameter(n, inspect.Parameter.POSITIONAL_ONLY) for n in self.arguments]
         )
