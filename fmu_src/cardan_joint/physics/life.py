@@ -17,7 +17,7 @@ Pure Python, standard library only.
 import math
 from typing import NamedTuple
 
-from .life_integral import FLAT_REACH, step_integral
+from .life_integral import FLAT_REACH, singularity_time, step_integral
 from .life_torque import joint_torque
 
 _RAD_TO_DEG = 180.0 / math.pi
@@ -78,9 +78,44 @@ def rule_of(model) -> LifeRule:
 
 
 def singularity_reach(peak):
-    """How far the torque's singularities lie in imaginary input angle at a bend
-    of at most `peak`: D = 0 at cos(psi) = +-1 / sin(b), acosh(1/|sin b|) away."""
-    return math.acosh(1.0 / math.sin(peak)) if peak > 1e-3 else FLAT_REACH
+    """How far the torque's singularities lie in imaginary input angle at a real
+    bend of at most `peak` (up to pi/2, as the joint's limits keep it)."""
+    return _reach_of_sine(math.sin(peak))
+
+
+def _reach_of_sine(sine):
+    """A lower bound on |Im psi| where the torque is singular while |sin b| <=
+    `sine`: D = 1 - sin^2 b cos^2 psi vanishes only where |cos psi| |sin b| =
+    1, and |cos psi| <= cosh(Im psi); below 1e-3 capped at FLAT_REACH."""
+    if sine <= 1e-3:
+        return FLAT_REACH
+    return math.acosh(1.0 / sine) if sine < 1.0 else 0.0
+
+
+def step_reach(h, w1, a1, b, rb, ab):
+    """`singularity_reach` over a step of `h` s, speed w1 + a1 t and bend b +
+    rb t + ab t^2 / 2, where the bend at a complex time moves too. Within d of
+    a point t0 of the step the bend moves by at most e = |b'(t0)| d + |ab|
+    d^2 / 2, so that |sin b| <= sin(peak) + e cosh(e) <= sin(peak) + e (1 +
+    e^2) (the cosine's bound along the way, e < 1): the reach r_e of that
+    sine holds as far as psi moves less, |w| d + |a1| d^2 / 2 < r_e
+    (`life_integral.singularity_time`). e is the move over the held bend's
+    tau (larger than the answer's), at most a quarter of 1 - sin(peak); where
+    that cap binds, the reach is also cut to psi's move while e is reached."""
+    peak = peak_bend(h, b, rb, ab)
+    sine = math.sin(peak)
+    reach = _reach_of_sine(sine)
+    if rb == 0.0 and ab == 0.0:
+        return reach
+    tau = singularity_time(w1, a1, h, reach)
+    if tau == math.inf:  # the input angle stands still: no rate to integrate
+        return reach
+    turn = max(abs(rb), abs(rb + ab * h))
+    wobble = min(tau * (turn + 0.5 * abs(ab) * tau), 0.25 * (1.0 - sine))
+    reach = _reach_of_sine(sine + wobble * (1.0 + wobble * wobble))
+    within = 2.0 * wobble / (turn + math.sqrt(turn * turn + 2.0 * abs(ab) * wobble))
+    fastest = max(abs(w1), abs(w1 + a1 * h))
+    return min(reach, within * (fastest + 0.5 * abs(a1) * within))
 
 
 def peak_bend(h, b, rb, ab):
@@ -103,7 +138,7 @@ def _damage(rule: LifeRule, torque_at, step, h, b, w1, a1, rb, ab) -> float:
     (`life_integral.step_integral`'s arguments)."""
     total = step_integral(
         torque_at, step, h, w1, a1, b, rb, ab, rule.min_angle, rule.exponent,
-        singularity_reach(peak_bend(h, b, rb, ab)),
+        step_reach(h, w1, a1, b, rb, ab),
     )  # fmt: skip
     return total * rate_scale(rule) / 3600.0
 

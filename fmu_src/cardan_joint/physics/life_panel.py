@@ -8,8 +8,15 @@ semi-axes over the half-length), n points err by at most
 integral (the mean times the length), (32/15) (M / mean) rho^-2n / (rho^2 - 1),
 and rho^2 - 1 > 1 wherever the bound is met. Two things limit rho:
 
-- the torque's singularities (D = 0), `tau` s away in time: the ellipse
-  reaches `_TOWARDS_SINGULARITY` of the way to them (in log rho);
+- the torque's singularities (D = 0): none lies within `tau` s of a point of
+  the step (`life.singularity_reach`). A plain panel's E_rho lies within its
+  semi-minor axis (L/2) sinh(log rho) of the panel (the distance from the
+  segment is largest on the minor axis: at u = (A cos th, B sin th), beyond
+  an end by A cos th - L/2 <= B cos th as A - B = (L/2)/rho < L/2), so
+  sinh(log rho) < 2 tau / L keeps them out. A substituted panel's t = t0 +
+  L u^q takes E_rho about u in [0, 1] into |t - t0| <= L ((1 + x) / 2)^q,
+  x = cosh(log rho) (its farthest point from u = 0), so x < 2 (tau / L)^(1/q)
+  - 1 does. The ellipse reaches `_TOWARDS_SINGULARITY` of that log rho;
 - the torque's complex zeros, where |T|^p branches. The Legendre coefficients
   a_k of T, exact from the panel's own values, bound |T - a_0| on E_rho: held
   within 0.9 |a_0|, T has no zero there and |T|^p <= 1.9^p |a_0|^p <= 1.9^p
@@ -22,8 +29,8 @@ and rho^2 - 1 > 1 wherever the bound is met. Two things limit rho:
 At a torque zero t0 the panel substitutes t = t0 + L u^q: |T|^p ~ |t - t0|^p
 becomes u^gamma (gamma = q (p + 1) - 1 >= 10) times a smooth factor. That
 factor is T / u^q, whose coefficients the check reads; u^gamma adds its
-degree to the points and (gamma + 1) to M / mean. In u the far end moves q
-times faster: the singularities lie q times nearer.
+degree to the points and (gamma + 1) to M / mean. In u the singularities lie
+nearer: a distance tau from t0 is only (tau / L)^(1/q) in u.
 """
 
 import math
@@ -70,11 +77,15 @@ def error_budget(p):
 
 def singular_log_rho(length, tau, stretch):
     """log rho of the ellipse about a panel of `length` s that reaches
-    `_TOWARDS_SINGULARITY` of the way to singularities `tau` s away; `stretch`
-    q for a substituted panel, else 1."""
+    `_TOWARDS_SINGULARITY` of the way to the largest one free of singularities
+    `tau` s from the step (the module's bound); `stretch` q for a panel
+    substituted at a zero, else 1."""
     if tau == math.inf:
         return math.inf
-    return _TOWARDS_SINGULARITY * math.asinh(2.0 * tau / (stretch * length))
+    if stretch == 1.0:
+        return _TOWARDS_SINGULARITY * math.asinh(2.0 * tau / length)
+    x = 2.0 * math.exp(math.log(tau / length) / stretch) - 1.0
+    return _TOWARDS_SINGULARITY * math.acosh(x) if x > 1.0 else 0.0
 
 
 def points_for(log_rho, budget, gamma):
@@ -95,11 +106,14 @@ def log_rho_required(points, budget, gamma):
 
 
 def longest_panel(tau, budget, gamma, stretch):
-    """The longest panel the largest rule covers as far as the singularities go."""
+    """The longest panel the largest rule covers as far as the singularities
+    go (`singular_log_rho`'s inverse at the largest rule's log rho)."""
     if tau == math.inf:
         return math.inf
     per_point = (budget + math.log(gamma + 1.0)) / (2.0 * (MAX_POINTS - 0.5 * gamma))
-    return 2.0 * tau / (stretch * math.sinh(per_point / _TOWARDS_SINGULARITY))
+    if stretch == 1.0:
+        return 2.0 * tau / math.sinh(per_point / _TOWARDS_SINGULARITY)
+    return tau / whole_power(0.5 * (1.0 + math.cosh(per_point / _TOWARDS_SINGULARITY)), stretch)
 
 
 def _low_spread(x, c1, c2, c3):
