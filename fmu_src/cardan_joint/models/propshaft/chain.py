@@ -69,14 +69,13 @@ def layout_values(geometry: Layout, shaft_inertias) -> tuple[float, ...]:
     )
 
 
-def chain_values(xp, angle, angle_error, speed, acceleration, layout, I1, I2, I3, load_torque):
-    """The chain at input angle `angle` (+ `angle_error`, the low part of a
-    double-double angle), input speed and acceleration, as one flat tuple
-    (`CHAIN_FIELDS` per joint, then the input torque and the energy); `layout`
-    from `layout_values`. Written in the generator's subset: the propshaft's
-    step (`step.py`) runs it in C; `xp` is numpy for arrays."""
+def chain_forward(xp, angle, angle_error, speed, acceleration, layout, I1, I2, I3):
+    """The chain's load-free part at input angle `angle` (+ `angle_error`, the
+    low part of a double-double angle), input speed and acceleration: per joint
+    (`CHAIN_FIELDS`) o_k, omega_k, alpha_k, psi_k, T0_k (at no load) and the
+    ratio s_k, then the kinetic energy; `layout` from `layout_values`."""
     offset, w, a, energy = 0.0, speed, acceleration, 0.0
-    forward = ()  # per joint: o_k, omega_k, alpha_k, psi_k, T0_k (at no load), s_k
+    forward = ()
     for k in range(len(layout) // LAYOUT_FIELDS):
         joint = layout[LAYOUT_FIELDS * k : LAYOUT_FIELDS * (k + 1)]
         phase = joint[PHASE]
@@ -86,9 +85,18 @@ def chain_values(xp, angle, angle_error, speed, acceleration, layout, I1, I2, I3
         w, a = r[_SPEED], r[_ACCELERATION]
         energy = energy + r[_ENERGY]
         forward = forward + (offset, w, a, psi, r[_TORQUE], r[_SPEED_RATIO])
+    for k in range(1, len(layout) // LAYOUT_FIELDS):
+        w = forward[CHAIN_FIELDS * (k - 1) + SPEED]
+        energy = energy + 0.5 * layout[LAYOUT_FIELDS * k + INERTIA] * w * w
+    return forward + (energy,)
+
+
+def chain_backward(forward, layout, load_torque):
+    """Each joint's input torque T_k and load L_k (after each other), the
+    chain's load `load_torque` carried back through `chain_forward`'s values:
+    T_k = T0_k + s_k L_k, L_(k-1) = T_k + J_(k-1) alpha_(k-1)."""
     load = load_torque
-    torque = load
-    backward = ()  # per joint: T_k, L_k
+    backward = ()
     for k in range(len(layout) // LAYOUT_FIELDS - 1, -1, -1):
         torque = (
             forward[CHAIN_FIELDS * k + _FREE_TORQUE] + forward[CHAIN_FIELDS * k + _RATIO] * load
@@ -97,14 +105,22 @@ def chain_values(xp, angle, angle_error, speed, acceleration, layout, I1, I2, I3
         if k > 0:
             inertia = layout[LAYOUT_FIELDS * k + INERTIA]
             load = torque + inertia * forward[CHAIN_FIELDS * (k - 1) + ACCELERATION]
-    for k in range(1, len(layout) // LAYOUT_FIELDS):
-        w = forward[CHAIN_FIELDS * (k - 1) + SPEED]
-        energy = energy + 0.5 * layout[LAYOUT_FIELDS * k + INERTIA] * w * w
+    return backward
+
+
+def chain_values(xp, angle, angle_error, speed, acceleration, layout, I1, I2, I3, load_torque):
+    """The chain at input angle `angle` (+ `angle_error`), input speed and
+    acceleration under `load_torque`, as one flat tuple (`CHAIN_FIELDS` per
+    joint, then the input torque and the energy): `chain_forward`, then
+    `chain_backward`. Written in the generator's subset: the propshaft's step
+    (`step.py`) runs it in C; `xp` is numpy for arrays."""
+    forward = chain_forward(xp, angle, angle_error, speed, acceleration, layout, I1, I2, I3)
+    backward = chain_backward(forward, layout, load_torque)
     values = ()
     for k in range(len(layout) // LAYOUT_FIELDS):
         values = values + forward[CHAIN_FIELDS * k : CHAIN_FIELDS * k + 4]
         values = values + backward[2 * k : 2 * k + 2]
-    return values + (torque, energy)
+    return values + (backward[0], forward[len(forward) - 1])
 
 
 def chain(
