@@ -54,9 +54,12 @@ _ROOT_TOLERANCE = 2.0 * 2.220446049250313e-16
 _TINY_TIME = 1e-300
 # A panel this short against the step is taken as it is.
 _SHORTEST = 1e-13
-# Two joints' zeros this many root tolerances apart are one zero (a chain
-# whose torques are all proportional to its load).
-_SAME_ZERO = 4.0
+# Two joints' zeros this close, against the panel that shows them, are one:
+# a chain whose torques are all proportional to its load has its joints'
+# zeros at one instant, which their rounding spreads by a few 1e-17 s. A
+# joint substituted at a zero this far from its own errs by far less than
+# the bound (its torque's sign differs only below the first node's u^q).
+_SAME_ZERO = 1e-12
 
 
 def _first_root_after(t, limit, c0, c1, c2):
@@ -208,7 +211,7 @@ def _first_zero(torques_at, step, values, failing: int, lo, hi, zero: int, divid
             own = zero if divides_at(divides, k) else 0
             root = _zero_in(torques_at, step, k, lo, hi, zero, own, q, points, change)
             if root > lo:
-                same = _SAME_ZERO * (_ROOT_TOLERANCE * abs(root) + _TINY_TIME)
+                same = _SAME_ZERO * (hi - lo)
                 if first < 0.0 or root < first - same:
                     first, joints = root, 1 << k
                 elif root <= first + same:
@@ -260,7 +263,8 @@ def step_integrals(torques_at, step, h, w1, a1, bends, rb, ab, min_angle, p, rea
         n = min(max(points, points_for(singular, budget, degree)), MAX_POINTS)
         values = panel(torques_at, step, t, hi, zero, divides, q, n, bends, rb, ab, min_angle, p)
         scales = scales_raised(scales, totals, values)
-        failing, wanted = verdict(values, scales, n, budget, degree, singular, divides)
+        carried = q - 1.0 if zero != 0 else 0.0
+        failing, wanted = verdict(values, scales, n, budget, degree, carried, singular, divides)
         if failing == 0 or hi - t <= _SHORTEST * h:
             totals = totals_added(totals, values)
             # The next panel starts from this one's points and twice its
@@ -275,7 +279,12 @@ def step_integrals(torques_at, step, h, w1, a1, bends, rb, ab, min_angle, p, rea
             length, points = hi - t, wanted
             continue
         root, joints = _first_zero(torques_at, step, values, failing, t, hi, zero, divides, q, n)
-        if root > t:
+        same = _SAME_ZERO * (hi - t)
+        if root > t and zero_lo != 0 and zero_lo & joints == 0 and root - t <= same:
+            zero_lo = zero_lo | joints  # other joints' zeros at t
+        elif root > t and zero_end != 0 and zero_end & joints == 0 and abs(root - end) <= same:
+            zero_end = zero_end | joints  # other joints' zeros at `end`
+        elif root > t:
             end, zero_end = root, joints
         else:
             length = 0.5 * (hi - t)

@@ -160,15 +160,18 @@ def _joint_needs(value, change: int, coefficients, scale, n: int, budget, degree
     return False, 0
 
 
-def verdict(values, scales, n: int, budget, degree, singular, divides: int):
+def verdict(values, scales, n: int, budget, degree, carried, singular, divides: int):
     """(the joints whose bound fails, one bit each; the points that the
-    failing ones ask for, the most any asks, or 0 if one needs a cut)."""
+    failing ones ask for, the most any asks, or 0 if one needs a cut). On a
+    substituted panel the joints whose zero it is (`divides`) take the
+    substitution's power `degree` (gamma); to the others it is a change of
+    variable whose Jacobian q u^(q-1) has the degree `carried`, q - 1."""
     failing, wanted = 0, n
     for k in range(len(scales)):
         holds, points = _joint_needs(
             values[PANEL_FIELDS * k], values[PANEL_FIELDS * k + 1],
-            values[PANEL_FIELDS * k + 2 : PANEL_FIELDS * (k + 1)], scales[k], n, budget, degree,
-            singular, divides_at(divides, k),
+            values[PANEL_FIELDS * k + 2 : PANEL_FIELDS * (k + 1)], scales[k], n, budget,
+            degree if divides_at(divides, k) else carried, singular, divides_at(divides, k),
         )  # fmt: skip
         if not holds:
             failing = failing | (1 << k)

@@ -16,7 +16,6 @@ from ...physics.revolutions import advanced, angle_value
 from ..compliant_joint.step import spring_load, spring_outputs, spring_takes_step, twist_change
 from ..propshaft.chain import (
     CHAIN_FIELDS,
-    LAYOUT_FIELDS,
     OFFSET,
     SPEED,
     chain_backward,
@@ -58,9 +57,10 @@ def spring_chain_torque(t, step):
         math, fraction, error + t * (speed + 0.5 * acceleration * t), input_speed, acceleration,
         layout, I1, I2, I3,
     )  # fmt: skip
-    last = CHAIN_FIELDS * (len(layout) // LAYOUT_FIELDS - 1)
+    # The last joint's output shaft: its offset and speed.
     load = spring_load(
-        t, forward[last + OFFSET] - shift, forward[last + SPEED], lag, speed, acceleration,
+        t, forward[len(forward) - 1 - CHAIN_FIELDS + OFFSET] - shift,
+        forward[len(forward) - 1 - CHAIN_FIELDS + SPEED], lag, speed, acceleration,
         output_speed, output_acceleration, stiffness, damping,
     )  # fmt: skip
     return joint_torques(forward, chain_backward(forward, layout, load), input_speed)
