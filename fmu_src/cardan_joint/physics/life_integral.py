@@ -29,6 +29,7 @@ from .life_nodes import (
     filled,
     panel,
     scales_raised,
+    torque_of,
     totals_added,
     verdict,
 )
@@ -56,9 +57,10 @@ _TINY_TIME = 1e-300
 _SHORTEST = 1e-13
 # Two joints' zeros this close, against the panel that shows them, are one:
 # a chain whose torques are all proportional to its load has its joints'
-# zeros at one instant, which their rounding spreads by a few 1e-17 s. A
-# joint substituted at a zero this far from its own errs by far less than
-# the bound (its torque's sign differs only below the first node's u^q).
+# zeros at one instant, which their rounding spreads by a few 1e-17 s, and
+# its nodes show them all at once. A joint substituted at a zero this far
+# from its own errs by far less than the bound (its torque's sign differs
+# only below the first node's u^q).
 _SAME_ZERO = 1e-12
 
 
@@ -105,15 +107,6 @@ def singularity_time(w1, a1, h, reach):
     if fastest != 0.0:
         return reach / fastest
     return math.inf
-
-
-def torque_of(values, joint: int):
-    """`joint`'s torque in `torques_at`'s values."""
-    torque = values[0]
-    for k in range(1, len(values) // 2):
-        if k == joint:
-            torque = values[2 * k]
-    return torque
 
 
 def _root(torques_at, step, joint: int, a, b, fa, fb):
@@ -279,12 +272,7 @@ def step_integrals(torques_at, step, h, w1, a1, bends, rb, ab, min_angle, p, rea
             length, points = hi - t, wanted
             continue
         root, joints = _first_zero(torques_at, step, values, failing, t, hi, zero, divides, q, n)
-        same = _SAME_ZERO * (hi - t)
-        if root > t and zero_lo != 0 and zero_lo & joints == 0 and root - t <= same:
-            zero_lo = zero_lo | joints  # other joints' zeros at t
-        elif root > t and zero_end != 0 and zero_end & joints == 0 and abs(root - end) <= same:
-            zero_end = zero_end | joints  # other joints' zeros at `end`
-        elif root > t:
+        if root > t:
             end, zero_end = root, joints
         else:
             length = 0.5 * (hi - t)

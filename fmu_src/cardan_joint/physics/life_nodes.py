@@ -55,6 +55,15 @@ def divides_at(divides: int, joint: int) -> bool:
     return ((divides >> joint) & 1) == 1
 
 
+def torque_of(values, joint: int):
+    """`joint`'s torque in `torques_at`'s values."""
+    torque = values[0]
+    for k in range(1, len(values) // 2):
+        if k == joint:
+            torque = values[2 * k]
+    return torque
+
+
 def _started(bends):
     sums = ()
     for _ in range(len(bends)):

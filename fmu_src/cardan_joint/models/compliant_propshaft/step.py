@@ -27,6 +27,7 @@ from ..propshaft.step import (
     joint_torques,
     propshaft_outputs,
     state_names,
+    step_layout,
     sums_added,
     takes_step,
 )
@@ -35,7 +36,7 @@ from ..propshaft.step import (
 SPRING_STATE = ("lag", "stiffness", "damping")
 # `spring_chain_torque`'s step: `chain_torque`'s head without the load, then
 # the spring's (the last shaft's branch shift, lag, output shaft's speed and
-# acceleration, k, c), then the layout.
+# acceleration, k, c), then the layout and its bends' sines and cosines.
 _STEP_HEAD = 13
 
 
@@ -51,11 +52,11 @@ def spring_chain_torque(t, step):
     speed), its backward pass the torques under that load."""
     fraction, error, speed, acceleration, I1, I2, I3 = step[:7]
     shift, lag, output_speed, output_acceleration, stiffness, damping = step[7:_STEP_HEAD]
-    layout = step[_STEP_HEAD:]
+    layout = step_layout(step[_STEP_HEAD:])
     input_speed = speed + acceleration * t
     forward = chain_forward(
         math, fraction, error + t * (speed + 0.5 * acceleration * t), input_speed, acceleration,
-        layout, I1, I2, I3,
+        layout, step[_STEP_HEAD + len(layout) :], I1, I2, I3,
     )  # fmt: skip
     # The last joint's output shaft: its offset and speed.
     load = spring_load(

@@ -28,6 +28,7 @@ from .chain import (
     SPEED,
     TORQUE,
     WORKING_ANGLE,
+    bend_trig,
     chain_backward,
     chain_forward,
     chain_values,
@@ -43,8 +44,10 @@ _INPUT_MOMENT, _OUTPUT_MOMENT = (
 )
 # `chain_torque`'s step: (the input angle's fraction and error, the input
 # speed and acceleration at the step's start, the cross's inertias, the load),
-# then the layout (`chain_damages`).
+# then the layout and its bends' sines and cosines (`chain_damages`): seven
+# numbers a joint.
 _STEP_HEAD = 8
+_JOINT_FIELDS = LAYOUT_FIELDS + 2
 
 
 def state_names(joints: int) -> tuple[str, ...]:
@@ -96,13 +99,19 @@ def chain_torque(t, step):
     (`_STEP_HEAD`), `joint_torques`: the chain at that instant under the held
     load, the input shaft at constant acceleration."""
     fraction, error, speed, acceleration, I1, I2, I3, load = step[:_STEP_HEAD]
-    layout = step[_STEP_HEAD:]
+    layout = step_layout(step[_STEP_HEAD:])
     input_speed = speed + acceleration * t
     forward = chain_forward(
         math, fraction, error + t * (speed + 0.5 * acceleration * t), input_speed, acceleration,
-        layout, I1, I2, I3,
+        layout, step[_STEP_HEAD + len(layout) :], I1, I2, I3,
     )  # fmt: skip
     return joint_torques(forward, chain_backward(forward, layout, load), input_speed)
+
+
+def step_layout(tail):
+    """The layout in the tail of a `chain_damages` step, after its head: the
+    bends' sines and cosines follow it."""
+    return tail[: LAYOUT_FIELDS * (len(tail) // _JOINT_FIELDS)]
 
 
 def chain_damages(rule, h, torques_at, fraction, error, speed, acceleration, crosspiece, load,
@@ -111,7 +120,8 @@ def chain_damages(rule, h, torques_at, fraction, error, speed, acceleration, cro
     `fraction` (+ `error`), the input shaft at `speed` and constant
     `acceleration`: `torques_at(t, step)` gives every joint's (T_k, input
     shaft speed), step = (fraction, error, speed, acceleration, the cross's
-    inertias, *`load`) + layout; `load` the held load (`chain_torque`) or the
+    inertias, *`load`) + layout + its bends' sines and cosines (`bend_trig`);
+    `load` the held load (`chain_torque`) or the
     parameters of a load that follows the motion. The joints share the nodes
     (`step_integrals`) and the singularities of the largest working angle."""
     bends = ()
@@ -121,6 +131,7 @@ def chain_damages(rule, h, torques_at, fraction, error, speed, acceleration, cro
     for k in range(1, len(bends)):
         peak = max(peak, bends[k])
     step = (fraction, error, speed, acceleration, *crosspiece, *load) + layout
+    step = step + bend_trig(math, layout)
     integrals = step_integrals(
         torques_at, step, h, speed, acceleration, bends, 0.0, 0.0, rule.min_angle, rule.exponent,
         singularity_reach(peak),
