@@ -4,17 +4,21 @@ load of either sign and compliant under the spring, against QUADPACK between
 each joint's own kinks (its torque's sign changes by dense sampling and
 brentq, the speed's zero), the rate straight from the catalogue formula of
 the chain at each instant. Massless crosses and shafts make every joint's
-torque proportional to the load: their zeros fall on the same instant."""
+torque proportional to the load: their zeros fall on the same instant. The
+single joint is the march's case of one: its pieces after a torque zero end
+at the speed's own zero."""
 
 import math
 import random
 
 import numpy as np
+from life_reference import damage_quadpack
 from scipy.integrate import quad
 from scipy.optimize import brentq
 
 from cardan_joint.models.compliant_propshaft.model import CompliantPropshaft
 from cardan_joint.models.propshaft import Propshaft, chain
+from cardan_joint.physics.life import LifeRule, step_damage
 
 
 def _sign_changes(f, h, samples=2001):
@@ -125,3 +129,24 @@ def test_random_chain_steps_consume_each_joints_adaptive_quadrature_damage_to_1e
         zeros += found
     # The search meets the joints' torque zeros, not only smooth steps.
     assert zeros > 30, zeros
+
+
+def test_the_speeds_reversal_after_a_torque_zero_cuts_the_step_where_the_speed_vanishes():
+    # A joint whose torque changes sign before its speed reverses in the same
+    # step: the piece after the zero ends at the speed's zero from the input's
+    # own acceleration (a march that took another number for it there missed
+    # the reversal by up to 3e-5 of the damage).
+    rule = LifeRule(1000.0, 1.5e6, 10.0 / 3.0, math.radians(3.0))
+    inertia = (0.05, 0.04, 0.06)
+    cases = [
+        (0.08154213212058187, 4.089575299810714, -0.3898680996125431, -237.0020523437695,
+         4637.99769863428, -16.764436417242923),
+        (0.07275570833612059, 5.867476918406378, 0.4865748639041815, 135.8177626970458,
+         -2180.6951283050157, 4.485728282798355),
+    ]  # fmt: skip
+    for h, psi, bend, speed, acceleration, load in cases:
+        assert 0.0 < -speed / acceleration < h
+        got = step_damage(rule, h, psi, bend, speed, acceleration, 0.0, 0.0, inertia, load)
+        case = (psi, bend, speed, acceleration, 0.0, 0.0, inertia, load)
+        want = damage_quadpack(case, h, rule)
+        assert abs(got - want) <= 1e-9 * want, (got, want)
