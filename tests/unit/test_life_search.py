@@ -99,7 +99,7 @@ def test_a_torque_zero_is_located_to_the_last_bits_in_a_few_evaluations():
         for lo, hi, f_lo, f_hi in zip(times, times[1:], torques, torques[1:]):
             if f_lo == 0.0 or f_hi == 0.0 or (f_lo < 0.0) == (f_hi < 0.0):
                 continue
-            zero = life_integral._root(counted, step, lo, hi, f_lo, f_hi)
+            zero = life_integral._root(counted, step, 0, lo, hi, f_lo, f_hi)
             zeros += 1
             near = 8.0 * math.ulp(zero)
             before = life_torque.joint_torque(zero - near, step)[0]

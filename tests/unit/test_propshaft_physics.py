@@ -20,6 +20,8 @@ from cardan_joint.models.propshaft import (
     plane_angle,
     speed_ratio_fluctuation,
 )
+from cardan_joint.models.propshaft.chain import joint_forward
+from cardan_joint.physics.response import JointResponse, kernel
 from cardan_joint.units import RPM_TO_RAD_PER_S
 
 D = math.radians
@@ -77,6 +79,23 @@ def test_chain_matches_the_3d_construction(seed, joints):
         None,
         "speed_ratio_fluctuation",
     )
+
+
+def test_a_joints_forward_pass_is_the_kernels_to_the_bit():
+    # The chain's forward pass takes each joint's kernel outputs it needs from
+    # the kernel's own parts at the bend's sine and cosine (taken once a
+    # step): the same bits as the whole kernel at no load.
+    rng = np.random.default_rng(3)
+    fields = JointResponse._fields
+    for _ in range(2000):
+        psi, beta = rng.uniform(-20.0, 20.0), rng.uniform(-1.4, 1.4)
+        w, a = rng.uniform(-1e3, 1e3), rng.uniform(-1e4, 1e4)
+        I1, I2, I3 = (float(x) for x in rng.uniform(0.0, 0.1, 3))
+        r = kernel(math, psi, beta, w, a, 0.0, 0.0, I1, I2, I3, 0.0, 1.0)
+        got = joint_forward(math, psi, math.sin(beta), math.cos(beta), w, a, I1, I2, I3)
+        names = ("cardan_error", "output_speed", "output_acceleration",
+                 "crosspiece_kinetic_energy", "input_torque", "speed_ratio")  # fmt: skip
+        assert got == tuple(r[fields.index(name)] for name in names)
 
 
 def test_power_balance_holds_exactly():

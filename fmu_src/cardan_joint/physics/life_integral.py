@@ -10,25 +10,37 @@ sign change it shows, or halved. So a piece costs one panel unless it is
 longer than the torque's singularities' reach, and each event costs its
 location and a few panels more.
 
-Pure Python over floats and tuples, no state; the torque is a module-level
-function `torque_at(t, step)` -> (T, w), the torque and the speed t s into
-the step.
+The joints of a chain share the march (`step_integrals`): each panel's
+nodes serve every joint's integrand, so the chain is evaluated once per node
+for all of them (`life_nodes`); a panel is taken when every joint's bound
+holds, with the most points any joint asks for, and cut at the first zero of
+any joint's torque. A single joint is the case N = 1 (`step_integral`).
+
+Pure Python over floats and tuples, no state; the torques are a module-level
+function `torques_at(t, step)` -> (T_1, w_1, ..., T_N, w_N), each joint's
+torque and input speed t s into the step.
 """
 
 import math
 
+from .life_nodes import (
+    PANEL_FIELDS,
+    divides_at,
+    filled,
+    panel,
+    scales_raised,
+    torque_of,
+    totals_added,
+    verdict,
+)
 from .life_panel import (
     error_budget,
-    log_rho_required,
     longest_panel,
     may_vanish,
     node_time,
-    panel,
     points_for,
     singular_log_rho,
     substitution_power,
-    zero_free_log_rho,
-    zero_free_on,
 )
 from .quadrature import GAUSS_NODES, MAX_POINTS
 
@@ -43,6 +55,13 @@ _ROOT_TOLERANCE = 2.0 * 2.220446049250313e-16
 _TINY_TIME = 1e-300
 # A panel this short against the step is taken as it is.
 _SHORTEST = 1e-13
+# Two joints' zeros this close, against the panel that shows them, are one:
+# a chain whose torques are all proportional to its load has its joints'
+# zeros at one instant, which their rounding spreads by a few 1e-17 s, and
+# its nodes show them all at once. A joint substituted at a zero this far
+# from its own errs by far less than the bound (its torque's sign differs
+# only below the first node's u^q).
+_SAME_ZERO = 1e-12
 
 
 def _first_root_after(t, limit, c0, c1, c2):
@@ -67,12 +86,15 @@ def _first_root_after(t, limit, c0, c1, c2):
     return limit
 
 
-def next_kink(t, h, w1, a1, b, rb, ab, min_angle):
-    """The first point after t where the angle or the speed factor has a kink:
-    the speed's zero, the bend crossing +-A_min; else the step's end h."""
+def next_kink(t, h, w1, a1, bends, rb, ab, min_angle):
+    """The first point after t where an angle or the speed factor has a kink:
+    the speed's zero, a bend (`bends[k]` + rb t + ab t^2 / 2) crossing
+    +-A_min; else the step's end h."""
     end = _first_root_after(t, h, w1, a1, 0.0)
-    end = _first_root_after(t, end, b - min_angle, rb, 0.5 * ab)
-    return _first_root_after(t, end, b + min_angle, rb, 0.5 * ab)
+    for k in range(len(bends)):
+        end = _first_root_after(t, end, bends[k] - min_angle, rb, 0.5 * ab)
+        end = _first_root_after(t, end, bends[k] + min_angle, rb, 0.5 * ab)
+    return end
 
 
 def singularity_time(w1, a1, h, reach):
@@ -87,8 +109,8 @@ def singularity_time(w1, a1, h, reach):
     return math.inf
 
 
-def _root(torque_at, step, a, b, fa, fb):
-    """A sign change of the torque in (a, b), fa and fb of opposite signs, to
+def _root(torques_at, step, joint: int, a, b, fa, fb):
+    """A sign change of `joint`'s torque in (a, b), fa and fb of opposite signs, to
     the last bits: Brent's method (inverse quadratic and secant steps, bisection
     when they stall), which shrinks the bracket to a few ulps in about half the
     evaluations regula falsi takes, as its steps never fall below that width."""
@@ -126,71 +148,99 @@ def _root(torque_at, step, a, b, fa, fb):
                 d, e = half, half
         a, fa = b, fb
         b += d if abs(d) > tolerance else math.copysign(tolerance, half)
-        fb = torque_at(b, step)[0]
+        fb = torque_of(torques_at(b, step), joint)
     return b
 
 
-def _root_by(torque_at, step, a, fa, b):
-    """The zero between a (T = fa there) and b, if T's sign differs at b; else -1."""
-    fb = torque_at(b, step)[0]
+def _root_by(torques_at, step, joint: int, a, fa, b):
+    """The zero of `joint`'s torque between a (T = fa there) and b, if T's
+    sign differs at b; else -1."""
+    fb = torque_of(torques_at(b, step), joint)
     if fa != 0.0 and fb != 0.0 and (fa < 0.0) != (fb < 0.0):
         if a > b:
-            return _root(torque_at, step, b, a, fb, fa)
-        return _root(torque_at, step, a, b, fa, fb)
+            return _root(torques_at, step, joint, b, a, fb, fa)
+        return _root(torques_at, step, joint, a, b, fa, fb)
     return -1.0
 
 
-def _zero_in(torque_at, step, lo, hi, zero: int, q, points: int, change: int):
-    """A zero of T in (lo, hi), the panel's: between nodes change - 1 and
-    `change` if they differ in sign, else between an end (not a known zero) and
-    its nearest node; -1.0 if neither shows one."""
+def _zero_in(torques_at, step, joint: int, lo, hi, zero: int, own: int, q, points: int,
+             change: int):  # fmt: skip
+    """A zero of `joint`'s torque in (lo, hi), the panel's (substituted as
+    `zero`; `own` is `zero` where the substitution's zero is the joint's,
+    else 0): between nodes change - 1 and `change` if they differ in sign,
+    else between an end (not the joint's known zero) and its nearest node;
+    -1.0 if neither shows one."""
     first = node_time(lo, hi, GAUSS_NODES[points][0], zero, q)
     if change != 0:
         before = node_time(lo, hi, GAUSS_NODES[points][change - 1], zero, q)
         return _root_by(
-            torque_at, step, before, torque_at(before, step)[0],
+            torques_at, step, joint, before, torque_of(torques_at(before, step), joint),
             node_time(lo, hi, GAUSS_NODES[points][change], zero, q),
         )  # fmt: skip
     last = node_time(lo, hi, GAUSS_NODES[points][points - 1], zero, q)
     # The node nearest each end: the first in u, except on a panel substituted at hi.
     near_lo, near_hi = (last, first) if zero < 0 else (first, last)
-    if zero <= 0:
-        found = _root_by(torque_at, step, lo, torque_at(lo, step)[0], near_lo)
+    if own <= 0:
+        found = _root_by(torques_at, step, joint, lo, torque_of(torques_at(lo, step), joint),
+                         near_lo)  # fmt: skip
         if found >= 0.0:
             return found
-    if zero >= 0:
-        return _root_by(torque_at, step, hi, torque_at(hi, step)[0], near_hi)
+    if own >= 0:
+        return _root_by(torques_at, step, joint, hi, torque_of(torques_at(hi, step), joint),
+                        near_hi)  # fmt: skip
     return -1.0
 
 
-def step_integral(torque_at, step, h, w1, a1, b, rb, ab, min_angle, p, reach):
-    """The integral over a step of `h` s of A(t) |w(t)| |T(t)|^p, A = max(|b(t)|,
-    `min_angle`): the life rate's variable part (`life.step_damage` scales it).
+def _first_zero(torques_at, step, values, failing: int, lo, hi, zero: int, divides: int, q,
+                points: int):  # fmt: skip
+    """(the first zero in (lo, hi) of a torque whose joint fails on the panel
+    and whose values show one, the joints whose zero it is, one bit each);
+    (-1.0, 0) if none shows one."""
+    first, joints = -1.0, 0
+    for k in range(len(values) // PANEL_FIELDS):
+        change = values[PANEL_FIELDS * k + 1]
+        coefficients = values[PANEL_FIELDS * k + 2 : PANEL_FIELDS * (k + 1)]
+        if divides_at(failing, k) and (change != 0 or may_vanish(coefficients)):
+            own = zero if divides_at(divides, k) else 0
+            root = _zero_in(torques_at, step, k, lo, hi, zero, own, q, points, change)
+            if root > lo:
+                same = _SAME_ZERO * (hi - lo)
+                if first < 0.0 or root < first - same:
+                    first, joints = root, 1 << k
+                elif root <= first + same:
+                    first, joints = min(first, root), joints | (1 << k)
+    return first, joints
 
-    `torque_at(t, step)`: (T, w) t s into the step; the bend b + rb t + ab t^2 / 2
-    as the joint steps it; w1 + a1 t the input speed, which places the speed's
-    zero and, with `reach` (the torque's singularities' imaginary input angle,
-    `life.singularity_reach`), sizes the panels."""
+
+def step_integrals(torques_at, step, h, w1, a1, bends, rb, ab, min_angle, p, reach):
+    """Each joint's integral over a step of `h` s of A_k(t) |w_k(t)|
+    |T_k(t)|^p, A_k = max(|b_k(t)|, `min_angle`): the life rate's variable
+    part (`life.step_damage` scales it), for the joints of a chain at once.
+
+    `torques_at(t, step)`: (T_1, w_1, ..., T_N, w_N) t s into the step; joint
+    k's bend `bends[k]` + rb t + ab t^2 / 2 as the joints step it; w1 + a1 t
+    the input speed, which places the speed's zero and, with `reach` (the
+    torques' singularities' imaginary input angle, `life.singularity_reach`),
+    sizes the panels."""
     tau = singularity_time(w1, a1, h, reach)
     q = substitution_power(p)
     gamma = q * (p + 1.0) - 1.0
     budget = error_budget(p)
-    total, t, zero_lo = 0.0, 0.0, False
-    end, zero_end = next_kink(0.0, h, w1, a1, b, rb, ab, min_angle), False
+    # zero_lo, zero_end: the joints (one bit each) whose torque's zero is at t,
+    # at `end`. What each joint's bound is asked against: `scales_raised`.
+    totals = filled(bends, 0.0)
+    scales = filled(bends, -1.0)
+    t, zero_lo = 0.0, 0
+    end, zero_end = next_kink(0.0, h, w1, a1, bends, rb, ab, min_angle), 0
     length, points = h, 0
-    # What the bound is asked against: the step's integral, from below (a
-    # quarter of the first panel's value, then what the accepted panels sum;
-    # every panel's part is positive). A panel that adds little to it may err
-    # more against its own.
-    scale = -1.0
     for _ in range(_MAX_ATTEMPTS):
         if t >= h:
-            return total
+            return totals
         hi = t + length
         if hi >= end or end - hi < 0.25 * length:
             hi = end
-        zero = 1 if zero_lo else -1 if zero_end and hi == end else 0
-        if zero_lo and zero_end and hi == end:
+        zero = 1 if zero_lo != 0 else -1 if zero_end != 0 and hi == end else 0
+        if zero_lo != 0 and zero_end != 0 and hi == end:
             # A panel substitutes at one end only; two zeros an ulp apart leave
             # no middle: the ulp between them is taken plainly (its share is nil).
             middle = 0.5 * (t + end)
@@ -199,52 +249,43 @@ def step_integral(torque_at, step, h, w1, a1, b, rb, ab, min_angle, p, reach):
         longest = longest_panel(tau, budget, degree, stretch)
         if hi - t > longest:
             hi = t + longest
-            zero = 1 if zero_lo else 0
+            zero = 1 if zero_lo != 0 else 0
             stretch, degree = (q, gamma) if zero != 0 else (1.0, 0.0)
+        divides = zero_lo if zero > 0 else zero_end if zero < 0 else 0
         singular = singular_log_rho(hi - t, tau, stretch)
         n = min(max(points, points_for(singular, budget, degree)), MAX_POINTS)
-        value, change, a0, a1, a2, a3, a_last = panel(
-            torque_at, step, t, hi, zero, q, n, b, rb, ab, min_angle, p
-        )
-        coefficients = (a0, a1, a2, a3, a_last)
-        if scale < 0.0:
-            scale = 0.25 * value
-        scale = max(scale, total)
-        share = math.log(scale / value) if scale > value > 0.0 else 0.0
-        required = log_rho_required(n, budget - share, degree)
-        if (
-            change == 0
-            and required <= singular
-            and (value == 0.0 or zero_free_on(required, coefficients, n, zero != 0))
-        ) or hi - t <= _SHORTEST * h:
-            total += value
+        values = panel(torques_at, step, t, hi, zero, divides, q, n, bends, rb, ab, min_angle, p)
+        scales = scales_raised(scales, totals, values)
+        carried = q - 1.0 if zero != 0 else 0.0
+        failing, wanted = verdict(values, scales, n, budget, degree, carried, singular, divides)
+        if failing == 0 or hi - t <= _SHORTEST * h:
+            totals = totals_added(totals, values)
             # The next panel starts from this one's points and twice its
             # length: a piece's panels are alike.
             length = 2.0 * (hi - t)
-            t, zero_lo = hi, zero < 0
+            t, zero_lo = hi, divides if zero < 0 else 0
             if t == end:  # a new piece: its panels start from the longest again
-                end, zero_end = next_kink(t, h, w1, a1, b, rb, ab, min_angle), False
+                end, zero_end = next_kink(t, h, w1, a1, bends, rb, ab, min_angle), 0
                 length, points = h, 0
             continue
-        if change == 0 and n < MAX_POINTS:
-            # The points T's zeros and its resolution ask for: if its zeros
-            # allow the largest rule, as many as they ask, or twice as many
-            # while the highest coefficient is not yet resolved.
-            low, top = zero_free_log_rho(coefficients, n, zero != 0)
-            own = points_for(min(singular, low), budget - share, degree)
-            if own <= MAX_POINTS:
-                needed = points_for(min(singular, low, top), budget - share, degree)
-                resolved = needed if needed <= MAX_POINTS else 2 * n
-                length, points = hi - t, min(MAX_POINTS, max(own, resolved, n + 1))
-                continue
-        root = -1.0
-        if change != 0 or may_vanish(coefficients):
-            root = _zero_in(torque_at, step, t, hi, zero, q, n, change)
+        if wanted != 0:
+            length, points = hi - t, wanted
+            continue
+        root, joints = _first_zero(torques_at, step, values, failing, t, hi, zero, divides, q, n)
         if root > t:
-            end, zero_end = root, True
+            end, zero_end = root, joints
         else:
             length = 0.5 * (hi - t)
     # A step over thousands of turns: what is left in one panel, less exactly.
     if t < h:
-        total += panel(torque_at, step, t, h, 0, q, MAX_POINTS, b, rb, ab, min_angle, p)[0]
-    return total
+        totals = totals_added(
+            totals, panel(torques_at, step, t, h, 0, 0, q, MAX_POINTS, bends, rb, ab, min_angle, p)
+        )
+    return totals
+
+
+def step_integral(torque_at, step, h, w1, a1, b, rb, ab, min_angle, p, reach):
+    """The integral over a step of `h` s of A(t) |w(t)| |T(t)|^p, A = max(|b(t)|,
+    `min_angle`) for one joint: `step_integrals` with N = 1, `torque_at(t,
+    step)` giving (T, w) t s into the step; the bend b + rb t + ab t^2 / 2."""
+    return step_integrals(torque_at, step, h, w1, a1, (b,), rb, ab, min_angle, p, reach)[0]

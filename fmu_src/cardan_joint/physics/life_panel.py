@@ -36,14 +36,8 @@ nearer: a distance tau from t0 is only (tau / L)^(1/q) in u.
 import math
 
 from .quadrature import (
-    FIRST_COEFFICIENT,
-    GAUSS_NODES,
-    GAUSS_WEIGHTS,
-    LAST_COEFFICIENT,
     MAX_POINTS,
     MIN_POINTS,
-    SECOND_COEFFICIENT,
-    THIRD_COEFFICIENT,
 )
 
 # Each panel's error bound, relative to the step's integral: the contract's
@@ -194,35 +188,3 @@ def node_time(lo, hi, u, zero, q):
     if zero < 0:
         return hi - (hi - lo) * whole_power(u, q)
     return lo + (hi - lo) * u
-
-
-def panel(torque_at, step, lo, hi, zero: int, q, points: int, b, rb, ab, min_angle, p):
-    """(the integral over [lo, hi], the index i of the first node whose torque's
-    sign differs from node i - 1's or 0, then T's Legendre coefficients
-    a_0..a_3, a_(n-1) on it): the `points`-point rule, substituted at the zero
-    end (`zero` as `node_time`). The integrand is A |w| |T|^p, A = max(|b + rb t
-    + ab t^2 / 2|, `min_angle`), (T, w) = `torque_at(t, step)`."""
-    total, a0, a1, a2, a3, a_last = 0.0, 0.0, 0.0, 0.0, 0.0, 0.0
-    change, before = 0, 0.0
-    for i in range(points):
-        u = GAUSS_NODES[points][i]
-        power = whole_power(u, q - 1.0) if zero != 0 else 1.0
-        t = node_time(lo, hi, u, zero, q)
-        torque, speed = torque_at(t, step)
-        if change == 0 and before != 0.0 and torque != 0.0 and (before < 0.0) != (torque < 0.0):
-            change = i
-        before = torque
-        angle = max(abs(b + t * (rb + 0.5 * ab * t)), min_angle)
-        rate = angle * abs(speed) * power_of(abs(torque), p)
-        value = torque
-        if zero != 0:
-            rate *= q * power
-            value = torque / (power * u)
-        weight = GAUSS_WEIGHTS[points][i]
-        total += weight * rate
-        a0 += weight * value
-        a1 += FIRST_COEFFICIENT[points][i] * value
-        a2 += SECOND_COEFFICIENT[points][i] * value
-        a3 += THIRD_COEFFICIENT[points][i] * value
-        a_last += LAST_COEFFICIENT[points][i] * value
-    return total * (hi - lo), change, a0, a1, a2, a3, a_last

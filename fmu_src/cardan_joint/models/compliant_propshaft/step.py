@@ -4,7 +4,8 @@ runtime (docs/codegen.md), so both give the same bits. The propshaft's step
 (`propshaft.step`) with the spring-damper layer's functions
 (`compliant_joint.step`) at its output: the chain steps with no load (its
 kinematics do not depend on it); its joints' life integrates the chain under
-the spring's moving torque (`spring_chain_torque`).
+the spring's moving torque (`spring_chain_torque`: the chain's load-free
+pass gives the spring's torque, which its backward pass carries).
 """
 
 import math
@@ -12,12 +13,20 @@ import math
 from ...physics.life import LifeRule
 from ...physics.revolutions import advanced, angle_value
 from ..compliant_joint.step import spring_load, spring_outputs, spring_takes_step, twist_change
-from ..propshaft.chain import CHAIN_FIELDS, OFFSET, SPEED, chain_values
+from ..propshaft.chain import (
+    CHAIN_FIELDS,
+    OFFSET,
+    SPEED,
+    chain_backward,
+    chain_forward,
+    chain_values,
+)
 from ..propshaft.step import (
     chain_damages,
-    chain_torque,
+    joint_torques,
     propshaft_outputs,
     state_names,
+    step_layout,
     sums_added,
     takes_step,
 )
@@ -26,8 +35,8 @@ from ..propshaft.step import (
 SPRING_STATE = ("lag", "stiffness", "damping")
 # `spring_chain_torque`'s step: `chain_torque`'s head without the load, then
 # the spring's (the last shaft's branch shift, lag, output shaft's speed and
-# acceleration, k, c), then the layout.
-_STEP_HEAD = 14
+# acceleration, k, c), then the layout and its bends' sines and cosines.
+_STEP_HEAD = 13
 
 
 def compliant_state_names(joints: int) -> tuple[str, ...]:
@@ -36,22 +45,25 @@ def compliant_state_names(joints: int) -> tuple[str, ...]:
 
 
 def spring_chain_torque(t, step):
-    """(T_k, joint k's input shaft speed) t s into the step under the spring:
-    the chain at no load gives the kinematics the spring's torque needs (the
-    last shaft's offset and speed), the chain under that torque T_k."""
-    joint, fraction, error, speed, acceleration, I1, I2, I3 = step[:8]
-    shift, lag, output_speed, output_acceleration, stiffness, damping = step[8:_STEP_HEAD]
-    layout = step[_STEP_HEAD:]
-    free = chain_values(
-        math, fraction, error + t * (speed + 0.5 * acceleration * t), speed + acceleration * t,
-        acceleration, layout, I1, I2, I3, 0.0,
+    """Every joint's (T_k, input shaft speed) t s into the step under the
+    spring (`joint_torques`): the chain's load-free pass gives the
+    kinematics the spring's torque needs (the last shaft's offset and
+    speed), its backward pass the torques under that load."""
+    fraction, error, speed, acceleration, I1, I2, I3 = step[:7]
+    shift, lag, output_speed, output_acceleration, stiffness, damping = step[7:_STEP_HEAD]
+    layout = step_layout(step[_STEP_HEAD:])
+    input_speed = speed + acceleration * t
+    forward = chain_forward(
+        math, fraction, error + t * (speed + 0.5 * acceleration * t), input_speed, acceleration,
+        layout, step[_STEP_HEAD + len(layout) :], I1, I2, I3,
     )  # fmt: skip
+    # The last joint's output shaft: its offset and speed.
     load = spring_load(
-        t, free[len(free) - 2 - CHAIN_FIELDS + OFFSET] - shift,
-        free[len(free) - 2 - CHAIN_FIELDS + SPEED], lag, speed, acceleration,
+        t, forward[len(forward) - 1 - CHAIN_FIELDS + OFFSET] - shift,
+        forward[len(forward) - 1 - CHAIN_FIELDS + SPEED], lag, speed, acceleration,
         output_speed, output_acceleration, stiffness, damping,
     )  # fmt: skip
-    return chain_torque(t, (joint, fraction, error, speed, acceleration, I1, I2, I3, load) + layout)
+    return joint_torques(forward, chain_backward(forward, layout, load), input_speed)
 
 
 def compliant_takes_step(h: float, parameters_valid: bool, speed: float, acceleration: float,

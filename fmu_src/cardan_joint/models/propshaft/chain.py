@@ -20,15 +20,14 @@ Scalars (the FMU, once per step) or numpy arrays (the fluctuation search).
 from typing import Any, NamedTuple
 
 from ...physics._backend import namespace
-from ...physics.response import JointResponse, kernel
+from ...physics.response import (
+    cardan_error_at,
+    crosspiece_motion,
+    euler_moments,
+    pose_of,
+    yoke_reactions,
+)
 from .geometry import HALF_PI, Layout
-
-_CARDAN_ERROR = JointResponse._fields.index("cardan_error")
-_SPEED_RATIO = JointResponse._fields.index("speed_ratio")
-_SPEED = JointResponse._fields.index("output_speed")
-_ACCELERATION = JointResponse._fields.index("output_acceleration")
-_ENERGY = JointResponse._fields.index("crosspiece_kinetic_energy")
-_TORQUE = JointResponse._fields.index("input_torque")
 
 # A layout as plain numbers (`layout_values`), joint after joint: its working
 # angle beta_k, pin offset b_k, twist c_k, the yoke phasing phi_{k-1} before it
@@ -69,26 +68,60 @@ def layout_values(geometry: Layout, shaft_inertias) -> tuple[float, ...]:
     )
 
 
-def chain_values(xp, angle, angle_error, speed, acceleration, layout, I1, I2, I3, load_torque):
-    """The chain at input angle `angle` (+ `angle_error`, the low part of a
-    double-double angle), input speed and acceleration, as one flat tuple
-    (`CHAIN_FIELDS` per joint, then the input torque and the energy); `layout`
-    from `layout_values`. Written in the generator's subset: the propshaft's
-    step (`step.py`) runs it in C; `xp` is numpy for arrays."""
+def bend_trig(xp, layout):
+    """Each joint's (sin beta_k, cos beta_k), after each other: constant over
+    a step, so the life integral's nodes take them from the step's start."""
+    trig = ()
+    for k in range(len(layout) // LAYOUT_FIELDS):
+        beta = layout[LAYOUT_FIELDS * k + WORKING_ANGLE]
+        trig = trig + (xp.sin(beta), xp.cos(beta))
+    return trig
+
+
+def joint_forward(xp, psi, sb, cb, w, a, I1, I2, I3):
+    """(cardan error, output speed and acceleration, the cross's kinetic
+    energy, input torque at no load, speed ratio) of one joint at pin angle
+    `psi`, bend sine `sb` and cosine `cb`, input speed `w` and acceleration
+    `a`: the kernel's (response.py) at a constant bend, from its own parts,
+    so to the bit; the rest of its outputs is not computed."""
+    s, c, sb, cb, D, rD = pose_of(xp, psi, sb, cb)[2:]
+    w2, a2, W1, W2, W3, dW1, dW2, dW3 = crosspiece_motion(s, c, sb, cb, D, rD, w, a, 0.0, 0.0)
+    M1, M2, M3 = euler_moments(I1, I2, I3, W1, W2, W3, dW1, dW2, dW3)
+    energy = 0.5 * (I1 * W1 * W1 + I2 * W2 * W2 + I3 * W3 * W3)
+    torque = yoke_reactions(M1, M2, M3, s, c, sb, cb, rD, 0.0)[2]
+    return cardan_error_at(xp, s, c, sb, cb), w2, a2, energy, torque, cb / D
+
+
+def chain_forward(xp, angle, angle_error, speed, acceleration, layout, trig, I1, I2, I3):
+    """The chain's load-free part at input angle `angle` (+ `angle_error`, the
+    low part of a double-double angle), input speed and acceleration: per joint
+    (`CHAIN_FIELDS`) o_k, omega_k, alpha_k, psi_k, T0_k (at no load) and the
+    ratio s_k, then the kinetic energy; `layout` from `layout_values`, `trig`
+    from `bend_trig`."""
     offset, w, a, energy = 0.0, speed, acceleration, 0.0
-    forward = ()  # per joint: o_k, omega_k, alpha_k, psi_k, T0_k (at no load), s_k
+    forward = ()
     for k in range(len(layout) // LAYOUT_FIELDS):
         joint = layout[LAYOUT_FIELDS * k : LAYOUT_FIELDS * (k + 1)]
         phase = joint[PHASE]
         psi = angle + (angle_error + (offset + k * HALF_PI + phase - joint[PIN_OFFSET]))
-        r = kernel(xp, psi, joint[WORKING_ANGLE], w, a, 0.0, 0.0, I1, I2, I3, 0.0, 1.0)
-        offset = offset + phase + joint[TWIST] + r[_CARDAN_ERROR]
-        w, a = r[_SPEED], r[_ACCELERATION]
-        energy = energy + r[_ENERGY]
-        forward = forward + (offset, w, a, psi, r[_TORQUE], r[_SPEED_RATIO])
+        error, w, a, crosspiece, torque, ratio = joint_forward(
+            xp, psi, trig[2 * k], trig[2 * k + 1], w, a, I1, I2, I3
+        )
+        offset = offset + phase + joint[TWIST] + error
+        energy = energy + crosspiece
+        forward = forward + (offset, w, a, psi, torque, ratio)
+    for k in range(1, len(layout) // LAYOUT_FIELDS):
+        w = forward[CHAIN_FIELDS * (k - 1) + SPEED]
+        energy = energy + 0.5 * layout[LAYOUT_FIELDS * k + INERTIA] * w * w
+    return forward + (energy,)
+
+
+def chain_backward(forward, layout, load_torque):
+    """Each joint's input torque T_k and load L_k (after each other), the
+    chain's load `load_torque` carried back through `chain_forward`'s values:
+    T_k = T0_k + s_k L_k, L_(k-1) = T_k + J_(k-1) alpha_(k-1)."""
     load = load_torque
-    torque = load
-    backward = ()  # per joint: T_k, L_k
+    backward = ()
     for k in range(len(layout) // LAYOUT_FIELDS - 1, -1, -1):
         torque = (
             forward[CHAIN_FIELDS * k + _FREE_TORQUE] + forward[CHAIN_FIELDS * k + _RATIO] * load
@@ -97,14 +130,23 @@ def chain_values(xp, angle, angle_error, speed, acceleration, layout, I1, I2, I3
         if k > 0:
             inertia = layout[LAYOUT_FIELDS * k + INERTIA]
             load = torque + inertia * forward[CHAIN_FIELDS * (k - 1) + ACCELERATION]
-    for k in range(1, len(layout) // LAYOUT_FIELDS):
-        w = forward[CHAIN_FIELDS * (k - 1) + SPEED]
-        energy = energy + 0.5 * layout[LAYOUT_FIELDS * k + INERTIA] * w * w
+    return backward
+
+
+def chain_values(xp, angle, angle_error, speed, acceleration, layout, I1, I2, I3, load_torque):
+    """The chain at input angle `angle` (+ `angle_error`), input speed and
+    acceleration under `load_torque`, as one flat tuple (`CHAIN_FIELDS` per
+    joint, then the input torque and the energy): `chain_forward`, then
+    `chain_backward`. Written in the generator's subset: the propshaft's step
+    (`step.py`) runs it in C; `xp` is numpy for arrays."""
+    trig = bend_trig(xp, layout)
+    forward = chain_forward(xp, angle, angle_error, speed, acceleration, layout, trig, I1, I2, I3)
+    backward = chain_backward(forward, layout, load_torque)
     values = ()
     for k in range(len(layout) // LAYOUT_FIELDS):
         values = values + forward[CHAIN_FIELDS * k : CHAIN_FIELDS * k + 4]
         values = values + backward[2 * k : 2 * k + 2]
-    return values + (torque, energy)
+    return values + (backward[0], forward[len(forward) - 1])
 
 
 def chain(

@@ -6,15 +6,17 @@ branch shifts, the tubes' critical speeds, the fluctuation) and each joint's
 Miner's sum travel in the state (`state_names`); a loop over the joints is a
 loop over a tuple's positions, which the generator unrolls.
 
-The life of a step: each joint's damage is `step_integral` of its torque T_k
-and its input shaft's speed, both the chain at that instant (`chain_torque`).
+The life of a step: each joint's damage is the integral of its rate, from
+its torque T_k and its input shaft's speed, both the chain at that instant
+(`chain_torque`); `step_integrals` takes every joint's on the same nodes, so
+each node costs one chain for all the joints.
 """
 
 import math
 
 from ...framework.values import MAX_INCREMENT, bounds
 from ...physics.life import LifeRule, compensated_add, life_outputs, rate_scale, singularity_reach
-from ...physics.life_integral import step_integral
+from ...physics.life_integral import step_integrals
 from ...physics.response import JointResponse, kernel
 from ...physics.revolutions import advanced, angle_value
 from .chain import (
@@ -26,6 +28,9 @@ from .chain import (
     SPEED,
     TORQUE,
     WORKING_ANGLE,
+    bend_trig,
+    chain_backward,
+    chain_forward,
     chain_values,
 )
 from .variables import propshaft_table
@@ -37,10 +42,12 @@ SPEED_LIMIT, _ACCELERATION_LIMIT, _LOAD_LIMIT = (
 _INPUT_MOMENT, _OUTPUT_MOMENT = (
     JointResponse._fields.index(name) for name in ("input_yoke_moment", "output_yoke_moment")
 )
-# `chain_torque`'s step: (joint k, the input angle's fraction and error, the
-# input speed and acceleration at the step's start, the cross's inertias, the
-# load), then the layout (`chain_damages`).
-_STEP_HEAD = 9
+# `chain_torque`'s step: (the input angle's fraction and error, the input
+# speed and acceleration at the step's start, the cross's inertias, the load),
+# then the layout and its bends' sines and cosines (`chain_damages`): seven
+# numbers a joint.
+_STEP_HEAD = 8
+_JOINT_FIELDS = LAYOUT_FIELDS + 2
 
 
 def state_names(joints: int) -> tuple[str, ...]:
@@ -77,47 +84,62 @@ def takes_step(h: float, parameters_valid: bool, speed: float, acceleration: flo
     )
 
 
+def joint_torques(forward, backward, input_speed):
+    """(T_1, w_0, ..., T_N, w_(N-1)): each joint's torque and its input
+    shaft's speed, from `chain_forward`'s and `chain_backward`'s values and
+    the input shaft's speed w_0 (`step_integrals`' torques)."""
+    torques = (backward[0], input_speed)
+    for k in range(1, len(backward) // 2):
+        torques = torques + (backward[2 * k], forward[CHAIN_FIELDS * (k - 1) + SPEED])
+    return torques
+
+
 def chain_torque(t, step):
-    """(T_k, joint k's input shaft speed) t s into the step (`_STEP_HEAD`): the
-    chain at that instant, the input shaft at constant acceleration."""
-    joint, fraction, error, speed, acceleration, I1, I2, I3, load = step[:_STEP_HEAD]
-    layout = step[_STEP_HEAD:]
+    """Every joint's (T_k, input shaft speed) t s into the step
+    (`_STEP_HEAD`), `joint_torques`: the chain at that instant under the held
+    load, the input shaft at constant acceleration."""
+    fraction, error, speed, acceleration, I1, I2, I3, load = step[:_STEP_HEAD]
+    layout = step_layout(step[_STEP_HEAD:])
     input_speed = speed + acceleration * t
-    values = chain_values(
+    forward = chain_forward(
         math, fraction, error + t * (speed + 0.5 * acceleration * t), input_speed, acceleration,
-        layout, I1, I2, I3, load,
+        layout, step[_STEP_HEAD + len(layout) :], I1, I2, I3,
     )  # fmt: skip
-    torque = values[TORQUE]
-    for k in range(1, len(layout) // LAYOUT_FIELDS):
-        if k == joint:
-            torque = values[CHAIN_FIELDS * k + TORQUE]
-            input_speed = values[CHAIN_FIELDS * (k - 1) + SPEED]
-    return torque, input_speed
+    return joint_torques(forward, chain_backward(forward, layout, load), input_speed)
 
 
-def chain_damages(rule, h, torque_at, fraction, error, speed, acceleration, crosspiece, load,
+def step_layout(tail):
+    """The layout in the tail of a `chain_damages` step, after its head: the
+    bends' sines and cosines follow it."""
+    return tail[: LAYOUT_FIELDS * (len(tail) // _JOINT_FIELDS)]
+
+
+def chain_damages(rule, h, torques_at, fraction, error, speed, acceleration, crosspiece, load,
                   layout):  # fmt: skip
     """Each joint's Miner damage over a step of `h` s from the input angle's
     `fraction` (+ `error`), the input shaft at `speed` and constant
-    `acceleration`: `torque_at(t, step)` gives (T_k, joint k's input shaft
-    speed), step = (k, fraction, error, speed, acceleration, the cross's
-    inertias, *`load`) + layout; `load` the held load (`chain_torque`) or the
-    parameters of a load that follows the motion. The torques share the
-    singularities of the largest working angle."""
-    peak = layout[WORKING_ANGLE]
-    for k in range(1, len(layout) // LAYOUT_FIELDS):
-        peak = max(peak, layout[LAYOUT_FIELDS * k + WORKING_ANGLE])
-    reach = singularity_reach(peak)
+    `acceleration`: `torques_at(t, step)` gives every joint's (T_k, input
+    shaft speed), step = (fraction, error, speed, acceleration, the cross's
+    inertias, *`load`) + layout + its bends' sines and cosines (`bend_trig`);
+    `load` the held load (`chain_torque`) or the
+    parameters of a load that follows the motion. The joints share the nodes
+    (`step_integrals`) and the singularities of the largest working angle."""
+    bends = ()
+    for k in range(len(layout) // LAYOUT_FIELDS):
+        bends = bends + (layout[LAYOUT_FIELDS * k + WORKING_ANGLE],)
+    peak = bends[0]
+    for k in range(1, len(bends)):
+        peak = max(peak, bends[k])
+    step = (fraction, error, speed, acceleration, *crosspiece, *load) + layout
+    step = step + bend_trig(math, layout)
+    integrals = step_integrals(
+        torques_at, step, h, speed, acceleration, bends, 0.0, 0.0, rule.min_angle, rule.exponent,
+        singularity_reach(peak),
+    )  # fmt: skip
     scale = rate_scale(rule) / 3600.0
     damages = ()
-    for k in range(len(layout) // LAYOUT_FIELDS):
-        step = (k, fraction, error, speed, acceleration, *crosspiece, *load) + layout
-        beta = layout[LAYOUT_FIELDS * k + WORKING_ANGLE]
-        integral = step_integral(
-            torque_at, step, h, speed, acceleration, beta, 0.0, 0.0, rule.min_angle,
-            rule.exponent, reach,
-        )  # fmt: skip
-        damages = damages + (scale * integral,)
+    for k in range(len(integrals)):
+        damages = damages + (scale * integrals[k],)
     return damages
 
 

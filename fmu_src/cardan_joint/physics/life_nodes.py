@@ -1,0 +1,188 @@
+"""One panel of the life integral for the N joints of a chain at once
+(`life_integral` marches them over a step; docs/life.md, "Exact over each
+step"), and each joint's verdict on it (`life_panel`'s bound).
+
+The joints share the panel's nodes: `torques_at(t, step)` gives every joint's
+torque and input speed at a node, (T_1, w_1, ..., T_N, w_N), so a chain is
+evaluated once per node for all its joints. Each joint keeps its own
+integrand A_k |w_k| |T_k|^p, its own Legendre coefficients and its own bound
+against its own integral. A panel substituted at some joints' torque zero
+(`divides`, one bit per joint) divides only their torques by u^q; to the
+others it is a plain change of variable, their torque a smooth function of u.
+A single joint (the UniversalJoint) is the case N = 1.
+"""
+
+import math
+
+from .life_panel import (
+    log_rho_required,
+    node_time,
+    points_for,
+    power_of,
+    whole_power,
+    zero_free_log_rho,
+    zero_free_on,
+)
+from .quadrature import (
+    FIRST_COEFFICIENT,
+    GAUSS_NODES,
+    GAUSS_WEIGHTS,
+    LAST_COEFFICIENT,
+    MAX_POINTS,
+    SECOND_COEFFICIENT,
+    THIRD_COEFFICIENT,
+)
+
+# `panel`'s values per joint: the integral over the panel, the index of the
+# first node whose torque's sign differs from the node's before (else 0), then
+# T's Legendre coefficients a_0..a_3, a_(n-1) on it.
+PANEL_FIELDS = 7
+# The sums over the nodes per joint: the rule's sum, the sign change, the
+# torque at the node before, then the coefficients.
+_SUM_FIELDS = 8
+
+
+def filled(like, value):
+    """A tuple of `value` for each item of `like`."""
+    items = ()
+    for _ in range(len(like)):
+        items = items + (value,)
+    return items
+
+
+def divides_at(divides: int, joint: int) -> bool:
+    """Whether `joint`'s bit is set in `divides`."""
+    return ((divides >> joint) & 1) == 1
+
+
+def torque_of(values, joint: int):
+    """`joint`'s torque in `torques_at`'s values."""
+    torque = values[0]
+    for k in range(1, len(values) // 2):
+        if k == joint:
+            torque = values[2 * k]
+    return torque
+
+
+def _started(bends):
+    sums = ()
+    for _ in range(len(bends)):
+        sums = sums + (0.0, 0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0)
+    return sums
+
+
+def _node_added(sums, i: int, values, t, u, power, zero: int, divides: int, q, points: int,
+                bends, rb, ab, min_angle, p):  # fmt: skip
+    """`sums` with node i (at t, unit node u) added for each joint: its rate
+    A_k |w_k| |T_k|^p (times the substitution's q u^(q-1) `power`) and its
+    torque (divided by u^q where the joint's zero is the panel's end)."""
+    weight = GAUSS_WEIGHTS[points][i]
+    added = ()  # type: tuple
+    for k in range(len(bends)):
+        joint = sums[_SUM_FIELDS * k : _SUM_FIELDS * (k + 1)]
+        total, change, before, a0, a1, a2, a3, a_last = joint
+        torque, speed = values[2 * k], values[2 * k + 1]
+        if change == 0 and before != 0.0 and torque != 0.0 and (before < 0.0) != (torque < 0.0):
+            change = i
+        angle = max(abs(bends[k] + t * (rb + 0.5 * ab * t)), min_angle)
+        rate = angle * abs(speed) * power_of(abs(torque), p)
+        value = torque
+        if zero != 0:
+            rate *= q * power
+            if divides_at(divides, k):
+                value = torque / (power * u)
+        added = added + (
+            total + weight * rate, change, torque,
+            a0 + weight * value,
+            a1 + FIRST_COEFFICIENT[points][i] * value,
+            a2 + SECOND_COEFFICIENT[points][i] * value,
+            a3 + THIRD_COEFFICIENT[points][i] * value,
+            a_last + LAST_COEFFICIENT[points][i] * value,
+        )  # fmt: skip
+    return added
+
+
+def panel(torques_at, step, lo, hi, zero: int, divides: int, q, points: int, bends, rb, ab,
+          min_angle, p):  # fmt: skip
+    """Each joint's `PANEL_FIELDS` values on [lo, hi] by the `points`-point
+    rule, substituted at the zero end (`zero` as `node_time`); joint k's
+    integrand A_k |w_k| |T_k|^p, A_k = max(|bends[k] + rb t + ab t^2 / 2|,
+    `min_angle`), (T_k, w_k) = items 2k, 2k + 1 of `torques_at(t, step)`; its
+    coefficients those of T_k / u^q if its bit is set in `divides`."""
+    sums = _started(bends)
+    for i in range(points):
+        u = GAUSS_NODES[points][i]
+        power = whole_power(u, q - 1.0) if zero != 0 else 1.0
+        t = node_time(lo, hi, u, zero, q)
+        sums = _node_added(sums, i, torques_at(t, step), t, u, power, zero, divides, q, points,
+                           bends, rb, ab, min_angle, p)  # fmt: skip
+    values = ()  # type: tuple
+    for k in range(len(bends)):
+        values = values + (sums[_SUM_FIELDS * k] * (hi - lo), sums[_SUM_FIELDS * k + 1])
+        values = values + sums[_SUM_FIELDS * k + 3 : _SUM_FIELDS * (k + 1)]
+    return values
+
+
+def totals_added(totals, values):
+    """Each joint's integral so far plus its panel's."""
+    added = ()
+    for k in range(len(totals)):
+        added = added + (totals[k] + values[PANEL_FIELDS * k],)
+    return added
+
+
+def scales_raised(scales, totals, values):
+    """What each joint's bound is asked against: its step's integral from
+    below, a quarter of its first panel's value, then what its accepted
+    panels sum (every panel's part is positive). A panel that adds little to
+    it may err more against its own."""
+    raised = ()
+    for k in range(len(scales)):
+        scale = scales[k]
+        if scale < 0.0:
+            scale = 0.25 * values[PANEL_FIELDS * k]
+        raised = raised + (max(scale, totals[k]),)
+    return raised
+
+
+def _joint_needs(value, change: int, coefficients, scale, n: int, budget, degree, singular,
+                 substituted: bool):  # fmt: skip
+    """(whether the joint's bound holds on the panel, else the points it asks
+    for: as many as its zeros ask if they allow the largest rule, or twice as
+    many while its highest coefficient is not yet resolved; 0 when it needs a
+    cut at a zero, or halving)."""
+    share = math.log(scale / value) if scale > value > 0.0 else 0.0
+    required = log_rho_required(n, budget - share, degree)
+    if (
+        change == 0
+        and required <= singular
+        and (value == 0.0 or zero_free_on(required, coefficients, n, substituted))
+    ):
+        return True, n
+    if change == 0 and n < MAX_POINTS:
+        low, top = zero_free_log_rho(coefficients, n, substituted)
+        own = points_for(min(singular, low), budget - share, degree)
+        if own <= MAX_POINTS:
+            needed = points_for(min(singular, low, top), budget - share, degree)
+            resolved = needed if needed <= MAX_POINTS else 2 * n
+            return False, min(MAX_POINTS, max(own, resolved, n + 1))
+    return False, 0
+
+
+def verdict(values, scales, n: int, budget, degree, carried, singular, divides: int):
+    """(the joints whose bound fails, one bit each; the points that the
+    failing ones ask for, the most any asks, or 0 if one needs a cut). On a
+    substituted panel the joints whose zero it is (`divides`) take the
+    substitution's power `degree` (gamma); to the others it is a change of
+    variable whose Jacobian q u^(q-1) has the degree `carried`, q - 1."""
+    failing, wanted = 0, n
+    for k in range(len(scales)):
+        holds, points = _joint_needs(
+            values[PANEL_FIELDS * k], values[PANEL_FIELDS * k + 1],
+            values[PANEL_FIELDS * k + 2 : PANEL_FIELDS * (k + 1)], scales[k], n, budget,
+            degree if divides_at(divides, k) else carried, singular, divides_at(divides, k),
+        )  # fmt: skip
+        if not holds:
+            failing = failing | (1 << k)
+            wanted = 0 if points == 0 or wanted == 0 else max(wanted, points)
+    return failing, wanted
