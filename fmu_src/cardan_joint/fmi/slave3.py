@@ -65,7 +65,7 @@ class ModelSlave3(ModelBinding, SlaveCore, Fmi3Slave):
         )
         rows = [tuple(row.name for row in group.rows) for group in groups]
         cls._FLAT = cls._refs.reference_table([(), *rows])  # `time`: no flat index
-        cls.fast_flat = cls._FLAT  # how the native loader's one-call step maps value references
+        cls.fast_flat = cls._FLAT  # how the runtime's fast path maps value references
         cls._SIZE = tuple(len(flat) or 1 for flat in cls._FLAT)
         cls._LONGEST = max(cls._SIZE)
         cls._SETTABLE = frozenset(
