@@ -31,7 +31,6 @@ from .model_description3 import complete
 from .references import FIRST_VALUE_REFERENCE, log_categories
 
 TIME_REFERENCE = FIRST_VALUE_REFERENCE  # `time` is the first variable
-_STEP_RESULTS = {status: Fmi3StepResult(status=status) for status in Fmi3Status}
 
 
 class ModelSlave3(ModelBinding, SlaveCore, Fmi3Slave):
@@ -132,7 +131,7 @@ class ModelSlave3(ModelBinding, SlaveCore, Fmi3Slave):
             self._fault("enter_initialization_mode", error)
 
     def do_step(self, current_time, step_size):
-        return _STEP_RESULTS[self._step(current_time, step_size)]
+        return Fmi3StepResult(status=self._step(current_time, step_size))
 
     # --- values --------------------------------------------------------------
 
