@@ -21,7 +21,7 @@ SLAVE = "fmu_src/cardan_joint/fmi/slave.py"
 CORE = "fmu_src/cardan_joint/fmi/core.py"
 FMU_STATE = "fmu_src/cardan_joint/fmi/fmu_state.py"
 REFERENCES = "fmu_src/cardan_joint/fmi/references.py"
-FAST_STEP = "fmu_src/cardan_joint/fmi/fast_step.py"
+FAST_PATH = "fmu_src/cardan_joint/fmi/fast_path.py"
 WATCHES = "fmu_src/cardan_joint/framework/watches.py"
 WATCHING = "fmu_src/cardan_joint/fmi/watching.py"
 WATCH_TESTS = "tests/fmu/test_watched_limits.py"
@@ -32,7 +32,7 @@ ROBUSTNESS_CALLS = "tests/fmu/test_robustness_calls.py"
 HONEST = "tests/fmu/test_honest_statuses.py"
 COMPLIANT = "fmu_src/cardan_joint/models/compliant_joint/model.py"
 COMPLIANT_TESTS = "tests/fmu/test_compliant_joint.py"
-FAST_STEP_TESTS = "tests/unit/test_fast_step.py"
+SLAVE_ARRAYS = "tests/unit/test_slave_arrays.py"
 
 
 @dataclass(frozen=True)

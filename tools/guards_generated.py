@@ -82,12 +82,20 @@ GENERATED_MUTATIONS = (
     Mutation(
         "generated step: a watch passed by a step in C is warned of",
         FAST_VALUES,
-        "return watch_passed(fast) ? (int)fast_call(in, FAST_WATCH, 0, 0) : fmi2OK;",
+        "return watch_passed(fast) ? (fmi2Status)fast_call(in, FAST_WATCH) : fmi2OK;",
         "return fmi2OK;",
         (RUNTIME_TESTS, "-k", "past_the_rated_torque"),
     ),
     Mutation(
-        "one-call step: a read passes the indices it reads",
+        "fast path: a step the slave takes is stored (its outputs, the moved inputs)",
+        FAST_VALUES,
+        "    if (fast && in->state != STATE_ERROR && fast_after(in) == fmi2OK)\n"
+        "        fast->stale = status != fmi2OK;\n",
+        "",
+        ("tests/fmu/test_fast_path.py", "-k", "plain_calls"),
+    ),
+    Mutation(
+        "fast path: a read passes the indices it reads",
         FAST_VALUES,
         "fast->reading = vr, fast->reading_count = n;",
         "fast->reading = vr, fast->reading_count = 0;",

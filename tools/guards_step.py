@@ -1,11 +1,10 @@
 """The mutation table's step and slave guards (tools/guards.py): the step
 itself, the rotor models' own guard, the slave's answers to refusals, illegal
-calls and states, and the one-call step."""
+calls and states, and the slave's side of the fast path."""
 
 from guards_base import (
     CORE,
-    FAST_STEP,
-    FAST_STEP_TESTS,
+    FAST_PATH,
     FMU_STATE,
     GUARDS,
     HONEST,
@@ -14,6 +13,7 @@ from guards_base import (
     ROBUSTNESS_CALLS,
     ROTOR_MODEL,
     SLAVE,
+    SLAVE_ARRAYS,
     SLAVE_GUARDS,
     STEPPED,
     VALUES,
@@ -67,7 +67,7 @@ STEP_MUTATIONS = (
         WRITTEN_STEP,
         "            return super().run(time, step_size, inputs)\n",
         "            pass\n",
-        (FAST_STEP_TESTS, "-k", "normal_paths"),
+        (SLAVE_ARRAYS, "-k", "normal_paths"),
     ),
     Mutation(
         "restore: all or nothing",
@@ -96,15 +96,15 @@ STEP_MUTATIONS = (
     Mutation(
         "slave: refused step returns Error",
         CORE,
-        "            if problem:\n                model.time = time\n",
-        "            if False:\n                model.time = time\n",
+        "            if isinstance(result, Refusal):\n",
+        "            if False:\n",
         (SLAVE_GUARDS, "-k", "step"),
     ),
     Mutation(
         "slave: refused step leaves the clock",
-        CORE,
-        "                model.time = time\n                return self._refused(",
-        "                return self._refused(",
+        STEPPED,
+        "            self.time = before\n            return problem\n",
+        "            return problem\n",
         (f"{ROBUSTNESS_CALLS}::test_a_refused_step_leaves_the_clock_alone",),
     ),
     Mutation(
@@ -126,7 +126,7 @@ STEP_MUTATIONS = (
         CORE,
         "if read is None or any(i - self._refs.first_output in held for i in read):",
         "if True:",
-        (f"{FAST_STEP_TESTS}::test_only_an_output_that_depends_on_an_invalid_input_warns",),
+        (f"{SLAVE_ARRAYS}::test_only_an_output_that_depends_on_an_invalid_input_warns",),
     ),
     Mutation(
         "slave: bad parameters are an error at initialization",
@@ -216,42 +216,35 @@ STEP_MUTATIONS = (
         "self._checked_state(state)",
         (SLAVE_GUARDS, "-k", "start_time"),
     ),
-    # The one-call step (issue 21): what the native loader may keep of its buffers.
+    # The slave's side of the fast path: what the runtime may keep of its arrays.
     Mutation(
-        "one-call step: a refused step writes no outputs",
-        FAST_STEP,
-        "            if result.__class__ is not tuple:\n",
-        "            if False:\n",
-        (FAST_STEP_TESTS, "-k", "refused_step or normal_paths"),
+        "fast path: a taken step's outputs are stored",
+        FAST_PATH,
+        "(self._refs.known_of(self._model), self._outputs_held)",
+        "(self._refs.known_of(self._model), self._refs.nan_outputs)",
+        (SLAVE_ARRAYS, "-k", "normal_paths"),
     ),
     Mutation(
-        "one-call step: the inputs a step moved are written back",
-        FAST_STEP,
-        "return self._STATUS.ok, outputs, moved",
-        "return self._STATUS.ok, outputs, tuple(inputs)",
-        (FAST_STEP_TESTS, "-k", "normal_paths"),
-    ),
-    Mutation(
-        "one-call step: held outputs are not kept",
-        FAST_STEP,
+        "fast path: held outputs are not kept",
+        FAST_PATH,
         "return (self._STATUS.warning if held else self._STATUS.ok), outputs",
         "return self._STATUS.ok, outputs",
-        (FAST_STEP_TESTS, "-k", "refused_step or normal_paths"),
+        (SLAVE_ARRAYS, "-k", "refused_step or normal_paths"),
     ),
     Mutation(
-        "one-call step: a read after an input write checks the inputs",
-        FAST_STEP,
+        "fast path: a read after an input write checks the inputs",
+        FAST_PATH,
         "set_inputs(inputs)\n        self._outputs = None\n        self._inputs_checked = False\n",
         "set_inputs(inputs)\n        self._outputs = None\n",
-        (FAST_STEP_TESTS, "-k", "normal_paths"),
+        (SLAVE_ARRAYS, "-k", "normal_paths"),
     ),
     # The watches (framework/watches.py): each output past its limit once, the run on.
     Mutation(
-        "watches: the one-call step checks them",
-        FAST_STEP,
-        "if armed and any_passed(armed, outputs):",
-        "if False:",
-        (WATCH_TESTS, "-k", "defaults"),
+        "watches: a step in Python checks them",
+        CORE,
+        "            if self._armed:\n                self._watch(outputs)\n",
+        "",
+        ("tests/fmu/test_generated_step.py", "-k", "rated_torque"),
     ),
     Mutation(
         "watches: a passed watch is disarmed",

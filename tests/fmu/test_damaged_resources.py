@@ -162,11 +162,11 @@ def no_invalid_access_under_valgrind(request, tmp_path, version, name, damage) -
     assert "ERROR SUMMARY" in run.stderr
 
 
-# Patches at the end of the slave module's file, for its class: no one-call step
+# Patches at the end of the slave module's file, for its class: no fast path
 # (so every read and write reaches the slave), and a getter with one value too many.
-NO_ONE_CALL_STEP = """
+NO_FAST_PATH = """
 def _no_layout(cls):
-    raise RuntimeError("no one-call step")
+    raise RuntimeError("no fast path")
 
 {cls}.fast_layout = classmethod(_no_layout)
 """
@@ -228,7 +228,7 @@ def test_a_getter_answering_another_count_is_refused_not_copied(request, tmp_pat
     """The runtime copies a getter's values into the host's array only when the
     slave gave exactly as many as the host asked for (slave_values.c)."""
     getter = "get_float64" if version == 3 else "get_real"
-    copy = patched_copy(request, tmp_path, version, NO_ONE_CALL_STEP, ONE_TOO_MANY, getter=getter)
+    copy = patched_copy(request, tmp_path, version, NO_FAST_PATH, ONE_TOO_MANY, getter=getter)
     answer, messages = read_one_output(copy, "getFloat64" if version == 3 else "getReal")
     assert answer == "refused 4"  # fmi2Fatal / fmi3Fatal
     assert f"the slave's {getter} gave 2 values (-1: no list) for 1 values" in messages
@@ -236,9 +236,9 @@ def test_a_getter_answering_another_count_is_refused_not_copied(request, tmp_pat
 
 def test_a_record_naming_another_type_is_no_way_past_the_float64_slave(request, tmp_path):
     """FMI 3.0: a variable record that gives a variable another type than the
-    slave's (caught at instantiate when the slave has the one-call step) still
+    slave's (caught at instantiate when the slave has the fast path) still
     reaches no accessor of that type: the call is refused by name (fmi3_calls.c)."""
-    copy = patched_copy(request, tmp_path, 3, NO_ONE_CALL_STEP)
+    copy = patched_copy(request, tmp_path, 3, NO_FAST_PATH)
     record = copy / "resources" / "variables.txt"
     record.write_text(re.sub(r"Float64( 1 0 output_speed)", r"Int32\1", record.read_text()))
     answer, messages = read_one_output(copy, "getInt32")

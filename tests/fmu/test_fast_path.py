@@ -1,7 +1,9 @@
-"""Issue 21, the loader's side of the one-call step (fmi/native/fast_path.c): in a
-host the FMU's Real values are served in C and doStep enters the slave once;
-an instance whose slave cannot be claimed keeps plain forwarding, and both
-give the same values, statuses and messages, bit for bit.
+"""The runtime's side of the fast path (fmi/native/fast_path.c): in a host the
+FMU's Real values are served in C; a step in Python is the slave's do_step
+between the calls that keep the slave and the arrays in step, the outputs it
+gives served from the arrays; an instance whose slave cannot be claimed keeps
+plain forwarding, and both give the same values, statuses and messages, bit
+for bit.
 
 The slave's Python is observed in this process (FMPy loads the FMU here):
 its classes are those of the FMU's own copy of cardan_joint, reached through
@@ -29,8 +31,8 @@ LAST_SUCCESSFUL_TIME, TERMINATED = 2, 3  # fmi2StatusKind
 
 @pytest.fixture(autouse=True)
 def python_step(monkeypatch):
-    """The one-call step in Python: the default build's generated step would take
-    every step in C (test_generated_step.py)."""
+    """Every step in Python: the default build's generated step would take every
+    step in C (test_generated_step.py)."""
     monkeypatch.setenv("CARDAN_JOINT_FMU_PYTHON_STEP", "1")
 
 
@@ -43,18 +45,18 @@ def extracted(request):
 
 
 def slave_classes(extracted):
-    """The FMU copy's slave class and its FastStep, once an instance made pythonfmu
+    """The FMU copy's slave class and its FastPath, once an instance made pythonfmu
     import the script."""
     module = (Path(extracted.directory) / "resources" / "slavemodule.txt").read_text().strip()
     script = sys.modules[module]
     slave = next(v for v in vars(script).values() if isinstance(v, type) and v.__module__ == module)
-    return slave, next(c for c in slave.__mro__ if c.__name__ == "FastStep")
+    return slave, next(c for c in slave.__mro__ if c.__name__ == "FastPath")
 
 
 def model_class(slave_class):
-    """The physics class of the FMU copy's model: the one-call step enters it once
-    per step (`run`), the loader having bound the slave's `fast_step` at claim."""
-    package = next(c for c in slave_class.__mro__ if c.__name__ == "FastStep").__module__
+    """The physics class of the FMU copy's model: a step in Python enters it once
+    (`run`)."""
+    package = next(c for c in slave_class.__mro__ if c.__name__ == "FastPath").__module__
     package = package.rsplit(".fmi.", 1)[0]
     module = sys.modules[f"{package}.models.{slave_class.model_folder}.model"]
     own = [v for v in vars(module).values() if isinstance(v, type)]
@@ -87,19 +89,22 @@ def bits(values):
     return struct.pack(f"{len(flat)}d", *flat)
 
 
-def test_a_step_enters_the_slave_once_and_values_never(extracted, monkeypatch):
+def test_a_step_enters_do_step_once_and_values_never(extracted, monkeypatch):
+    """Each step in Python is one do_step (one run of the model); the outputs it
+    gave are read from the arrays, not evaluated again."""
     with extracted.instance("warm-up"):
         pass
     slave_class, _ = slave_classes(extracted)
     with extracted.instance("fast") as fast:
-        plain = PLAIN_ENTRIES[extracted.version]
-        counts = count_entries(monkeypatch, slave_class, plain)
+        set_values, get_values, do_step = plain = PLAIN_ENTRIES[extracted.version]
+        counts = count_entries(monkeypatch, slave_class, (*plain, "fast_outputs"))
         count_entries(monkeypatch, model_class(slave_class), ("run",), counts)
         for k in range(50):
             fast.set(**{**GOOD, "load_torque": 80.0 + k})
             fast.step(1e-3)
             outputs = fast.get_flat_outputs()
-        assert counts == {**dict.fromkeys(plain, 0), "run": 50}
+        stepped = {set_values: 0, get_values: 0, "fast_outputs": 0}
+        assert counts == {**stepped, do_step: 50, "run": 50}
         assert all(math.isfinite(v) for v in outputs.values())
         # A reset builds a new slave: the loader finds it and keeps the fast path.
         fast.fmu.reset()
@@ -112,7 +117,7 @@ def test_a_step_enters_the_slave_once_and_values_never(extracted, monkeypatch):
         fast.set(**GOOD)
         fast.step(1e-3)
         fast.get_outputs()
-        assert counts == {**dict.fromkeys(plain, 0), "run": 51}
+        assert counts == {**stepped, do_step: 51, "run": 51}
 
 
 def step_status(instance, step=1e-3):
@@ -209,24 +214,24 @@ def test_a_refused_fmu_state_leaves_the_outputs_served_as_they_were(extracted, m
         instance.free_state(saved)
 
 
-def test_plain_calls_when_the_slave_has_no_fast_step_give_the_same_bits(extracted, monkeypatch):
+def test_plain_calls_when_the_slave_has_no_fast_path_give_the_same_bits(extracted, monkeypatch):
     with extracted.instance("warm-up"):
         pass
-    slave_class, fast_step = slave_classes(extracted)
+    slave_class, fast_path = slave_classes(extracted)
     set_values, get_values, do_step = plain_entries = PLAIN_ENTRIES[extracted.version]
     fast_messages, plain_messages = [], []
     with extracted.instance("same", exit_initialization=False, messages=fast_messages) as fast:
         counts = count_entries(monkeypatch, slave_class, plain_entries)
         fast_run = scenario(fast)
         fast_counts = dict(counts)
-    monkeypatch.delattr(fast_step, "fast_step")  # the runtime then calls do_step & co.
+    monkeypatch.delattr(fast_path, "fast_layout")  # the runtime then calls get_real & co.
     with extracted.instance("same", exit_initialization=False, messages=plain_messages) as plain:
         counts = count_entries(monkeypatch, slave_class, plain_entries)
         plain_run = scenario(plain)
         plain_counts = dict(counts)
-    # The fast instance forwarded only the parameter set and the read of a
-    # variable it does not have.
-    assert fast_counts == {set_values: 1, get_values: 1, do_step: 0}
+    # The fast instance forwarded only the parameter set, the read of a
+    # variable it does not have and the steps.
+    assert fast_counts == {set_values: 1, get_values: 1, do_step: 24}
     assert plain_counts[do_step] == 24 and plain_counts[set_values] >= 24
     assert fast_run == plain_run
     assert fast_messages == plain_messages

@@ -194,7 +194,7 @@ def test_an_internal_fault_in_a_step_is_an_error_status_not_an_exception(monkeyp
     slave = Joint(instance_name="faulty")
     slave.enter_initialization_mode()
     slave.exit_initialization_mode()
-    monkeypatch.setattr(slave._model, "step", lambda step_size: 1 / 0)
+    monkeypatch.setattr(slave._model, "run", lambda time, step_size, inputs: 1 / 0)
     assert slave.do_step(0.0, 0.1).status == Fmi3Status.error
     assert "internal error in do_step: ZeroDivisionError" in slave.log_queue[-1].msg
     assert slave.get_float64([TIME_REFERENCE])[0] == 0.0  # the clock stays at the step's start

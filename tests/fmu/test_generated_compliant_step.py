@@ -89,8 +89,8 @@ def test_every_kind_of_call_gives_the_python_steps_bits_and_messages(extracted, 
     # The twist first (then, as the load grows, the torque and life).
     assert watched[0][0] == 1 and watched[0][2].startswith("twist_angle"), c_messages
     # In C: every taken step (the refused one goes to the slave, which says why).
-    assert python_counts["run"] == python_counts["fast_step"] == 27, (python_counts, c_counts)
-    assert c_counts["run"] == c_counts["fast_step"] == 1 and c_counts["fast_sync"] >= 3
+    assert python_counts["run"] == python_counts["do_step"] == 27, (python_counts, c_counts)
+    assert c_counts["run"] == c_counts["do_step"] == 1 and c_counts["fast_sync"] >= 3
 
 
 def random_inputs(rng: random.Random) -> dict:

@@ -16,7 +16,7 @@ from cardan_joint.host.instance import ExtractedFMU
 
 BUILDS = {2: (), 3: ("--joints", "3"), 4: ("--joints", "4")}
 INPUTS = ("input_speed", "input_acceleration", "load_torque")
-COUNTED = ("fast_sync", "fast_step")
+COUNTED = ("fast_sync", "do_step")
 
 
 @pytest.fixture(
@@ -79,12 +79,12 @@ def random_run(seed: int, steps: int = 100, inputs=INPUTS, inputs_of=random_inpu
 def three_ways(extracted, monkeypatch, run):
     """run(instance) with the generated step, with the slave offering no step
     state and with CARDAN_JOINT_FMU_PYTHON_STEP=1: (results, messages, calls of
-    the model's run and of the slave's fast_sync and fast_step) each."""
-    slave_class, fast_step = slave_classes(extracted)
+    the model's run and of the slave's fast_sync and do_step) each."""
+    slave_class, fast_path = slave_classes(extracted)
     outcomes = []
     for way in ("generated", "no state", "environment"):
         if way == "no state":
-            monkeypatch.delattr(fast_step, "fast_state_size")
+            monkeypatch.delattr(fast_path, "fast_state_size")
         monkeypatch.setenv("CARDAN_JOINT_FMU_PYTHON_STEP", "1" if way == "environment" else "0")
         counts = count_entries(monkeypatch, slave_class, COUNTED)
         count_entries(monkeypatch, model_class(slave_class), ("run",), counts)

@@ -2,7 +2,7 @@
 model step the generator translates (the joint, with life and without) takes
 every step it can in C, without entering Python, and gives the same bits,
 statuses and messages as the same FMU stepping in Python, FMI 2.0 and 3.0: over
-every kind of call the one-call step serves (test_fast_path's scenario) and
+every kind of call the fast path serves (test_fast_path's scenario) and
 over random runs with refusals, FMU states set back, long steps and loads past
 the rated torque (warned once)."""
 
@@ -16,7 +16,7 @@ from cardan_joint.host.instance import ExtractedFMU, status_of
 from cardan_joint.models.universal_joint import variables as table
 
 BUILDS = {"no-life": ("--no-life",), "life": ()}
-COUNTED = ("fast_sync", "fast_step")
+COUNTED = ("fast_sync", "do_step")
 
 
 @pytest.fixture(
@@ -37,11 +37,11 @@ def both(extracted, monkeypatch, run):
     """run(instance) with the generated step and with every step in Python (the
     slave then offers no step state, so the runtime keeps its step in Python):
     (results, messages, calls of the model's run and of the slave's methods)."""
-    slave_class, fast_step = slave_classes(extracted)
+    slave_class, fast_path = slave_classes(extracted)
     outcomes = []
     for generated in (True, False):
         if not generated:
-            monkeypatch.delattr(fast_step, "fast_state_size")
+            monkeypatch.delattr(fast_path, "fast_state_size")
         counts = count_entries(monkeypatch, slave_class, COUNTED)
         count_entries(monkeypatch, model_class(slave_class), ("run",), counts)
         messages: list = []
@@ -58,8 +58,8 @@ def test_every_kind_of_call_gives_the_python_steps_bits_and_messages(extracted, 
     assert c_messages == python_messages
     # In C: every taken step (the refused one goes to the slave, which says why);
     # the slave caught up before each call that needs its state.
-    assert python_counts == {"run": 24, "fast_sync": 0, "fast_step": 24}
-    assert c_counts["run"] == c_counts["fast_step"] == 1 and c_counts["fast_sync"] >= 3
+    assert python_counts == {"run": 24, "fast_sync": 0, "do_step": 24}
+    assert c_counts["run"] == c_counts["do_step"] == 1 and c_counts["fast_sync"] >= 3
 
 
 def random_inputs(rng: random.Random) -> dict:
@@ -163,12 +163,12 @@ def test_a_slave_that_cannot_catch_up_leaves_the_instance_in_the_error_state(
     later call but reset and free is refused with Error and says why, rather than
     act on a slave behind the host; a reset makes a new slave that steps again
     (and catches up before terminate)."""
-    _, fast_step = slave_classes(extracted)
+    _, fast_path = slave_classes(extracted)
 
     def behind(self, *args):
         raise RuntimeError("a slave that cannot take the state")
 
-    monkeypatch.setattr(fast_step, "fast_sync", behind)
+    monkeypatch.setattr(fast_path, "fast_sync", behind)
     messages: list = []
     with extracted.instance("behind", messages=messages) as instance:
         instance.set(input_speed=100.0, bend_angle=0.3)
@@ -210,7 +210,7 @@ def test_a_step_state_beyond_the_arrays_is_refused_and_the_slave_called_plainly(
     """A slave that says its step state holds 2**61 values (its arrays' sizes
     would wrap around): the runtime says so and calls the slave plainly, with
     the same values as the generated step."""
-    _, fast_step = slave_classes(extracted)
+    _, fast_path = slave_classes(extracted)
 
     def run(instance):
         instance.set(input_speed=100.0, bend_angle=0.3, load_torque=50.0)
@@ -218,7 +218,7 @@ def test_a_step_state_beyond_the_arrays_is_refused_and_the_slave_called_plainly(
 
     with extracted.instance("sized") as instance:
         expected = run(instance)
-    monkeypatch.setattr(fast_step, "fast_state_size", lambda self: 2**61)
+    monkeypatch.setattr(fast_path, "fast_state_size", lambda self: 2**61)
     messages: list = []
     with extracted.instance("sized", messages=messages) as instance:
         assert run(instance) == expected

@@ -1,6 +1,6 @@
-"""The FMU's one-call step on the physics (`run`): the joint's inline path gives
-`step` then `outputs` to the bit, refusals included, and every model's positional
-inputs follow its table."""
+"""The FMU's step on the physics (`run`, which the slave's do_step calls): the
+joint's written step gives `step` then `outputs` to the bit, refusals included,
+and every model's positional inputs follow its table."""
 
 import math
 import random

@@ -18,7 +18,8 @@ before its pythonfmu base and provides `_STATUS` (its status enumeration),
 from typing import Any
 
 from .. import __version__
-from .fast_step import FastStep
+from ..framework.refusal import Refusal
+from .fast_path import FastPath
 from .fmu_state import FmuStates
 from .references import References, ValueReferences
 from .watching import Watching
@@ -30,7 +31,7 @@ def _readable(seconds: float) -> str:
     return repr(float(f"{seconds:.12g}"))
 
 
-class SlaveCore(ValueReferences, Watching, FmuStates, FastStep):
+class SlaveCore(ValueReferences, Watching, FmuStates, FastPath):
     author = "Cardan joint FMU team"
     license = "MIT"
     version = __version__
@@ -113,23 +114,29 @@ class SlaveCore(ValueReferences, Watching, FmuStates, FastStep):
             self._fault("exit_initialization_mode", error)
 
     def _step(self, current_time, step_size):
-        """Take the step; return the status: ok, or error (refused, the model as
-        it was, or an internal fault; reported either way)."""
+        """Take the step (the model's `run`); return the status: ok, or error
+        (refused, the model as it was, or an internal fault; reported either way)."""
         try:
             model = self._model
-            time = model.time
-            model.time = current_time
-            problem = model.step(step_size)
-            if problem:
-                model.time = time
-                return self._refused(problem, current_time, step_size)
-            self._outputs = None
-            self._inputs_checked = True
-            self._watch_step()
+            result = model.run(current_time, step_size, model.inputs())
+            if isinstance(result, Refusal):
+                return self._refused(result, current_time, step_size)
+            outputs, moved = result
+            self._taken(outputs, moved)
+            if self._armed:
+                self._watch(outputs)
             return self._STATUS.ok
         except Exception as error:
             self._fault("do_step", error)
             return self._STATUS.error
+
+    def _taken(self, outputs, inputs):
+        """After a taken step: its outputs, current and held for getReal, and the
+        inputs after it (those polynomial over the step have moved: a getReal of
+        one reads the moved value, and the next step starts from it)."""
+        self._outputs = self._outputs_held = outputs
+        self._inputs_held = inputs
+        self._inputs_checked = True
 
     def _refused(self, problem, current_time, step_size):
         """Report a refused step (the model as it was) at the status it returns."""

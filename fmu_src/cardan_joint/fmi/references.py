@@ -60,7 +60,7 @@ class References:
         # What FMPy and most masters pass every step: all inputs, all outputs, in order.
         self.all_inputs = list(self.inputs)
         self.all_outputs = list(range(self.first_output, len(self.names)))
-        # The one-call step's known array (`fast_store`), in slot order.
+        # The fast path's known array (`fast_store`), in slot order.
         self.known_of = _values_of(self.known)
 
     def reference_table(self, variables) -> tuple:
@@ -73,7 +73,7 @@ class References:
         return unused + tuple(tuple(flat[name] for name in rows) for rows in variables)
 
     def layout(self) -> dict:
-        """The one-call step's buffers (fmi/fast_step.py), by flat index.
+        """The fast path's buffers (fmi/fast_path.py), by flat index.
 
         known: `known_size` doubles, flat index i in slot i: the inputs (slots
         0 to inputs - 1), then the parameters (slots inputs to known_size - 1).

@@ -31,7 +31,6 @@ from .model_description3 import complete
 from .references import FIRST_VALUE_REFERENCE, log_categories
 
 TIME_REFERENCE = FIRST_VALUE_REFERENCE  # `time` is the first variable
-_STEP_RESULTS = {status: Fmi3StepResult(status=status) for status in Fmi3Status}
 
 
 class ModelSlave3(ModelBinding, SlaveCore, Fmi3Slave):
@@ -65,7 +64,7 @@ class ModelSlave3(ModelBinding, SlaveCore, Fmi3Slave):
         )
         rows = [tuple(row.name for row in group.rows) for group in groups]
         cls._FLAT = cls._refs.reference_table([(), *rows])  # `time`: no flat index
-        cls.fast_flat = cls._FLAT  # how the native loader's one-call step maps value references
+        cls.fast_flat = cls._FLAT  # how the runtime's fast path maps value references
         cls._SIZE = tuple(len(flat) or 1 for flat in cls._FLAT)
         cls._LONGEST = max(cls._SIZE)
         cls._SETTABLE = frozenset(
@@ -132,7 +131,7 @@ class ModelSlave3(ModelBinding, SlaveCore, Fmi3Slave):
             self._fault("enter_initialization_mode", error)
 
     def do_step(self, current_time, step_size):
-        return _STEP_RESULTS[self._step(current_time, step_size)]
+        return Fmi3StepResult(status=self._step(current_time, step_size))
 
     # --- values --------------------------------------------------------------
 

@@ -28,7 +28,6 @@ class Watching:
     _model: Any
     _STATUS: Any
     _report: Callable[..., None]  # (message, status, category)
-    _current_outputs: Callable[[], tuple]
 
     def __init_subclass__(cls, **kwargs):
         super().__init_subclass__(**kwargs)
@@ -52,17 +51,12 @@ class Watching:
 
     def _watch_limits(self) -> tuple[float, ...]:
         """Each output's smallest armed limit, inf where none is armed: what a
-        step in C compares its outputs with (`fast_step.py`). The smallest, as
+        step in C compares its outputs with (`fast_path.py`). The smallest, as
         several watches of one output must hand over at the first one passed."""
         limits = [math.inf] * len(self.table.OUTPUTS)
         for slot, limit in self._armed.checks if self._armed else ():
             limits[slot] = min(limits[slot], limit)
         return tuple(limits)
-
-    def _watch_step(self) -> None:
-        """`_watch` on the plain step's path, which evaluates the outputs only if watched."""
-        if self._armed:
-            self._watch(self._current_outputs())
 
     def _watches_passed(self) -> list[str]:
         """The watched outputs already warned of, for the FMU state."""

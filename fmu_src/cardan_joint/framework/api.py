@@ -1,5 +1,5 @@
 """The model API: what every model's physics object gives its FMU slave
-(`fmi/core.py`, `fmi/fast_step.py`), stated once and checked by mypy (each
+(`fmi/core.py`, `fmi/fast_path.py`), stated once and checked by mypy (each
 spec's `make` returns one, `stepped` takes a class that makes one), and what
 the framework reads of a model's variable table."""
 

@@ -49,6 +49,15 @@ class ValueChecks:
     def input_problem(self, step_size: float = 0.0) -> Refusal | None:
         raise NotImplementedError(f"{type(self).__name__} must check its inputs")
 
+    def inputs(self) -> tuple[float, ...]:
+        """The inputs' values, in the table's order."""
+        return values_getter(self.table.INPUTS)(self)
+
+    def set_inputs(self, values) -> None:
+        """Set every input, `values` in the table's order."""
+        for name, value in zip(self.table.INPUTS, values, strict=True):
+            setattr(self, name, value)
+
     def _non_finite_limit(self, name: str, variable: Variable) -> float:
         """The limit a NaN or infinite `name` is reported against: its range's bound."""
         return crossed_limit(getattr(self, name), *bounds(variable))
@@ -127,24 +136,10 @@ class SteppedModel(ValueChecks, SavedState):
         """Names of the inputs unusable at this instant (non-finite, out of range)."""
         return {r.variable for r in self._bad_values(self.table.INPUTS, self._input_ranges)}
 
-    def inputs(self) -> tuple[float, ...]:
-        """The inputs' values, in the table's order."""
-        return values_getter(self.table.INPUTS)(self)
-
-    def set_inputs(self, values) -> None:
-        """Set every input, `values` in the table's order."""
-        for name, value in zip(self.table.INPUTS, values, strict=True):
-            setattr(self, name, value)
-
     def step(self, step_size: float) -> Refusal | None:
         """Advance by `step_size`; return None, or the Refusal of the step (then
         nothing has changed, the clock neither)."""
-        # `advance` inlined: this runs once per FMU step.
-        problem = self.step_problem(step_size) or self._advance(step_size)
-        if problem:
-            return problem
-        self.time += step_size
-        return None
+        return self.step_problem(step_size) or self.advance(step_size)
 
     def run(self, time: float, step_size: float, inputs) -> "tuple | Refusal":
         """The FMU's step: take `inputs` (the table's order), advance `step_size` s

@@ -3,7 +3,7 @@
 The FMU's Python code runs in the host's interpreter: Python's default SIGINT
 handler raises KeyboardInterrupt wherever the main thread happens to be, most
 often inside the FMU's step, where the FMU's runtime turns it into a failed
-step ("the slave's fast_step failed") and the run looks refused. While a run
+step ("the slave's do_step was interrupted") and the run looks refused. While a run
 holds `interrupt_between_steps`, a first stop signal only records the request:
 the run loop sees it after the step in progress, ends the run cleanly and
 raises `SimulationInterrupted` (a KeyboardInterrupt) with the time reached. A

@@ -88,7 +88,7 @@ fmi2Status set_debug_logging(struct instance *in, const char *function, int on, 
 
 /* What instantiate does alike in both FMI versions, on a zeroed instance that
  * has its host's callbacks (`logger`: the host's logging function): the
- * instance's own fields, its slave constructed, the one-call step set up and
+ * instance's own fields, its slave constructed, the fast path set up and
  * the variable record checked against the slave.  The instance, or NULL (the
  * reason logged, the instance freed). */
 struct instance *start_instance(struct instance *in, const char *name, const char *guid,

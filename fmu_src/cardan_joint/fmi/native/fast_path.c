@@ -1,11 +1,12 @@
-/* The one-call step (issue 21), for FMI 2.0 and 3.0: the runtime keeps an
- * instance's inputs, parameters and outputs in C arrays, serves Real value
- * reads and input writes from them, and enters Python once per doStep (the
- * slave's fast_step; values cross as tuples of floats, converted here).  The
- * protocol, which this file follows, is the docstring of fmi/fast_step.py.  An instance whose
- * slave has no fast_step keeps plain calls (in->fast stays NULL): the
- * benchmarks' plain floor FMU does.  The GIL is taken per call, as pythonfmu
- * does, on the host thread's own thread state. */
+/* The fast path, for FMI 2.0 and 3.0: the runtime keeps an instance's inputs,
+ * parameters and outputs in C arrays, serves Real value reads and input writes
+ * from them, runs the generated step on them (generated.c), and keeps the
+ * slave in step with them around every call into it (values cross as tuples
+ * of floats, converted here).  The protocol, which this file follows, is the
+ * docstring of fmi/fast_path.py.  An instance whose slave has no fast_*
+ * methods or value reference table keeps plain calls (in->fast stays NULL):
+ * the benchmarks' plain floor FMU does.  The GIL is taken per call, as
+ * pythonfmu does, on the host thread's own thread state. */
 #include "fast_path.h"
 #include "python_api.h"
 
@@ -13,10 +14,10 @@
 #include <stdlib.h>
 #include <string.h>
 
-/* The slave's layout: the runtime's own slave object, if it has the one-call step. */
+/* The slave's layout: the runtime's own slave object, if it has the fast path's methods. */
 static const char CLAIM[] =
     "sizes = ()\n"
-    "methods = ('fast_step', 'fast_outputs', 'fast_load', 'fast_store', 'fast_layout')\n"
+    "methods = ('fast_outputs', 'fast_load', 'fast_store', 'fast_layout')\n"
     "if all(hasattr(slave, m) for m in methods):\n"
     "    layout = slave.fast_layout()\n"
     "    sizes = tuple(int(layout[k]) for k in ('inputs', 'known_size', 'first_output', "
@@ -27,7 +28,7 @@ static const char CLAIM[] =
     "    # The step state, handed over only to a runtime with the model's step in C.\n"
     "    state_size = int(slave.fast_state_size()) if generated and all(hasattr(slave, m) "
     "for m in ('fast_state_size', 'fast_sync', 'fast_watch')) else 0\n"
-    "    # FMI 3: value reference -> flat indices (slave3._FLAT), as int64s: the\n"
+    "    # Value reference -> flat indices (the slave's _FLAT), as int64s: the\n"
     "    # count of references, each one's first index, the end, then the indices.\n"
     "    refs = getattr(slave, 'fast_flat', None)\n"
     "    starts = [0]\n"
@@ -38,8 +39,8 @@ static const char CLAIM[] =
     ").tobytes() if refs else b''\n";
 
 /* In the order of enum fast_method. */
-static const char *const METHODS[] = {"fast_step", "fast_outputs", "fast_load", "fast_store",
-                                      "fast_sync", "fast_watch"};
+static const char *const METHODS[] = {"fast_outputs", "fast_load", "fast_store", "fast_sync",
+                                      "fast_watch"};
 
 /* One call into the slave with the GIL held; its status (an FMI status number). */
 static long call(struct instance *in, enum fast_method method, PyObject *a, PyObject *b,
@@ -69,7 +70,7 @@ static void forget(struct fast_path *fast)
 {
     PyObject **owned[] = {&fast->slave,      &fast->methods[0], &fast->methods[1],
                           &fast->methods[2], &fast->methods[3], &fast->methods[4],
-                          &fast->methods[5], &fast->queue};
+                          &fast->queue};
     for (size_t i = 0; i < sizeof owned / sizeof *owned; i++) {
         if (*owned[i])
             p_Py_DecRef(*owned[i]);
@@ -83,7 +84,7 @@ static long global_long(PyObject *globals, const char *name)
     return value ? p_PyLong_AsLong(value) : 0;
 }
 
-/* FMI 3's value references (CLAIM's flat_table), or none for FMI 2's flat ones. */
+/* The value references' flat indices (CLAIM's flat_table): 0 without one. */
 static int read_flat_table(struct fast_path *fast, PyObject *table)
 {
     char *bytes;
@@ -132,8 +133,9 @@ static int set_up(struct instance *in, struct fast_path *fast)
     double *flat = realloc(fast->flat, (fast->known_size + fast->outputs) * sizeof *flat);
     if (flat)
         fast->flat = fast->known = flat, fast->values = flat + fast->first_output;
-    /* A reply converts here first: a malformed one writes nothing. */
-    long reply_size = fast->outputs + fast->known_size + fast->state_size;
+    /* A reply converts here first: a malformed one writes nothing.  The largest
+     * is fast_store's: known values, outputs, state, limits. */
+    long reply_size = fast->known_size + fast->outputs + fast->state_size + fast->outputs;
     double *scratch = flat ? realloc(fast->scratch, reply_size * sizeof *scratch) : NULL;
     if (scratch)
         fast->scratch = scratch;
@@ -220,7 +222,7 @@ int catch_up(struct instance *in)
     if (!fast->behind)
         return 0;
     fast->behind = 0;
-    if (fast_call(in, FAST_SYNC, fast->behind_time, 0) == fmi2OK)
+    if (fast_call(in, FAST_SYNC) == fmi2OK)
         return 0;
     fast->generated = 0;
     in->state = STATE_ERROR;
@@ -230,10 +232,10 @@ int catch_up(struct instance *in)
     return -1;
 }
 
-/* One call into the slave, the GIL taken for it: fast_step(time, step, inputs),
- * fast_outputs(inputs, read), fast_load(inputs), fast_store(), fast_sync(time,
- * state, held inputs, outputs) or fast_watch(). */
-long fast_call(struct instance *in, enum fast_method method, double time, double step)
+/* One call into the slave, the GIL taken for it: fast_outputs(inputs, read),
+ * fast_load(inputs), fast_store(), fast_sync(behind_time, state, held
+ * inputs, outputs) or fast_watch(). */
+long fast_call(struct instance *in, enum fast_method method)
 {
     struct fast_path *fast = in->fast;
     if (method != FAST_SYNC && catch_up(in))
@@ -242,16 +244,11 @@ long fast_call(struct instance *in, enum fast_method method, double time, double
     PyObject *arguments[4] = {NULL, NULL, NULL, NULL};
     int made = 1;
     if (method == FAST_SYNC) {
-        arguments[0] = p_PyFloat_FromDouble(time);
+        arguments[0] = p_PyFloat_FromDouble(fast->behind_time);
         arguments[1] = tuple_of(fast->state, fast->state_size);
         arguments[2] = tuple_of(fast->held, fast->inputs);
         arguments[3] = tuple_of(fast->values, fast->outputs);
         made = arguments[0] && arguments[1] && arguments[2] && arguments[3];
-    } else if (method == FAST_STEP) {
-        arguments[0] = p_PyFloat_FromDouble(time);
-        arguments[1] = p_PyFloat_FromDouble(step);
-        arguments[2] = tuple_of(fast->known, fast->inputs);
-        made = arguments[0] && arguments[1] && arguments[2];
     } else if (method != FAST_STORE && method != FAST_WATCH) {
         arguments[0] = tuple_of(fast->known, fast->inputs);
         /* fast_outputs(inputs, read): only a read of a held output warns. */

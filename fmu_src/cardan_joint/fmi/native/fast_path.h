@@ -1,5 +1,5 @@
-/* The one-call step's per-instance arrays and Python objects (fast_path.c
- * sets them up and calls the slave, fast_values.c serves values from them). */
+/* The fast path's per-instance arrays and Python objects (fast_path.c sets
+ * them up and calls the slave, fast_values.c serves values and steps from them). */
 #ifndef CARDAN_JOINT_FAST_PATH_H
 #define CARDAN_JOINT_FAST_PATH_H
 
@@ -7,7 +7,6 @@
 
 /* The slave's methods, in the order fast_path.c looks them up. */
 enum fast_method {
-    FAST_STEP,
     FAST_OUTPUTS,
     FAST_LOAD,
     FAST_STORE,
@@ -25,7 +24,7 @@ struct fast_path {
     /* One block, flat[i] the value of flat index i: the known values (inputs,
      * parameters), then `values`, the outputs (first_output == known_size). */
     double *flat, *known, *values;
-    double *scratch; /* outputs + known_size + state_size: a reply converted before it is written */
+    double *scratch; /* the largest reply (fast_store's), converted before it is written */
     /* The generated step (generated_step.c, docs/codegen.md), when the build
      * compiled one in and the slave hands over its step state: state_size
      * doubles of state; arguments (t, h, state, known) and results (state,
@@ -39,16 +38,16 @@ struct fast_path {
      * from fast_store; a step taken in C whose output passes one hands over to
      * the slave (fast_watch), which warns once and disarms it. */
     double *limits;
-    /* FMI 3 (NULL for FMI 2, whose value references are the flat indices):
+    /* The slave's value references (its fast_flat, both FMI versions):
      * {n, start[0..n], indices...}: value reference vr < n holds the flat
      * indices indices[start[vr]] to indices[start[vr + 1] - 1]. */
     long long *table;
-    /* With a table: each value reference's SERVES_* flags, set once when
-     * the table is taken, so that a call's references are checked by a look-up
-     * each instead of a walk over their indices. */
+    /* Each value reference's SERVES_* flags, set once when the table is
+     * taken, so that a call's references are checked by a look-up each
+     * instead of a walk over their indices. */
     unsigned char *serves;
-    /* With a table: each value reference's one flat index, or -1 when it has
-     * none or several (flat_of then); most have one, read without a loop. */
+    /* Each value reference's one flat index, or -1 when it has none or
+     * several (flat_of then); most have one, read without a loop. */
     long long *single;
     /* The value references a getReal reads, while it asks fast_outputs. */
     const unsigned *reading;
@@ -63,7 +62,7 @@ int fast_table(struct fast_path *fast, const char *bytes, size_t size);
  * reference fast_serves has taken. */
 static inline long long single_index(const struct fast_path *fast, unsigned vr)
 {
-    return fast->single ? fast->single[vr] : (long long)vr;
+    return fast->single[vr];
 }
 /* A value reference's flags in fast->serves: it has flat indices (all within
  * the arrays, as fast_table checked), and they are all inputs. */
@@ -71,21 +70,16 @@ enum { SERVES_VALUE = 1, SERVES_INPUT = 2 };
 /* The flat indices of value reference vr, and how many (0: none).  Inline:
  * every Real read and input write takes it once per reference. */
 static inline long long flat_of(const struct fast_path *fast, unsigned vr,
-                                const long long **indices, long long *own)
+                                const long long **indices)
 {
     const long long *table = fast->table;
-    if (!table) { /* no table: the references are the flat indices */
-        *own = vr;
-        *indices = own;
-        return 1;
-    }
     if (vr >= (unsigned long long)table[0])
         return 0; /* FMI 3's time, or a reference the slave does not have */
     const long long *start = table + 1;
     *indices = start + table[0] + 1 + start[vr];
     return start[vr + 1] - start[vr];
 }
-long fast_call(struct instance *in, enum fast_method method, double time, double step);
+long fast_call(struct instance *in, enum fast_method method);
 /* The generated step: 1 when it took the step (the arrays written), 0 when the
  * slave must (generated_step.c, compiled in only with the model's step). */
 int generated_take(struct fast_path *fast, double time, double step);

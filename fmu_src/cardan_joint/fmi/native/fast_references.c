@@ -1,9 +1,8 @@
-/* The one-call step's layout and value references (the protocol:
- * fmi/fast_step.py): the counts the slave gives, checked before any array is
- * sized from them; FMI 3's table of each reference's flat indices (FMI 2's
- * references are the flat indices), whether the arrays serve a call's
- * references, and the flat indices a getReal reads, for the slave's
- * fast_outputs. */
+/* The fast path's layout and value references (the protocol:
+ * fmi/fast_path.py): the counts the slave gives, checked before any array is
+ * sized from them; the table of each reference's flat indices, whether the
+ * arrays serve a call's references, and the flat indices a getReal reads, for
+ * the slave's fast_outputs. */
 #include "fast_path.h"
 #include "python_api.h"
 
@@ -40,7 +39,7 @@ static int flag_references(struct fast_path *fast)
         return 0;
     for (long long vr = 0; vr < refs; vr++) {
         const long long *indices;
-        long long own, count = flat_of(fast, (unsigned)vr, &indices, &own);
+        long long count = flat_of(fast, (unsigned)vr, &indices);
         unsigned char flags = count > 0 ? SERVES_VALUE | SERVES_INPUT : 0;
         for (long long k = 0; k < count; k++)
             if (indices[k] >= fast->inputs)
@@ -51,10 +50,9 @@ static int flag_references(struct fast_path *fast)
     return 1;
 }
 
-/* Takes the table of FMI 3's value references (none: FMI 2's are the flat
- * indices); 0 if it is malformed: each reference's start from 0 up, never
- * past the indices, and every index within the arrays (flat_of reads them all
- * unchecked). */
+/* Takes the table of the slave's value references; 0 if there is none or it
+ * is malformed: each reference's start from 0 up, never past the indices, and
+ * every index within the arrays (flat_of reads them all unchecked). */
 int fast_table(struct fast_path *fast, const char *bytes, size_t size)
 {
     free(fast->table);
@@ -63,10 +61,8 @@ int fast_table(struct fast_path *fast, const char *bytes, size_t size)
     fast->table = NULL;
     fast->serves = NULL;
     fast->single = NULL;
-    if (size == 0)
-        return 1;
     long long n = (long long)(size / 8), limit = fast->first_output + fast->outputs;
-    if (size % 8 || !(fast->table = malloc(size)))
+    if (size == 0 || size % 8 || !(fast->table = malloc(size)))
         return 0;
     memcpy(fast->table, bytes, size);
     long long refs = fast->table[0];
@@ -84,13 +80,6 @@ int fast_serves(const struct instance *in, const unsigned vr[], size_t n, int in
     const struct fast_path *fast = in->fast;
     if (!fast)
         return 0;
-    if (!fast->table) { /* each value reference is its flat index */
-        long long limit = inputs_only ? fast->inputs : fast->first_output + fast->outputs;
-        for (size_t i = 0; i < n; i++)
-            if (vr[i] >= limit)
-                return 0;
-        return 1;
-    }
     unsigned long long references = (unsigned long long)fast->table[0];
     unsigned char needed = inputs_only ? SERVES_INPUT : SERVES_VALUE;
     for (size_t i = 0; i < n; i++)
@@ -101,14 +90,14 @@ int fast_serves(const struct instance *in, const unsigned vr[], size_t n, int in
 
 PyObject *read_indices(const struct fast_path *fast)
 {
-    long long own, total = 0;
+    long long total = 0;
     const long long *indices;
     for (size_t i = 0; i < fast->reading_count; i++)
-        total += flat_of(fast, fast->reading[i], &indices, &own);
+        total += flat_of(fast, fast->reading[i], &indices);
     PyObject *tuple = p_PyTuple_New((Py_ssize_t)total);
     Py_ssize_t at = 0;
     for (size_t i = 0; tuple && i < fast->reading_count; i++) {
-        long long count = flat_of(fast, fast->reading[i], &indices, &own);
+        long long count = flat_of(fast, fast->reading[i], &indices);
         for (long long k = 0; tuple && k < count; k++) {
             PyObject *item = p_PyLong_FromLong((long)indices[k]);
             if (!item || p_PyTuple_SetItem(tuple, at++, item)) {

@@ -1,8 +1,8 @@
-/* The one-call step's values (the protocol: fmi/fast_step.py): the arguments
+/* The fast path's values (the protocol: fmi/fast_path.py): the arguments
  * made and the replies read, input writes and Real reads answered from the
- * instance's arrays, doStep in one call into the slave, and the slave kept in
- * step with the arrays around every other call (fast_path.c sets the arrays up
- * and makes the calls). */
+ * instance's arrays, doStep by the generated step or by the slave, and the
+ * slave kept in step with the arrays around every call into it (fast_path.c
+ * sets the arrays up and makes the calls). */
 #include "fast_path.h"
 #include "python_api.h"
 
@@ -23,9 +23,9 @@ PyObject *tuple_of(const double *values, long n)
     return tuple;
 }
 
-/* Where a method's values go, in order (the protocol: fmi/fast_step.py): the
- * outputs, the inputs or every known value, then the step state when the
- * slave hands it over; how many parts. */
+/* Where a method's values go, in order (the protocol: fmi/fast_path.py):
+ * every known value or the outputs, then for fast_store the outputs, the step
+ * state and the limits when the slave hands them over; how many parts. */
 struct part {
     double *into;
     long count;
@@ -34,13 +34,11 @@ struct part {
 static int destinations(const struct fast_path *fast, enum fast_method method, struct part part[4])
 {
     int n = 0;
-    if (method == FAST_STEP || method == FAST_OUTPUTS)
-        part[n++] = (struct part){fast->values, fast->outputs};
-    if (method == FAST_STEP)
-        part[n++] = (struct part){fast->known, fast->inputs};
     if (method == FAST_STORE)
         part[n++] = (struct part){fast->known, fast->known_size};
-    if ((method == FAST_STEP || method == FAST_STORE) && fast->state_size > 0)
+    if (method == FAST_STORE || method == FAST_OUTPUTS)
+        part[n++] = (struct part){fast->values, fast->outputs};
+    if (method == FAST_STORE && fast->state_size > 0)
         part[n++] = (struct part){fast->state, fast->state_size};
     if ((method == FAST_STORE && fast->state_size > 0) || method == FAST_WATCH)
         part[n++] = (struct part){fast->limits, fast->outputs};
@@ -82,8 +80,8 @@ long take_reply(struct fast_path *fast, enum fast_method method, PyObject *reply
     return p_PyLong_AsLong(p_PyTuple_GetItem(reply, 0));
 }
 
-/* Before any other call into the slave: it takes what the steps in C left and
- * the host's latest inputs; -1 when it could not catch up. */
+/* Before any call into the slave: it takes what the steps in C left and the
+ * host's latest inputs; -1 when it could not catch up. */
 int fast_before(struct instance *in)
 {
     struct fast_path *fast = in->fast;
@@ -93,19 +91,20 @@ int fast_before(struct instance *in)
         return -1;
     if (!fast->inputs_written)
         return 0;
-    fast_call(in, FAST_LOAD, 0, 0);
+    fast_call(in, FAST_LOAD);
     fast->inputs_written = 0;
     return 0;
 }
 
-/* After any other call into the slave: it may have changed inputs or parameters. */
-void fast_after(struct instance *in)
+/* After any call into the slave: it may have changed inputs or parameters;
+ * the outputs stale.  The store's status. */
+long fast_after(struct instance *in)
 {
     struct fast_path *fast = in->fast;
     if (!fast)
-        return;
-    fast_call(in, FAST_STORE, 0, 0);
+        return fmi2OK;
     fast->stale = 1;
+    return fast_call(in, FAST_STORE);
 }
 
 /* Call only when fast_serves(in, vr, n, 1); value holds every element in order. */
@@ -119,7 +118,7 @@ void fast_set(struct instance *in, const unsigned vr[], size_t n, const double v
             continue;
         }
         const long long *indices;
-        long long own, count = flat_of(fast, vr[i], &indices, &own);
+        long long count = flat_of(fast, vr[i], &indices);
         for (long long k = 0; k < count; k++)
             fast->flat[indices[k]] = *value++;
     }
@@ -133,7 +132,7 @@ fmi2Status fast_get(struct instance *in, const unsigned vr[], size_t n, double v
     long status = fmi2OK;
     if (fast->stale) {
         fast->reading = vr, fast->reading_count = n;
-        status = fast_call(in, FAST_OUTPUTS, 0, 0);
+        status = fast_call(in, FAST_OUTPUTS);
         fast->reading = NULL, fast->reading_count = 0;
         fast->inputs_written = 0;
         /* Held outputs (warning) are evaluated, and warned about, at every read. */
@@ -146,7 +145,7 @@ fmi2Status fast_get(struct instance *in, const unsigned vr[], size_t n, double v
             continue;
         }
         const long long *indices;
-        long long own, count = flat_of(fast, vr[i], &indices, &own);
+        long long count = flat_of(fast, vr[i], &indices);
         for (long long k = 0; k < count; k++)
             *value++ = fast->flat[indices[k]];
     }
@@ -165,24 +164,27 @@ static int watch_passed(const struct fast_path *fast)
 }
 
 /* doStep: in C when the generated step takes it (the slave catches up at its
- * next call, or at once to warn of a watch passed), else in one call into
- * Python; -1 when the instance has no fast path. */
-int fast_step(struct instance *in, double time, double step)
+ * next call, or at once to warn of a watch passed), else by the slave's
+ * do_step, caught up before and stored after as around any call into it: a
+ * step it takes leaves its outputs in the arrays, fresh.  `terminate` (may be
+ * NULL) as the slave says. */
+fmi2Status fast_step(struct instance *in, double time, double step, int *terminate)
 {
     struct fast_path *fast = in->fast;
-    if (!fast)
-        return -1;
-    if (fast->generated && generated_take(fast, time, step)) {
+    if (fast && fast->generated && generated_take(fast, time, step)) {
         in->last_successful_time = fast->behind_time = time + step;
         fast->behind = 1;
         fast->inputs_written = fast->stale = 0;
         /* The slave warns once, as after a step in Python; the step stands. */
-        return watch_passed(fast) ? (int)fast_call(in, FAST_WATCH, 0, 0) : fmi2OK;
+        return watch_passed(fast) ? (fmi2Status)fast_call(in, FAST_WATCH) : fmi2OK;
     }
-    long status = fast_call(in, FAST_STEP, time, step);
-    /* pythonfmu: the step's end when taken, its start when not (NaN before any). */
-    in->last_successful_time = status == fmi2OK ? time + step : time;
-    fast->inputs_written = 0;
-    fast->stale = status != fmi2OK;
-    return (int)status;
+    if (fast_before(in)) {
+        in->last_successful_time = time; /* not taken, as slave_do_step says */
+        return fmi2Error;
+    }
+    fmi2Status status = slave_do_step(in, time, step, terminate);
+    /* An interrupted slave (the error state) has nothing to store. */
+    if (fast && in->state != STATE_ERROR && fast_after(in) == fmi2OK)
+        fast->stale = status != fmi2OK;
+    return status;
 }

@@ -199,9 +199,7 @@ fmi2Status fmi2DoStep(fmi2Component c, fmi2Real time, fmi2Real step, fmi2Boolean
     if (!in)
         return fmi2Error;
     (void)no_set_prior;
-    int status = fast_step(in, time, step);
-    return step_status(in, status >= 0 ? (fmi2Status)status
-                                       : slave_do_step(in, time, step, NULL));
+    return step_status(in, fast_step(in, time, step, NULL));
 }
 
 fmi2Status fmi2GetRealStatus(fmi2Component c, fmi2StatusKind kind, fmi2Real *value)

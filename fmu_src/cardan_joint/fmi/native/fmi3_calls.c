@@ -132,8 +132,8 @@ NO_ACCESSORS(UInt64)
 NO_ACCESSORS(Boolean)
 NO_ACCESSORS(String)
 
-/* Float64 values of inputs, parameters and outputs come from the one-call
- * step's arrays when the instance has them (fast_path.c); time and the rest
+/* Float64 values of inputs, parameters and outputs come from the fast
+ * path's arrays when the instance has them (fast_path.c); time and the rest
  * go to the slave, as every value does without them. */
 fmi3Status fmi3GetFloat64(fmi3Instance c, const fmi3ValueReference vr[], size_t nvr,
                           fmi3Float64 values[], size_t n_values)
@@ -237,9 +237,8 @@ fmi3Status fmi3DoStep(fmi3Instance c, fmi3Float64 time, fmi3Float64 step,
     }
     (void)no_set_prior;
     *event_handling_needed = *terminate = *early_return = fmi3False;
-    int status = fast_step(in, time, step), ends = 0;
-    if (status < 0)
-        status = slave_do_step(in, time, step, &ends);
+    int ends = 0;
+    fmi2Status status = fast_step(in, time, step, &ends);
     *terminate = ends != 0;
     /* As pythonfmu3 answers: the step's end when taken, its start when not. */
     *last_successful_time = in->last_successful_time;

@@ -1,7 +1,8 @@
 /* The model's step generated from its Python (docs/codegen.md), run on the
- * one-call step's arrays: compiled with -DGENERATED_STEP beside the build's
+ * fast path's arrays: compiled with -DGENERATED_STEP beside the build's
  * generated_step.c, which defines generated_step and generated_step_sizes.
- * Without it (a model whose step runs in Python) every step goes to the slave. */
+ * Without it (a model whose step runs in Python) every step goes to the
+ * slave's do_step (fast_values.c's fast_step). */
 #include "fast_path.h"
 
 #include <stdlib.h>

@@ -48,7 +48,7 @@ struct instance {
     const struct fixed_parameters *fixed;
     fmi2FMUstate *fmu_states;        /* the live FMU states this instance handed out */
     size_t n_fmu_states, fmu_states_capacity;
-    struct fast_path *fast;          /* the one-call step's arrays; NULL: plain forwarding */
+    struct fast_path *fast;          /* the fast path's arrays; NULL: plain forwarding */
 };
 
 /* Per FMI version: the host's logger (0: the host has none) and what a call
@@ -80,21 +80,22 @@ fmi2Status state_serialize(void *c, fmi2FMUstate state, char bytes[], size_t siz
                            unsigned allowed, const char *function);
 fmi2Status state_deserialize(void *c, const char bytes[], size_t size, fmi2FMUstate *state,
                              unsigned allowed, const char *function);
-/* The one-call step (fast_path.c): set up after instantiate (NULL when the slave
+/* The fast path (fast_path.c): set up after instantiate (NULL when the slave
  * cannot take it), re-found after reset; fast_before/fast_after go around every
- * other call into the slave (fast_before: -1 when the slave could not catch up,
- * the instance then in STATE_ERROR: the call must not reach it); fast_serves
- * says whether fast_set (inputs_only) or fast_get can answer these value
- * references in C. */
+ * call into the slave (fast_before: -1 when the slave could not catch up,
+ * the instance then in STATE_ERROR: the call must not reach it; fast_after:
+ * the status of the slave's store); fast_serves says whether fast_set
+ * (inputs_only) or fast_get can answer these value references in C; fast_step
+ * is every doStep, through the generated step or the slave's do_step. */
 void fast_attach(struct instance *in);
 void fast_detach(struct instance *in);
 void fast_reset(struct instance *in);
 int fast_before(struct instance *in);
-void fast_after(struct instance *in);
+long fast_after(struct instance *in);
 int fast_serves(const struct instance *in, const unsigned vr[], size_t n, int inputs_only);
 void fast_set(struct instance *in, const unsigned vr[], size_t n, const double value[]);
 fmi2Status fast_get(struct instance *in, const unsigned vr[], size_t n, double value[]);
-int fast_step(struct instance *in, double time, double step);
+fmi2Status fast_step(struct instance *in, double time, double step, int *terminate);
 /* After a set FMU state: the mode the state was taken in (calls.c). */
 void restore_mode(struct instance *in, fmi2Status status);
 fmi2Status reset_slave(struct instance *in);
@@ -104,8 +105,8 @@ char *copy_of(const char *text);  /* strdup, "" for NULL */
 /* The script module pythonfmu imports (resources/slavemodule.txt) imports in
  * this process's Python; else -1 and the Python error. */
 int slave_module_imports(const char *resources, char *error, size_t size);
-/* resources/VARIABLES_RECORD agrees with the slave's own layout (the one-call
- * step's): else -1 and a message naming the file (record_check.c). */
+/* resources/VARIABLES_RECORD agrees with the slave's own layout (the fast
+ * path's): else -1 and a message naming the file (record_check.c). */
 int record_matches_slave(struct instance *in, const char *resources, char *error, size_t size);
 /* The slave's Python object and its calls (slave_object.c, slave_values.c), for
  * both FMI versions; SLAVE_BASE names the slave class's base (per FMI version). */

@@ -2,11 +2,11 @@
  * own layout, at instantiate: the record sizes FMI 3.0's value counts and
  * names the fixed parameters, so a record that disagrees with what the slave
  * writes (damaged, truncated, from another build) would let a host's buffer be
- * overrun or a guard fall silent.  The slave's layout is the one-call step's
+ * overrun or a guard fall silent.  The slave's layout is the fast path's
  * (fast_path.c): every Real/Float64 row must hold exactly the flat indices the
  * slave gives its value reference, the rows together every flat index once,
  * and a fixed row only parameters; every row is a real, as the slave's are.
- * An instance without the one-call step
+ * An instance without the fast path
  * (the benchmarks' floor FMU) has no layout to check against. */
 #define _GNU_SOURCE
 #include "fast_path.h"
@@ -38,12 +38,11 @@ static int check_row(const struct record_row *row, void *data)
     if (strcmp(row->type, "Real") != 0 && strcmp(row->type, "Float64") != 0)
         return fail(check, row, "has a type the slave does not have");
     const long long *indices;
-    long long mine;
-    long long count = flat_of(check->fast, row->vr, &indices, &mine);
+    long long count = flat_of(check->fast, row->vr, &indices);
     /* FMI 3.0's time, once: one value, no flat index, a value reference the slave
      * has (0 is none: value references are 1-based positions, fmi/references.py). */
     if (count == 0)
-        return row->vr > 0 && check->fast->table &&
+        return row->vr > 0 &&
                        row->vr < (unsigned long long)check->fast->table[0] && row->size == 1 &&
                        !check->timed++
                    ? 1

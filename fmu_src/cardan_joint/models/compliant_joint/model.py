@@ -112,13 +112,6 @@ class CompliantDrive(ValueChecks):
             self._own_inputs, self._input_ranges
         )
 
-    def inputs(self) -> tuple[float, ...]:
-        return tuple(getattr(self, name) for name in self.table.INPUTS)
-
-    def set_inputs(self, values) -> None:
-        for name, value in zip(self.table.INPUTS, values, strict=True):
-            setattr(self, name, value)
-
     def invalid_inputs(self) -> set:
         own = {r.variable for r in self._bad_values(self._own_inputs, self._input_ranges)}
         return self.rigid.invalid_inputs() | own

@@ -9,7 +9,6 @@ FMU maps its variables onto this object.
 """
 
 import math
-from operator import attrgetter
 
 from ...framework.refusal import Refusal
 from ...framework.stepped import ShaftModel
@@ -29,8 +28,6 @@ from .limits import (
 )
 from .refusals import JointReason
 from .step import ANGLE, STATE, joint_life_step, joint_outputs, joint_step
-
-_INPUTS = attrgetter(*table.INPUTS)
 
 
 class CardanJoint(WrittenStep, JointLife, ShaftModel):
@@ -95,21 +92,6 @@ class CardanJoint(WrittenStep, JointLife, ShaftModel):
         )
 
     # --- stepping ----------------------------------------------------------
-
-    def inputs(self) -> tuple[float, ...]:
-        return _INPUTS(self)
-
-    def set_inputs(self, values) -> None:  # once or twice a step: the generic loop
-        # of setattr costs thousands of instructions (and writing __dict__ unspecializes
-        # every attribute read of the object)
-        (
-            self.input_speed,
-            self.input_acceleration,
-            self.bend_angle,
-            self.bend_angle_rate,
-            self.bend_angle_acceleration,
-            self.load_torque,
-        ) = values
 
     def input_problem(self, step_size: float = 0.0) -> Refusal | None:
         """The Refusal of the inputs over [time, time + step_size], or None."""
@@ -178,7 +160,7 @@ class CardanJoint(WrittenStep, JointLife, ShaftModel):
         refusal changes nothing."""
         # The damage's start values, taken before the step (life on only: see `run`).
         start = self._life_start() if self.life else None
-        problem = ShaftModel._advance(self, h)  # not super(): once per step
+        problem = super()._advance(h)
         if problem:
             return problem
         rate, bend_acceleration = self.bend_angle_rate, self.bend_angle_acceleration

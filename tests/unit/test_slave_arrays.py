@@ -1,12 +1,14 @@
-"""Issue 21: the one-call step (fmi/fast_step.py) against setReal, doStep and getReal.
+"""The slave's side of the runtime's fast path (fmi/fast_path.py) against
+setReal, doStep and getReal.
 
 Two slaves of each model take the same random inputs, one through the normal
-accessors, one as the native loader will drive it: inputs written into a
-C array of doubles (passed as a tuple), `fast_step` once per step, `fast_outputs` for a read that
-follows a write (or a refused step), `fast_store` after anything Python
-changes. Their outputs must agree bit for bit, and so must their statuses and
-every message they log: refused steps, held outputs, ignored parameters,
-FMU states set back.
+accessors, one as the runtime drives it when the step is the slave's: inputs
+written into a C array of doubles (passed as a tuple), `fast_load` before a
+call into the slave when they were written, `do_step`, `fast_store` after
+every call (a taken step's outputs served from it), `fast_outputs` for a read
+that follows a write (or a refused step). Their outputs must agree bit for
+bit, and so must their statuses and every message they log: refused steps,
+held outputs, ignored parameters, FMU states set back.
 """
 
 import math
@@ -50,8 +52,8 @@ def bits(values):
 
 
 class Loader:
-    """What the native loader does with a slave: its values in two C arrays,
-    the inputs passed as a tuple, each reply written back (fast_path.c)."""
+    """What the runtime does with a slave: its values in two C arrays, the
+    inputs passed as a tuple, each reply written back (fast_path.c)."""
 
     def __init__(self, slave):
         self.slave = slave
@@ -59,39 +61,50 @@ class Loader:
         self.inputs = layout["inputs"]
         self.known = [math.nan] * layout["known_size"]
         self.outputs = [math.nan] * layout["outputs"]
-        self.fresh = False  # the outputs array holds the current outputs
-        assert self.store() == Fmi2Status.ok
+        self.written = False  # the slave has not taken the written inputs yet
+        assert self.store() == Fmi2Status.ok  # (fresh: the outputs array is current)
 
-    def take(self, reply, outputs, known):
-        """fast_path.c's take_reply: a bare status, or (status, values, ...) into the arrays."""
+    def take(self, reply, *arrays):
+        """fast_values.c's take_reply: a bare status, or (status, values, ...)
+        into `arrays` (names of this loader's lists), in order."""
         if not isinstance(reply, tuple):
             return reply
         status, *parts = reply
         values = [value for part in parts for value in part]
-        assert len(values) == outputs + known
-        self.outputs[:outputs] = values[:outputs]
-        self.known[:known] = values[outputs:]
+        assert len(values) == sum(len(getattr(self, name)) for name in arrays)
+        for name in arrays:
+            array = getattr(self, name)
+            array[:], values = values[: len(array)], values[len(array) :]
         return status
 
     def given(self):
         return tuple(self.known[: self.inputs])
 
     def store(self):
-        return self.take(self.slave.fast_store(), 0, len(self.known))
+        self.fresh = False
+        return self.take(self.slave.fast_store(), "known", "outputs")
 
     def set_inputs(self, values):
         self.known[: len(values)] = values
         self.fresh = False
+        self.written = True
 
     def step(self, time, step_size):
-        reply = self.slave.fast_step(time, step_size, self.given())
-        status = self.take(reply, len(self.outputs), self.inputs)
-        self.fresh = status == Fmi2Status.ok
-        return status
+        """fast_values.c's fast_step, the step the slave's: do_step between
+        fast_load (inputs written) and fast_store."""
+        if self.written:
+            assert self.slave.fast_load(self.given()) == Fmi2Status.ok
+            self.written = False
+        answer = self.slave.do_step(time, step_size)
+        taken = answer is True or getattr(answer, "status", None) == 0
+        stored = self.store()
+        self.fresh = taken and stored == Fmi2Status.ok
+        return Fmi2Status.ok if taken else Fmi2Status.error
 
     def evaluate(self, indices=None):
+        self.written = False
         reply = self.slave.fast_outputs(self.given(), indices)
-        return self.take(reply, len(self.outputs), 0)
+        return self.take(reply, "outputs")
 
     def read(self, indices=None):
         """getReal of flat `indices` (None: every output), as fast_get serves it."""
@@ -136,7 +149,7 @@ def initialized(cls):
 
 
 @pytest.mark.parametrize("cls", SLAVES, ids=lambda cls: cls.__name__)
-def test_the_one_call_step_gives_the_normal_paths_outputs_statuses_and_messages(cls):
+def test_the_arrays_give_the_normal_paths_outputs_statuses_and_messages(cls):
     rng = random.Random(21)
     normal, fast = initialized(cls), initialized(cls)
     loader = Loader(fast)
@@ -158,6 +171,8 @@ def test_the_one_call_step_gives_the_normal_paths_outputs_statuses_and_messages(
         outcomes[taken] += 1
         time += STEP if taken else 0.0
         assert bits(loader.read()) == bits(normal.get_real(references(refs.all_outputs))), step
+        # The inputs the step moved, stored: the next step starts from them.
+        assert bits(loader.given()) == bits(normal.get_real(references(refs.all_inputs))), step
         if step == 40:
             saved = {"normal": normal._get_fmu_state(), "fast": fast._get_fmu_state()}
         if step == 60:
@@ -168,7 +183,6 @@ def test_the_one_call_step_gives_the_normal_paths_outputs_statuses_and_messages(
             normal._set_fmu_state(saved["normal"])
             fast._set_fmu_state(saved["fast"])
             loader.store()
-            loader.fresh = False
             time = normal._model.time
         assert messages(fast) == messages(normal), step
     assert bits(loader.known) == bits(normal.get_real(known))
@@ -184,8 +198,10 @@ def test_a_refused_step_writes_no_outputs_and_held_outputs_are_not_kept():
     assert loader.step(0.0, STEP) == Fmi2Status.ok
     taken = list(loader.outputs)
     bend = slave._refs.names.index("bend_angle")
-    loader.known[bend] = 1.5  # beyond the 80 deg guard
-    assert slave.fast_step(STEP, STEP, loader.given()) == Fmi2Status.error
+    inputs = list(loader.given())
+    inputs[bend] = 1.5  # beyond the 80 deg guard
+    loader.set_inputs(inputs)
+    assert loader.step(STEP, STEP) == Fmi2Status.error
     assert slave._model.time == STEP
     # Held at the last valid inputs, and said so at every read, as getReal does.
     for reads in (1, 2):
@@ -200,9 +216,9 @@ def test_a_refused_step_writes_no_outputs_and_held_outputs_are_not_kept():
 def test_an_internal_fault_is_an_error_status_with_a_message():
     slave = initialized(CardanJointSlave)
     loader = Loader(slave)
-    assert slave.fast_step(0.0, STEP, loader.given()[:3]) == Fmi2Status.error
-    assert "internal error in fast_step" in slave.log_queue[-1].msg
-    assert slave.fast_step(0.0, STEP, None) == Fmi2Status.error
+    slave._model.input_speed = "fast"  # no float: the step fails inside
+    assert slave.do_step(0.0, STEP) is False
+    assert "internal error in do_step" in slave.log_queue[-1].msg
     assert slave.fast_outputs(None) == Fmi2Status.error
     assert "internal error in fast_outputs" in slave.log_queue[-1].msg
     assert slave.fast_load(None) == Fmi2Status.error
@@ -220,7 +236,7 @@ def test_the_layout_is_the_flat_index_and_the_same_for_fmi3():
     assert CardanJointSlave3.fast_layout() == layout
 
 
-def test_the_fmi3_slave_steps_the_same_through_the_one_call_step():
+def test_the_fmi3_slave_steps_the_same_through_the_arrays():
     from pythonfmu3.enums import Fmi3Status
 
     def started():
