@@ -8,6 +8,7 @@ parameters, the input angle and yoke phase as exact revolutions
 import math
 
 from ...framework.values import MAX_INCREMENT
+from ...framework.written_step import grouped_step
 from ...physics.life import LifeRule, compensated_add, life_outputs, step_damage
 from ...physics.response import JointResponse, kernel
 from ...physics.revolutions import Turns, advanced, angle_value
@@ -132,98 +133,67 @@ def joint_advanced(
     return angle + phase + (parameters_valid,) + moved + outputs
 
 
-def joint_step(
-    time: float,
-    h: float,
-    turns: int,
-    fraction: float,
-    fraction_error: float,
-    phase_turns: int,
-    phase_fraction: float,
-    phase_error: float,
-    parameters_valid: bool,
-    input_speed: float,
-    input_acceleration: float,
-    bend_angle: float,
-    bend_angle_rate: float,
-    bend_angle_acceleration: float,
-    load_torque: float,
-    yoke_phase: float,
-    input_angle_start: float,
-    crosspiece_inertia_1: float,
-    crosspiece_inertia_2: float,
-    crosspiece_inertia_3: float,
-    max_bend_angle: float,
-) -> tuple | None:
-    """A step of `h` s from `time` without life: the state (`STATE`), the inputs
-    after the step and the outputs, or None when the step is not taken here.
-    The yoke phase and start angle enter through the state (`start` reduces
-    them), not as parameters."""
-    inputs = (input_speed, input_acceleration, bend_angle, bend_angle_rate,
-              bend_angle_acceleration, load_torque)  # fmt: skip
-    if not takes_step(h, parameters_valid, *inputs, max_bend_angle):
-        return None
-    return joint_advanced(
-        h, turns, fraction, fraction_error, phase_turns, phase_fraction, phase_error,
-        parameters_valid, *inputs, crosspiece_inertia_1, crosspiece_inertia_2,
-        crosspiece_inertia_3,
-    )  # fmt: skip
+# The inputs held over a step, as the entries' functions take them (the
+# table's `INPUTS`, in order).
+Inputs = tuple[float, float, float, float, float, float]
+# The step state's and parameters' names each tuple of the two entries'
+# functions takes (`framework.grouped_entry.GroupedEntry`); the inputs travel
+# as one tuple, in the table's order.
+GROUPS = {
+    "angle": ("turns", "fraction", "fraction_error"),
+    "phase": ("phase_turns", "phase_fraction", "phase_error"),
+    "inputs": table.INPUTS,
+    "starts": ("yoke_phase", "input_angle_start"),
+    "inertia": ("crosspiece_inertia_*",),
+}
+LIFE_GROUPS = {
+    **GROUPS,
+    "miner": ("life_consumed", "life_consumed_error"),
+    "life": ("bearing_radius", "rated_torque", "life_constant", "life_exponent", "life_min_angle"),
+}
 
 
-def joint_life_step(
-    time: float,
-    h: float,
-    turns: int,
-    fraction: float,
-    fraction_error: float,
-    phase_turns: int,
-    phase_fraction: float,
-    phase_error: float,
-    parameters_valid: bool,
-    life_consumed: float,
-    life_consumed_error: float,
-    input_speed: float,
-    input_acceleration: float,
-    bend_angle: float,
-    bend_angle_rate: float,
-    bend_angle_acceleration: float,
-    load_torque: float,
-    yoke_phase: float,
-    input_angle_start: float,
-    crosspiece_inertia_1: float,
-    crosspiece_inertia_2: float,
-    crosspiece_inertia_3: float,
-    max_bend_angle: float,
-    bearing_radius: float,
-    rated_torque: float,
-    life_constant: float,
-    life_exponent: float,
-    life_min_angle: float,
-) -> tuple | None:
-    """`joint_step` with life on: the state (`LIFE_STATE`), the inputs after
-    the step, the outputs and the four life outputs; Miner's sum gains the
-    step's damage (`life.step_damage`, from the values before the step)."""
-    inputs = (input_speed, input_acceleration, bend_angle, bend_angle_rate,
-              bend_angle_acceleration, load_torque)  # fmt: skip
+def joint_without_life(time, h, angle: Turns, phase: Turns, parameters_valid: bool,
+                       inputs: Inputs, starts, inertia,
+                       max_bend_angle) -> tuple | None:  # fmt: skip
+    """A step of `h` s from `time` without life (`STATE`, the inputs and the
+    parameters, grouped as `GROUPS` says): the state, the inputs after the step
+    and the outputs, or None when the step is not taken here. The yoke phase
+    and start angle (`starts`) enter through the state (`start` reduces them),
+    not as parameters."""
     if not takes_step(h, parameters_valid, *inputs, max_bend_angle):
         return None
-    inertia = (crosspiece_inertia_1, crosspiece_inertia_2, crosspiece_inertia_3)
-    taken = joint_advanced(
-        h, turns, fraction, fraction_error, phase_turns, phase_fraction, phase_error,
-        parameters_valid, *inputs, *inertia,
-    )  # fmt: skip
+    return joint_advanced(h, *angle, *phase, parameters_valid, *inputs, *inertia)
+
+
+def joint_with_life(time, h, angle: Turns, phase: Turns, parameters_valid: bool, miner,
+                    inputs: Inputs, starts, inertia, max_bend_angle,
+                    life) -> tuple | None:  # fmt: skip
+    """`joint_without_life` with life on (`LIFE_STATE`, grouped as
+    `LIFE_GROUPS` says): the state, the inputs after the step, the outputs and
+    the four life outputs; Miner's sum gains the step's damage
+    (`life.step_damage`, from the values before the step)."""
+    if not takes_step(h, parameters_valid, *inputs, max_bend_angle):
+        return None
+    taken = joint_advanced(h, *angle, *phase, parameters_valid, *inputs, *inertia)
+    speed, acceleration, beta, rate, bend_acceleration, load = inputs
+    bearing_radius, rated_torque, life_constant, life_exponent, life_min_angle = life
     rule = LifeRule(rated_torque, life_constant, life_exponent, life_min_angle)
-    psi = fraction + (phase_fraction + (fraction_error + phase_error))  # as `response`'s
+    psi = angle[1] + (phase[1] + (angle[2] + phase[2]))  # as `response`'s
     damage = step_damage(
-        rule, h, psi, bend_angle, input_speed, input_acceleration, bend_angle_rate,
-        bend_angle_acceleration, inertia, load_torque,
-    )  # fmt: skip
-    consumed = life_added(life_consumed, life_consumed_error, damage)
+        rule, h, psi, beta, speed, acceleration, rate, bend_acceleration, inertia, load
+    )
+    consumed = life_added(miner[0], miner[1], damage)
     moved = taken[_KINEMATIC_STATE:MOVED]
     outputs = taken[MOVED:]
-    life = life_of(rule, bearing_radius, consumed, outputs, moved[_LOAD], moved[_SPEED],
-                   moved[_BEND])  # fmt: skip
-    return taken[:_KINEMATIC_STATE] + consumed + moved + outputs + life
+    life_values = life_of(rule, bearing_radius, consumed, outputs, moved[_LOAD], moved[_SPEED],
+                          moved[_BEND])  # fmt: skip
+    return taken[:_KINEMATIC_STATE] + consumed + moved + outputs + life_values
+
+
+# The entries (the spec's `step`): the runtime's flat arguments, grouped.
+joint_step = grouped_step("joint_step", joint_without_life, STATE, table.WITHOUT_LIFE, GROUPS)
+joint_life_step = grouped_step("joint_life_step", joint_with_life, LIFE_STATE, table, LIFE_GROUPS)
 
 
 def life_added(consumed: float, consumed_error: float, damage: float) -> tuple[float, float]:
