@@ -65,6 +65,15 @@ def angle_limit_problem(reason, name: str, value: float, time: float) -> Refusal
     return Refusal(reason, name, value, limit, time, "rad", kind="parameter")
 
 
+def shaft_moves(h, speed, acceleration, speed_limit) -> bool:
+    """Whether a shaft at `speed` and constant `acceleration` may take a step of
+    `h` s: its angle's increment within MAX_INCREMENT and its end speed within
+    `speed_limit` (what `overflow` refuses otherwise). NaN fails both."""
+    increment = h * (speed + 0.5 * acceleration * h)
+    end_speed = speed + acceleration * h
+    return abs(increment) <= MAX_INCREMENT and abs(end_speed) <= speed_limit
+
+
 def overflow(speed, acceleration, h, increment, end_speed, speed_limit, time) -> Refusal:
     """The Refusal of a step whose angle `increment` or `end_speed` overflows."""
     details = {"input_speed": speed, "input_acceleration": acceleration, "step_size": h}

@@ -14,7 +14,8 @@ each node costs one chain for all the joints.
 
 import math
 
-from ...framework.values import MAX_INCREMENT, bounds
+from ...framework.values import bounds, shaft_moves
+from ...framework.written_step import sound_step
 from ...physics.life import LifeRule, compensated_add, life_outputs, rate_scale, singularity_reach
 from ...physics.life_integral import step_integrals
 from ...physics.response import JointResponse, kernel
@@ -71,16 +72,12 @@ def takes_step(h: float, parameters_valid: bool, speed: float, acceleration: flo
                load: float) -> bool:  # fmt: skip
     """Whether the step is taken here; otherwise the model's checks name the
     refusal. NaN fails every comparison, so a NaN anywhere is never taken here."""
-    increment = h * (speed + 0.5 * acceleration * h)
-    end_speed = speed + acceleration * h
     return (
-        0.0 < h < math.inf
-        and parameters_valid
+        sound_step(h, parameters_valid)
         and abs(speed) <= SPEED_LIMIT
         and abs(acceleration) <= _ACCELERATION_LIMIT
         and abs(load) <= _LOAD_LIMIT
-        and abs(increment) <= MAX_INCREMENT
-        and abs(end_speed) <= SPEED_LIMIT
+        and shaft_moves(h, speed, acceleration, SPEED_LIMIT)
     )
 
 

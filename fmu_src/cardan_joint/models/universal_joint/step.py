@@ -7,8 +7,8 @@ parameters, the input angle and yoke phase as exact revolutions
 
 import math
 
-from ...framework.values import MAX_INCREMENT
-from ...framework.written_step import grouped_step
+from ...framework.values import shaft_moves
+from ...framework.written_step import grouped_step, sound_step
 from ...physics.life import LifeRule, compensated_add, life_outputs, step_damage
 from ...physics.response import JointResponse, kernel
 from ...physics.revolutions import Turns, advanced, angle_value
@@ -86,14 +86,10 @@ def takes_step(
 ) -> bool:
     """Whether the step is taken here; otherwise the model's checks name the
     refusal. NaN fails every comparison, so a NaN anywhere is never taken here."""
-    increment = h * (speed + 0.5 * acceleration * h)
-    end_speed = speed + acceleration * h
     return (
-        0.0 < h < math.inf
-        and parameters_valid
+        sound_step(h, parameters_valid)
         and fits(speed, acceleration, beta, rate, bend_acceleration, load, max_bend_angle, h)
-        and abs(increment) <= MAX_INCREMENT
-        and abs(end_speed) <= SPEED_LIMIT
+        and shaft_moves(h, speed, acceleration, SPEED_LIMIT)
     )
 
 
