@@ -36,7 +36,6 @@ MOVED = len(STATE) + len(table.INPUTS)
 # With life on, Miner's sum and its compensation follow (`JointLife`).
 LIFE_STATE = (*STATE, "life_consumed", "life_consumed_error")
 _KINEMATIC_STATE = len(STATE)
-_MOVED_BY_LIFE_STEP = len(LIFE_STATE) + len(table.INPUTS)
 # The kernel's fields the bearing loads take, among the outputs after the angles.
 _TORQUE, _INPUT_MOMENT, _OUTPUT_MOMENT = (
     JointResponse._fields.index(name)
