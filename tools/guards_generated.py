@@ -89,10 +89,16 @@ GENERATED_MUTATIONS = (
     Mutation(
         "fast path: a step the slave takes is stored (its outputs, the moved inputs)",
         FAST_VALUES,
-        "    if (fast && in->state != STATE_ERROR && fast_after(in) == fmi2OK)\n"
-        "        fast->stale = status != fmi2OK;\n",
-        "",
+        "return take_reply(fast, FAST_STORE, p_PyTuple_GetItem(reply, 1));",
+        "return fmi2OK;",
         ("tests/fmu/test_fast_path.py", "-k", "plain_calls"),
+    ),
+    Mutation(
+        "fast path: a step reply's length is checked",
+        FAST_VALUES,
+        "        if (size != 2) {",
+        "        if (size < 0) {",
+        ("tests/fmu/test_fast_path_replies.py", "-k", "malformed_step_reply"),
     ),
     Mutation(
         "fast path: a read passes the indices it reads",

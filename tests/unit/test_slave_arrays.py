@@ -3,10 +3,10 @@ setReal, doStep and getReal.
 
 Two slaves of each model take the same random inputs, one through the normal
 accessors, one as the runtime drives it when the step is the slave's: inputs
-written into a C array of doubles (passed as a tuple), `fast_load` before a
-call into the slave when they were written, `do_step`, `fast_store` after
-every call (a taken step's outputs served from it), `fast_outputs` for a read
-that follows a write (or a refused step). Their outputs must agree bit for
+written into a C array of doubles (passed as a tuple), a step one call of
+`fast_do_step` (the inputs when written, do_step, the store: a taken step's
+outputs served from it), `fast_outputs` for a read that follows a write (or a
+refused step), `fast_store` after any other call. Their outputs must agree bit for
 bit, and so must their statuses and every message they log: refused steps,
 held outputs, ignored parameters, FMU states set back.
 """
@@ -80,9 +80,10 @@ class Loader:
     def given(self):
         return tuple(self.known[: self.inputs])
 
-    def store(self):
+    def store(self, reply=None):  # `reply`: as fast_do_step hands it back
         self.fresh = False
-        return self.take(self.slave.fast_store(), "known", "outputs")
+        reply = self.slave.fast_store() if reply is None else reply
+        return self.take(reply, "known", "outputs")
 
     def set_inputs(self, values):
         self.known[: len(values)] = values
@@ -90,14 +91,13 @@ class Loader:
         self.written = True
 
     def step(self, time, step_size):
-        """fast_values.c's fast_step, the step the slave's: do_step between
-        fast_load (inputs written) and fast_store."""
-        if self.written:
-            assert self.slave.fast_load(self.given()) == Fmi2Status.ok
-            self.written = False
-        answer = self.slave.do_step(time, step_size)
+        """fast_values.c's fast_step, the step the slave's: one fast_do_step,
+        given the inputs when written."""
+        given = self.given() if self.written else None
+        self.written = False
+        answer, store_reply = self.slave.fast_do_step(time, step_size, given)
         taken = answer is True or getattr(answer, "status", None) == 0
-        stored = self.store()
+        stored = self.store(store_reply)
         self.fresh = taken and stored == Fmi2Status.ok
         return Fmi2Status.ok if taken else Fmi2Status.error
 

@@ -23,8 +23,9 @@ is armed), and takes the state back with fast_sync. The runtime takes each
 step it can in C: arguments (t, h, state, known), results (state, the moved
 inputs, outputs). A step C does not take (or every step, without a generated
 step or with $CARDAN_JOINT_FMU_PYTHON_STEP=1) is the slave's plain do_step
-(`core.SlaveCore._step`), between the same calls as any other call into the
-slave: fast_sync and fast_load before, fast_store after. A step taken in C
+(`core.SlaveCore._step`), in one call, fast_do_step, which takes the inputs
+(as fast_load) and stores after it (as fast_store); fast_sync before it, as
+before any other call into the slave. A step taken in C
 with an output past its limit (|value| > limit) is handed over at once
 (fast_sync, then fast_watch): the slave warns once, as after a step in Python.
 
@@ -38,14 +39,18 @@ the log queue after it:
 - fast_store() -> (ok, known, outputs[, state, limits]): every input and
   parameter, and the last valid outputs (`_outputs_held`: after a step taken
   in Python, the step's, which the runtime then serves). Call it after
-  instantiation and after every call into the slave: a step, a setReal
-  forwarded to Python, exitInitializationMode, set or deserialized FMU state,
-  reset.
+  instantiation and after every other call into the slave (fast_do_step
+  stores itself): a setReal forwarded to Python, exitInitializationMode, set
+  or deserialized FMU state, reset.
 - fast_load(inputs) -> status: takes the inputs (not the parameters), as a
   setReal of every input would. Call it before every other call into the
-  slave when an input was written since the last fast_* call (a step, FMU
-  state get, a forwarded setReal, terminate...), so the slave sees the host's
-  inputs.
+  slave (fast_do_step takes them itself) when an input was written since the
+  last fast_* call (FMU state get, a forwarded setReal, terminate...), so the
+  slave sees the host's inputs.
+- fast_do_step(t, h, inputs=None) -> (do_step's result, fast_store's reply):
+  fast_load(inputs) when given (an input was written since the last fast_*
+  call), then do_step(t, h), then fast_store(); the result is read as the
+  FMI version's do_step result is, the reply as fast_store's.
 - fast_sync(t, state, inputs, outputs) -> status: the model as the generated
   steps left it: clock t, its step state, the inputs and outputs of the last
   step (held for getReal, as a step in Python holds them). Call it before any
@@ -75,8 +80,8 @@ outputs are stale, fast_outputs(inputs, read) first (even for a read of inputs
 only: getReal evaluates the outputs whatever it is asked, and warns if an
 output read is held); then known and outputs serve every reference the table
 maps into them, anything else is forwarded (the slave reports it). doStep: the
-generated step, else the slave's do_step; outputs fresh when it is taken,
-stale otherwise.
+generated step, else fast_do_step; outputs fresh when it is taken and
+stored, stale otherwise.
 """
 
 from collections.abc import Callable
@@ -102,6 +107,7 @@ class FastPath:
     _fault: Callable[[str, BaseException], None]
     _watch: Callable[[tuple], None]
     _watch_limits: Callable[[], tuple]
+    do_step: Callable[[float, float], Any]
     # fast_state_size() was called: fast_store gives the model's step state.
     _state_exchange = False
 
@@ -124,6 +130,13 @@ class FastPath:
         self._model.set_inputs(inputs)
         self._outputs = None
         self._inputs_checked = False
+
+    def fast_do_step(self, current_time, step_size, inputs=None):
+        """A step the slave takes, in one call from the runtime: the host's
+        inputs when written (fast_load), do_step, then what fast_store gives."""
+        if inputs is not None:
+            self.fast_load(inputs)
+        return self.do_step(current_time, step_size), self.fast_store()
 
     def fast_store(self):
         """Every input and parameter and the last valid outputs, for the runtime's

@@ -17,7 +17,7 @@
 /* The slave's layout: the runtime's own slave object, if it has the fast path's methods. */
 static const char CLAIM[] =
     "sizes = ()\n"
-    "methods = ('fast_outputs', 'fast_load', 'fast_store', 'fast_layout')\n"
+    "methods = ('fast_outputs', 'fast_load', 'fast_store', 'fast_do_step', 'fast_layout')\n"
     "if all(hasattr(slave, m) for m in methods):\n"
     "    layout = slave.fast_layout()\n"
     "    sizes = tuple(int(layout[k]) for k in ('inputs', 'known_size', 'first_output', "
@@ -39,8 +39,8 @@ static const char CLAIM[] =
     ").tobytes() if refs else b''\n";
 
 /* In the order of enum fast_method. */
-static const char *const METHODS[] = {"fast_outputs", "fast_load", "fast_store", "fast_sync",
-                                      "fast_watch"};
+static const char *const METHODS[] = {"fast_outputs", "fast_load", "fast_store",
+                                      "fast_do_step", "fast_sync",  "fast_watch"};
 
 /* One call into the slave with the GIL held; its status (an FMI status number). */
 static long call(struct instance *in, enum fast_method method, PyObject *a, PyObject *b,
@@ -49,6 +49,10 @@ static long call(struct instance *in, enum fast_method method, PyObject *a, PyOb
     struct fast_path *fast = in->fast;
     /* the arguments end at the first NULL */
     PyObject *reply = p_PyObject_CallFunctionObjArgs(fast->methods[method], a, b, c, d, NULL);
+    /* A step that raised (do_step's own fault, or the host's interrupt) is
+     * said as slave_do_step says it. */
+    if (!reply && method == FAST_STEP)
+        return fast->answer = slave_finish(in, NULL, "do_step");
     long status = reply ? take_reply(fast, method, reply) : -1;
     if (reply)
         p_Py_DecRef(reply);
@@ -68,9 +72,9 @@ static long call(struct instance *in, enum fast_method method, PyObject *a, PyOb
 
 static void forget(struct fast_path *fast)
 {
-    PyObject **owned[] = {&fast->slave,      &fast->methods[0], &fast->methods[1],
-                          &fast->methods[2], &fast->methods[3], &fast->methods[4],
-                          &fast->queue};
+    PyObject **owned[FAST_METHODS + 2] = {&fast->slave, &fast->queue};
+    for (int m = 0; m < FAST_METHODS; m++)
+        owned[m + 2] = &fast->methods[m];
     for (size_t i = 0; i < sizeof owned / sizeof *owned; i++) {
         if (*owned[i])
             p_Py_DecRef(*owned[i]);
@@ -233,8 +237,9 @@ int catch_up(struct instance *in)
 }
 
 /* One call into the slave, the GIL taken for it: fast_outputs(inputs, read),
- * fast_load(inputs), fast_store(), fast_sync(behind_time, state, held
- * inputs, outputs) or fast_watch(). */
+ * fast_load(inputs), fast_store(), fast_do_step(step_time, step_size[,
+ * inputs when written]), fast_sync(behind_time, state, held inputs, outputs)
+ * or fast_watch(). */
 long fast_call(struct instance *in, enum fast_method method)
 {
     struct fast_path *fast = in->fast;
@@ -249,6 +254,12 @@ long fast_call(struct instance *in, enum fast_method method)
         arguments[2] = tuple_of(fast->held, fast->inputs);
         arguments[3] = tuple_of(fast->values, fast->outputs);
         made = arguments[0] && arguments[1] && arguments[2] && arguments[3];
+    } else if (method == FAST_STEP) {
+        arguments[0] = p_PyFloat_FromDouble(fast->step_time);
+        arguments[1] = p_PyFloat_FromDouble(fast->step_size);
+        if (fast->inputs_written)
+            arguments[2] = tuple_of(fast->known, fast->inputs);
+        made = arguments[0] && arguments[1] && (!fast->inputs_written || arguments[2]);
     } else if (method != FAST_STORE && method != FAST_WATCH) {
         arguments[0] = tuple_of(fast->known, fast->inputs);
         /* fast_outputs(inputs, read): only a read of a held output warns. */

@@ -10,6 +10,7 @@ enum fast_method {
     FAST_OUTPUTS,
     FAST_LOAD,
     FAST_STORE,
+    FAST_STEP,
     FAST_SYNC,
     FAST_WATCH,
     FAST_METHODS
@@ -34,6 +35,11 @@ struct fast_path {
     int generated, behind;
     long state_size;
     double *state, *arguments, *results, *held, behind_time;
+    /* A step the slave takes (fast_do_step): its time and size, and its
+     * do_step's answer and terminateSimulation, as slave_do_step reads them. */
+    double step_time, step_size;
+    fmi2Status answer;
+    int terminate;
     /* With the generated step: each output's armed watch limit (+inf: none),
      * from fast_store; a step taken in C whose output passes one hands over to
      * the slave (fast_watch), which warns once and disarms it. */

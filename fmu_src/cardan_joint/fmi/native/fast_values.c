@@ -51,6 +51,15 @@ static int destinations(const struct fast_path *fast, enum fast_method method, s
 long take_reply(struct fast_path *fast, enum fast_method method, PyObject *reply)
 {
     Py_ssize_t size = p_PyTuple_Size(reply);
+    if (method == FAST_STEP) {
+        /* (do_step's result, fast_store's reply); the store's status */
+        if (size != 2) {
+            p_PyErr_Clear();
+            return -1;
+        }
+        fast->answer = step_answer(p_PyTuple_GetItem(reply, 0), &fast->terminate);
+        return take_reply(fast, FAST_STORE, p_PyTuple_GetItem(reply, 1));
+    }
     if (size < 0) {
         p_PyErr_Clear();
         return p_PyLong_AsLong(reply);
@@ -80,8 +89,9 @@ long take_reply(struct fast_path *fast, enum fast_method method, PyObject *reply
     return p_PyLong_AsLong(p_PyTuple_GetItem(reply, 0));
 }
 
-/* Before any call into the slave: it takes what the steps in C left and the
- * host's latest inputs; -1 when it could not catch up. */
+/* Before any call into the slave but a step (fast_do_step takes the inputs
+ * itself): it takes what the steps in C left and the host's latest inputs; -1
+ * when it could not catch up. */
 int fast_before(struct instance *in)
 {
     struct fast_path *fast = in->fast;
@@ -96,8 +106,8 @@ int fast_before(struct instance *in)
     return 0;
 }
 
-/* After any call into the slave: it may have changed inputs or parameters;
- * the outputs stale.  The store's status. */
+/* After any call into the slave but a step (fast_do_step stores itself): it
+ * may have changed inputs or parameters; the outputs stale.  The store's status. */
 long fast_after(struct instance *in)
 {
     struct fast_path *fast = in->fast;
@@ -164,10 +174,11 @@ static int watch_passed(const struct fast_path *fast)
 }
 
 /* doStep: in C when the generated step takes it (the slave catches up at its
- * next call, or at once to warn of a watch passed), else by the slave's
- * do_step, caught up before and stored after as around any call into it: a
- * step it takes leaves its outputs in the arrays, fresh.  `terminate` (may be
- * NULL) as the slave says. */
+ * next call, or at once to warn of a watch passed), else by the slave in one
+ * call, fast_do_step: the host's inputs when written, its do_step, then what
+ * fast_store gives (what fast_before and fast_after do around any other call,
+ * in one entry into Python); a step it takes leaves its outputs in the
+ * arrays, fresh.  `terminate` (may be NULL) as the slave says. */
 fmi2Status fast_step(struct instance *in, double time, double step, int *terminate)
 {
     struct fast_path *fast = in->fast;
@@ -178,13 +189,17 @@ fmi2Status fast_step(struct instance *in, double time, double step, int *termina
         /* The slave warns once, as after a step in Python; the step stands. */
         return watch_passed(fast) ? (fmi2Status)fast_call(in, FAST_WATCH) : fmi2OK;
     }
-    if (fast_before(in)) {
-        in->last_successful_time = time; /* not taken, as slave_do_step says */
-        return fmi2Error;
-    }
-    fmi2Status status = slave_do_step(in, time, step, terminate);
-    /* An interrupted slave (the error state) has nothing to store. */
-    if (fast && in->state != STATE_ERROR && fast_after(in) == fmi2OK)
-        fast->stale = status != fmi2OK;
+    if (!fast)
+        return slave_do_step(in, time, step, terminate);
+    fast->step_time = time, fast->step_size = step;
+    fast->answer = fmi2Error; /* unless do_step answers */
+    fast->terminate = 0;
+    long stored = fast_call(in, FAST_STEP);
+    fmi2Status status = fast->answer;
+    fast->inputs_written = 0;
+    fast->stale = stored != fmi2OK || status != fmi2OK;
+    in->last_successful_time = status == fmi2OK ? time + step : time;
+    if (terminate)
+        *terminate = fast->terminate;
     return status;
 }

@@ -86,7 +86,8 @@ fmi2Status state_deserialize(void *c, const char bytes[], size_t size, fmi2FMUst
  * the instance then in STATE_ERROR: the call must not reach it; fast_after:
  * the status of the slave's store); fast_serves says whether fast_set
  * (inputs_only) or fast_get can answer these value references in C; fast_step
- * is every doStep, through the generated step or the slave's do_step. */
+ * is every doStep, through the generated step or the slave's do_step (in one
+ * call of its fast_do_step, which takes the inputs and stores itself). */
 void fast_attach(struct instance *in);
 void fast_detach(struct instance *in);
 void fast_reset(struct instance *in);

@@ -74,5 +74,8 @@ fmi2Status slave_finish(struct instance *in, PyObject *result, const char *what)
  * KeyboardInterrupt (said, the instance in STATE_ERROR, the interrupt handed
  * back to the host's Python), 0 otherwise (the exception still set). */
 int slave_interrupted(struct instance *in, const char *what);
+/* With the GIL: do_step's result as an FMI status (pythonfmu3: its status and
+ * terminateSimulation, into `terminate` if not NULL; pythonfmu: true is OK). */
+fmi2Status step_answer(PyObject *result, int *terminate);
 
 #endif

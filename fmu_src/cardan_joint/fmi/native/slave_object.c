@@ -181,7 +181,7 @@ fmi2Status slave_setup_experiment(struct instance *in)
 
 /* With the GIL: do_step's answer as pythonfmu3 reads it (a result with a
  * status and terminateSimulation) or pythonfmu (true: OK, else Discard). */
-static fmi2Status step_answer(PyObject *result, int *terminate)
+fmi2Status step_answer(PyObject *result, int *terminate)
 {
     PyObject *status = p_PyObject_GetAttrString(result, "status");
     long value = status ? p_PyLong_AsLong(status) : (p_PyObject_IsTrue(result) == 1 ? 0 : 2);
