@@ -11,6 +11,7 @@ import numpy as np
 from scipy.integrate import quad
 from scipy.optimize import brentq
 
+from cardan_joint.models.propshaft import chain
 from cardan_joint.physics.response import JointResponse, joint_response
 
 _T1 = JointResponse._fields.index("input_torque")
@@ -113,3 +114,22 @@ def damage_quadpack(case, h, rule):
     for lo, hi in zip(kinks, kinks[1:]):
         total += quad(lambda t: rate(t, case, rule), lo, hi, epsabs=0.0, epsrel=1e-13, limit=500)[0]
     return total / 3600.0
+
+
+def chain_over_step(shaft, spring=None):
+    """A propshaft's chain t s into its next step, the input shaft at constant
+    acceleration: a function of t; the load `spring(t, free chain)` if given
+    (a compliant layer's), else the held one."""
+    _, fraction, error = shaft._angle
+    w0, a0 = shaft.input_speed, shaft.input_acceleration
+    crosspiece = tuple(getattr(shaft, f"crosspiece_inertia_{k}") for k in (1, 2, 3))
+    inertias = [getattr(shaft, f"shaft_{k}_inertia") for k in range(1, shaft.joints)]
+
+    def state(t):
+        angle = fraction + (error + (w0 * t + 0.5 * a0 * t * t))
+        load = shaft.load_torque
+        if spring:
+            load = spring(t, chain(shaft.layout, angle, w0 + a0 * t, a0, crosspiece, inertias))
+        return chain(shaft.layout, angle, w0 + a0 * t, a0, crosspiece, inertias, load)
+
+    return state

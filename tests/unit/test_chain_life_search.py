@@ -12,12 +12,12 @@ import math
 import random
 
 import numpy as np
-from life_reference import damage_quadpack
+from life_reference import chain_over_step, damage_quadpack
 from scipy.integrate import quad
 from scipy.optimize import brentq
 
 from cardan_joint.models.compliant_propshaft.model import CompliantPropshaft
-from cardan_joint.models.propshaft import Propshaft, chain
+from cardan_joint.models.propshaft import Propshaft
 from cardan_joint.physics.life import LifeRule, step_damage
 
 
@@ -35,18 +35,9 @@ def _reference(shaft, h, spring=None):
     """(each joint's damage over the next step of `h` s by QUADPACK, the
     torque zeros of all joints in it); the load
     `spring(t, free chain)` if given, else the held one."""
-    _, fraction, error = shaft._angle
     w0, a0 = shaft.input_speed, shaft.input_acceleration
-    crosspiece = tuple(getattr(shaft, f"crosspiece_inertia_{k}") for k in (1, 2, 3))
-    inertias = [getattr(shaft, f"shaft_{k}_inertia") for k in range(1, shaft.joints)]
     rule = shaft._life_rule
-
-    def state(t):
-        angle = fraction + (error + (w0 * t + 0.5 * a0 * t * t))
-        load = shaft.load_torque
-        if spring:
-            load = spring(t, chain(shaft.layout, angle, w0 + a0 * t, a0, crosspiece, inertias))
-        return chain(shaft.layout, angle, w0 + a0 * t, a0, crosspiece, inertias, load)
+    state = chain_over_step(shaft, spring)
 
     damages, zeros = [], 0
     for k, beta in enumerate(shaft.layout.working_angles):

@@ -14,10 +14,11 @@ import math
 import mpmath
 import numpy as np
 import pytest
+from life_reference import chain_over_step
 from scipy.optimize import brentq
 
 from cardan_joint.models.compliant_propshaft.model import CompliantPropshaft
-from cardan_joint.models.propshaft import Propshaft, chain
+from cardan_joint.models.propshaft import Propshaft
 from cardan_joint.physics.life import LifeRule
 
 RULE = LifeRule(1000.0, 1.5e6, 10.0 / 3.0, math.radians(3.0))
@@ -32,21 +33,8 @@ def _reference_damages(shaft, h, spring=None):
     """Each joint's damage over the next step of `h` s, from the catalogue rate
     in degrees and rpm integrated by mpmath between the torque's sign changes;
     the load `spring(t, free chain)` if given (a compliant layer's), else held."""
-    _, fraction, error = shaft._angle
     w0, a0 = shaft.input_speed, shaft.input_acceleration
-    crosspiece = (
-        shaft.crosspiece_inertia_1,
-        shaft.crosspiece_inertia_2,
-        shaft.crosspiece_inertia_3,
-    )
-    inertias = [getattr(shaft, f"shaft_{k}_inertia") for k in range(1, shaft.joints)]
-
-    def state(t):
-        angle = fraction + (error + (w0 * t + 0.5 * a0 * t * t))
-        load = shaft.load_torque
-        if spring:
-            load = spring(t, chain(shaft.layout, angle, w0 + a0 * t, a0, crosspiece, inertias))
-        return chain(shaft.layout, angle, w0 + a0 * t, a0, crosspiece, inertias, load)
+    state = chain_over_step(shaft, spring)
 
     damages = []
     for k, beta in enumerate(shaft.layout.working_angles):
