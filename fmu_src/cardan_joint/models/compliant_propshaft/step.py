@@ -18,10 +18,10 @@ from ..propshaft.chain import (
     OFFSET,
     SPEED,
     chain_backward,
-    chain_forward,
     chain_values,
 )
 from ..propshaft.step import (
+    chain_at,
     chain_damages,
     joint_torques,
     propshaft_outputs,
@@ -49,21 +49,18 @@ def spring_chain_torque(t, step):
     spring (`joint_torques`): the chain's load-free pass gives the
     kinematics the spring's torque needs (the last shaft's offset and
     speed), its backward pass the torques under that load."""
-    fraction, error, speed, acceleration, I1, I2, I3 = step[:7]
+    speed, acceleration = step[2:4]  # `chain_at`'s head, then the spring's
     shift, lag, output_speed, output_acceleration, stiffness, damping = step[7:_STEP_HEAD]
-    layout = step_layout(step[_STEP_HEAD:])
-    input_speed = speed + acceleration * t
-    forward = chain_forward(
-        math, fraction, error + t * (speed + 0.5 * acceleration * t), input_speed, acceleration,
-        layout, step[_STEP_HEAD + len(layout) :], I1, I2, I3,
-    )  # fmt: skip
+    tail = step[_STEP_HEAD:]
+    layout = step_layout(tail)
+    forward = chain_at(t, step, layout, tail[len(layout) :])
     # The last joint's output shaft: its offset and speed.
     load = spring_load(
         t, forward[len(forward) - 1 - CHAIN_FIELDS + OFFSET] - shift,
         forward[len(forward) - 1 - CHAIN_FIELDS + SPEED], lag, speed, acceleration,
         output_speed, output_acceleration, stiffness, damping,
     )  # fmt: skip
-    return joint_torques(forward, chain_backward(forward, layout, load), input_speed)
+    return joint_torques(forward, chain_backward(forward, layout, load), speed + acceleration * t)
 
 
 def compliant_takes_step(h: float, parameters_valid: bool, speed: float, acceleration: float,

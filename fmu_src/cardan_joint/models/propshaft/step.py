@@ -95,14 +95,24 @@ def chain_torque(t, step):
     """Every joint's (T_k, input shaft speed) t s into the step
     (`_STEP_HEAD`), `joint_torques`: the chain at that instant under the held
     load, the input shaft at constant acceleration."""
-    fraction, error, speed, acceleration, I1, I2, I3, load = step[:_STEP_HEAD]
-    layout = step_layout(step[_STEP_HEAD:])
-    input_speed = speed + acceleration * t
-    forward = chain_forward(
-        math, fraction, error + t * (speed + 0.5 * acceleration * t), input_speed, acceleration,
-        layout, step[_STEP_HEAD + len(layout) :], I1, I2, I3,
+    speed, acceleration = step[2:4]  # `chain_at`'s head, then the load
+    tail = step[_STEP_HEAD:]
+    layout = step_layout(tail)
+    forward = chain_at(t, step, layout, tail[len(layout) :])
+    load = chain_backward(forward, layout, step[_STEP_HEAD - 1])
+    return joint_torques(forward, load, speed + acceleration * t)
+
+
+def chain_at(t, step, layout, trig):
+    """The chain's load-free pass (`chain_forward`) t s into the step: `step`
+    starts with the input angle's fraction and error, the input speed and
+    acceleration at the step's start and the cross's inertias; `trig` the
+    bends' sines and cosines (`step_layout`'s tail)."""
+    fraction, error, speed, acceleration, I1, I2, I3 = step[:7]
+    return chain_forward(
+        math, fraction, error + t * (speed + 0.5 * acceleration * t), speed + acceleration * t,
+        acceleration, layout, trig, I1, I2, I3,
     )  # fmt: skip
-    return joint_torques(forward, chain_backward(forward, layout, load), input_speed)
 
 
 def step_layout(tail):
