@@ -13,7 +13,7 @@ import pytest
 from life_reference import case_of, damage_quadpack, random_fast_step
 
 from cardan_joint.models.universal_joint.model import CardanJoint
-from cardan_joint.physics import life_integral, life_torque
+from cardan_joint.physics import life_torque, life_zeros
 from cardan_joint.physics.life import LifeRule
 
 RULE = LifeRule(1000.0, 1.5e6, 10.0 / 3.0, math.radians(3.0))
@@ -99,7 +99,7 @@ def test_a_torque_zero_is_located_to_the_last_bits_in_a_few_evaluations():
         for lo, hi, f_lo, f_hi in zip(times, times[1:], torques, torques[1:]):
             if f_lo == 0.0 or f_hi == 0.0 or (f_lo < 0.0) == (f_hi < 0.0):
                 continue
-            zero = life_integral._root(counted, step, 0, lo, hi, f_lo, f_hi)
+            zero = life_zeros._root(counted, step, 0, lo, hi, f_lo, f_hi)
             zeros += 1
             near = 8.0 * math.ulp(zero)
             before = life_torque.joint_torque(zero - near, step)[0]

@@ -6,9 +6,11 @@ zeros (located to the last bits as the panels meet them). The step is cut at
 each event and every piece between them is covered by Gauss-Legendre panels
 (`life_panel`), marching from its start: a panel whose error bound asks for
 more points than it has is taken again with them, or cut at the torque's
-sign change it shows, or halved. So a piece costs one panel unless it is
-longer than the torque's singularities' reach, and each event costs its
-location and a few panels more.
+sign change it shows (`life_zeros`, which keeps the next zero it shows for
+later), or halved; a plain panel inside one that failed takes the points
+that one's cubic foresees. So a piece costs one panel unless it is longer
+than the torque's singularities' reach, and each event costs its location
+and a few panels more.
 
 The joints of a chain share the march (`step_integrals`): each panel's
 nodes serve every joint's integrand, so the chain is evaluated once per node
@@ -24,44 +26,35 @@ torque and input speed t s into the step.
 import math
 
 from .life_nodes import (
-    PANEL_FIELDS,
-    divides_at,
     filled,
     panel,
+    points_foreseen,
     scales_raised,
-    torque_of,
     totals_added,
+    unseen_panel,
     verdict,
 )
 from .life_panel import (
     error_budget,
     longest_panel,
-    may_vanish,
-    node_time,
     points_for,
     singular_log_rho,
     substitution_power,
 )
-from .quadrature import GAUSS_NODES, MAX_POINTS
+from .life_zeros import first_zeros
+from .quadrature import MAX_POINTS
 
 # Below 1 mrad of bend the torque's singularities are practically out of reach.
 FLAT_REACH = math.acosh(1e3)
-# Panels tried per step and root-finder steps per zero: a step over thousands
-# of turns ends with one panel for what is left, less exactly (docs/life.md).
+# Panels tried per step: a step over thousands of turns ends with one panel
+# for what is left, less exactly (docs/life.md).
 _MAX_ATTEMPTS = 4096
-_ROOT_STEPS = 200
-# Brent's bracket, relative and absolute: two ulps of the zero's time.
-_ROOT_TOLERANCE = 2.0 * 2.220446049250313e-16
-_TINY_TIME = 1e-300
 # A panel this short against the step is taken as it is.
 _SHORTEST = 1e-13
-# Two joints' zeros this close, against the panel that shows them, are one:
-# a chain whose torques are all proportional to its load has its joints'
-# zeros at one instant, which their rounding spreads by a few 1e-17 s, and
-# its nodes show them all at once. A joint substituted at a zero this far
-# from its own errs by far less than the bound (its torque's sign differs
-# only below the first node's u^q).
-_SAME_ZERO = 1e-12
+# A plain panel that the panel about it foresees to need a cut is halved
+# before it is taken, down to this share of that panel (`points_foreseen`):
+# the foresight reads only a cubic, so it halves no further unseen.
+_UNSEEN_HALVING = 0.25
 
 
 def _first_root_after(t, limit, c0, c1, c2):
@@ -109,109 +102,6 @@ def singularity_time(w1, a1, h, reach):
     return math.inf
 
 
-def _root(torques_at, step, joint: int, a, b, fa, fb):
-    """A sign change of `joint`'s torque in (a, b), fa and fb of opposite signs, to
-    the last bits: Brent's method (inverse quadratic and secant steps, bisection
-    when they stall), which shrinks the bracket to a few ulps in about half the
-    evaluations regula falsi takes, as its steps never fall below that width."""
-    c, fc = a, fa
-    d, e = b - a, b - a
-    for _ in range(_ROOT_STEPS):
-        if fb == 0.0:
-            return b
-        if (fb < 0.0) == (fc < 0.0):
-            c, fc = a, fa
-            d, e = b - a, b - a
-        if abs(fc) < abs(fb):
-            a, b, c, fa, fb, fc = b, c, b, fb, fc, fb
-        tolerance = _ROOT_TOLERANCE * abs(b) + _TINY_TIME
-        half = 0.5 * (c - b)
-        if abs(half) <= tolerance:
-            return b
-        if abs(e) < tolerance or abs(fa) <= abs(fb):
-            d, e = half, half
-        else:
-            s = fb / fa
-            if a == c:
-                p, q = 2.0 * half * s, 1.0 - s
-            else:
-                q, r = fa / fc, fb / fc
-                p = s * (2.0 * half * q * (q - r) - (b - a) * (r - 1.0))
-                q = (q - 1.0) * (r - 1.0) * (s - 1.0)
-            if p > 0.0:
-                q = -q
-            else:
-                p = -p
-            if 2.0 * p < min(3.0 * half * q - abs(tolerance * q), abs(e * q)):
-                e, d = d, p / q
-            else:
-                d, e = half, half
-        a, fa = b, fb
-        b += d if abs(d) > tolerance else math.copysign(tolerance, half)
-        fb = torque_of(torques_at(b, step), joint)
-    return b
-
-
-def _root_by(torques_at, step, joint: int, a, fa, b):
-    """The zero of `joint`'s torque between a (T = fa there) and b, if T's
-    sign differs at b; else -1."""
-    fb = torque_of(torques_at(b, step), joint)
-    if fa != 0.0 and fb != 0.0 and (fa < 0.0) != (fb < 0.0):
-        if a > b:
-            return _root(torques_at, step, joint, b, a, fb, fa)
-        return _root(torques_at, step, joint, a, b, fa, fb)
-    return -1.0
-
-
-def _zero_in(torques_at, step, joint: int, lo, hi, zero: int, own: int, q, points: int,
-             change: int):  # fmt: skip
-    """A zero of `joint`'s torque in (lo, hi), the panel's (substituted as
-    `zero`; `own` is `zero` where the substitution's zero is the joint's,
-    else 0): between nodes change - 1 and `change` if they differ in sign,
-    else between an end (not the joint's known zero) and its nearest node;
-    -1.0 if neither shows one."""
-    first = node_time(lo, hi, GAUSS_NODES[points][0], zero, q)
-    if change != 0:
-        before = node_time(lo, hi, GAUSS_NODES[points][change - 1], zero, q)
-        return _root_by(
-            torques_at, step, joint, before, torque_of(torques_at(before, step), joint),
-            node_time(lo, hi, GAUSS_NODES[points][change], zero, q),
-        )  # fmt: skip
-    last = node_time(lo, hi, GAUSS_NODES[points][points - 1], zero, q)
-    # The node nearest each end: the first in u, except on a panel substituted at hi.
-    near_lo, near_hi = (last, first) if zero < 0 else (first, last)
-    if own <= 0:
-        found = _root_by(torques_at, step, joint, lo, torque_of(torques_at(lo, step), joint),
-                         near_lo)  # fmt: skip
-        if found >= 0.0:
-            return found
-    if own >= 0:
-        return _root_by(torques_at, step, joint, hi, torque_of(torques_at(hi, step), joint),
-                        near_hi)  # fmt: skip
-    return -1.0
-
-
-def _first_zero(torques_at, step, values, failing: int, lo, hi, zero: int, divides: int, q,
-                points: int):  # fmt: skip
-    """(the first zero in (lo, hi) of a torque whose joint fails on the panel
-    and whose values show one, the joints whose zero it is, one bit each);
-    (-1.0, 0) if none shows one."""
-    first, joints = -1.0, 0
-    for k in range(len(values) // PANEL_FIELDS):
-        change = values[PANEL_FIELDS * k + 1]
-        coefficients = values[PANEL_FIELDS * k + 2 : PANEL_FIELDS * (k + 1)]
-        if divides_at(failing, k) and (change != 0 or may_vanish(coefficients)):
-            own = zero if divides_at(divides, k) else 0
-            root = _zero_in(torques_at, step, k, lo, hi, zero, own, q, points, change)
-            if root > lo:
-                same = _SAME_ZERO * (hi - lo)
-                if first < 0.0 or root < first - same:
-                    first, joints = root, 1 << k
-                elif root <= first + same:
-                    first, joints = min(first, root), joints | (1 << k)
-    return first, joints
-
-
 def step_integrals(torques_at, step, h, w1, a1, bends, rb, ab, min_angle, p, reach):
     """Each joint's integral over a step of `h` s of A_k(t) |w_k(t)|
     |T_k(t)|^p, A_k = max(|b_k(t)|, `min_angle`): the life rate's variable
@@ -226,13 +116,19 @@ def step_integrals(torques_at, step, h, w1, a1, bends, rb, ab, min_angle, p, rea
     q = substitution_power(p)
     gamma = q * (p + 1.0) - 1.0
     budget = error_budget(p)
-    # zero_lo, zero_end: the joints (one bit each) whose torque's zero is at t,
-    # at `end`. What each joint's bound is asked against: `scales_raised`.
+    # zero_lo, zero_end, zero_later: the joints (one bit each) whose torque's
+    # zero is at t, at `end`, at `later` (a zero past `end` that a cut showed,
+    # else inf). What each joint's bound is asked against: `scales_raised`.
     totals = filled(bends, 0.0)
     scales = filled(bends, -1.0)
     t, zero_lo = 0.0, 0
     end, zero_end = next_kink(0.0, h, w1, a1, bends, rb, ab, min_angle), 0
-    length, points = h, 0
+    later, zero_later = math.inf, 0
+    # The last plain panel that failed, on [guide_lo, guide_hi]: it foresees
+    # the points of the plain panels within it.
+    guide = unseen_panel(bends)
+    guide_lo, guide_hi = 0.0, -1.0
+    length, points, substituted = h, 0, False
     for _ in range(_MAX_ATTEMPTS):
         if t >= h:
             return totals
@@ -247,13 +143,28 @@ def step_integrals(torques_at, step, h, w1, a1, bends, rb, ab, min_angle, p, rea
             hi, zero = (middle, 1) if middle > t else (end, 0)
         stretch, degree = (q, gamma) if zero != 0 else (1.0, 0.0)
         longest = longest_panel(tau, budget, degree, stretch)
-        if hi - t > longest:
-            hi = t + longest
+        # Before a zero the substituted panel takes its longest against it and
+        # plain panels the rest: a plain panel ending next to the zero would see
+        # it within its ellipse and ask for many points. (A panel that starts
+        # where the rest ended may exceed the longest by a rounding.)
+        if hi - t > longest and not (zero < 0 and end - longest <= t):
+            hi = end - longest if zero < 0 else t + longest
             zero = 1 if zero_lo != 0 else 0
             stretch, degree = (q, gamma) if zero != 0 else (1.0, 0.0)
+            hi = min(hi, t + longest_panel(tau, budget, degree, stretch))
         divides = zero_lo if zero > 0 else zero_end if zero < 0 else 0
         singular = singular_log_rho(hi - t, tau, stretch)
-        n = min(max(points, points_for(singular, budget, degree)), MAX_POINTS)
+        # A substituted panel's points carry the substitution's: a plain one's
+        # are not like them, nor the other way round.
+        n = max(points if (zero != 0) == substituted else 0, points_for(singular, budget, degree))
+        if zero == 0 and guide_lo <= t and hi <= guide_hi:
+            foreseen = points_foreseen(guide, guide_lo, guide_hi, t, hi, singular, budget)
+            if foreseen > MAX_POINTS and hi - t >= _UNSEEN_HALVING * (guide_hi - guide_lo):
+                length = 0.5 * (hi - t)
+                continue
+            if foreseen <= MAX_POINTS:
+                n = max(n, foreseen)
+        n = min(n, MAX_POINTS)
         values = panel(torques_at, step, t, hi, zero, divides, q, n, bends, rb, ab, min_angle, p)
         scales = scales_raised(scales, totals, values)
         carried = q - 1.0 if zero != 0 else 0.0
@@ -266,13 +177,23 @@ def step_integrals(torques_at, step, h, w1, a1, bends, rb, ab, min_angle, p, rea
             t, zero_lo = hi, divides if zero < 0 else 0
             if t == end:  # a new piece: its panels start from the longest again
                 end, zero_end = next_kink(t, h, w1, a1, bends, rb, ab, min_angle), 0
+                if later < end:
+                    end, zero_end, later, zero_later = later, zero_later, math.inf, 0
                 length, points = h, 0
             continue
+        if zero == 0:
+            guide = values
+            guide_lo, guide_hi = t, hi
         if wanted != 0:
-            length, points = hi - t, wanted
+            length, points, substituted = hi - t, wanted, zero != 0
             continue
-        root, joints = _first_zero(torques_at, step, values, failing, t, hi, zero, divides, q, n)
-        if root > t:
+        root, joints, second, others = first_zeros(
+            torques_at, step, values, failing, t, hi, zero, divides, q, n
+        )
+        if root <= hi:
+            # The next zero the panel showed stays known: no panel need show it again.
+            if second < later:
+                later, zero_later = second, others
             end, zero_end = root, joints
         else:
             length = 0.5 * (hi - t)

@@ -34,12 +34,16 @@ from .quadrature import (
 )
 
 # `panel`'s values per joint: the integral over the panel, the index of the
-# first node whose torque's sign differs from the node's before (else 0), then
+# first node whose torque's sign differs from the node's before (else 0), the
+# torques at the two nodes about that change (else at the first and the last
+# node: where a zero's search starts, without evaluating them again), then
 # T's Legendre coefficients a_0..a_3, a_(n-1) on it.
-PANEL_FIELDS = 7
+PANEL_FIELDS = 9
+# Where the coefficients start in a joint's `PANEL_FIELDS`.
+COEFFICIENTS = 4
 # The sums over the nodes per joint: the rule's sum, the sign change, the
-# torque at the node before, then the coefficients.
-_SUM_FIELDS = 8
+# torque at the node before, the two torques kept, then the coefficients.
+_SUM_FIELDS = 10
 
 
 def filled(like, value):
@@ -64,26 +68,39 @@ def torque_of(values, joint: int):
     return torque
 
 
+def unseen_panel(bends):
+    """`panel`'s values before any panel: zeros of their shape."""
+    values = ()
+    for _ in range(len(bends)):
+        values = values + (0.0, 0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0)
+    return values
+
+
 def _started(bends):
     sums = ()
     for _ in range(len(bends)):
-        sums = sums + (0.0, 0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0)
+        sums = sums + (0.0, 0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0)
     return sums
 
 
 def _node_added(sums, i: int, values, t, u, power, zero: int, divides: int, q, points: int,
                 bends, rb, ab, min_angle, p):  # fmt: skip
     """`sums` with node i (at t, unit node u) added for each joint: its rate
-    A_k |w_k| |T_k|^p (times the substitution's q u^(q-1) `power`) and its
-    torque (divided by u^q where the joint's zero is the panel's end)."""
+    A_k |w_k| |T_k|^p (times the substitution's q u^(q-1) `power`), its
+    torque (divided by u^q where the joint's zero is the panel's end) and the
+    torques a zero's search starts from (`PANEL_FIELDS`)."""
     weight = GAUSS_WEIGHTS[points][i]
     added = ()  # type: tuple
     for k in range(len(bends)):
         joint = sums[_SUM_FIELDS * k : _SUM_FIELDS * (k + 1)]
-        total, change, before, a0, a1, a2, a3, a_last = joint
+        total, change, before, kept_lo, kept_hi, a0, a1, a2, a3, a_last = joint
         torque, speed = values[2 * k], values[2 * k + 1]
-        if change == 0 and before != 0.0 and torque != 0.0 and (before < 0.0) != (torque < 0.0):
-            change = i
+        if i == 0:
+            kept_lo = torque
+        if change == 0:
+            kept_hi = torque
+            if before != 0.0 and torque != 0.0 and (before < 0.0) != (torque < 0.0):
+                change, kept_lo = i, before
         angle = max(abs(bends[k] + t * (rb + 0.5 * ab * t)), min_angle)
         rate = angle * abs(speed) * power_of(abs(torque), p)
         value = torque
@@ -92,7 +109,7 @@ def _node_added(sums, i: int, values, t, u, power, zero: int, divides: int, q, p
             if divides_at(divides, k):
                 value = torque / (power * u)
         added = added + (
-            total + weight * rate, change, torque,
+            total + weight * rate, change, torque, kept_lo, kept_hi,
             a0 + weight * value,
             a1 + FIRST_COEFFICIENT[points][i] * value,
             a2 + SECOND_COEFFICIENT[points][i] * value,
@@ -179,10 +196,39 @@ def verdict(values, scales, n: int, budget, degree, carried, singular, divides: 
     for k in range(len(scales)):
         holds, points = _joint_needs(
             values[PANEL_FIELDS * k], values[PANEL_FIELDS * k + 1],
-            values[PANEL_FIELDS * k + 2 : PANEL_FIELDS * (k + 1)], scales[k], n, budget,
+            values[PANEL_FIELDS * k + COEFFICIENTS : PANEL_FIELDS * (k + 1)], scales[k], n, budget,
             degree if divides_at(divides, k) else carried, singular, divides_at(divides, k),
         )  # fmt: skip
         if not holds:
             failing = failing | (1 << k)
             wanted = 0 if points == 0 or wanted == 0 else max(wanted, points)
     return failing, wanted
+
+
+def _restricted(coefficients, middle, radius):
+    """The Legendre coefficients a_0..a_3 on the part [middle - radius, middle +
+    radius] (in the panel's x in [-1, 1]) of the cubic a_0..a_3 on the panel."""
+    a0, a1, a2, a3 = coefficients[0], coefficients[1], coefficients[2], coefficients[3]
+    c0, c1, c2, c3 = a0 - 0.5 * a2, a1 - 1.5 * a3, 1.5 * a2, 2.5 * a3
+    d1 = radius * (c1 + middle * (2.0 * c2 + 3.0 * c3 * middle))
+    d2 = radius * radius * (c2 + 3.0 * c3 * middle)
+    b3 = radius * radius * radius * c3 / 2.5
+    b2 = d2 / 1.5
+    return c0 + middle * (c1 + middle * (c2 + middle * c3)) + 0.5 * b2, d1 + 1.5 * b3, b2, b3
+
+
+def points_foreseen(guide, lo, hi, part_lo, part_hi, singular, budget):
+    """The points a plain panel on [part_lo, part_hi] is likely to ask for,
+    foreseen from the cubic part of every joint's torque on the plain panel
+    [lo, hi] about it whose values are `guide` (a panel that failed): the
+    most that any joint's zeros ask for (`points_for`; MAX_POINTS + 1 if they
+    allow no rule: a cut). A guess only, that saves taking the panel twice:
+    the verdict judges the panel."""
+    middle = (part_lo + part_hi - lo - hi) / (hi - lo)
+    radius = (part_hi - part_lo) / (hi - lo)
+    wanted = 0
+    for k in range(len(guide) // PANEL_FIELDS):
+        cubic = guide[PANEL_FIELDS * k + COEFFICIENTS : PANEL_FIELDS * k + COEFFICIENTS + 4]
+        low = zero_free_log_rho(_restricted(cubic, middle, radius) + (0.0,), MAX_POINTS, False)[0]
+        wanted = max(wanted, points_for(min(singular, low), budget, 0.0))
+    return wanted

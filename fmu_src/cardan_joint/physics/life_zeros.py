@@ -1,0 +1,147 @@
+"""The torques' zeros a panel of the life integral shows (`life_integral`;
+docs/life.md, "Exact over each step"), located to the last bits.
+
+A panel that fails at a joint's torque's sign change between two of its
+nodes, or whose values let the torque vanish between an end and its nearest
+node, is cut at the zero there: Brent's method from the two torques the panel
+already has (`life_nodes.PANEL_FIELDS`), or from one of them and the end's.
+Every failing joint's zero is located; the march is cut at the first and
+keeps the next for later.
+"""
+
+import math
+
+from .life_nodes import COEFFICIENTS, PANEL_FIELDS, divides_at, torque_of
+from .life_panel import may_vanish, node_time
+from .quadrature import GAUSS_NODES
+
+# Root-finder steps per zero.
+_ROOT_STEPS = 200
+# Brent's bracket, relative and absolute: two ulps of the zero's time.
+_ROOT_TOLERANCE = 2.0 * 2.220446049250313e-16
+_TINY_TIME = 1e-300
+# Two joints' zeros this close, against the panel that shows them, are one:
+# a chain whose torques are all proportional to its load has its joints'
+# zeros at one instant, which their rounding spreads by a few 1e-17 s, and
+# its nodes show them all at once. A joint substituted at a zero this far
+# from its own errs by far less than the bound (its torque's sign differs
+# only below the first node's u^q).
+SAME_ZERO = 1e-12
+
+
+def _root(torques_at, step, joint: int, a, b, fa, fb):
+    """A sign change of `joint`'s torque in (a, b), fa and fb of opposite signs, to
+    the last bits: Brent's method (inverse quadratic and secant steps, bisection
+    when they stall), which shrinks the bracket to a few ulps in about half the
+    evaluations regula falsi takes, as its steps never fall below that width."""
+    c, fc = a, fa
+    d, e = b - a, b - a
+    for _ in range(_ROOT_STEPS):
+        if fb == 0.0:
+            return b
+        if (fb < 0.0) == (fc < 0.0):
+            c, fc = a, fa
+            d, e = b - a, b - a
+        if abs(fc) < abs(fb):
+            a, b, c, fa, fb, fc = b, c, b, fb, fc, fb
+        tolerance = _ROOT_TOLERANCE * abs(b) + _TINY_TIME
+        half = 0.5 * (c - b)
+        if abs(half) <= tolerance:
+            return b
+        if abs(e) < tolerance or abs(fa) <= abs(fb):
+            d, e = half, half
+        else:
+            s = fb / fa
+            if a == c:
+                p, q = 2.0 * half * s, 1.0 - s
+            else:
+                q, r = fa / fc, fb / fc
+                p = s * (2.0 * half * q * (q - r) - (b - a) * (r - 1.0))
+                q = (q - 1.0) * (r - 1.0) * (s - 1.0)
+            if p > 0.0:
+                q = -q
+            else:
+                p = -p
+            if 2.0 * p < min(3.0 * half * q - abs(tolerance * q), abs(e * q)):
+                e, d = d, p / q
+            else:
+                d, e = half, half
+        a, fa = b, fb
+        b += d if abs(d) > tolerance else math.copysign(tolerance, half)
+        fb = torque_of(torques_at(b, step), joint)
+    return b
+
+
+def _root_by(torques_at, step, joint: int, end, node, at_node):
+    """The zero of `joint`'s torque between a panel's `end` and its `node`
+    nearest it (T = `at_node` there), if T's sign differs at the end; else -1."""
+    at_end = torque_of(torques_at(end, step), joint)
+    if at_end != 0.0 and at_node != 0.0 and (at_end < 0.0) != (at_node < 0.0):
+        if end > node:
+            return _root(torques_at, step, joint, node, end, at_node, at_end)
+        return _root(torques_at, step, joint, end, node, at_end, at_node)
+    return -1.0
+
+
+def _zero_in(torques_at, step, joint: int, lo, hi, zero: int, own: int, q, points: int,
+             change: int, kept_lo, kept_hi):  # fmt: skip
+    """A zero of `joint`'s torque in (lo, hi), the panel's (substituted as
+    `zero`; `own` is `zero` where the substitution's zero is the joint's,
+    else 0): between nodes change - 1 and `change` if they differ in sign
+    (their torques `kept_lo`, `kept_hi`), else between an end (not the
+    joint's known zero) and its nearest node (the first node's torque
+    `kept_lo`, the last's `kept_hi`); -1.0 if neither shows one."""
+    if change != 0:
+        before = node_time(lo, hi, GAUSS_NODES[points][change - 1], zero, q)
+        after = node_time(lo, hi, GAUSS_NODES[points][change], zero, q)
+        if before > after:
+            return _root(torques_at, step, joint, after, before, kept_hi, kept_lo)
+        return _root(torques_at, step, joint, before, after, kept_lo, kept_hi)
+    first = node_time(lo, hi, GAUSS_NODES[points][0], zero, q)
+    last = node_time(lo, hi, GAUSS_NODES[points][points - 1], zero, q)
+    # The node nearest each end: the first in u, except on a panel substituted at hi.
+    near_lo, near_hi = (last, first) if zero < 0 else (first, last)
+    at_lo, at_hi = (kept_hi, kept_lo) if zero < 0 else (kept_lo, kept_hi)
+    if own <= 0:
+        found = _root_by(torques_at, step, joint, lo, near_lo, at_lo)
+        if found >= 0.0:
+            return found
+    if own >= 0:
+        return _root_by(torques_at, step, joint, hi, near_hi, at_hi)
+    return -1.0
+
+
+def _earliest(roots, after, same):
+    """(the earliest of `roots` past `after`, the joints whose roots lie
+    within `same` of it, one bit each); (inf, 0) if none lies past it."""
+    first = math.inf
+    for k in range(len(roots)):
+        if after < roots[k] < first:
+            first = roots[k]
+    joints = 0
+    for k in range(len(roots)):
+        if after < roots[k] <= first + same:
+            joints = joints | (1 << k)
+    return first, joints
+
+
+def first_zeros(torques_at, step, values, failing: int, lo, hi, zero: int, divides: int, q,
+                points: int):  # fmt: skip
+    """(the first zero in (lo, hi] of a torque whose joint fails on the panel
+    and whose values show one, the joints whose zero it is, one bit each,
+    then the next such zero and its joints, which the march keeps for later);
+    inf and 0 for a zero none shows."""
+    roots = ()  # type: tuple
+    for k in range(len(values) // PANEL_FIELDS):
+        change = values[PANEL_FIELDS * k + 1]
+        coefficients = values[PANEL_FIELDS * k + COEFFICIENTS : PANEL_FIELDS * (k + 1)]
+        root = -1.0
+        if divides_at(failing, k) and (change != 0 or may_vanish(coefficients)):
+            own = zero if divides_at(divides, k) else 0
+            root = _zero_in(torques_at, step, k, lo, hi, zero, own, q, points, change,
+                            values[PANEL_FIELDS * k + 2], values[PANEL_FIELDS * k + 3])  # fmt: skip
+        roots = roots + (root,)
+    same = SAME_ZERO * (hi - lo)
+    first, joints = _earliest(roots, lo, same)
+    second, others = _earliest(roots, first + same, same)
+    return first, joints, second, others
