@@ -39,10 +39,11 @@ from .life_panel import (
     may_vanish,
     node_time,
     points_for,
+    rule_sizing,
     singular_log_rho,
     substitution_power,
 )
-from .quadrature import GAUSS_NODES, MAX_POINTS
+from .quadrature import MAX_POINTS, node_of
 
 # Below 1 mrad of bend the torque's singularities are practically out of reach.
 FLAT_REACH = math.acosh(1e3)
@@ -164,20 +165,20 @@ def _root_by(torques_at, step, joint: int, a, fa, b):
 
 
 def _zero_in(torques_at, step, joint: int, lo, hi, zero: int, own: int, q, points: int,
-             change: int):  # fmt: skip
+             weighted: bool, change: int):  # fmt: skip
     """A zero of `joint`'s torque in (lo, hi), the panel's (substituted as
     `zero`; `own` is `zero` where the substitution's zero is the joint's,
-    else 0): between nodes change - 1 and `change` if they differ in sign,
-    else between an end (not the joint's known zero) and its nearest node;
-    -1.0 if neither shows one."""
-    first = node_time(lo, hi, GAUSS_NODES[points][0], zero, q)
+    else 0; its nodes Gauss-Jacobi's if `weighted`): between nodes change - 1
+    and `change` if they differ in sign, else between an end (not the joint's
+    known zero) and its nearest node; -1.0 if neither shows one."""
+    first = node_time(lo, hi, node_of(points, 0, weighted), zero, q)
     if change != 0:
-        before = node_time(lo, hi, GAUSS_NODES[points][change - 1], zero, q)
+        before = node_time(lo, hi, node_of(points, change - 1, weighted), zero, q)
         return _root_by(
             torques_at, step, joint, before, torque_of(torques_at(before, step), joint),
-            node_time(lo, hi, GAUSS_NODES[points][change], zero, q),
+            node_time(lo, hi, node_of(points, change, weighted), zero, q),
         )  # fmt: skip
-    last = node_time(lo, hi, GAUSS_NODES[points][points - 1], zero, q)
+    last = node_time(lo, hi, node_of(points, points - 1, weighted), zero, q)
     # The node nearest each end: the first in u, except on a panel substituted at hi.
     near_lo, near_hi = (last, first) if zero < 0 else (first, last)
     if own <= 0:
@@ -192,7 +193,7 @@ def _zero_in(torques_at, step, joint: int, lo, hi, zero: int, own: int, q, point
 
 
 def _first_zero(torques_at, step, values, failing: int, lo, hi, zero: int, divides: int, q,
-                points: int):  # fmt: skip
+                points: int, weighted: bool):  # fmt: skip
     """(the first zero in (lo, hi) of a torque whose joint fails on the panel
     and whose values show one, the joints whose zero it is, one bit each);
     (-1.0, 0) if none shows one."""
@@ -202,7 +203,7 @@ def _first_zero(torques_at, step, values, failing: int, lo, hi, zero: int, divid
         coefficients = values[PANEL_FIELDS * k + 2 : PANEL_FIELDS * (k + 1)]
         if divides_at(failing, k) and (change != 0 or may_vanish(coefficients)):
             own = zero if divides_at(divides, k) else 0
-            root = _zero_in(torques_at, step, k, lo, hi, zero, own, q, points, change)
+            root = _zero_in(torques_at, step, k, lo, hi, zero, own, q, points, weighted, change)
             if root > lo:
                 same = _SAME_ZERO * (hi - lo)
                 if first < 0.0 or root < first - same:
@@ -226,6 +227,7 @@ def step_integrals(torques_at, step, h, w1, a1, bends, rb, ab, min_angle, p, rea
     q = substitution_power(p)
     gamma = q * (p + 1.0) - 1.0
     budget = error_budget(p)
+    joints = len(bends)
     # zero_lo, zero_end: the joints (one bit each) whose torque's zero is at t,
     # at `end`. What each joint's bound is asked against: `scales_raised`.
     totals = filled(bends, 0.0)
@@ -245,19 +247,21 @@ def step_integrals(torques_at, step, h, w1, a1, bends, rb, ab, min_angle, p, rea
             # no middle: the ulp between them is taken plainly (its share is nil).
             middle = 0.5 * (t + end)
             hi, zero = (middle, 1) if middle > t else (end, 0)
-        stretch, degree = (q, gamma) if zero != 0 else (1.0, 0.0)
-        longest = longest_panel(tau, budget, degree, stretch)
+        divides = zero_lo if zero > 0 else zero_end if zero < 0 else 0
+        weighted, stretch, degree, sized = rule_sizing(zero, divides, joints, q, gamma, budget)
+        longest = longest_panel(tau, sized, degree, stretch)
         if hi - t > longest:
             hi = t + longest
             zero = 1 if zero_lo != 0 else 0
-            stretch, degree = (q, gamma) if zero != 0 else (1.0, 0.0)
-        divides = zero_lo if zero > 0 else zero_end if zero < 0 else 0
+            divides = zero_lo if zero > 0 else 0
+            weighted, stretch, degree, sized = rule_sizing(zero, divides, joints, q, gamma, budget)
         singular = singular_log_rho(hi - t, tau, stretch)
-        n = min(max(points, points_for(singular, budget, degree)), MAX_POINTS)
-        values = panel(torques_at, step, t, hi, zero, divides, q, n, bends, rb, ab, min_angle, p)
+        n = min(max(points, points_for(singular, sized, degree)), MAX_POINTS)
+        values = panel(torques_at, step, t, hi, zero, divides, q, n, weighted, bends, rb, ab,
+                       min_angle, p)  # fmt: skip
         scales = scales_raised(scales, totals, values)
         carried = q - 1.0 if zero != 0 else 0.0
-        failing, wanted = verdict(values, scales, n, budget, degree, carried, singular, divides)
+        failing, wanted = verdict(values, scales, n, sized, degree, carried, singular, divides)
         if failing == 0 or hi - t <= _SHORTEST * h:
             totals = totals_added(totals, values)
             # The next panel starts from this one's points and twice its
@@ -271,15 +275,17 @@ def step_integrals(torques_at, step, h, w1, a1, bends, rb, ab, min_angle, p, rea
         if wanted != 0:
             length, points = hi - t, wanted
             continue
-        root, joints = _first_zero(torques_at, step, values, failing, t, hi, zero, divides, q, n)
+        root, zeros = _first_zero(torques_at, step, values, failing, t, hi, zero, divides, q, n,
+                                  weighted)  # fmt: skip
         if root > t:
-            end, zero_end = root, joints
+            end, zero_end = root, zeros
         else:
             length = 0.5 * (hi - t)
     # A step over thousands of turns: what is left in one panel, less exactly.
     if t < h:
         totals = totals_added(
-            totals, panel(torques_at, step, t, h, 0, 0, q, MAX_POINTS, bends, rb, ab, min_angle, p)
+            totals,
+            panel(torques_at, step, t, h, 0, 0, q, MAX_POINTS, False, bends, rb, ab, min_angle, p),
         )
     return totals
 
