@@ -29,16 +29,20 @@ from .life_panel import (
     zero_free_on,
 )
 from .quadrature import (
-    FIRST,
-    LAST,
+    FIRST_COEFFICIENT,
+    GAUSS_WEIGHTS,
+    JACOBI_FIRST,
+    JACOBI_LAST,
+    JACOBI_MEAN,
+    JACOBI_SECOND,
+    JACOBI_THIRD,
+    JACOBI_WEIGHTS,
+    JACOBI_ZEROTH,
+    LAST_COEFFICIENT,
     MAX_POINTS,
-    MEAN,
-    NODES,
-    SECOND,
-    THIRD,
-    WEIGHTS,
-    ZEROTH,
-    rule_row,
+    SECOND_COEFFICIENT,
+    THIRD_COEFFICIENT,
+    node_of,
 )
 
 # `panel`'s values per joint: the integral over the panel, the index of the
@@ -80,15 +84,26 @@ def _started(bends):
     return sums
 
 
-def _node_added(sums, i: int, values, t, u, power, zero: int, divides: int, q, row: int,
+def _node_added(sums, i: int, values, t, u, power, zero: int, divides: int, q, points: int,
                 weighted: bool, bends, rb, ab, min_angle, p):  # fmt: skip
     """`sums` with node i (at t, unit node u) added for each joint: its rate
     A_k |w_k| |T_k|^p (times the substitution's q u^(q-1) `power`; on a
     Gauss-Jacobi panel q A_k |w_k| |T_k / u^q|^p, u^gamma being the rule's
     weight) and its torque (divided by u^q where the joint's zero is the
-    panel's end), the rule's tables read in `row` (`rule_row`)."""
-    weight, mean, zeroth = WEIGHTS[row][i], MEAN[row][i], ZEROTH[row][i]
-    first, second, third, last = FIRST[row][i], SECOND[row][i], THIRD[row][i], LAST[row][i]
+    panel's end)."""
+    if weighted:
+        weight, mean, zeroth = (
+            JACOBI_WEIGHTS[points][i],
+            JACOBI_MEAN[points][i],
+            JACOBI_ZEROTH[points][i],
+        )
+        first, second = JACOBI_FIRST[points][i], JACOBI_SECOND[points][i]
+        third, last = JACOBI_THIRD[points][i], JACOBI_LAST[points][i]
+    else:
+        weight = GAUSS_WEIGHTS[points][i]
+        mean, zeroth = weight, weight
+        first, second = FIRST_COEFFICIENT[points][i], SECOND_COEFFICIENT[points][i]
+        third, last = THIRD_COEFFICIENT[points][i], LAST_COEFFICIENT[points][i]
     added = ()  # type: tuple
     for k in range(len(bends)):
         joint = sums[_SUM_FIELDS * k : _SUM_FIELDS * (k + 1)]
@@ -120,12 +135,11 @@ def panel(torques_at, step, lo, hi, zero: int, divides: int, q, points: int, wei
     `min_angle`), (T_k, w_k) = items 2k, 2k + 1 of `torques_at(t, step)`; its
     coefficients those of T_k / u^q if its bit is set in `divides`."""
     sums = _started(bends)
-    row = rule_row(points, weighted)
     for i in range(points):
-        u = NODES[row][i]
+        u = node_of(points, i, weighted)
         power = whole_power(u, q - 1.0) if zero != 0 else 1.0
         t = node_time(lo, hi, u, zero, q)
-        sums = _node_added(sums, i, torques_at(t, step), t, u, power, zero, divides, q, row,
+        sums = _node_added(sums, i, torques_at(t, step), t, u, power, zero, divides, q, points,
                            weighted, bends, rb, ab, min_angle, p)  # fmt: skip
     values = ()  # type: tuple
     for k in range(len(bends)):

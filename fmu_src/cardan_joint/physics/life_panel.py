@@ -44,7 +44,7 @@ rule take a term |T_k| <= 1 to at most W, so the error is at most 2 W sum_{k
 integral W mean_w f (mean_w the mean under u^gamma): 4 (M / mean_w f)
 rho^-2n rho / (rho - 1), and rho / (rho - 1) < 2 wherever the bound is met
 (log rho > budget / (2 `MAX_POINTS`) > log 2): 8 where Gauss-Legendre has
-32/15 (`_WEIGHTED_BUDGET`). M / mean_w f takes the same 4 for the angle and
+32/15 (`_WEIGHTED_FACTOR`). M / mean_w f takes the same 4 for the angle and
 the speed and 1.9^p for |T / u^q|^p: its maximum on E_rho is at most (|a_0|
 + 0.9 s)^p when the check holds with the share s of a_0 (`weighted_share`),
 its weighted mean at least |b_0|^p (Jensen under u^gamma), b_0 the weighted
@@ -77,8 +77,8 @@ _NEWTON_STEPS = 8
 _TOWARDS_SINGULARITY = 0.75
 # The substituted power at a torque zero: gamma = q (p + 1) - 1 at least this.
 _SMOOTH_POWER = 10.0
-# The log of the Gauss-Jacobi bound's factor against Gauss-Legendre's: 8 / (32/15).
-_WEIGHTED_BUDGET = math.log(8.0 / (32.0 / 15.0))
+# The Gauss-Jacobi bound's factor against Gauss-Legendre's: 8 / (32/15).
+_WEIGHTED_FACTOR = 8.0 / (32.0 / 15.0)
 # How far gamma may lie from the tabulated rule's power (the residue u^(gamma -
 # 12) is then 1 within 1e-12 |log u|; 3 (10/3 + 1) - 1 rounds 2e-15 off 12).
 _SAME_POWER = 1e-12
@@ -103,7 +103,7 @@ def rule_sizing(zero: int, divides: int, joints: int, q, gamma, budget):
     if zero == 0:
         return False, 1.0, 0.0, budget
     if divides == (1 << joints) - 1 and abs(gamma - JACOBI_POWER) <= _SAME_POWER:
-        return True, q, 0.0, budget + _WEIGHTED_BUDGET
+        return True, q, 0.0, budget + math.log(_WEIGHTED_FACTOR)
     return False, q, gamma, budget
 
 

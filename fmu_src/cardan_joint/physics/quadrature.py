@@ -172,25 +172,7 @@ JACOBI_SECOND = _table(lambda n: _interpolant_weights(JACOBI_NODES[n], 2))
 JACOBI_THIRD = _table(lambda n: _interpolant_weights(JACOBI_NODES[n], 3))
 JACOBI_LAST = _table(lambda n: _interpolant_weights(JACOBI_NODES[n], n - 1))
 
-# Both rules in one table each, read without a branch: row n is the n-point
-# Gauss-Legendre rule, row JACOBI_ROW + n the n-point Gauss-Jacobi rule
-# (`rule_row`). On Gauss-Legendre a_0 and the mean are the weights' sum.
-JACOBI_ROW = MAX_POINTS + 1
-NODES = GAUSS_NODES + JACOBI_NODES
-WEIGHTS = GAUSS_WEIGHTS + JACOBI_WEIGHTS
-MEAN = GAUSS_WEIGHTS + JACOBI_MEAN
-ZEROTH = GAUSS_WEIGHTS + JACOBI_ZEROTH
-FIRST = FIRST_COEFFICIENT + JACOBI_FIRST
-SECOND = SECOND_COEFFICIENT + JACOBI_SECOND
-THIRD = THIRD_COEFFICIENT + JACOBI_THIRD
-LAST = LAST_COEFFICIENT + JACOBI_LAST
-
-
-def rule_row(points: int, weighted: bool) -> int:
-    """The row of the `points`-point rule: Gauss-Jacobi's if `weighted`."""
-    return JACOBI_ROW + points if weighted else points
-
 
 def node_of(points: int, i: int, weighted: bool):
     """Unit node i of the `points`-point rule: Gauss-Jacobi's if `weighted`."""
-    return NODES[rule_row(points, weighted)][i]
+    return JACOBI_NODES[points][i] if weighted else GAUSS_NODES[points][i]
