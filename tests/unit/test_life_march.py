@@ -11,7 +11,8 @@ from cardan_joint.models.propshaft import step as propshaft_step
 from cardan_joint.models.universal_joint.model import CardanJoint
 from cardan_joint.physics import life_integral, life_nodes, life_torque, life_zeros
 from cardan_joint.physics.life_nodes import COEFFICIENTS, PANEL_FIELDS, panel
-from cardan_joint.physics.quadrature import GAUSS_NODES
+from cardan_joint.physics.life_panel import node_time, substitution_power
+from cardan_joint.physics.quadrature import GAUSS_NODES, JACOBI_NODES
 
 P = 10.0 / 3.0
 
@@ -46,8 +47,8 @@ def test_a_panel_keeps_the_torques_a_zeros_search_starts_from():
     # Joint 0 changes sign between two nodes: their torques; joint 1 does not
     # in the panel: its first and last nodes' torques.
     points, lo, hi = 7, 0.0, 1.0
-    values = panel(_linear_joints, (0.4, 2.0), lo, hi, 0, 0, 3.0, points, (0.3, 0.3), 0.0, 0.0,
-                   0.05, P)  # fmt: skip
+    values = panel(_linear_joints, (0.4, 2.0), lo, hi, 0, 0, 3.0, points, False, (0.3, 0.3),
+                   0.0, 0.0, 0.05, P)  # fmt: skip
     nodes = GAUSS_NODES[points]
     change = values[1]
     assert nodes[change - 1] < 0.4 < nodes[change]
@@ -56,6 +57,32 @@ def test_a_panel_keeps_the_torques_a_zeros_search_starts_from():
     assert joint[1] == 0
     assert joint[2:4] == (nodes[0] - 2.0, nodes[-1] - 2.0)
     assert len(joint[COEFFICIENTS:]) == 5
+
+
+def _vanishing_joint(t, step):
+    """One joint whose torque t (t - step) vanishes at 0 and changes sign at step."""
+    return (t * (t - step), 1.0)
+
+
+def test_a_weighted_panels_zero_is_searched_between_its_own_nodes():
+    # A Gauss-Jacobi panel substituted at the joint's zero at 0 shows the sign
+    # change at 0.45 between two of its nodes: the torques it keeps are those
+    # at its own nodes, and the search brackets the zero between them (at
+    # Gauss-Legendre's nodes the bracket would miss it).
+    points, q = 8, substitution_power(P)
+    values = panel(_vanishing_joint, 0.45, 0.0, 1.0, 1, 1, q, points, True, (0.3,), 0.0, 0.0,
+                   0.05, P)  # fmt: skip
+    times = [node_time(0.0, 1.0, u, 1, q) for u in JACOBI_NODES[points]]
+    change = values[1]
+    assert times[change - 1] < 0.45 < times[change]
+    gauss = [node_time(0.0, 1.0, u, 1, q) for u in GAUSS_NODES[points]]
+    assert not gauss[change - 1] < 0.45 < gauss[change]
+    assert values[2:4] == (_vanishing_joint(times[change - 1], 0.45)[0],
+                           _vanishing_joint(times[change], 0.45)[0])  # fmt: skip
+    root, joints, second, _ = life_zeros.first_zeros(
+        _vanishing_joint, 0.45, values, 1, 0.0, 1.0, 1, 1, q, points, True
+    )
+    assert math.isclose(root, 0.45, rel_tol=1e-15) and joints == 1 and second == math.inf
 
 
 def test_each_zero_a_panel_shows_is_located_once_and_the_integral_is_exact(monkeypatch):

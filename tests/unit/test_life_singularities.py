@@ -20,6 +20,7 @@ from cardan_joint.physics.life_integral import singularity_time
 from cardan_joint.physics.life_panel import (
     error_budget,
     longest_panel,
+    rule_sizing,
     singular_log_rho,
     substitution_power,
 )
@@ -124,8 +125,11 @@ def _margins(rng, slow):
     worst = math.inf
     for _ in range(40):
         zero = rng.choice((-1, 0, 1))
-        stretch, gamma = (q, q * (_P + 1.0) - 1.0) if zero else (1.0, 0.0)
-        longest = min(h, longest_panel(tau, budget, gamma, stretch))
+        # substituted: Gauss-Jacobi's (the longer) or, in a chain, Gauss-Legendre's
+        divides = rng.choice((0b1, 0b10)) if zero else 0
+        sizing = rule_sizing(zero, divides, 1, q, q * (_P + 1.0) - 1.0, budget)
+        _, stretch, gamma, sized = sizing
+        longest = min(h, longest_panel(tau, sized, gamma, stretch))
         length = longest * 10.0 ** rng.uniform(-4.0, 0.0)
         lo = rng.uniform(0.0, h - length)
         free = singular_log_rho(length, tau, stretch) / _TOWARDS

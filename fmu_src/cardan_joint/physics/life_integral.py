@@ -38,6 +38,7 @@ from .life_panel import (
     error_budget,
     longest_panel,
     points_for,
+    rule_sizing,
     singular_log_rho,
     substitution_power,
 )
@@ -116,6 +117,7 @@ def step_integrals(torques_at, step, h, w1, a1, bends, rb, ab, min_angle, p, rea
     q = substitution_power(p)
     gamma = q * (p + 1.0) - 1.0
     budget = error_budget(p)
+    joints = len(bends)
     # zero_lo, zero_end, zero_later: the joints (one bit each) whose torque's
     # zero is at t, at `end`, at `later` (a zero past `end` that a cut showed,
     # else inf). What each joint's bound is asked against: `scales_raised`.
@@ -141,8 +143,9 @@ def step_integrals(torques_at, step, h, w1, a1, bends, rb, ab, min_angle, p, rea
             # no middle: the ulp between them is taken plainly (its share is nil).
             middle = 0.5 * (t + end)
             hi, zero = (middle, 1) if middle > t else (end, 0)
-        stretch, degree = (q, gamma) if zero != 0 else (1.0, 0.0)
-        longest = longest_panel(tau, budget, degree, stretch)
+        divides = zero_lo if zero > 0 else zero_end if zero < 0 else 0
+        weighted, stretch, degree, sized = rule_sizing(zero, divides, joints, q, gamma, budget)
+        longest = longest_panel(tau, sized, degree, stretch)
         # Before a zero the substituted panel takes its longest against it and
         # plain panels the rest: a plain panel ending next to the zero would see
         # it within its ellipse and ask for many points. (A panel that starts
@@ -150,25 +153,28 @@ def step_integrals(torques_at, step, h, w1, a1, bends, rb, ab, min_angle, p, rea
         if hi - t > longest and not (zero < 0 and end - longest <= t):
             hi = end - longest if zero < 0 else t + longest
             zero = 1 if zero_lo != 0 else 0
-            stretch, degree = (q, gamma) if zero != 0 else (1.0, 0.0)
-            hi = min(hi, t + longest_panel(tau, budget, degree, stretch))
-        divides = zero_lo if zero > 0 else zero_end if zero < 0 else 0
+            divides = zero_lo if zero > 0 else 0
+            weighted, stretch, degree, sized = rule_sizing(zero, divides, joints, q, gamma, budget)
+            hi = min(hi, t + longest_panel(tau, sized, degree, stretch))
         singular = singular_log_rho(hi - t, tau, stretch)
         # A substituted panel's points carry the substitution's: a plain one's
         # are not like them, nor the other way round.
-        n = max(points if (zero != 0) == substituted else 0, points_for(singular, budget, degree))
+        n = max(points if (zero != 0) == substituted else 0, points_for(singular, sized, degree))
+        # Only a plain panel (Gauss-Legendre, `sized` the plain budget) is
+        # foreseen, and only from a plain one: `guide` is never weighted.
         if zero == 0 and guide_lo <= t and hi <= guide_hi:
-            foreseen = points_foreseen(guide, guide_lo, guide_hi, t, hi, singular, budget)
+            foreseen = points_foreseen(guide, guide_lo, guide_hi, t, hi, singular, sized)
             if foreseen > MAX_POINTS and hi - t >= _UNSEEN_HALVING * (guide_hi - guide_lo):
                 length = 0.5 * (hi - t)
                 continue
             if foreseen <= MAX_POINTS:
                 n = max(n, foreseen)
         n = min(n, MAX_POINTS)
-        values = panel(torques_at, step, t, hi, zero, divides, q, n, bends, rb, ab, min_angle, p)
+        values = panel(torques_at, step, t, hi, zero, divides, q, n, weighted, bends, rb, ab,
+                       min_angle, p)  # fmt: skip
         scales = scales_raised(scales, totals, values)
         carried = q - 1.0 if zero != 0 else 0.0
-        failing, wanted = verdict(values, scales, n, budget, degree, carried, singular, divides)
+        failing, wanted = verdict(values, scales, n, sized, degree, carried, singular, divides)
         if failing == 0 or hi - t <= _SHORTEST * h:
             totals = totals_added(totals, values)
             # The next panel starts from this one's points and twice its
@@ -187,20 +193,21 @@ def step_integrals(torques_at, step, h, w1, a1, bends, rb, ab, min_angle, p, rea
         if wanted != 0:
             length, points, substituted = hi - t, wanted, zero != 0
             continue
-        root, joints, second, others = first_zeros(
-            torques_at, step, values, failing, t, hi, zero, divides, q, n
+        root, zeros, second, others = first_zeros(
+            torques_at, step, values, failing, t, hi, zero, divides, q, n, weighted
         )
         if root <= hi:
             # The next zero the panel showed stays known: no panel need show it again.
             if second < later:
                 later, zero_later = second, others
-            end, zero_end = root, joints
+            end, zero_end = root, zeros
         else:
             length = 0.5 * (hi - t)
     # A step over thousands of turns: what is left in one panel, less exactly.
     if t < h:
         totals = totals_added(
-            totals, panel(torques_at, step, t, h, 0, 0, q, MAX_POINTS, bends, rb, ab, min_angle, p)
+            totals,
+            panel(torques_at, step, t, h, 0, 0, q, MAX_POINTS, False, bends, rb, ab, min_angle, p),
         )
     return totals
 

@@ -9,7 +9,11 @@ integrand A_k |w_k| |T_k|^p, its own Legendre coefficients and its own bound
 against its own integral. A panel substituted at some joints' torque zero
 (`divides`, one bit per joint) divides only their torques by u^q; to the
 others it is a plain change of variable, their torque a smooth function of u.
-A single joint (the UniversalJoint) is the case N = 1.
+A single joint (the UniversalJoint) is the case N = 1. Where the panel
+divides every joint's torque, it may take the Gauss-Jacobi rule for the
+weight u^gamma (`weighted`, `life_panel.rule_sizing`): each joint's rule then
+sums q A_k |w_k| |T_k / u^q|^p, and its coefficients are read off the same
+values by the Gauss-Jacobi tables.
 """
 
 import math
@@ -19,31 +23,41 @@ from .life_panel import (
     node_time,
     points_for,
     power_of,
+    weighted_share,
     whole_power,
     zero_free_log_rho,
     zero_free_on,
 )
 from .quadrature import (
     FIRST_COEFFICIENT,
-    GAUSS_NODES,
     GAUSS_WEIGHTS,
+    JACOBI_FIRST,
+    JACOBI_LAST,
+    JACOBI_MEAN,
+    JACOBI_SECOND,
+    JACOBI_THIRD,
+    JACOBI_WEIGHTS,
+    JACOBI_ZEROTH,
     LAST_COEFFICIENT,
     MAX_POINTS,
     SECOND_COEFFICIENT,
     THIRD_COEFFICIENT,
+    node_of,
 )
 
 # `panel`'s values per joint: the integral over the panel, the index of the
 # first node whose torque's sign differs from the node's before (else 0), the
 # torques at the two nodes about that change (else at the first and the last
 # node: where a zero's search starts, without evaluating them again), then
-# T's Legendre coefficients a_0..a_3, a_(n-1) on it.
+# T's Legendre coefficients a_0..a_3, a_(n-1) on it (on a Gauss-Jacobi panel
+# a_0 is the share of it that the bound may spend, `weighted_share`).
 PANEL_FIELDS = 9
 # Where the coefficients start in a joint's `PANEL_FIELDS`.
 COEFFICIENTS = 4
 # The sums over the nodes per joint: the rule's sum, the sign change, the
-# torque at the node before, the two torques kept, then the coefficients.
-_SUM_FIELDS = 10
+# torque at the node before, the two torques kept, the coefficients, then the
+# weighted mean.
+_SUM_FIELDS = 11
 
 
 def filled(like, value):
@@ -79,21 +93,34 @@ def unseen_panel(bends):
 def _started(bends):
     sums = ()
     for _ in range(len(bends)):
-        sums = sums + (0.0, 0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0)
+        sums = sums + (0.0, 0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0)
     return sums
 
 
 def _node_added(sums, i: int, values, t, u, power, zero: int, divides: int, q, points: int,
-                bends, rb, ab, min_angle, p):  # fmt: skip
+                weighted: bool, bends, rb, ab, min_angle, p):  # fmt: skip
     """`sums` with node i (at t, unit node u) added for each joint: its rate
-    A_k |w_k| |T_k|^p (times the substitution's q u^(q-1) `power`), its
-    torque (divided by u^q where the joint's zero is the panel's end) and the
-    torques a zero's search starts from (`PANEL_FIELDS`)."""
-    weight = GAUSS_WEIGHTS[points][i]
+    A_k |w_k| |T_k|^p (times the substitution's q u^(q-1) `power`; on a
+    Gauss-Jacobi panel q A_k |w_k| |T_k / u^q|^p, u^gamma being the rule's
+    weight), its torque (divided by u^q where the joint's zero is the panel's
+    end) and the torques a zero's search starts from (`PANEL_FIELDS`)."""
+    if weighted:
+        weight, mean, zeroth = (
+            JACOBI_WEIGHTS[points][i],
+            JACOBI_MEAN[points][i],
+            JACOBI_ZEROTH[points][i],
+        )
+        first, second = JACOBI_FIRST[points][i], JACOBI_SECOND[points][i]
+        third, last = JACOBI_THIRD[points][i], JACOBI_LAST[points][i]
+    else:
+        weight = GAUSS_WEIGHTS[points][i]
+        mean, zeroth = weight, weight
+        first, second = FIRST_COEFFICIENT[points][i], SECOND_COEFFICIENT[points][i]
+        third, last = THIRD_COEFFICIENT[points][i], LAST_COEFFICIENT[points][i]
     added = ()  # type: tuple
     for k in range(len(bends)):
         joint = sums[_SUM_FIELDS * k : _SUM_FIELDS * (k + 1)]
-        total, change, before, kept_lo, kept_hi, a0, a1, a2, a3, a_last = joint
+        total, change, before, kept_lo, kept_hi, a0, a1, a2, a3, a_last, b0 = joint
         torque, speed = values[2 * k], values[2 * k + 1]
         if i == 0:
             kept_lo = torque
@@ -102,41 +129,43 @@ def _node_added(sums, i: int, values, t, u, power, zero: int, divides: int, q, p
             if before != 0.0 and torque != 0.0 and (before < 0.0) != (torque < 0.0):
                 change, kept_lo = i, before
         angle = max(abs(bends[k] + t * (rb + 0.5 * ab * t)), min_angle)
-        rate = angle * abs(speed) * power_of(abs(torque), p)
         value = torque
+        if zero != 0 and divides_at(divides, k):
+            value = torque / (power * u)
+        rate = angle * abs(speed) * power_of(abs(value if weighted else torque), p)
         if zero != 0:
-            rate *= q * power
-            if divides_at(divides, k):
-                value = torque / (power * u)
+            rate *= q if weighted else q * power
         added = added + (
             total + weight * rate, change, torque, kept_lo, kept_hi,
-            a0 + weight * value,
-            a1 + FIRST_COEFFICIENT[points][i] * value,
-            a2 + SECOND_COEFFICIENT[points][i] * value,
-            a3 + THIRD_COEFFICIENT[points][i] * value,
-            a_last + LAST_COEFFICIENT[points][i] * value,
+            a0 + zeroth * value, a1 + first * value, a2 + second * value, a3 + third * value,
+            a_last + last * value, b0 + mean * value,
         )  # fmt: skip
     return added
 
 
-def panel(torques_at, step, lo, hi, zero: int, divides: int, q, points: int, bends, rb, ab,
-          min_angle, p):  # fmt: skip
+def panel(torques_at, step, lo, hi, zero: int, divides: int, q, points: int, weighted: bool,
+          bends, rb, ab, min_angle, p):  # fmt: skip
     """Each joint's `PANEL_FIELDS` values on [lo, hi] by the `points`-point
-    rule, substituted at the zero end (`zero` as `node_time`); joint k's
+    rule (Gauss-Jacobi's if `weighted`, else Gauss-Legendre's), substituted
+    at the zero end (`zero` as `node_time`); joint k's
     integrand A_k |w_k| |T_k|^p, A_k = max(|bends[k] + rb t + ab t^2 / 2|,
     `min_angle`), (T_k, w_k) = items 2k, 2k + 1 of `torques_at(t, step)`; its
     coefficients those of T_k / u^q if its bit is set in `divides`."""
     sums = _started(bends)
     for i in range(points):
-        u = GAUSS_NODES[points][i]
+        u = node_of(points, i, weighted)
         power = whole_power(u, q - 1.0) if zero != 0 else 1.0
         t = node_time(lo, hi, u, zero, q)
         sums = _node_added(sums, i, torques_at(t, step), t, u, power, zero, divides, q, points,
-                           bends, rb, ab, min_angle, p)  # fmt: skip
+                           weighted, bends, rb, ab, min_angle, p)  # fmt: skip
     values = ()  # type: tuple
     for k in range(len(bends)):
+        a0 = sums[_SUM_FIELDS * k + 5]
+        if weighted:
+            a0 = weighted_share(a0, sums[_SUM_FIELDS * k + 10])
         values = values + (sums[_SUM_FIELDS * k] * (hi - lo), sums[_SUM_FIELDS * k + 1])
-        values = values + sums[_SUM_FIELDS * k + 3 : _SUM_FIELDS * (k + 1)]
+        values = values + sums[_SUM_FIELDS * k + 3 : _SUM_FIELDS * k + 5] + (a0,)
+        values = values + sums[_SUM_FIELDS * k + 6 : _SUM_FIELDS * k + 10]
     return values
 
 

@@ -28,14 +28,35 @@ and rho^2 - 1 > 1 wherever the bound is met. Two things limit rho:
 
 At a torque zero t0 the panel substitutes t = t0 + L u^q: |T|^p ~ |t - t0|^p
 becomes u^gamma (gamma = q (p + 1) - 1 >= 10) times a smooth factor. That
-factor is T / u^q, whose coefficients the check reads; u^gamma adds its
-degree to the points and (gamma + 1) to M / mean. In u the singularities lie
-nearer: a distance tau from t0 is only (tau / L)^(1/q) in u.
+factor is T / u^q, whose coefficients the check reads; under Gauss-Legendre
+u^gamma adds its degree to the points and (gamma + 1) to M / mean. In u the
+singularities lie nearer: a distance tau from t0 is only (tau / L)^(1/q) in u.
+
+Where every joint's torque is divided by u^q and gamma is the tabulated 12
+(p = 10/3; `quadrature.JACOBI_POWER`), the panel takes the Gauss-Jacobi rule
+for the weight u^gamma instead (`rule_sizing`): the integrand is u^gamma f,
+f = q A |w| |T / u^q|^p smooth, and u^gamma leaves the bound. Its bound: the
+n-point rule has positive weights summing to W = 1 / (gamma + 1) and is exact
+for f's Chebyshev terms of degree < 2n (on u = (1 + x) / 2), each at most
+2 M rho^-k on [0, 1] with M = max |f| on E_rho; both the integral and the
+rule take a term |T_k| <= 1 to at most W, so the error is at most 2 W sum_{k
+>= 2n} 2 M rho^-k = 4 W M rho^-2n rho / (rho - 1). Against the panel's
+integral W mean_w f (mean_w the mean under u^gamma): 4 (M / mean_w f)
+rho^-2n rho / (rho - 1), and rho / (rho - 1) < 2 wherever the bound is met
+(log rho > budget / (2 `MAX_POINTS`) > log 2): 8 where Gauss-Legendre has
+32/15 (`_WEIGHTED_FACTOR`). M / mean_w f takes the same 4 for the angle and
+the speed and 1.9^p for |T / u^q|^p: its maximum on E_rho is at most (|a_0|
++ 0.9 s)^p when the check holds with the share s of a_0 (`weighted_share`),
+its weighted mean at least |b_0|^p (Jensen under u^gamma), b_0 the weighted
+mean of T / u^q (exact from the rule), and s <= (1.9 |b_0| - |a_0|) / 0.9
+makes the ratio 1.9^p. The residue u^(gamma - 12) of a gamma rounded off 12
+(12.000000000000002 at p = 10/3) is within 1e-12 |log u| of 1.
 """
 
 import math
 
 from .quadrature import (
+    JACOBI_POWER,
     MAX_POINTS,
     MIN_POINTS,
 )
@@ -56,6 +77,11 @@ _NEWTON_STEPS = 8
 _TOWARDS_SINGULARITY = 0.75
 # The substituted power at a torque zero: gamma = q (p + 1) - 1 at least this.
 _SMOOTH_POWER = 10.0
+# The Gauss-Jacobi bound's factor against Gauss-Legendre's: 8 / (32/15).
+_WEIGHTED_FACTOR = 8.0 / (32.0 / 15.0)
+# How far gamma may lie from the tabulated rule's power (the residue u^(gamma -
+# 12) is then 1 within 1e-12 |log u|; 3 (10/3 + 1) - 1 rounds 2e-15 off 12).
+_SAME_POWER = 1e-12
 
 
 def substitution_power(p):
@@ -67,6 +93,26 @@ def substitution_power(p):
 def error_budget(p):
     """log of the bound's factors for exponent p (all but rho and gamma's)."""
     return math.log(_BOUND_FACTOR / _TARGET) + p * math.log(_GROWTH)
+
+
+def rule_sizing(zero: int, divides: int, joints: int, q, gamma, budget):
+    """(whether the panel takes the Gauss-Jacobi rule, its stretch, the power
+    its points must resolve, its budget): a panel substituted at a zero (`zero`
+    as `node_time`) takes it where every one of the `joints` divides its torque
+    by u^q (`divides`, one bit each) and gamma is the tabulated power."""
+    if zero == 0:
+        return False, 1.0, 0.0, budget
+    if divides == (1 << joints) - 1 and abs(gamma - JACOBI_POWER) <= _SAME_POWER:
+        return True, q, 0.0, budget + math.log(_WEIGHTED_FACTOR)
+    return False, q, gamma, budget
+
+
+def weighted_share(a0, b0):
+    """The share of a_0 that a Gauss-Jacobi panel's check may spend (with a_0's
+    sign): |a_0|, or less where the weighted mean b_0 is smaller, so that |a_0|
+    + (1.9 - 1) share <= 1.9 |b_0| (the module's bound); 0 if none is left."""
+    share = min(abs(a0), (_GROWTH * abs(b0) - abs(a0)) / (_GROWTH - 1.0))
+    return math.copysign(max(share, 0.0), a0)
 
 
 def singular_log_rho(length, tau, stretch):
@@ -122,9 +168,12 @@ def zero_free_on(log_rho, coefficients, points, substituted: bool) -> bool:
     |a_0|, a_(n-1) the last 0.1 |a_0|. A substituted panel skips a_(n-1):
     dividing out u^q magnifies the rounding of T next to its zero, which the
     highest coefficient feels first, while a_1..a_3 see a zero inside E_rho
-    all the same."""
+    all the same. A Gauss-Jacobi panel's a_0 is its share (`weighted_share`):
+    none left, the check fails."""
     a0, a1, a2, a3, a_last = coefficients
     size = abs(a0)
+    if size == 0.0:
+        return False
     rho = math.exp(log_rho)
     if _low_spread(0.5 * (rho + 1.0 / rho), abs(a1), abs(a2), abs(a3)) > _LOW_TERMS * size:
         return False

@@ -13,7 +13,7 @@ import math
 
 from .life_nodes import COEFFICIENTS, PANEL_FIELDS, divides_at, torque_of
 from .life_panel import may_vanish, node_time
-from .quadrature import GAUSS_NODES
+from .quadrature import node_of
 
 # Root-finder steps per zero.
 _ROOT_STEPS = 200
@@ -84,21 +84,22 @@ def _root_by(torques_at, step, joint: int, end, node, at_node):
 
 
 def _zero_in(torques_at, step, joint: int, lo, hi, zero: int, own: int, q, points: int,
-             change: int, kept_lo, kept_hi):  # fmt: skip
+             weighted: bool, change: int, kept_lo, kept_hi):  # fmt: skip
     """A zero of `joint`'s torque in (lo, hi), the panel's (substituted as
     `zero`; `own` is `zero` where the substitution's zero is the joint's,
-    else 0): between nodes change - 1 and `change` if they differ in sign
-    (their torques `kept_lo`, `kept_hi`), else between an end (not the
-    joint's known zero) and its nearest node (the first node's torque
-    `kept_lo`, the last's `kept_hi`); -1.0 if neither shows one."""
+    else 0; its nodes Gauss-Jacobi's if `weighted`): between nodes
+    change - 1 and `change` if they differ in sign (their torques `kept_lo`,
+    `kept_hi`), else between an end (not the joint's known zero) and its
+    nearest node (the first node's torque `kept_lo`, the last's `kept_hi`);
+    -1.0 if neither shows one."""
     if change != 0:
-        before = node_time(lo, hi, GAUSS_NODES[points][change - 1], zero, q)
-        after = node_time(lo, hi, GAUSS_NODES[points][change], zero, q)
+        before = node_time(lo, hi, node_of(points, change - 1, weighted), zero, q)
+        after = node_time(lo, hi, node_of(points, change, weighted), zero, q)
         if before > after:
             return _root(torques_at, step, joint, after, before, kept_hi, kept_lo)
         return _root(torques_at, step, joint, before, after, kept_lo, kept_hi)
-    first = node_time(lo, hi, GAUSS_NODES[points][0], zero, q)
-    last = node_time(lo, hi, GAUSS_NODES[points][points - 1], zero, q)
+    first = node_time(lo, hi, node_of(points, 0, weighted), zero, q)
+    last = node_time(lo, hi, node_of(points, points - 1, weighted), zero, q)
     # The node nearest each end: the first in u, except on a panel substituted at hi.
     near_lo, near_hi = (last, first) if zero < 0 else (first, last)
     at_lo, at_hi = (kept_hi, kept_lo) if zero < 0 else (kept_lo, kept_hi)
@@ -126,7 +127,7 @@ def _earliest(roots, after, same):
 
 
 def first_zeros(torques_at, step, values, failing: int, lo, hi, zero: int, divides: int, q,
-                points: int):  # fmt: skip
+                points: int, weighted: bool):  # fmt: skip
     """(the first zero in (lo, hi] of a torque whose joint fails on the panel
     and whose values show one, the joints whose zero it is, one bit each,
     then the next such zero and its joints, which the march keeps for later);
@@ -138,7 +139,7 @@ def first_zeros(torques_at, step, values, failing: int, lo, hi, zero: int, divid
         root = -1.0
         if divides_at(failing, k) and (change != 0 or may_vanish(coefficients)):
             own = zero if divides_at(divides, k) else 0
-            root = _zero_in(torques_at, step, k, lo, hi, zero, own, q, points, change,
+            root = _zero_in(torques_at, step, k, lo, hi, zero, own, q, points, weighted, change,
                             values[PANEL_FIELDS * k + 2], values[PANEL_FIELDS * k + 3])  # fmt: skip
         roots = roots + (root,)
     same = SAME_ZERO * (hi - lo)
