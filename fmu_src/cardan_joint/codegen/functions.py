@@ -36,7 +36,11 @@ class Signature:
         if self.optional:
             parameters.append(f"{self.returns.c} *result_")
         returns = "int" if self.optional else self.returns.c
-        return f"static {returns} {self.c_name}({', '.join(parameters) or 'void'})"
+        # `inline` lifts GCC's -O2 limit for a function called from more than
+        # one place: the life torque's parts (`crosspiece_motion`, the torque
+        # at a node) then take no call, and the tuples they pass by value are
+        # not copied through memory at every node (docs/codegen.md).
+        return f"static inline {returns} {self.c_name}({', '.join(parameters) or 'void'})"
 
 
 def source_of(function: types.FunctionType) -> tuple[ast.FunctionDef, str, int]:
