@@ -43,16 +43,13 @@ from .life_panel import (
     substitution_power,
 )
 from .life_zeros import first_zeros
-from .quadrature import MAX_POINTS, MIN_POINTS
+from .quadrature import MAX_POINTS
 
 # Below 1 mrad of bend the torque's singularities are practically out of reach.
 FLAT_REACH = math.acosh(1e3)
 # Panels tried per step: a step over thousands of turns ends with one panel
 # for what is left, less exactly (docs/life.md).
 _MAX_ATTEMPTS = 4096
-# A piece's first plain panel sized for this many points or more is probed
-# with MIN_POINTS first (`step_integrals`).
-_PROBED_FROM = 2 * MIN_POINTS
 # A panel this short against the step is taken as it is.
 _SHORTEST = 1e-13
 # A plain panel that the panel about it foresees to need a cut is halved
@@ -165,8 +162,7 @@ def step_integrals(torques_at, step, h, w1, a1, bends, rb, ab, min_angle, p, rea
         n = max(points if (zero != 0) == substituted else 0, points_for(singular, sized, degree))
         # Only a plain panel (Gauss-Legendre, `sized` the plain budget) is
         # foreseen, and only from a plain one: `guide` is never weighted.
-        guided = guide_lo <= t and hi <= guide_hi
-        if zero == 0 and guided:
+        if zero == 0 and guide_lo <= t and hi <= guide_hi:
             foreseen = points_foreseen(guide, guide_lo, guide_hi, t, hi, singular, sized)
             if foreseen > MAX_POINTS and hi - t >= _UNSEEN_HALVING * (guide_hi - guide_lo):
                 length = 0.5 * (hi - t)
@@ -174,13 +170,6 @@ def step_integrals(torques_at, step, h, w1, a1, bends, rb, ab, min_angle, p, rea
             if foreseen <= MAX_POINTS:
                 n = max(n, foreseen)
         n = min(n, MAX_POINTS)
-        # A piece's first plain panel that the singularities let run long is
-        # tried with the fewest points first: the torque's own turns fail it
-        # most of the time (4 steps in 5 at 1000 rad/s), and the probe's cubic
-        # foresees the points, or shows the zero, for what follows. A panel
-        # short enough for fewer points is taken as sized (100 rad/s: 5 points).
-        if zero == 0 and points == 0 and not guided and n >= _PROBED_FROM:
-            n = MIN_POINTS
         values = panel(torques_at, step, t, hi, zero, divides, q, n, weighted, bends, rb, ab,
                        min_angle, p)  # fmt: skip
         scales = scales_raised(scales, totals, values)
