@@ -41,7 +41,7 @@ FULL = Sizes(
     memory_steps=(1_000, 100_000),
     vector_samples=1_000_000,
     scalar_samples=100_000,
-    instruction_steps=(100, 600),
+    instruction_steps=(100, 2_100),
     instruction_minors=MINORS,
     revolutions=REVOLUTIONS,
 )
