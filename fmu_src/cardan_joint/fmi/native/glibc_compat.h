@@ -57,8 +57,8 @@ CARDAN_JOINT_OLD_VERSION(pthread_attr_setstacksize, GLIBC_2.2.5)
  * domain error is reported, which the generated step guards before it calls.
  * exp and log, which life calls at every node (x^p = exp(p log x)), bind to
  * __exp_finite and __log_finite (GLIBC_2.15): the same functions without the
- * wrapper, which cost 17 instructions a call (about 1.4 k of the
- * UniversalJoint's step at 1000 rad/s, callgrind); glibc 2.31 keeps them as
+ * wrapper, which cost 17 instructions a call (about 1.4 k of a joint's
+ * step at 1000 rad/s, callgrind); glibc 2.31 keeps them as
  * compatibility aliases of exp and log, so every glibc gives the same bits. */
 CARDAN_JOINT_BIND(exp, __exp_finite@GLIBC_2.15)
 CARDAN_JOINT_OLD_VERSION(exp2, GLIBC_2.2.5)
