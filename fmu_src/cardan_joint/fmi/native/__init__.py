@@ -154,10 +154,10 @@ def runtime_record() -> str:
 # floating-point operation rounds as CPython's does).
 C_FLAGS = (
     "-std=gnu11",
-    # -O3 over -O2: the generated life step's node loops, unrolled and inlined,
-    # take 42.2 k instead of 43.4 k instructions a step at 1000 rad/s
-    # (callgrind, benchmarks' step_alone); no operation rounds differently
-    # (FLOAT_FLAGS), so the bits are CPython's either way.
+    # -O3 over -O2: the generated life steps' node loops, unrolled and inlined,
+    # cost a chain's step a quarter to a third less, a joint's at 1000 rad/s 3 %
+    # (callgrind, benchmarks' step_alone; docs/codegen.md); no operation rounds
+    # differently (FLOAT_FLAGS), so the bits are CPython's either way.
     "-O3",
     "-fPIC",
     # The version script keeps every symbol but the exports local, so nothing
