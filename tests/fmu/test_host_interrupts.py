@@ -29,7 +29,14 @@ PLAIN_HOST = textwrap.dedent(
         fmu.freeInstance()
         core = next(m for n, m in sys.modules.items() if n.endswith(".fmi.fast_path"))
         del core.FastPath.fast_layout
-    fmu.instantiate()
+    callbacks = None
+    if sys.argv[3:] == ["python_logger"]:  # the host's logger in Python, as FmuInstance's
+        from fmpy.fmi2 import defaultCallbacks, fmi2CallbackFunctions, fmi2CallbackLoggerTYPE
+        callbacks = fmi2CallbackFunctions()
+        callbacks.logger = fmi2CallbackLoggerTYPE(lambda *message: None)
+        callbacks.allocateMemory = defaultCallbacks.allocateMemory
+        callbacks.freeMemory = defaultCallbacks.freeMemory
+    fmu.instantiate(callbacks=callbacks)
     fmu.setupExperiment(startTime=0.0)
     fmu.enterInitializationMode()
     if sys.argv[2] == "exit_initialization_mode":  # Ctrl-C as initialization ends
@@ -82,11 +89,11 @@ PLAIN_HOST = textwrap.dedent(
 )
 
 
-def _host(fmu_path, call: str, **environment: str) -> tuple[int, list[str], str]:
+def _host(fmu_path, call: str, *options: str, **environment: str) -> tuple[int, list[str], str]:
     """PLAIN_HOST interrupted in the slave's `call`, the runtime's messages on
     stderr: (its exit status, its output lines, all it said)."""
     process = _child(
-        [sys.executable, "-c", PLAIN_HOST, str(fmu_path), call],
+        [sys.executable, "-c", PLAIN_HOST, str(fmu_path), call, *options],
         env={**os.environ, "CARDAN_JOINT_FMU_STDERR": "1", **environment},
     )
     try:
@@ -108,6 +115,16 @@ def test_ctrl_c_that_lands_in_the_slave_is_handed_back_to_the_host(fmu_path, cal
     assert said.count("was interrupted by a KeyboardInterrupt") == 1, said
     assert "the slave's do_step was interrupted by a KeyboardInterrupt" in said
     assert "Traceback" not in said
+
+
+def test_ctrl_c_in_the_slave_reaches_a_host_whose_logger_is_python(fmu_path):
+    """The interrupt is handed back after the call's last message: raised in a
+    logger written in Python (a ctypes callback, as FmuInstance's) it would be
+    dropped there, and the host would go on after a failed step."""
+    status, out, said = _host(fmu_path, "fast_path", "python_logger",
+                              CARDAN_JOINT_FMU_PYTHON_STEP="1")  # fmt: skip
+    assert status == 3, said
+    assert out[-1] == "KeyboardInterrupt after 5 steps", said
 
 
 def test_ctrl_c_as_initialization_ends_leaves_the_instance_in_the_error_state(fmu_path):

@@ -45,6 +45,25 @@ def test_close_frees_the_instance_even_when_terminate_fails(model_description, u
     assert freed == [True]
 
 
+def test_a_failed_close_does_not_replace_what_the_block_raised(model_description, unzipped_fmu):
+    # Ctrl-C handed back from inside a call leaves the instance in the error
+    # state, where terminate fails: the block's KeyboardInterrupt goes on,
+    # the failure a note on it.
+    joint = FmuInstance(model_description, unzipped_fmu)
+
+    def failing_terminate():
+        raise RuntimeError("terminate failed")
+
+    joint._cleanup[1] = failing_terminate
+    with pytest.raises(KeyboardInterrupt) as raised:
+        with joint:
+            raise KeyboardInterrupt
+    assert raised.value.__notes__ == ["closing 'instance' then failed too: terminate failed"]
+    # Nothing raised in the block: the failure is raised.
+    with pytest.raises(RuntimeError, match="terminate failed"), joint:
+        joint._cleanup.append(failing_terminate)
+
+
 def test_an_unknown_name_is_named(model_description, unzipped_fmu):
     with FmuInstance(model_description, unzipped_fmu) as joint:
         with pytest.raises(KeyError, match="'input_sped'; did you mean input_speed"):

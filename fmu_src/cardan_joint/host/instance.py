@@ -173,8 +173,17 @@ class FmuInstance:
     def __enter__(self) -> FmuInstance:
         return self
 
-    def __exit__(self, *exc) -> None:
-        self.close()
+    def __exit__(self, kind, error, traceback) -> None:
+        if error is None:
+            self.close()
+            return
+        # A block that raised (Ctrl-C handed back from inside a call) leaves the
+        # instance in the error state, where terminate fails: that failure is
+        # a note on the block's exception, which goes on as it was.
+        try:
+            self.close()
+        except Exception as failure:
+            error.add_note(f"closing {self.fmu.instanceName!r} then failed too: {failure}")
 
     def _refs(self, names: Iterable[str]) -> list[int]:
         names = list(names)

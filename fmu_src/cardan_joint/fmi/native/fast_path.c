@@ -61,6 +61,7 @@ static long call(struct instance *in, enum fast_method method, PyObject *a, PyOb
     p_PyErr_Clear();
     if (!fast->queue || p_PyList_Size(fast->queue) != 0)
         slave_drain(in, fast->slave);
+    slave_hand_back(interrupted);
     if (interrupted)
         return fmi2Error;
     if (raised || status < 0 || status > fmi2Fatal) {

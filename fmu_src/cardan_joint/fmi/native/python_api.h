@@ -71,9 +71,12 @@ int set_global(PyObject *globals, const char *name, PyObject *value);
  * slave_interrupted). */
 fmi2Status slave_finish(struct instance *in, PyObject *result, const char *what);
 /* With the GIL, after a call into the slave that raised: 1 when it raised
- * KeyboardInterrupt (said, the instance in STATE_ERROR, the interrupt handed
- * back to the host's Python), 0 otherwise (the exception still set). */
+ * KeyboardInterrupt (said, cleared, the instance in STATE_ERROR), 0 otherwise
+ * (the exception still set). */
 int slave_interrupted(struct instance *in, const char *what);
+/* With the GIL, after the call's last message: the KeyboardInterrupt handed
+ * back to the host's Python if the slave took it (`interrupted`). */
+void slave_hand_back(int interrupted);
 /* With the GIL: do_step's result as an FMI status (pythonfmu3: its status and
  * terminateSimulation, into `terminate` if not NULL; pythonfmu: true is OK). */
 fmi2Status step_answer(PyObject *result, int *terminate);

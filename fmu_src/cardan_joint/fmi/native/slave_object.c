@@ -59,14 +59,16 @@ void slave_drain(struct instance *in, PyObject *slave)
 /* A host that runs Python's own signal handlers (its Python, FMPy's) takes
  * Ctrl-C as KeyboardInterrupt at the next bytecode its main thread runs: the
  * slave's, during a call.  The interrupt is the host's: it gets it back, raised
- * at its own Python's next check.  The slave stopped part way through the call,
- * so its state is no longer known: the instance can only be reset or freed. */
+ * at its own Python's next check, which the caller sets after the call's last
+ * message (slave_hand_back): a host whose logger is Python (FMPy's callbacks)
+ * would otherwise take it inside the logger, where ctypes drops it.  The slave
+ * stopped part way through the call, so its state is no longer known: the
+ * instance can only be reset or freed. */
 int slave_interrupted(struct instance *in, const char *what)
 {
     if (!p_PyErr_Occurred() || !p_PyErr_ExceptionMatches(*py_keyboard_interrupt))
         return 0;
     p_PyErr_Clear();
-    p_PyErr_SetInterrupt();
     in->state = STATE_ERROR;
     reportf(in, fmi2Error, "the slave's %s was interrupted by a KeyboardInterrupt (Ctrl-C) "
             "of the host's Python, which gets it back; the slave stopped part way, so the "
@@ -74,13 +76,21 @@ int slave_interrupted(struct instance *in, const char *what)
     return 1;
 }
 
+void slave_hand_back(int interrupted)
+{
+    if (interrupted)
+        p_PyErr_SetInterrupt();
+}
+
 fmi2Status slave_finish(struct instance *in, PyObject *result, const char *what)
 {
     fmi2Status status = fmi2OK;
-    if (!result && slave_interrupted(in, what))
+    int interrupted = !result && slave_interrupted(in, what);
+    if (interrupted)
         status = fmi2Error;
     if (in->object)
         slave_drain(in, in->object);
+    slave_hand_back(interrupted);
     if (!result && status == fmi2OK) {
         PyObject *type = NULL, *value = NULL, *traceback = NULL;
         p_PyErr_Fetch(&type, &value, &traceback);
