@@ -3,7 +3,7 @@ of an independent adaptive quadrature (`life_reference.damage_quadpack`: the
 full kernel's rate, kinks by dense sampling and brentq, QUADPACK) over random
 steps at 200-1000 rad/s with a massive cross and loads of both signs; and the
 torque evaluations of a step bounded by its events, not by its speed or the
-load's sign, each cheap: a zero's location, a node's bend."""
+load's sign, each cheap: a node's bend (a zero's location: test_life_zeros)."""
 
 import math
 import random
@@ -13,7 +13,7 @@ import pytest
 from life_reference import case_of, damage_quadpack, random_fast_step
 
 from cardan_joint.models.universal_joint.model import CardanJoint
-from cardan_joint.physics import life_torque, life_zeros
+from cardan_joint.physics import life_torque
 from cardan_joint.physics.life import LifeRule
 
 RULE = LifeRule(1000.0, 1.5e6, 10.0 / 3.0, math.radians(3.0))
@@ -74,40 +74,6 @@ def test_a_step_without_events_costs_alike_at_any_speed_and_either_load_sign(mon
     # 25 times the speed over the step: the same order of evaluations.
     assert max(counts.values()) <= 3.0 * min(counts.values()), counts
     assert max(counts.values()) <= 20, counts
-
-
-def test_a_torque_zero_is_located_to_the_last_bits_in_a_few_evaluations():
-    # Each sign change of the torque over random fast steps, bracketed as a
-    # panel's neighbouring nodes bracket it: the zero returned has a sign
-    # change within Brent's final bracket (a few ulps), or the torque there is
-    # 0, found in under 10 evaluations on average (regula falsi to the same
-    # bracket took 40).
-    rng = random.Random(11)
-    calls, zeros = [0], 0
-
-    def counted(t, step):
-        calls[0] += 1
-        return life_torque.joint_torque(t, step)
-
-    for _ in range(1000):
-        values, h = random_fast_step(rng)
-        joint = CardanJoint(**values)
-        psi, b, w, a, rb, ab, inertia, load = case_of(joint)
-        step = (psi, b, w, a, rb, ab, *inertia, load, math.sin(b), math.cos(b))
-        times = [h * k / 16 for k in range(17)]
-        torques = [life_torque.joint_torque(t, step)[0] for t in times]
-        for lo, hi, f_lo, f_hi in zip(times, times[1:], torques, torques[1:]):
-            if f_lo == 0.0 or f_hi == 0.0 or (f_lo < 0.0) == (f_hi < 0.0):
-                continue
-            zero = life_zeros._root(counted, step, 0, lo, hi, f_lo, f_hi)
-            zeros += 1
-            near = 8.0 * math.ulp(zero)
-            before = life_torque.joint_torque(zero - near, step)[0]
-            after = life_torque.joint_torque(zero + near, step)[0]
-            at = life_torque.joint_torque(zero, step)[0]
-            assert at == 0.0 or before == 0.0 or after == 0.0 or (before < 0.0) != (after < 0.0)
-    assert zeros > 80
-    assert calls[0] < 10 * zeros, calls[0] / zeros
 
 
 def test_a_small_turn_of_the_bend_gives_its_sine_and_cosine_as_the_library_would():

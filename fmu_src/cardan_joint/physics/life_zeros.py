@@ -1,5 +1,6 @@
 """The torques' zeros a panel of the life integral shows (`life_integral`;
-docs/life.md, "Exact over each step"), located to the last bits.
+docs/life.md, "Exact over each step"), each located as exactly as the panel
+substituted at it needs.
 
 A panel that fails at a joint's torque's sign change between two of its
 nodes, or whose values let the torque vanish between an end and its nearest
@@ -7,6 +8,20 @@ node, is cut at the zero there: Brent's method from the two torques the panel
 already has (`life_nodes.PANEL_FIELDS`), or from one of them and the end's.
 Every failing joint's zero is located; the march is cut at the first and
 keeps the next for later.
+
+What the panel needs: substituted at z where T(z) = c, not 0, it still
+integrates A |w| |T|^p exactly as a function, only not one of the smoothness
+its bound assumes, that of |T - c|^p (whose zero is z). The two differ by at
+most p |c| (|T| + |c|)^(p-1) A |w|, which the integral and the rule alike
+(its weights positive, the bound smooth in u) take to about p |c| int A |w|
+(|T| + |c|)^(p-1) each: by Hoelder's inequality, 2 p |c| / M_p of the step's
+integral, M_p the step's p-mean torque (int A |w| |T|^p / int A |w|)^(1/p).
+The search ends once |T| is `SETTLED_ZERO` of the larger torque it starts
+from, at nodes of the step, of M_p's order (1.55 M_p where T is linear
+across the step): 1e-12 of the step's integral, under the 1e-11 a panel may
+err by. Where the torque's rounding hides its zero above that share, the
+search ends within the rounding, which the integrand carries at every node
+anyway.
 """
 
 import math
@@ -17,23 +32,40 @@ from .quadrature import node_of
 
 # Root-finder steps per zero.
 _ROOT_STEPS = 200
-# Brent's bracket, relative and absolute: two ulps of the zero's time.
+# Brent's bracket at the least, relative and absolute: two ulps of the zero's time.
 _ROOT_TOLERANCE = 2.0 * 2.220446049250313e-16
 _TINY_TIME = 1e-300
+# A zero is located once its torque is within this share of the larger of
+# the two the search starts from (the module's bound), or its bracket within a
+# quarter of it of the first bracket's width (the same torque where T is
+# linear across that bracket, as between two neighbouring nodes).
+SETTLED_ZERO = 1e-13
+_SETTLED_BRACKET = 0.25 * SETTLED_ZERO
+# A step from the best point this small against the first bracket is where T
+# is linear to about this share, so an interpolation step shrinks |T| by as
+# much: where |T| did not shrink, the torque's rounding hides the zero, and
+# the best point's torque is that rounding's size (`_root`).
+_ROUNDING_STEP = 1e-6
 # Two joints' zeros this close, against the panel that shows them, are one:
 # a chain whose torques are all proportional to its load has its joints'
-# zeros at one instant, which their rounding spreads by a few 1e-17 s, and
-# its nodes show them all at once. A joint substituted at a zero this far
+# zeros at one instant, which their rounding and their searches' settled
+# share (`SETTLED_ZERO` of a bracket within the panel each) spread, and its
+# nodes show them all at once. A joint substituted at a zero this far
 # from its own errs by far less than the bound (its torque's sign differs
 # only below the first node's u^q).
 SAME_ZERO = 1e-12
 
 
 def _root(torques_at, step, joint: int, a, b, fa, fb):
-    """A sign change of `joint`'s torque in (a, b), fa and fb of opposite signs, to
-    the last bits: Brent's method (inverse quadratic and secant steps, bisection
-    when they stall), which shrinks the bracket to a few ulps in about half the
-    evaluations regula falsi takes, as its steps never fall below that width."""
+    """A sign change of `joint`'s torque in (a, b), fa and fb of opposite signs,
+    as exactly as the panel substituted at it needs (`SETTLED_ZERO`): Brent's
+    method (inverse quadratic and secant steps, bisection when they stall),
+    which ends at the first torque that small, or where the bracket is
+    settled, else at a few ulps where the torque's rounding hides the zero."""
+    settled = SETTLED_ZERO * max(abs(fa), abs(fb))
+    narrowest = max(_SETTLED_BRACKET * abs(b - a), _TINY_TIME)
+    rounding = _ROUNDING_STEP * abs(b - a)
+    first, last = min(a, b), max(a, b)
     c, fc = a, fa
     d, e = b - a, b - a
     for _ in range(_ROOT_STEPS):
@@ -44,10 +76,12 @@ def _root(torques_at, step, joint: int, a, b, fa, fb):
             d, e = b - a, b - a
         if abs(fc) < abs(fb):
             a, b, c, fa, fb, fc = b, c, b, fb, fc, fb
-        tolerance = _ROOT_TOLERANCE * abs(b) + _TINY_TIME
+        tolerance = max(_ROOT_TOLERANCE * abs(b), narrowest)
         half = 0.5 * (c - b)
         if abs(half) <= tolerance:
-            return b
+            # An end whose torque is within the rounding may stay the best
+            # point: the zero is then the other side of the settled bracket.
+            return b if first < b < last else c
         if abs(e) < tolerance or abs(fa) <= abs(fb):
             d, e = half, half
         else:
@@ -69,6 +103,10 @@ def _root(torques_at, step, joint: int, a, b, fa, fb):
         a, fa = b, fb
         b += d if abs(d) > tolerance else math.copysign(tolerance, half)
         fb = torque_of(torques_at(b, step), joint)
+        if abs(fb) <= settled:
+            return b
+        if abs(fb) >= abs(fa) and abs(b - a) <= rounding and first < a < last:
+            return a
     return b
 
 
