@@ -11,6 +11,8 @@ STEP_SOURCE = "fmu_src/cardan_joint/build/step_source.py"
 FAST_PATH = "fmu_src/cardan_joint/fmi/native/fast_path.c"
 FAST_VALUES = "fmu_src/cardan_joint/fmi/native/fast_values.c"
 LIFE_INTEGRAL = "fmu_src/cardan_joint/physics/life_integral.py"
+LIFE_ZEROS = "fmu_src/cardan_joint/physics/life_zeros.py"
+ZEROS_TESTS = ("tests/unit/test_life_zeros.py",)
 GENERATED = "fmu_src/cardan_joint/fmi/native/generated.c"
 BIT_TEST = ("tests/unit/test_codegen_joint.py", "-k", "python_steps_bits")
 BUILD_TESTS = "tests/unit/test_codegen_build.py"
@@ -148,6 +150,41 @@ GENERATED_MUTATIONS = (
         "hi, zero = (middle, 1) if middle > t else (end, 0)",
         "hi, zero = middle, 1",
         ("tests/unit/test_life.py", "-k", "ulp_apart"),
+    ),
+    Mutation(
+        "life zeros: a zero settled to its share of the starting torques",
+        LIFE_ZEROS,
+        "if abs(fb) <= settled:",
+        "if abs(fb) <= 1e4 * settled:",
+        ZEROS_TESTS,
+    ),
+    Mutation(
+        "life zeros: the settled bracket's share",
+        LIFE_ZEROS,
+        "_SETTLED_BRACKET = 0.25 * SETTLED_ZERO",
+        "_SETTLED_BRACKET = 0.25e-8",
+        ZEROS_TESTS,
+    ),
+    Mutation(
+        "life zeros: rounding is seen only at a step within the linear reach",
+        LIFE_ZEROS,
+        "abs(fb) >= abs(fa) and abs(b - a) <= rounding and first < a < last",
+        "abs(fb) >= abs(fa) and first < a < last",
+        ZEROS_TESTS,
+    ),
+    Mutation(
+        "life zeros: a zero the rounding hides is not an end of its bracket",
+        LIFE_ZEROS,
+        "abs(fb) >= abs(fa) and abs(b - a) <= rounding and first < a < last",
+        "abs(fb) >= abs(fa) and abs(b - a) <= rounding",
+        ZEROS_TESTS,
+    ),
+    Mutation(
+        "life zeros: a settled bracket's zero is not an end of it",
+        LIFE_ZEROS,
+        "return b if first < b < last else c",
+        "return b",
+        ZEROS_TESTS,
     ),
     Mutation(
         "written step: the step size checked",
