@@ -61,7 +61,8 @@ def _root(torques_at, step, joint: int, a, b, fa, fb):
     as exactly as the panel substituted at it needs (`SETTLED_ZERO`): Brent's
     method (inverse quadratic and secant steps, bisection when they stall),
     which ends at the first torque that small, or where the bracket is
-    settled, else at a few ulps where the torque's rounding hides the zero."""
+    settled, or where a step within T's linear reach left |T| no smaller (the
+    torque's rounding hides the zero: the best point, inside the bracket)."""
     settled = SETTLED_ZERO * max(abs(fa), abs(fb))
     narrowest = max(_SETTLED_BRACKET * abs(b - a), _TINY_TIME)
     rounding = _ROUNDING_STEP * abs(b - a)
