@@ -232,6 +232,28 @@ def crosspiece_motion(s, c, sb, cb, D, rD, w1, a1, rb, ab):
     return w2, a2, W1, W2, W3, dW1, dW2, dW3
 
 
+def steady_crosspiece_motion(s, c, sb, cb, D, rD, w1, a1):
+    """`crosspiece_motion` at a constant bend (rb = ab = 0), to the bit: its
+    terms in rb and ab are exact zeros there, which IEEE arithmetic cannot
+    drop by itself (0 x is not 0 for every x), so they are left out; the
+    others keep their order. Only a zero's sign may differ."""
+    sbc = sb * c
+    sbs = sb * s
+    w1cb = w1 * cb
+    w1sbs = w1 * sbs
+    a1cb = a1 * cb
+    w2 = w1cb / D
+    D_rate = 2.0 * sbc * w1sbs
+    a2 = (a1cb - w2 * D_rate) / D
+    W2 = w1sbs / rD
+    W3 = w1cb / rD
+    half_log_rate = 0.5 * D_rate / D
+    dW1 = a2 * sbc - w2 * w1sbs
+    dW2 = (a1 * sbs + w1 * w1 * sbc) / rD - W2 * half_log_rate
+    dW3 = a1cb / rD - W3 * half_log_rate
+    return w2, a2, w2 * sbc, W2, W3, dW1, dW2, dW3
+
+
 def euler_moments(I1, I2, I3, W1, W2, W3, dW1, dW2, dW3):
     """The moments (M1, M2, M3) the yokes exert on the cross: Euler's equations."""
     return (

@@ -22,9 +22,9 @@ from typing import Any, NamedTuple
 from ...physics._backend import namespace
 from ...physics.response import (
     cardan_error_at,
-    crosspiece_motion,
     euler_moments,
     pose_of,
+    steady_crosspiece_motion,
     yoke_reactions,
 )
 from .geometry import HALF_PI, Layout
@@ -85,7 +85,7 @@ def joint_forward(xp, psi, sb, cb, w, a, I1, I2, I3):
     `a`: the kernel's (response.py) at a constant bend, from its own parts,
     so to the bit; the rest of its outputs is not computed."""
     s, c, sb, cb, D, rD = pose_of(xp, psi, sb, cb)[2:]
-    w2, a2, W1, W2, W3, dW1, dW2, dW3 = crosspiece_motion(s, c, sb, cb, D, rD, w, a, 0.0, 0.0)
+    w2, a2, W1, W2, W3, dW1, dW2, dW3 = steady_crosspiece_motion(s, c, sb, cb, D, rD, w, a)
     M1, M2, M3 = euler_moments(I1, I2, I3, W1, W2, W3, dW1, dW2, dW3)
     energy = 0.5 * (I1 * W1 * W1 + I2 * W2 * W2 + I3 * W3 * W3)
     torque = yoke_reactions(M1, M2, M3, s, c, sb, cb, rD, 0.0)[2]
