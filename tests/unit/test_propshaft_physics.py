@@ -21,7 +21,7 @@ from cardan_joint.models.propshaft import (
     speed_ratio_fluctuation,
 )
 from cardan_joint.models.propshaft.chain import joint_forward
-from cardan_joint.physics.response import JointResponse, kernel
+from cardan_joint.physics.response import JointResponse, kernel, pose_of
 from cardan_joint.units import RPM_TO_RAD_PER_S
 
 D = math.radians
@@ -92,10 +92,12 @@ def test_a_joints_forward_pass_is_the_kernels_to_the_bit():
         w, a = rng.uniform(-1e3, 1e3), rng.uniform(-1e4, 1e4)
         I1, I2, I3 = (float(x) for x in rng.uniform(0.0, 0.1, 3))
         r = kernel(math, psi, beta, w, a, 0.0, 0.0, I1, I2, I3, 0.0, 1.0)
-        got = joint_forward(math, psi, math.sin(beta), math.cos(beta), w, a, I1, I2, I3)
+        sb, cb = math.sin(beta), math.cos(beta)
+        s, c = pose_of(math, psi, sb, cb)[2:4]
+        tangent, *got = joint_forward(math, s, c, sb, cb, w, a, I1, I2, I3)
         names = ("cardan_error", "output_speed", "output_acceleration",
                  "crosspiece_kinetic_energy", "input_torque", "speed_ratio")  # fmt: skip
-        assert got == tuple(r[fields.index(name)] for name in names)
+        assert (math.atan(tangent), *got) == tuple(r[fields.index(name)] for name in names)
 
 
 def test_power_balance_holds_exactly():

@@ -13,6 +13,11 @@ from .types import Untranslatable
 from .unit import Generated, generate
 
 # No fused multiply-add, no reassociation: each operation rounds as CPython's does.
-FLOAT_FLAGS = ("-ffp-contract=off", "-fno-fast-math")
+# Nothing reads errno after a math call (CPython's math checks its results
+# itself): -fno-math-errno lets the compiler treat the C library's math as pure,
+# so it drops a call whose result no one reads (a chain's offsets at a life
+# node that no torque reads) and makes one call of several with the same
+# arguments; no operation rounds differently.
+FLOAT_FLAGS = ("-ffp-contract=off", "-fno-fast-math", "-fno-math-errno")
 
 __all__ = ["FLOAT_FLAGS", "Generated", "Untranslatable", "generate"]

@@ -56,7 +56,7 @@ PANEL_FIELDS = 9
 COEFFICIENTS = 4
 # The sums over the nodes per joint: the rule's sum, the sign change, the
 # torque at the node before, the two torques kept, the coefficients, then the
-# weighted mean.
+# weighted mean (on a Gauss-Jacobi panel).
 _SUM_FIELDS = 11
 
 
@@ -135,10 +135,12 @@ def _node_added(sums, i: int, values, t, u, power, zero: int, divides: int, q, p
         rate = angle * abs(speed) * power_of(abs(value if weighted else torque), p)
         if zero != 0:
             rate *= q if weighted else q * power
+        if weighted:  # `panel` reads the weighted mean there only
+            b0 = b0 + mean * value
         added = added + (
             total + weight * rate, change, torque, kept_lo, kept_hi,
             a0 + zeroth * value, a1 + first * value, a2 + second * value, a3 + third * value,
-            a_last + last * value, b0 + mean * value,
+            a_last + last * value, b0,
         )  # fmt: skip
     return added
 

@@ -195,13 +195,17 @@ def pose_of(xp, psi, sb, cb):
     trigonometric calls."""
     sh = xp.sin(0.5 * psi)
     ch = xp.cos(0.5 * psi)
-    s = 2.0 * sh * ch
-    c = (ch - sh) * (ch + sh)
+    return (sh, ch) + pose_at(xp, 2.0 * sh * ch, (ch - sh) * (ch + sh), sb, cb)
+
+
+def pose_at(xp, s, c, sb, cb):
+    """`pose`'s (sin psi, cos psi, sin b, cos b, D, sqrt D) from psi's sine `s`
+    and cosine `c`."""
     sbs = sb * s
     # D = 1 - (sin b cos psi)^2, written as a sum of squares: no cancellation
     # near the lock-up, where D -> cos^2 b.
     D = cb * cb + sbs * sbs
-    return sh, ch, s, c, sb, cb, D, xp.sqrt(D)
+    return s, c, sb, cb, D, xp.sqrt(D)
 
 
 def crosspiece_motion(s, c, sb, cb, D, rD, w1, a1, rb, ab):
@@ -232,6 +236,28 @@ def crosspiece_motion(s, c, sb, cb, D, rD, w1, a1, rb, ab):
     return w2, a2, W1, W2, W3, dW1, dW2, dW3
 
 
+def steady_crosspiece_motion(s, c, sb, cb, D, rD, w1, a1):
+    """`crosspiece_motion` at a constant bend (rb = ab = 0), to the bit: its
+    terms in rb and ab are exact zeros there, which IEEE arithmetic cannot
+    drop by itself (0 x is not 0 for every x), so they are left out; the
+    others keep their order. Only a zero's sign may differ."""
+    sbc = sb * c
+    sbs = sb * s
+    w1cb = w1 * cb
+    w1sbs = w1 * sbs
+    a1cb = a1 * cb
+    w2 = w1cb / D
+    D_rate = 2.0 * sbc * w1sbs
+    a2 = (a1cb - w2 * D_rate) / D
+    W2 = w1sbs / rD
+    W3 = w1cb / rD
+    half_log_rate = 0.5 * D_rate / D
+    dW1 = a2 * sbc - w2 * w1sbs
+    dW2 = (a1 * sbs + w1 * w1 * sbc) / rD - W2 * half_log_rate
+    dW3 = a1cb / rD - W3 * half_log_rate
+    return w2, a2, w2 * sbc, W2, W3, dW1, dW2, dW3
+
+
 def euler_moments(I1, I2, I3, W1, W2, W3, dW1, dW2, dW3):
     """The moments (M1, M2, M3) the yokes exert on the cross: Euler's equations."""
     return (
@@ -249,8 +275,14 @@ def yoke_reactions(M1, M2, M3, s, c, sb, cb, rD, load_torque):
 
 
 def cardan_error_at(xp, s, c, sb, cb):
-    """The cardan error (output angle - input angle) at the pose `pose` gives.
-    1 - cos b is written sin^2 b / (1 + cos b) for full relative precision at
-    small bend; the atan's denominator stays positive below 90 deg, so the
-    cardan error never jumps branch."""
-    return xp.atan(sb * sb / (1.0 + cb) * (s * c) / (cb * c * c + s * s))
+    """The cardan error (output angle - input angle) at the pose `pose` gives:
+    the atan of `cardan_tangent`."""
+    return xp.atan(cardan_tangent(s, c, sb, cb))
+
+
+def cardan_tangent(s, c, sb, cb):
+    """The cardan error's tangent at the pose `pose` gives. 1 - cos b is
+    written sin^2 b / (1 + cos b) for full relative precision at small bend;
+    the denominator stays positive below 90 deg, so the cardan error never
+    jumps branch."""
+    return sb * sb / (1.0 + cb) * (s * c) / (cb * c * c + s * s)

@@ -35,7 +35,7 @@ from ..propshaft.step import (
 SPRING_STATE = ("lag", "stiffness", "damping")
 # `spring_chain_torque`'s step: `chain_torque`'s head without the load, then
 # the spring's (the last shaft's branch shift, lag, output shaft's speed and
-# acceleration, k, c), then the layout and its bends' sines and cosines.
+# acceleration, k, c), then the layout and its sines and cosines (`node_trig`).
 _STEP_HEAD = 13
 
 

@@ -17,14 +17,16 @@ is exact: the power balance T_1 omega_0 = T_L omega_N + dE/dt holds term by term
 Scalars (the FMU, once per step) or numpy arrays (the fluctuation search).
 """
 
+import math
 from typing import Any, NamedTuple
 
 from ...physics._backend import namespace
 from ...physics.response import (
-    cardan_error_at,
-    crosspiece_motion,
+    cardan_tangent,
     euler_moments,
+    pose_at,
     pose_of,
+    steady_crosspiece_motion,
     yoke_reactions,
 )
 from .geometry import HALF_PI, Layout
@@ -78,18 +80,46 @@ def bend_trig(xp, layout):
     return trig
 
 
-def joint_forward(xp, psi, sb, cb, w, a, I1, I2, I3):
-    """(cardan error, output speed and acceleration, the cross's kinetic
-    energy, input torque at no load, speed ratio) of one joint at pin angle
-    `psi`, bend sine `sb` and cosine `cb`, input speed `w` and acceleration
-    `a`: the kernel's (response.py) at a constant bend, from its own parts,
-    so to the bit; the rest of its outputs is not computed."""
-    s, c, sb, cb, D, rD = pose_of(xp, psi, sb, cb)[2:]
-    w2, a2, W1, W2, W3, dW1, dW2, dW3 = crosspiece_motion(s, c, sb, cb, D, rD, w, a, 0.0, 0.0)
+def node_trig(layout):
+    """What a life node's chain (`node_forward`) takes from the layout, once a
+    step: each joint's (sin beta_k, cos beta_k, sin Delta_k, cos Delta_k),
+    Delta_k = c_k + pi/2 + phi_k + b_k - b_(k+1) the turn from its pin angle to
+    the next joint's, psi_(k+1) - psi_k, less its cardan error e_k; the last
+    joint turns to no pin: Delta = 0."""
+    trig = bend_trig(math, layout)
+    nodes = ()
+    for k in range(1, len(layout) // LAYOUT_FIELDS):
+        joint = layout[LAYOUT_FIELDS * (k - 1) : LAYOUT_FIELDS * k]
+        following = layout[LAYOUT_FIELDS * k : LAYOUT_FIELDS * (k + 1)]
+        pins = joint[PIN_OFFSET] - following[PIN_OFFSET]
+        turn = joint[TWIST] + HALF_PI + following[PHASE] + pins
+        nodes = nodes + trig[2 * k - 2 : 2 * k] + (math.sin(turn), math.cos(turn))
+    return nodes + trig[len(trig) - 2 :] + (0.0, 1.0)
+
+
+def pin_turned(s, c, sine, cosine, tangent):
+    """(sin, cos) of psi + Delta + e from psi's `s` and `c`, Delta's `sine` and
+    `cosine` and e's `tangent` (|e| < 90 deg): cos e = 1 / sqrt(1 + tan^2 e)
+    and sin e = tan e cos e, so no trigonometric call."""
+    root = math.sqrt(1.0 + tangent * tangent)
+    turn_cosine = (cosine - sine * tangent) / root
+    turn_sine = (sine + cosine * tangent) / root
+    return s * turn_cosine + c * turn_sine, c * turn_cosine - s * turn_sine
+
+
+def joint_forward(xp, s, c, sb, cb, w, a, I1, I2, I3):
+    """(the cardan error's tangent, output speed and acceleration, the
+    cross's kinetic energy, input torque at no load, speed ratio) of one joint
+    at pin angle sine `s` and cosine `c`, bend sine `sb` and cosine `cb`,
+    input speed `w` and acceleration `a`: the kernel's (response.py) at a
+    constant bend, from its own parts, so to the bit; the rest of its outputs
+    is not computed."""
+    s, c, sb, cb, D, rD = pose_at(xp, s, c, sb, cb)
+    w2, a2, W1, W2, W3, dW1, dW2, dW3 = steady_crosspiece_motion(s, c, sb, cb, D, rD, w, a)
     M1, M2, M3 = euler_moments(I1, I2, I3, W1, W2, W3, dW1, dW2, dW3)
     energy = 0.5 * (I1 * W1 * W1 + I2 * W2 * W2 + I3 * W3 * W3)
     torque = yoke_reactions(M1, M2, M3, s, c, sb, cb, rD, 0.0)[2]
-    return cardan_error_at(xp, s, c, sb, cb), w2, a2, energy, torque, cb / D
+    return cardan_tangent(s, c, sb, cb), w2, a2, energy, torque, cb / D
 
 
 def chain_forward(xp, angle, angle_error, speed, acceleration, layout, trig, I1, I2, I3):
@@ -102,18 +132,59 @@ def chain_forward(xp, angle, angle_error, speed, acceleration, layout, trig, I1,
     forward = ()
     for k in range(len(layout) // LAYOUT_FIELDS):
         joint = layout[LAYOUT_FIELDS * k : LAYOUT_FIELDS * (k + 1)]
-        phase = joint[PHASE]
-        psi = angle + (angle_error + (offset + k * HALF_PI + phase - joint[PIN_OFFSET]))
-        error, w, a, crosspiece, torque, ratio = joint_forward(
-            xp, psi, trig[2 * k], trig[2 * k + 1], w, a, I1, I2, I3
-        )
-        offset = offset + phase + joint[TWIST] + error
+        psi = pin_angle(angle, angle_error, offset, k, joint)
+        sb, cb = trig[2 * k], trig[2 * k + 1]
+        s, c = pose_of(xp, psi, sb, cb)[2:4]
+        tangent, w, a, crosspiece, torque, ratio = joint_forward(xp, s, c, sb, cb, w, a, I1, I2, I3)
+        offset = offset + joint[PHASE] + joint[TWIST] + xp.atan(tangent)
         energy = energy + crosspiece
         forward = forward + (offset, w, a, psi, torque, ratio)
+    return forward + (shafts_energy(forward, layout, energy),)
+
+
+def node_forward(angle, angle_error, speed, acceleration, layout, trig, I1, I2, I3):
+    """`chain_forward`'s values at a life node (floats) with one sine and
+    cosine for the whole chain: joint 1's pin angle as there, each next one's
+    psi_(k+1) = psi_k + Delta_k + e_k by the addition formulas (`pin_turned`)
+    from psi_k's, Delta_k's (`node_trig`'s, once a step) and the cardan error
+    e_k's tangent. Each offset o_k takes e_1 + .. + e_k as one atan of their
+    tangents' sum (tan(x + y) = (tan x + tan y) / (1 - tan x tan y); the sum
+    stays below 90 deg), which the compiler drops where no one reads it
+    (`codegen.FLOAT_FLAGS`): a propshaft's torques read none, the spring's
+    the last. Equal to `chain_forward`'s to a few ulps."""
+    offset, fixed, tangent, w, a, energy = 0.0, 0.0, 0.0, speed, acceleration, 0.0
+    s, c = 0.0, 1.0
+    forward = ()
+    for k in range(len(layout) // LAYOUT_FIELDS):
+        joint = layout[LAYOUT_FIELDS * k : LAYOUT_FIELDS * (k + 1)]
+        psi = pin_angle(angle, angle_error, offset, k, joint)
+        sb, cb = trig[4 * k], trig[4 * k + 1]
+        if k == 0:
+            s, c = pose_of(math, psi, sb, cb)[2:4]
+        error, w, a, crosspiece, torque, ratio = joint_forward(math, s, c, sb, cb, w, a, I1, I2, I3)
+        fixed = fixed + joint[PHASE] + joint[TWIST]
+        tangent = error if k == 0 else (tangent + error) / (1.0 - tangent * error)
+        offset = fixed + math.atan(tangent)
+        energy = energy + crosspiece
+        forward = forward + (offset, w, a, psi, torque, ratio)
+        if LAYOUT_FIELDS * (k + 1) < len(layout):
+            s, c = pin_turned(s, c, trig[4 * k + 2], trig[4 * k + 3], error)
+    return forward + (shafts_energy(forward, layout, energy),)
+
+
+def pin_angle(angle, angle_error, offset, k: int, joint):
+    """Joint k's pin angle psi_k (from 0; `joint` its `LAYOUT_FIELDS`) at input
+    angle `angle` (+ `angle_error`), the offset before it o_(k-1) = `offset`."""
+    return angle + (angle_error + (offset + k * HALF_PI + joint[PHASE] - joint[PIN_OFFSET]))
+
+
+def shafts_energy(forward, layout, energy):
+    """The chain's kinetic energy: the crosspieces' `energy` plus each
+    intermediate shaft's at its speed in `forward` (`CHAIN_FIELDS` a joint)."""
     for k in range(1, len(layout) // LAYOUT_FIELDS):
         w = forward[CHAIN_FIELDS * (k - 1) + SPEED]
         energy = energy + 0.5 * layout[LAYOUT_FIELDS * k + INERTIA] * w * w
-    return forward + (energy,)
+    return energy
 
 
 def chain_backward(forward, layout, load_torque):

@@ -29,10 +29,10 @@ from .chain import (
     SPEED,
     TORQUE,
     WORKING_ANGLE,
-    bend_trig,
     chain_backward,
-    chain_forward,
     chain_values,
+    node_forward,
+    node_trig,
 )
 from .variables import propshaft_table
 
@@ -45,10 +45,10 @@ _INPUT_MOMENT, _OUTPUT_MOMENT = (
 )
 # `chain_torque`'s step: (the input angle's fraction and error, the input
 # speed and acceleration at the step's start, the cross's inertias, the load),
-# then the layout and its bends' sines and cosines (`chain_damages`): seven
+# then the layout and `node_trig`'s sines and cosines (`chain_damages`): nine
 # numbers a joint.
 _STEP_HEAD = 8
-_JOINT_FIELDS = LAYOUT_FIELDS + 2
+_JOINT_FIELDS = LAYOUT_FIELDS + 4
 
 
 def state_names(joints: int) -> tuple[str, ...]:
@@ -104,20 +104,20 @@ def chain_torque(t, step):
 
 
 def chain_at(t, step, layout, trig):
-    """The chain's load-free pass (`chain_forward`) t s into the step: `step`
-    starts with the input angle's fraction and error, the input speed and
-    acceleration at the step's start and the cross's inertias; `trig` the
-    bends' sines and cosines (`step_layout`'s tail)."""
+    """The chain's load-free pass at a life node (`node_forward`) t s into the
+    step: `step` starts with the input angle's fraction and error, the input
+    speed and acceleration at the step's start and the cross's inertias;
+    `trig` is `node_trig`'s (`step_layout`'s tail)."""
     fraction, error, speed, acceleration, I1, I2, I3 = step[:7]
-    return chain_forward(
-        math, fraction, error + t * (speed + 0.5 * acceleration * t), speed + acceleration * t,
+    return node_forward(
+        fraction, error + t * (speed + 0.5 * acceleration * t), speed + acceleration * t,
         acceleration, layout, trig, I1, I2, I3,
     )  # fmt: skip
 
 
 def step_layout(tail):
-    """The layout in the tail of a `chain_damages` step, after its head: the
-    bends' sines and cosines follow it."""
+    """The layout in the tail of a `chain_damages` step, after its head:
+    `node_trig`'s sines and cosines follow it."""
     return tail[: LAYOUT_FIELDS * (len(tail) // _JOINT_FIELDS)]
 
 
@@ -127,7 +127,7 @@ def chain_damages(rule, h, torques_at, fraction, error, speed, acceleration, cro
     `fraction` (+ `error`), the input shaft at `speed` and constant
     `acceleration`: `torques_at(t, step)` gives every joint's (T_k, input
     shaft speed), step = (fraction, error, speed, acceleration, the cross's
-    inertias, *`load`) + layout + its bends' sines and cosines (`bend_trig`);
+    inertias, *`load`) + layout + its sines and cosines (`node_trig`);
     `load` the held load (`chain_torque`) or the
     parameters of a load that follows the motion. The joints share the nodes
     (`step_integrals`) and the singularities of the largest working angle."""
@@ -138,7 +138,7 @@ def chain_damages(rule, h, torques_at, fraction, error, speed, acceleration, cro
     for k in range(1, len(bends)):
         peak = max(peak, bends[k])
     step = (fraction, error, speed, acceleration, *crosspiece, *load) + layout
-    step = step + bend_trig(math, layout)
+    step = step + node_trig(layout)
     integrals = step_integrals(
         torques_at, step, h, speed, acceleration, bends, 0.0, 0.0, rule.min_angle, rule.exponent,
         singularity_reach(peak),
