@@ -13,7 +13,13 @@ from cardan_joint.models.propshaft import step as propshaft_step
 from cardan_joint.models.universal_joint.model import CardanJoint
 from cardan_joint.physics import life_foresight, life_integral, life_torque, life_zeros
 from cardan_joint.physics.life_nodes import COEFFICIENTS, PANEL_FIELDS, panel
-from cardan_joint.physics.life_panel import node_time, substitution_power
+from cardan_joint.physics.life_panel import (
+    error_budget,
+    node_time,
+    points_for,
+    substitution_power,
+    zero_free_log_rho,
+)
 from cardan_joint.physics.quadrature import GAUSS_NODES, JACOBI_NODES
 
 P = 10.0 / 3.0
@@ -85,6 +91,40 @@ def test_a_panel_is_foreseen_from_the_plain_panel_about_it():
             own = taken[PANEL_FIELDS * k + COEFFICIENTS : PANEL_FIELDS * k + COEFFICIENTS + 4]
             for a, b in zip(foreseen[4 * k : 4 * k + 4], own):
                 assert math.isclose(a, b, abs_tol=1e-10)
+
+
+def test_a_joint_zero_free_where_the_panels_points_need_asks_no_more():
+    # The foresight checks each joint's cubic on the ellipse its points need
+    # before it solves for the cubic's own reach: the same points as solving
+    # for every joint (points_for of the nearer of the singularities and the
+    # zeros), at least the panel's.
+    rng = random.Random(11)
+    budget = error_budget(P)
+    for _ in range(2000):
+        guide = ()
+        for _ in range(2):
+            a0 = rng.choice((-1.0, 1.0)) * rng.uniform(0.1, 2.0)
+            spread = tuple(
+                rng.uniform(-1.0, 1.0) * abs(a0) * rng.choice((0.01, 0.2, 0.6)) for _ in range(3)
+            )
+            guide = guide + (0.0, 0, 0.0, 0.0, a0) + spread + (0.0,)
+        lo = rng.uniform(0.0, 0.5)
+        hi = rng.uniform(lo + 0.01, 1.0)
+        zero, divides = rng.choice(((0, 0), (1, 1), (-1, 2)))
+        degree, carried = (0.0, 0.0) if zero == 0 else (12.0, 2.0)
+        singular = rng.uniform(0.3, 4.0)
+        # At least what the singularities ask, as the march sizes it (or what a
+        # failed panel asked for).
+        points = max(points_for(singular, budget, degree), rng.randint(4, 20))
+        found = life_foresight.points_foreseen(guide, 0.0, 1.0, lo, hi, zero, 3.0, divides, points,
+                                               singular, budget, degree, carried)  # fmt: skip
+        cubics = life_foresight.cubics_foreseen(guide, 0.0, 1.0, lo, hi, zero, 3.0, divides)
+        wanted = points
+        for k in range(2):
+            low = zero_free_log_rho(cubics[4 * k : 4 * k + 4] + (0.0,), 20, False)[0]
+            power = degree if k == divides - 1 else carried
+            wanted = max(wanted, points_for(min(singular, low), budget, power))
+        assert found == wanted
 
 
 def test_a_panel_keeps_the_torques_a_zeros_search_starts_from():

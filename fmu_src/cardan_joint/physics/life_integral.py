@@ -166,7 +166,7 @@ def step_integrals(torques_at, step, h, w1, a1, bends, rb, ab, min_angle, p, rea
         # near it asks a substituted panel for more points or a halving.
         carried = q - 1.0 if zero != 0 else 0.0
         if guide_lo <= t and hi <= guide_hi:
-            foreseen = points_foreseen(guide, guide_lo, guide_hi, t, hi, zero, q, divides,
+            foreseen = points_foreseen(guide, guide_lo, guide_hi, t, hi, zero, q, divides, n,
                                        singular, sized, degree, carried)  # fmt: skip
             if foreseen > MAX_POINTS and hi - t >= _UNSEEN_HALVING * (guide_hi - guide_lo):
                 length = 0.5 * (hi - t)
