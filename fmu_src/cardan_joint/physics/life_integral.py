@@ -7,8 +7,9 @@ each event and every piece between them is covered by Gauss-Legendre panels
 (`life_panel`), marching from its start: a panel whose error bound asks for
 more points than it has is taken again with them, or cut at the torque's
 sign change it shows (`life_zeros`, which keeps the next zero it shows for
-later), or halved; a plain panel inside one that failed takes the points
-that one's cubic foresees. So a piece costs one panel unless it is longer
+later), or halved; a panel inside a plain one that failed, plain or
+substituted at a zero, takes the points that one's cubic foresees
+(`life_foresight`). So a piece costs one panel unless it is longer
 than the torque's singularities' reach, and each event costs its location
 and a few panels more.
 
@@ -25,10 +26,10 @@ torque and input speed t s into the step.
 
 import math
 
+from .life_foresight import points_foreseen
 from .life_nodes import (
     filled,
     panel,
-    points_foreseen,
     scales_raised,
     totals_added,
     unseen_panel,
@@ -52,7 +53,7 @@ FLAT_REACH = math.acosh(1e3)
 _MAX_ATTEMPTS = 4096
 # A panel this short against the step is taken as it is.
 _SHORTEST = 1e-13
-# A plain panel that the panel about it foresees to need a cut is halved
+# A panel that the plain panel about it foresees to need a cut is halved
 # before it is taken, down to this share of that panel (`points_foreseen`):
 # the foresight reads only a cubic, so it halves no further unseen.
 _UNSEEN_HALVING = 0.25
@@ -160,10 +161,13 @@ def step_integrals(torques_at, step, h, w1, a1, bends, rb, ab, min_angle, p, rea
         # A substituted panel's points carry the substitution's: a plain one's
         # are not like them, nor the other way round.
         n = max(points if (zero != 0) == substituted else 0, points_for(singular, sized, degree))
-        # Only a plain panel (Gauss-Legendre, `sized` the plain budget) is
-        # foreseen, and only from a plain one: `guide` is never weighted.
-        if zero == 0 and guide_lo <= t and hi <= guide_hi:
-            foreseen = points_foreseen(guide, guide_lo, guide_hi, t, hi, singular, sized)
+        # A panel inside the last plain panel that failed is foreseen from it,
+        # plain or substituted at a zero: next to a zero, another joint's zero
+        # near it asks a substituted panel for more points or a halving.
+        carried = q - 1.0 if zero != 0 else 0.0
+        if guide_lo <= t and hi <= guide_hi:
+            foreseen = points_foreseen(guide, guide_lo, guide_hi, t, hi, zero, q, divides, n,
+                                       singular, sized, degree, carried)  # fmt: skip
             if foreseen > MAX_POINTS and hi - t >= _UNSEEN_HALVING * (guide_hi - guide_lo):
                 length = 0.5 * (hi - t)
                 continue
@@ -173,7 +177,6 @@ def step_integrals(torques_at, step, h, w1, a1, bends, rb, ab, min_angle, p, rea
         values = panel(torques_at, step, t, hi, zero, divides, q, n, weighted, bends, rb, ab,
                        min_angle, p)  # fmt: skip
         scales = scales_raised(scales, totals, values)
-        carried = q - 1.0 if zero != 0 else 0.0
         failing, wanted = verdict(values, scales, n, sized, degree, carried, singular, divides)
         if failing == 0 or hi - t <= _SHORTEST * h:
             totals = totals_added(totals, values)

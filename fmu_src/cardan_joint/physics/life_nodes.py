@@ -234,32 +234,3 @@ def verdict(values, scales, n: int, budget, degree, carried, singular, divides: 
             failing = failing | (1 << k)
             wanted = 0 if points == 0 or wanted == 0 else max(wanted, points)
     return failing, wanted
-
-
-def _restricted(coefficients, middle, radius):
-    """The Legendre coefficients a_0..a_3 on the part [middle - radius, middle +
-    radius] (in the panel's x in [-1, 1]) of the cubic a_0..a_3 on the panel."""
-    a0, a1, a2, a3 = coefficients[0], coefficients[1], coefficients[2], coefficients[3]
-    c0, c1, c2, c3 = a0 - 0.5 * a2, a1 - 1.5 * a3, 1.5 * a2, 2.5 * a3
-    d1 = radius * (c1 + middle * (2.0 * c2 + 3.0 * c3 * middle))
-    d2 = radius * radius * (c2 + 3.0 * c3 * middle)
-    b3 = radius * radius * radius * c3 / 2.5
-    b2 = d2 / 1.5
-    return c0 + middle * (c1 + middle * (c2 + middle * c3)) + 0.5 * b2, d1 + 1.5 * b3, b2, b3
-
-
-def points_foreseen(guide, lo, hi, part_lo, part_hi, singular, budget):
-    """The points a plain panel on [part_lo, part_hi] is likely to ask for,
-    foreseen from the cubic part of every joint's torque on the plain panel
-    [lo, hi] about it whose values are `guide` (a panel that failed): the
-    most that any joint's zeros ask for (`points_for`; MAX_POINTS + 1 if they
-    allow no rule: a cut). A guess only, that saves taking the panel twice:
-    the verdict judges the panel."""
-    middle = (part_lo + part_hi - lo - hi) / (hi - lo)
-    radius = (part_hi - part_lo) / (hi - lo)
-    wanted = 0
-    for k in range(len(guide) // PANEL_FIELDS):
-        cubic = guide[PANEL_FIELDS * k + COEFFICIENTS : PANEL_FIELDS * k + COEFFICIENTS + 4]
-        low = zero_free_log_rho(_restricted(cubic, middle, radius) + (0.0,), MAX_POINTS, False)[0]
-        wanted = max(wanted, points_for(min(singular, low), budget, 0.0))
-    return wanted
