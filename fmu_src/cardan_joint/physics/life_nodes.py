@@ -16,13 +16,12 @@ sums q A_k |w_k| |T_k / u^q|^p, and its coefficients are read off the same
 values by the Gauss-Jacobi tables.
 """
 
-import math
-
 from .life_panel import (
     log_rho_required,
     node_time,
     points_for,
     power_of,
+    target_share,
     weighted_share,
     whole_power,
     zero_free_log_rho,
@@ -199,7 +198,7 @@ def _joint_needs(value, change: int, coefficients, scale, n: int, budget, degree
     for: as many as its zeros ask if they allow the largest rule, or twice as
     many while its highest coefficient is not yet resolved; 0 when it needs a
     cut at a zero, or halving)."""
-    share = math.log(scale / value) if scale > value > 0.0 else 0.0
+    share = target_share(scale, value)
     required = log_rho_required(n, budget - share, degree)
     if (
         change == 0

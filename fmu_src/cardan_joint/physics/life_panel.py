@@ -3,10 +3,15 @@
 
 The bound (Bernstein ellipse): with the integrand analytic and at most M
 inside the ellipse E_rho about a panel (foci at its ends, rho the sum of its
-semi-axes over the half-length), n points err by at most
-(32/15) M rho^-2n / (rho^2 - 1) times the half-length; against the panel's
-integral (the mean times the length), (32/15) (M / mean) rho^-2n / (rho^2 - 1),
-and rho^2 - 1 > 1 wherever the bound is met. Two things limit rho:
+semi-axes over the half-length), its Chebyshev coefficients on the panel are
+at most 2 M rho^-k. The n-point rule is exact below degree 2n and, its nodes
+symmetric, for every odd degree; an even T_k integrates to -2 / (k^2 - 1)
+over [-1, 1] and the rule (positive weights summing to 2) gives at most 2. So
+n points err by at most the sum over even k >= 2n of 2 M rho^-k (2 + 2 /
+(k^2 - 1)): against the panel's integral (twice its mean), c (M / mean)
+rho^-2n / (1 - rho^-2), c = 2 (1 + 1 / (4 n^2 - 1)) <= 128/63 at n >= 4.
+(Ending in rho^-2n / (rho^2 - 1), as for n + 1 points, misses by rho^2.)
+Two things limit rho:
 
 - the torque's singularities (D = 0): none lies within `tau` s of a point of
   the step (`life.singularity_reach`). A plain panel's E_rho lies within its
@@ -24,12 +29,29 @@ and rho^2 - 1 > 1 wherever the bound is met. Two things limit rho:
   interpolant through the n values: the bound is T's as far as that
   interpolant stands for T on E_rho, which the highest coefficient's share
   and the singularities' reach see to (not a proof: the tests measure the
-  rest, below 1e-13 of a step).
+  rest, a few 1e-12 of a step at most).
+
+M / mean takes 1.9^p for |T|^p and 4 for the angle's and the speed's
+variation over the ellipse against their mean (`_VARIATION`, assumed, not
+derived). With s = log rho, n points meet the bound when 2 n s - X(s) >= B,
+B = log(4 c / target) + p log 1.9 (`error_budget`) and X(s) the log of the
+factors that change with rho: the tail 1 / (1 - rho^-2) and a substituted
+panel's power (below), derived and solved for s in `life_ellipse`.
+
+Each panel's bound is asked below the larger of `_OWN_TARGET` of its own
+integral and `_STEP_TARGET` of the step's integral known from below
+(`target_share`): over a step's N panels the bounds sum to at most 2e-10 + N
+8e-12 of the step's integral, within the contract's 1e-9 up to N = 100 (a
+few tens at most, but for steps of many turns).
 
 At a torque zero t0 the panel substitutes t = t0 + L u^q: |T|^p ~ |t - t0|^p
 becomes u^gamma (gamma = q (p + 1) - 1 >= 10) times a smooth factor. That
-factor is T / u^q, whose coefficients the check reads; under Gauss-Legendre
-u^gamma adds its degree to the points and (gamma + 1) to M / mean. In u the
+factor is T / u^q, whose coefficients the check reads. Under Gauss-Legendre
+u^gamma stays in the integrand: its largest modulus on E_rho is cosh(s /
+2)^(2 gamma), some 4^gamma below rho^gamma, and its mean 1 / (gamma + 1)
+(`life_ellipse`; the smooth factor's mean, a_0 under Lebesgue's measure,
+stands for its mean under u^gamma). The joints a chain's panel does not
+divide carry the Jacobian's u^(q - 1) alike (gamma = q - 1). In u the
 singularities lie nearer: a distance tau from t0 is only (tau / L)^(1/q) in u.
 
 Where every joint's torque is divided by u^q and gamma is the tabulated 12
@@ -40,11 +62,11 @@ n-point rule has positive weights summing to W = 1 / (gamma + 1) and is exact
 for f's Chebyshev terms of degree < 2n (on u = (1 + x) / 2), each at most
 2 M rho^-k on [0, 1] with M = max |f| on E_rho; both the integral and the
 rule take a term |T_k| <= 1 to at most W, so the error is at most 2 W sum_{k
->= 2n} 2 M rho^-k = 4 W M rho^-2n rho / (rho - 1). Against the panel's
-integral W mean_w f (mean_w the mean under u^gamma): 4 (M / mean_w f)
-rho^-2n rho / (rho - 1), and rho / (rho - 1) < 2 wherever the bound is met
-(log rho > budget / (2 `MAX_POINTS`) > log 2): 8 where Gauss-Legendre has
-32/15 (`_WEIGHTED_FACTOR`). M / mean_w f takes the same 4 for the angle and
+>= 2n} 2 M rho^-k = 4 W M rho^-2n / (1 - 1 / rho) = 4 (1 + 1 / rho) W M
+rho^-2n / (1 - rho^-2) <= 8 W M rho^-2n / (1 - rho^-2). Against the panel's
+integral W mean_w f (mean_w the mean under u^gamma): 8 (M / mean_w f)
+rho^-2n / (1 - rho^-2), Gauss-Legendre's with 8 for c (`_WEIGHTED_FACTOR`).
+M / mean_w f takes the same 4 for the angle and
 the speed and 1.9^p for |T / u^q|^p: its maximum on E_rho is at most (|a_0|
 + 0.9 s)^p when the check holds with the share s of a_0 (`weighted_share`),
 its weighted mean at least |b_0|^p (Jensen under u^gamma), b_0 the weighted
@@ -55,19 +77,21 @@ makes the ratio 1.9^p. The residue u^(gamma - 12) of a gamma rounded off 12
 
 import math
 
+from .life_ellipse import bound_excess, log_rho_above
 from .quadrature import (
     JACOBI_POWER,
     MAX_POINTS,
     MIN_POINTS,
 )
 
-# Each panel's error bound, relative to the step's integral: the contract's
-# 1e-9 per step over the 100 panels a step may take (a few tens at most, but
-# for steps of many turns); the bound is far from tight (observed < 1e-13).
-_TARGET = 1e-11
-# The bound's factors besides rho^-2n, 1.9^p and (gamma + 1): 32/15, and 4 for
-# the angle's and the speed's variation over the ellipse against their mean.
-_BOUND_FACTOR = 32.0 / 15.0 * 4.0
+# Each panel's error bound against its own integral, and against the step's
+# known from below (the module's allocation; the bound is far from tight).
+_OWN_TARGET = 2e-10
+_STEP_TARGET = 8e-12
+_OWN_SHARE = math.log(_OWN_TARGET / _STEP_TARGET)
+# The rule's factor c at the fewest points, and the angle's and the speed's 4.
+_LEGENDRE_FACTOR = 2.0 * (1.0 + 1.0 / (4.0 * MIN_POINTS * MIN_POINTS - 1.0))
+_VARIATION = 4.0
 # |T - a_0| on the ellipse: a_1..a_3 take 0.8 |a_0|, a_(n-1) the last 0.1 |a_0|.
 _LOW_TERMS = 0.8
 _TOP_TERM = 0.1
@@ -77,11 +101,16 @@ _NEWTON_STEPS = 8
 _TOWARDS_SINGULARITY = 0.75
 # The substituted power at a torque zero: gamma = q (p + 1) - 1 at least this.
 _SMOOTH_POWER = 10.0
-# The Gauss-Jacobi bound's factor against Gauss-Legendre's: 8 / (32/15).
-_WEIGHTED_FACTOR = 8.0 / (32.0 / 15.0)
+# The Gauss-Jacobi bound's factor against Gauss-Legendre's: 8 / c.
+_WEIGHTED_FACTOR = 8.0 / _LEGENDRE_FACTOR
 # How far gamma may lie from the tabulated rule's power (the residue u^(gamma -
 # 12) is then 1 within 1e-12 |log u|; 3 (10/3 + 1) - 1 rounds 2e-15 off 12).
 _SAME_POWER = 1e-12
+# `log_rho_required`'s Newton steps for a power (one takes a start a few 0.1
+# off the root within a few 1e-2; a second changed no panel's points).
+_SOLVE_STEPS = 1
+# The largest log rho `points_for` reads (exp(700) is finite).
+_FAREST = 700.0
 
 
 def substitution_power(p):
@@ -91,8 +120,18 @@ def substitution_power(p):
 
 
 def error_budget(p):
-    """log of the bound's factors for exponent p (all but rho and gamma's)."""
-    return math.log(_BOUND_FACTOR / _TARGET) + p * math.log(_GROWTH)
+    """B, the log of the bound's factors for exponent p over a panel's own
+    target (all but those that change with rho)."""
+    return math.log(_LEGENDRE_FACTOR * _VARIATION / _OWN_TARGET) + p * math.log(_GROWTH)
+
+
+def target_share(scale, value):
+    """What a panel whose integral is `value` may take off the budget when the
+    step's integral is at least `scale`: its bound is then asked below the
+    larger of `_OWN_TARGET` of its value and `_STEP_TARGET` of the scale."""
+    if scale > value > 0.0:
+        return max(math.log(scale / value) - _OWN_SHARE, 0.0)
+    return 0.0
 
 
 def rule_sizing(zero: int, divides: int, joints: int, q, gamma, budget):
@@ -129,20 +168,23 @@ def singular_log_rho(length, tau, stretch):
 
 
 def points_for(log_rho, budget, gamma):
-    """The points that bring the bound below `_TARGET` on E_rho (rho =
+    """The points that bring the bound below its target on E_rho (rho =
     exp(`log_rho`)), gamma the substituted power (0 if none); MAX_POINTS + 1
     if more than the largest rule."""
     if log_rho <= 0.0:
         return MAX_POINTS + 1
-    need = (budget + math.log(gamma + 1.0)) / (2.0 * log_rho) + 0.5 * gamma
+    # Beyond, rho overflows; fewer rho asks for more points: the safe side.
+    log_rho = min(log_rho, _FAREST)
+    need = (budget + bound_excess(log_rho, gamma)[0]) / (2.0 * log_rho)
     if need > MAX_POINTS:
         return MAX_POINTS + 1
     return max(MIN_POINTS, math.ceil(need))
 
 
 def log_rho_required(points, budget, gamma):
-    """The log rho with which `points` points meet the bound (`points_for`'s inverse)."""
-    return (budget + math.log(gamma + 1.0)) / (2.0 * (points - 0.5 * gamma))
+    """The log rho with which `points` points meet the bound (`points_for`'s
+    inverse), never below the root but by its rounding (`life_ellipse`)."""
+    return log_rho_above(points, budget, gamma, _SOLVE_STEPS)
 
 
 def longest_panel(tau, budget, gamma, stretch):
@@ -150,7 +192,7 @@ def longest_panel(tau, budget, gamma, stretch):
     go (`singular_log_rho`'s inverse at the largest rule's log rho)."""
     if tau == math.inf:
         return math.inf
-    per_point = (budget + math.log(gamma + 1.0)) / (2.0 * (MAX_POINTS - 0.5 * gamma))
+    per_point = log_rho_above(MAX_POINTS, budget, gamma, 0)
     if stretch == 1.0:
         return 2.0 * tau / math.sinh(per_point / _TOWARDS_SINGULARITY)
     return tau / whole_power(0.5 * (1.0 + math.cosh(per_point / _TOWARDS_SINGULARITY)), stretch)
