@@ -58,6 +58,8 @@ def log_rho_above(points, budget, gamma, steps: int):
     if least_slope <= 0.0:
         return math.inf
     s = budget / least_slope
+    if gamma == 0.0 and s > 0.0:  # on the left, X' < 0: the last step alone
+        return s + bound_excess(s, 0.0)[0] / least_slope
     if gamma != 0.0:
         # G(s) <= (2n - gamma) s + 2 gamma log 2 - log(gamma + 1).
         s += (math.log(gamma + 1.0) - 2.0 * gamma * _LOG_TWO) / least_slope
