@@ -2,7 +2,8 @@
 
 The integrand A(t) |w(t)| |T(t)|^p is smooth except at the step's events: the
 speed's zero and the bend crossing +-A_min (closed forms) and the torque's
-zeros (located to the last bits as the panels meet them). The step is cut at
+zeros (located as the panels meet them, as exactly as a panel substituted
+there needs: `life_zeros`). The step is cut at
 each event and every piece between them is covered by Gauss-Legendre panels
 (`life_panel`), marching from its start: a panel whose error bound asks for
 more points than it has is taken again with them, or cut at the torque's
