@@ -39,7 +39,7 @@ def test_the_motion_at_a_constant_bend_is_the_kernels_to_the_bit():
 
 def test_a_life_nodes_chain_is_the_direct_one_to_a_few_ulps():
     # node_forward takes each pin angle after the first by the addition
-    # formulas and the offsets' errors as one atan of their tangents' sum;
+    # formulas (the offsets add each error's atan, as chain_forward does);
     # chain_forward takes every pin's sine and cosine and every error's atan
     # directly. They differ by no more than chain_forward itself when its
     # input angle moves by a few ulps (scales: 1 for the angles, the speed,
@@ -85,3 +85,31 @@ def test_a_pin_turned_by_the_addition_formulas_is_the_direct_one():
         got = pin_turned(math.sin(psi), math.cos(psi), math.sin(turn), math.cos(turn), tangent)
         angle = psi + turn + math.atan(tangent)
         assert got == pytest.approx((math.sin(angle), math.cos(angle)), abs=4e-15)
+
+
+def test_a_life_nodes_offsets_keep_their_branch_at_every_working_angle_accepted():
+    # Up to the 90 deg the model accepts below, a joint's cardan error nears
+    # 90 deg itself and the errors of joints in phase add up past it: each
+    # offset must still be the direct chain's, not a half turn off (one atan of
+    # the errors' tangents' sum was, or a division by zero). The scale grows
+    # with 1 / cos(bend) per joint, so the angles are compared to 1e-6 rad.
+    rng = np.random.default_rng(14)
+    for _ in range(2000):
+        joints = int(rng.integers(2, 5))
+        values = []
+        for k in range(joints):
+            first = k == 0
+            phase = 0.0 if first else float(rng.choice([0.0, math.pi / 4, rng.uniform(-3.0, 3.0)]))
+            inertia = 0.0 if first else rng.uniform(0.0, 1.0)
+            values += [rng.uniform(math.radians(60.0), math.radians(89.0)), 0.0, 0.0, phase,
+                       inertia]  # fmt: skip
+        layout_ = tuple(float(v) for v in values)
+        angle = rng.uniform(0.0, 2.0 * math.pi)
+        direct = chain_forward(
+            math, angle, 0.0, 100.0, 0.0, layout_, bend_trig(math, layout_), 0.0, 0.0, 0.0
+        )
+        nodes = node_forward(angle, 0.0, 100.0, 0.0, layout_, node_trig(layout_), 0.0, 0.0, 0.0)
+        for k in range(joints):
+            for field in (0, 3):  # the offset o_k and the pin angle psi_k
+                at = CHAIN_FIELDS * k + field
+                assert abs(nodes[at] - direct[at]) < 1e-6, (k, field, nodes[at], direct[at])

@@ -18,10 +18,11 @@ most p |c| (|T| + |c|)^(p-1) A |w|, which the integral and the rule alike
 integral, M_p the step's p-mean torque (int A |w| |T|^p / int A |w|)^(1/p).
 The search ends once |T| is `SETTLED_ZERO` of the larger torque it starts
 from, at nodes of the step, of M_p's order (1.55 M_p where T is linear
-across the step): 1e-12 of the step's integral, under the 1e-11 a panel may
-err by. Where the torque's rounding hides its zero above that share, the
-search ends within the rounding, which the integrand carries at every node
-anyway.
+across the step): 1e-12 of the step's integral, below the least a panel may
+err by (8e-12 of the step's, `life_panel.target_share`) and far below what its
+bound, loose by orders, lets it err. Where the torque's rounding hides its
+zero above that share, the search ends within the rounding, which the
+integrand carries at every node anyway.
 """
 
 import math
@@ -36,9 +37,10 @@ _ROOT_STEPS = 200
 _ROOT_TOLERANCE = 2.0 * 2.220446049250313e-16
 _TINY_TIME = 1e-300
 # A zero is located once its torque is within this share of the larger of
-# the two the search starts from (the module's bound), or its bracket within a
-# quarter of it of the first bracket's width (the same torque where T is
-# linear across that bracket, as between two neighbouring nodes).
+# the two the search starts from (the module's bound), or its bracket within
+# half of a quarter of it of the first bracket's width (about the same torque
+# where T is nearly linear across that bracket, as between two neighbouring
+# nodes of a panel whose cubic fits; more where T curves strongly).
 SETTLED_ZERO = 1e-13
 _SETTLED_BRACKET = 0.25 * SETTLED_ZERO
 # A step from the best point this small against the first bracket is where T

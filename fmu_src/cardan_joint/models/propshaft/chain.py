@@ -147,12 +147,13 @@ def node_forward(angle, angle_error, speed, acceleration, layout, trig, I1, I2, 
     cosine for the whole chain: joint 1's pin angle as there, each next one's
     psi_(k+1) = psi_k + Delta_k + e_k by the addition formulas (`pin_turned`)
     from psi_k's, Delta_k's (`node_trig`'s, once a step) and the cardan error
-    e_k's tangent. Each offset o_k takes e_1 + .. + e_k as one atan of their
-    tangents' sum (tan(x + y) = (tan x + tan y) / (1 - tan x tan y); the sum
-    stays below 90 deg), which the compiler drops where no one reads it
-    (`codegen.FLOAT_FLAGS`): a propshaft's torques read none, the spring's
-    the last. Equal to `chain_forward`'s to a few ulps."""
-    offset, fixed, tangent, w, a, energy = 0.0, 0.0, 0.0, speed, acceleration, 0.0
+    e_k's tangent. Each offset o_k adds its joint's error e_k = atan(tan e_k)
+    as `chain_forward` does (one sum of tangents would leave atan's branch
+    once the errors pass 90 deg together, at working angles the model
+    accepts); the compiler drops the atans where no one reads an offset
+    (`codegen.FLOAT_FLAGS`): a propshaft's torques read none; the spring reads
+    the last, which takes every joint's. Equal to `chain_forward`'s to a few ulps."""
+    offset, w, a, energy = 0.0, speed, acceleration, 0.0
     s, c = 0.0, 1.0
     forward = ()
     for k in range(len(layout) // LAYOUT_FIELDS):
@@ -162,9 +163,7 @@ def node_forward(angle, angle_error, speed, acceleration, layout, trig, I1, I2, 
         if k == 0:
             s, c = pose_of(math, psi, sb, cb)[2:4]
         error, w, a, crosspiece, torque, ratio = joint_forward(math, s, c, sb, cb, w, a, I1, I2, I3)
-        fixed = fixed + joint[PHASE] + joint[TWIST]
-        tangent = error if k == 0 else (tangent + error) / (1.0 - tangent * error)
-        offset = fixed + math.atan(tangent)
+        offset = offset + joint[PHASE] + joint[TWIST] + math.atan(error)
         energy = energy + crosspiece
         forward = forward + (offset, w, a, psi, torque, ratio)
         if LAYOUT_FIELDS * (k + 1) < len(layout):
