@@ -13,6 +13,9 @@ FAST_VALUES = "fmu_src/cardan_joint/fmi/native/fast_values.c"
 LIFE_INTEGRAL = "fmu_src/cardan_joint/physics/life_integral.py"
 LIFE_ZEROS = "fmu_src/cardan_joint/physics/life_zeros.py"
 ZEROS_TESTS = ("tests/unit/test_life_zeros.py",)
+STEADY_CHAIN_TESTS = (
+    "tests/unit/test_chain_life_search.py::test_a_steady_chain_from_a_dead_centre_takes_its_zeros_at_once_and_exactly",
+)
 GENERATED = "fmu_src/cardan_joint/fmi/native/generated.c"
 BIT_TEST = ("tests/unit/test_codegen_joint.py", "-k", "python_steps_bits")
 BUILD_TESTS = "tests/unit/test_codegen_build.py"
@@ -185,6 +188,27 @@ GENERATED_MUTATIONS = (
         "return b if first < b < last else c",
         "return b",
         ZEROS_TESTS,
+    ),
+    Mutation(
+        "life zeros: a torque that vanishes at a panel's end has its zero there",
+        LIFE_ZEROS,
+        "if abs(at_end) * abs(node - end) <= same * abs(at_node - at_end):",
+        "if at_end == 0.0:",
+        STEADY_CHAIN_TESTS,
+    ),
+    Mutation(
+        "life zeros: two joints' zeros a rounding apart are one",
+        LIFE_ZEROS,
+        "SAME_ZERO = 1e-10",
+        "SAME_ZERO = 1e-12",
+        STEADY_CHAIN_TESTS,
+    ),
+    Mutation(
+        "life integral: a zero where the panel starts substitutes it there",
+        LIFE_INTEGRAL,
+        "if (zero_lo | starting) != zero_lo:",
+        "if False:",
+        STEADY_CHAIN_TESTS,
     ),
     Mutation(
         "written step: the step size checked",

@@ -165,10 +165,11 @@ def test_a_weighted_panels_zero_is_searched_between_its_own_nodes():
     assert not gauss[change - 1] < 0.45 < gauss[change]
     assert values[2:4] == (_vanishing_joint(times[change - 1], 0.45)[0],
                            _vanishing_joint(times[change], 0.45)[0])  # fmt: skip
-    root, joints, second, _ = life_zeros.first_zeros(
+    root, joints, second, _, starting = life_zeros.first_zeros(
         _vanishing_joint, 0.45, values, 1, 0.0, 1.0, 1, 1, q, points, True
     )
     assert math.isclose(root, 0.45, rel_tol=1e-15) and joints == 1 and second == math.inf
+    assert starting == 0
 
 
 def test_each_zero_a_panel_shows_is_located_once_and_the_integral_is_exact(monkeypatch):

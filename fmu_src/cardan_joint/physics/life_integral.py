@@ -197,10 +197,14 @@ def step_integrals(torques_at, step, h, w1, a1, bends, rb, ab, min_angle, p, rea
         if wanted != 0:
             length, points, substituted = hi - t, wanted, zero != 0
             continue
-        root, zeros, second, others = first_zeros(
+        root, zeros, second, others, starting = first_zeros(
             torques_at, step, values, failing, t, hi, zero, divides, q, n, weighted
         )
-        if root <= hi:
+        if (zero_lo | starting) != zero_lo:
+            # A torque that vanishes where the panel starts (a step from rest
+            # at a dead centre): its zero is t, where the panel substitutes.
+            zero_lo = zero_lo | starting
+        elif root <= hi:
             # The next zero the panel showed stays known: no panel need show it again.
             if second < later:
                 later, zero_later = second, others

@@ -52,10 +52,13 @@ _ROUNDING_STEP = 1e-6
 # a chain whose torques are all proportional to its load has its joints'
 # zeros at one instant, which their rounding and their searches' settled
 # share (`SETTLED_ZERO` of a bracket within the panel each) spread, and its
-# nodes show them all at once. A joint substituted at a zero this far
-# from its own errs by far less than the bound (its torque's sign differs
-# only below the first node's u^q).
-SAME_ZERO = 1e-12
+# nodes show them all at once; a chain at a steady speed has them a rounding
+# apart (2e-14 s at 30 rad/s), and a torque that starts from its rounding at
+# a dead centre has its zero that close before the step (`_root_by`). A joint
+# substituted at a zero this far from its own errs by far less than the
+# bound: its torque's sign differs only below the first node's u^q, at least
+# 4e-8 of the panel (the largest rule's first node, cubed).
+SAME_ZERO = 1e-10
 
 
 def _root(torques_at, step, joint: int, a, b, fa, fb):
@@ -113,11 +116,15 @@ def _root(torques_at, step, joint: int, a, b, fa, fb):
     return b
 
 
-def _root_by(torques_at, step, joint: int, end, node, at_node):
+def _root_by(torques_at, step, joint: int, end, node, at_node, same):
     """The zero of `joint`'s torque between a panel's `end` and its `node`
-    nearest it (T = `at_node` there), if T's sign differs at the end; else -1."""
+    nearest it (T = `at_node` there), if T's sign differs at the end; the end
+    itself where T's line through the two puts a zero within `same` of it
+    (`SAME_ZERO`: a torque that vanishes at the end to its rounding); else -1."""
     at_end = torque_of(torques_at(end, step), joint)
-    if at_end != 0.0 and at_node != 0.0 and (at_end < 0.0) != (at_node < 0.0):
+    if abs(at_end) * abs(node - end) <= same * abs(at_node - at_end):
+        return end
+    if at_node != 0.0 and (at_end < 0.0) != (at_node < 0.0):
         if end > node:
             return _root(torques_at, step, joint, node, end, at_node, at_end)
         return _root(torques_at, step, joint, end, node, at_end, at_node)
@@ -145,11 +152,11 @@ def _zero_in(torques_at, step, joint: int, lo, hi, zero: int, own: int, q, point
     near_lo, near_hi = (last, first) if zero < 0 else (first, last)
     at_lo, at_hi = (kept_hi, kept_lo) if zero < 0 else (kept_lo, kept_hi)
     if own <= 0:
-        found = _root_by(torques_at, step, joint, lo, near_lo, at_lo)
+        found = _root_by(torques_at, step, joint, lo, near_lo, at_lo, SAME_ZERO * (hi - lo))
         if found >= 0.0:
             return found
     if own >= 0:
-        return _root_by(torques_at, step, joint, hi, near_hi, at_hi)
+        return _root_by(torques_at, step, joint, hi, near_hi, at_hi, SAME_ZERO * (hi - lo))
     return -1.0
 
 
@@ -171,9 +178,11 @@ def first_zeros(torques_at, step, values, failing: int, lo, hi, zero: int, divid
                 points: int, weighted: bool):  # fmt: skip
     """(the first zero in (lo, hi] of a torque whose joint fails on the panel
     and whose values show one, the joints whose zero it is, one bit each,
-    then the next such zero and its joints, which the march keeps for later);
-    inf and 0 for a zero none shows."""
+    then the next such zero and its joints, which the march keeps for later;
+    then the joints whose torque vanishes at lo itself, whose zero is where
+    the panel starts); inf and 0 for a zero none shows."""
     roots = ()  # type: tuple
+    starting = 0
     for k in range(len(values) // PANEL_FIELDS):
         change = values[PANEL_FIELDS * k + 1]
         coefficients = values[PANEL_FIELDS * k + COEFFICIENTS : PANEL_FIELDS * (k + 1)]
@@ -182,8 +191,10 @@ def first_zeros(torques_at, step, values, failing: int, lo, hi, zero: int, divid
             own = zero if divides_at(divides, k) else 0
             root = _zero_in(torques_at, step, k, lo, hi, zero, own, q, points, weighted, change,
                             values[PANEL_FIELDS * k + 2], values[PANEL_FIELDS * k + 3])  # fmt: skip
+            if root == lo:
+                starting = starting | (1 << k)
         roots = roots + (root,)
     same = SAME_ZERO * (hi - lo)
     first, joints = _earliest(roots, lo, same)
     second, others = _earliest(roots, first + same, same)
-    return first, joints, second, others
+    return first, joints, second, others, starting
