@@ -133,3 +133,22 @@ def chain_over_step(shaft, spring=None):
         return chain(shaft.layout, angle, w0 + a0 * t, a0, crosspiece, inertias, load)
 
     return state
+
+
+def chain_evaluations(monkeypatch) -> list:
+    """A list that gains an item at each chain evaluation life's march makes
+    in a propshaft's step (`step_integrals`' torques), from now on."""
+    from cardan_joint.models.propshaft import step as propshaft_step
+
+    calls: list = []
+    original = propshaft_step.step_integrals
+
+    def counting(torques_at, step, *rest):
+        def counted(t, at):
+            calls.append(None)
+            return torques_at(t, at)
+
+        return original(counted, step, *rest)
+
+    monkeypatch.setattr(propshaft_step, "step_integrals", counting)
+    return calls

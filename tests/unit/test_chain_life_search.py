@@ -12,7 +12,7 @@ import math
 import random
 
 import numpy as np
-from life_reference import chain_over_step, damage_quadpack
+from life_reference import chain_evaluations, chain_over_step, damage_quadpack
 from scipy.integrate import quad
 from scipy.optimize import brentq
 
@@ -150,19 +150,7 @@ def test_a_steady_chain_from_a_dead_centre_takes_its_zeros_at_once_and_exactly(m
     # zeros fall 2e-14 s apart. A march that took neither as the zero it is
     # halved towards it until it ran out of panels: 81,000 evaluations in
     # such steps, 1,630 a step on average.
-    from cardan_joint.models.propshaft import step as propshaft_step
-
-    calls = []
-    original = propshaft_step.step_integrals
-
-    def counting(torques_at, step, *rest):
-        def counted(t, at):
-            calls.append(None)
-            return torques_at(t, at)
-
-        return original(counted, step, *rest)
-
-    monkeypatch.setattr(propshaft_step, "step_integrals", counting)
+    calls = chain_evaluations(monkeypatch)
     drive = CompliantPropshaft(2)
     inputs = (30.0, 0.0, 30.0, 0.0)
     drive.set_inputs(inputs)
