@@ -26,6 +26,13 @@ PLUMBING_MUTATIONS = (
         ("tests/fmu/test_refusal.py", "-k", "simulate_raises"),
     ),
     Mutation(
+        "instance: a stop signal during any call into the FMU is raised after it",
+        "fmu_src/cardan_joint/host/instance.py",
+        "outer, held.holding = held.holding, True",
+        "outer, held.holding = held.holding, held.holding",
+        ("tests/fmu/test_no_debris.py", "-k", "any_call"),
+    ),
+    Mutation(
         "sweep: Dask missing names its extra",
         "fmu_src/cardan_joint/sweep/command.py",
         "    if not args.serial:\n        try:\n            require(",

@@ -164,6 +164,62 @@ def test_ctrl_c_in_an_instance_loop_raises_keyboard_interrupt(fmu_path, signum, 
     assert said.strip() == expected
 
 
+# Calls into an FmuInstance's FMU other than a step, with a Ctrl-C sent from
+# where Python runs during the call: the slave's own Python (a get enters it to
+# take the inputs and give the outputs) or the logger's callback (the FMU says
+# why a fixed parameter is not set), where ctypes would drop the interrupt.
+CALLING = textwrap.dedent(
+    """
+    import os, signal, sys
+    from cardan_joint.host.instance import FmuInstance
+
+    class Signalling(list):  # the log sink: the logger's callback appends to it
+        def append(self, message):
+            super().append(message)
+            os.kill(os.getpid(), signal.SIGINT)
+
+    where = sys.argv[2]
+    messages = Signalling() if where == "logger" else None
+    with FmuInstance.open(sys.argv[1], messages=messages) as joint:
+        core = next(m for n, m in sys.modules.items() if n.endswith(".fmi.core"))
+        giving = core.SlaveCore._current_outputs
+
+        def signalling(*args):
+            os.kill(os.getpid(), signal.SIGINT)
+            return giving(*args)
+
+        if where == "slave":
+            core.SlaveCore._current_outputs = signalling
+        try:
+            if where == "slave":
+                joint.values("output_speed")
+            else:
+                joint.set(max_bend_angle=1.0)
+            print("no interrupt", flush=True)
+        except KeyboardInterrupt:
+            print("KeyboardInterrupt", flush=True)
+        core.SlaveCore._current_outputs = giving
+        joint.set(input_speed=5.0)
+        joint.step(1e-3)  # the call was not cut short: the instance goes on
+        print(joint.values("input_speed")[0], flush=True)
+    """
+)
+
+
+@pytest.mark.parametrize("where", ["slave", "logger"])
+def test_ctrl_c_during_any_call_is_raised_after_it(fmu_path, where):
+    """Held as a step's: the call completes, the interrupt is raised when it
+    returns, and nothing is dropped or printed on the way."""
+    process = _child([sys.executable, "-c", CALLING, str(fmu_path), where])
+    try:
+        out, err = process.communicate(timeout=30)
+    finally:
+        process.kill()
+    said = out.decode() + err.decode()
+    assert process.returncode == 0, said
+    assert said.split() == ["KeyboardInterrupt", "5.0"], said
+
+
 def _catches(pid: int, signum: int) -> bool:
     """Whether process `pid` has a handler of its own for `signum` (Linux)."""
     status = Path(f"/proc/{pid}/status").read_text()

@@ -4,9 +4,9 @@ The one wrapper around FMPy's slave classes that tests, examples and benchmarks
 share: initialisation with start values, set/get by name, stepping (raising
 the FMU's own reason, or returning the status), FMU states, an optional log
 sink, terminate/free on leaving `with`. It knows no model: names come from
-the FMU's model description. Ctrl-C (SIGTERM, SIGHUP) during a step raises
-KeyboardInterrupt when the step is over (`interrupts.STEP_INTERRUPTS`), never
-a refusal.
+the FMU's model description. Ctrl-C (SIGTERM, SIGHUP) during a call into the FMU
+raises KeyboardInterrupt when the call is over (`interrupts.STEP_INTERRUPTS`),
+never a refusal.
 
     with FmuInstance.open("dist/<Model>.fmu", start_values={...}) as model:
         model.step(1e-3)
@@ -18,7 +18,8 @@ a refusal.
 
 from __future__ import annotations
 
-from collections.abc import Callable, Iterable
+from collections.abc import Callable, Iterable, Iterator
+from contextlib import contextmanager
 from pathlib import Path
 from typing import Any
 
@@ -107,24 +108,17 @@ class FmuInstance:
         self._cleanup: list[Callable[[], None]] = []
         # The messages of the current call only: a refused step raises with them.
         self.recent = sink = _Recent(messages)
-        # A stop signal during a call into the FMU (instantiate, which may start its
-        # Python, or a step) is raised after the call, not inside the FMU's code,
-        # where the runtime could only call the call failed.
         STEP_INTERRUPTS.acquire()
         self._holding = True
-        held = STEP_INTERRUPTS.request
         try:
-            held.holding = True
-            try:
+            with self._calling():
                 self._instantiate(sink)
-            finally:
-                held.holding = False
-            held.raise_requested()
-            if self.fmi3:
-                self.fmu.enterInitializationMode(startTime=start_time)
-            else:
-                self.fmu.setupExperiment(startTime=start_time)
-                self.fmu.enterInitializationMode()
+            with self._calling():
+                if self.fmi3:
+                    self.fmu.enterInitializationMode(startTime=start_time)
+                else:
+                    self.fmu.setupExperiment(startTime=start_time)
+                    self.fmu.enterInitializationMode()
             if start_values:
                 self.set(**start_values)
             self.time = start_time
@@ -149,11 +143,28 @@ class FmuInstance:
             self.fmu.instantiate(callbacks=self.callbacks, loggingOn=True)
         self._cleanup.append(self.fmu.freeInstance)
 
+    @contextmanager
+    def _calling(self) -> Iterator[None]:
+        """The block's calls into the FMU with the stop signals held: one that
+        comes during a call is raised after it. Inside, Python would run its
+        handler wherever the call runs Python code: in the FMU's own (the
+        runtime then fails the call, and the instance with it) or in the
+        logger's callback (ctypes prints the exception and drops it)."""
+        held = STEP_INTERRUPTS.request
+        outer, held.holding = held.holding, True
+        try:
+            yield
+        finally:
+            held.holding = outer
+            if not outer:
+                held.raise_requested()
+
     def exit_initialization_mode(self) -> int:
         """Leave initialization; the FMI status is kept as `init_status` (fmi2Error
         for parameters that cannot run: the instance stays usable, every step is
         refused until they are fixed)."""
-        self.init_status = status_of(self.fmu.exitInitializationMode)
+        with self._calling():
+            self.init_status = status_of(self.fmu.exitInitializationMode)
         self._cleanup.append(self.fmu.terminate)
         return self.init_status
 
@@ -192,13 +203,18 @@ class FmuInstance:
 
     def set(self, **values: float) -> None:
         setter = self.fmu.setFloat64 if self.fmi3 else self.fmu.setReal
-        setter(self._refs(values), list(values.values()))
+        references = self._refs(values)
+        with self._calling():
+            setter(references, list(values.values()))
 
     def values(self, *names: str) -> list:
         """The variables' values, in the order named; an FMI 3 array comes as a list."""
-        if not self.fmi3:
-            return self.fmu.getReal(self._refs(names))
-        flat = iter(self.fmu.getFloat64(self._refs(names), sum(self.sizes[n] for n in names)))
+        references = self._refs(names)
+        with self._calling():
+            if not self.fmi3:
+                return self.fmu.getReal(references)
+            read = self.fmu.getFloat64(references, sum(self.sizes[n] for n in names))
+        flat = iter(read)
         return [
             [next(flat) for _ in range(self.sizes[n])] if self.sizes[n] > 1 else next(flat)
             for n in names
@@ -223,25 +239,23 @@ class FmuInstance:
         from fmpy.fmi1 import FMICallException
 
         self.recent.clear()
-        held = STEP_INTERRUPTS.request
-        held.holding = True
-        try:
-            self.fmu.doStep(currentCommunicationPoint=self.time, communicationStepSize=step_size)
-        except FMICallException as refused:
-            held.holding = False
-            held.raise_requested()  # a second Ctrl-C, raised inside the step, failed it
-            reasons = [text for status, _, text in self.recent if status >= 2] or [
-                f"(the FMU gave no reason; {refused})"
-            ]
-            raise StepRefusedError(
-                f"{self.info.model_name} refused the step at t = {self.time:.9g} s: "
-                + "; ".join(reasons),
-                refused.status,
-            ) from None
-        finally:
-            held.holding = False
-        self.time += step_size
-        held.raise_requested()
+        # A second Ctrl-C, raised inside the step, fails it: the interrupt is
+        # raised in place of the refusal.
+        with self._calling():
+            try:
+                self.fmu.doStep(
+                    currentCommunicationPoint=self.time, communicationStepSize=step_size
+                )
+            except FMICallException as refused:
+                reasons = [text for status, _, text in self.recent if status >= 2] or [
+                    f"(the FMU gave no reason; {refused})"
+                ]
+                raise StepRefusedError(
+                    f"{self.info.model_name} refused the step at t = {self.time:.9g} s: "
+                    + "; ".join(reasons),
+                    refused.status,
+                ) from None
+            self.time += step_size
 
     def try_step(self, step_size: float) -> int:
         """Step; return the FMI status (a refused step leaves the time where it was)."""
@@ -252,23 +266,26 @@ class FmuInstance:
         return status_of(self.set, **values)
 
     def get_state(self) -> FMUState:
-        return self.fmu.getFMUState() if self.fmi3 else self.fmu.getFMUstate()
+        with self._calling():
+            return self.fmu.getFMUState() if self.fmi3 else self.fmu.getFMUstate()
 
     def set_state(self, state: FMUState) -> None:
-        (self.fmu.setFMUState if self.fmi3 else self.fmu.setFMUstate)(state)
+        with self._calling():
+            (self.fmu.setFMUState if self.fmi3 else self.fmu.setFMUstate)(state)
 
     def free_state(self, state: FMUState) -> None:
-        (self.fmu.freeFMUState if self.fmi3 else self.fmu.freeFMUstate)(state)
+        with self._calling():
+            (self.fmu.freeFMUState if self.fmi3 else self.fmu.freeFMUstate)(state)
 
     def serialize_state(self, state: FMUState) -> bytes:
-        return bytes(
-            (self.fmu.serializeFMUState if self.fmi3 else self.fmu.serializeFMUstate)(state)
-        )
+        serialize = self.fmu.serializeFMUState if self.fmi3 else self.fmu.serializeFMUstate
+        with self._calling():
+            return bytes(serialize(state))
 
     def deserialize_state(self, serialized: bytes) -> FMUState:
-        return (self.fmu.deserializeFMUState if self.fmi3 else self.fmu.deSerializeFMUstate)(
-            serialized
-        )
+        deserialize = self.fmu.deserializeFMUState if self.fmi3 else self.fmu.deSerializeFMUstate
+        with self._calling():
+            return deserialize(serialized)
 
     def close(self) -> None:
         """Terminate and free the instance (and remove what `open` unzipped); once."""
@@ -283,6 +300,7 @@ class FmuInstance:
         if self._cleanup:
             action = self._cleanup.pop()
             try:
-                action()
+                with self._calling():
+                    action()
             finally:  # the rest runs even when one step fails
                 self._clean_up()

@@ -8,8 +8,8 @@ holds `interrupt_between_steps`, a first stop signal only records the request:
 the run loop sees it after the step in progress, ends the run cleanly and
 raises `SimulationInterrupted` (a KeyboardInterrupt) with the time reached. A
 second one raises at once, as usual. An `FmuInstance` holds `STEP_INTERRUPTS`
-while it is open: a signal during its step is raised when the step is over, one
-between two steps at once, as Python's own handler does.
+while it is open: a signal during a call into its FMU is raised when the call
+is over, one between two calls at once, as Python's own handler does.
 
 SIGTERM and SIGHUP, whose default ends the process on the spot (leaving a half
 written file and the unzipped FMU behind), are taken the same way and raise
@@ -143,7 +143,7 @@ def stop_signals_raise() -> Iterator[None]:
 
 
 class StepInterrupts:
-    """The stop signals held to the end of an `FmuInstance` step, while any
+    """The stop signals held to the end of an `FmuInstance`'s call into its FMU, while any
     instance is open (`acquire` at open, `release` at close)."""
 
     def __init__(self) -> None:
