@@ -118,6 +118,13 @@ VALUE_MUTATIONS = (
         "split_turns(self.yoke_phase)",
         (GUARDS, "-k", "parameter"),
     ),
+    Mutation(
+        "bad life parameters not made into the rule the state carries",
+        "fmu_src/cardan_joint/models/universal_joint/life.py",
+        "self._life_rule = NO_RULE if self.parameter_fault else rule_of(self)",
+        "self._life_rule = rule_of(self)",
+        ("tests/unit/test_step_constants.py", "-k", "out_of_its_ranges"),
+    ),
     # The bend angle: now, at the step's end, at the peak inside the step; both paths.
     Mutation(
         "bend angle now (fast path)",

@@ -12,7 +12,7 @@ from cardan_joint.host.instance import ExtractedFMU, FmuInstance
 from cardan_joint.models import discover
 from cardan_joint.models.propshaft import Propshaft
 from cardan_joint.models.universal_joint.model import CardanJoint
-from cardan_joint.physics.life import LifeRule
+from cardan_joint.physics.life import life_rule
 
 LIFE = ("input_bearing_force", "output_bearing_force", "life_rate", "life_consumed")
 START = dict(crosspiece_inertia_2=0.05, rated_torque=400.0, bearing_radius=0.02)
@@ -82,7 +82,7 @@ def test_life_consumed_is_saved_restored_and_serialized_bit_for_bit(
         fresh.close()
 
 
-RULE = LifeRule(1000.0, 1.5e6, 10.0 / 3.0, math.radians(3.0))
+RULE = life_rule(1000.0, 1.5e6, 10.0 / 3.0, math.radians(3.0))
 INPUTS = ("input_speed", "input_acceleration", "bend_angle", "bend_angle_rate",
           "bend_angle_acceleration", "load_torque")  # fmt: skip
 

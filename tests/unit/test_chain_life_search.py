@@ -18,7 +18,7 @@ from scipy.optimize import brentq
 
 from cardan_joint.models.compliant_propshaft.model import CompliantPropshaft
 from cardan_joint.models.propshaft import Propshaft
-from cardan_joint.physics.life import LifeRule, step_damage
+from cardan_joint.physics.life import life_rule, step_damage
 
 
 def _sign_changes(f, h, samples=2001):
@@ -127,7 +127,7 @@ def test_the_speeds_reversal_after_a_torque_zero_cuts_the_step_where_the_speed_v
     # step: the piece after the zero ends at the speed's zero from the input's
     # own acceleration (a march that took another number for it there missed
     # the reversal by up to 3e-5 of the damage).
-    rule = LifeRule(1000.0, 1.5e6, 10.0 / 3.0, math.radians(3.0))
+    rule = life_rule(1000.0, 1.5e6, 10.0 / 3.0, math.radians(3.0))
     inertia = (0.05, 0.04, 0.06)
     cases = [
         (0.08154213212058187, 4.089575299810714, -0.3898680996125431, -237.0020523437695,

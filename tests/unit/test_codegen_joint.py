@@ -22,6 +22,7 @@ from cardan_joint.models.universal_joint.step import (
     joint_life_step,
     joint_step,
 )
+from cardan_joint.physics.life import rate_scale
 
 THREE_DEGREES = math.radians(3.0)
 STEPS = {"without life": joint_step, "with life": joint_life_step}
@@ -80,6 +81,10 @@ def operating_point(rng: random.Random) -> list:
     }
     for k in (1, 2, 3):  # a light or a massive cross
         point[f"crosspiece_inertia_{k}"] = rng.choice([rng.uniform(0, 0.01), rng.uniform(0.5, 5)])
+    # The rule's scale, which the state carries from `start`.
+    point["life_rate_scale"] = rate_scale(
+        point["rated_torque"], point["life_constant"], point["life_exponent"]
+    )
     return [point[name] for name in NAMES]
 
 

@@ -13,10 +13,10 @@ from life_reference import damage
 
 from cardan_joint.models.compliant_joint.model import CompliantJoint
 from cardan_joint.models.compliant_propshaft.model import CompliantPropshaft
-from cardan_joint.physics.life import LifeRule
+from cardan_joint.physics.life import life_rule
 from cardan_joint.physics.response import joint_response
 
-RULE = LifeRule(1000.0, 1.5e6, 10.0 / 3.0, math.radians(3.0))
+RULE = life_rule(1000.0, 1.5e6, 10.0 / 3.0, math.radians(3.0))
 
 
 def _spring(model):

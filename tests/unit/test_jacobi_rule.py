@@ -12,7 +12,7 @@ import pytest
 import scipy.special
 from life_reference import damage
 
-from cardan_joint.physics.life import LifeRule, step_damage
+from cardan_joint.physics.life import life_rule, step_damage
 from cardan_joint.physics.life_panel import (
     error_budget,
     rule_sizing,
@@ -96,7 +96,7 @@ def test_only_a_panel_that_divides_every_joint_at_the_tabulated_power_is_weighte
 def test_a_reversal_at_another_exponent_keeps_gauss_legendre_and_is_exact():
     """p = 3: gamma = 11, which the u^12 rule would take for u^12 (2e-2 off):
     an inertial torque, 0.5 rad of bend, changing sign over the step."""
-    rule = LifeRule(1000.0, 1.5e6, 3.0, math.radians(3.0))
+    rule = life_rule(1000.0, 1.5e6, 3.0, math.radians(3.0))
     case = (0.3, 0.5, 200.0, 0.0, 0.0, 0.0, (0.02, 0.03, 0.05), 0.0)
     psi, b, w, a, rb, ab, inertia, load = case
     got = step_damage(rule, 0.01, psi, b, w, a, rb, ab, inertia, load)

@@ -15,11 +15,11 @@ import pytest
 from life_reference import case_of, damage, damage_quadpack
 
 from cardan_joint.models.universal_joint.model import CardanJoint
-from cardan_joint.physics.life import LifeRule, life_rate, step_damage
+from cardan_joint.physics.life import life_rate, life_rule, step_damage
 from cardan_joint.physics.life_torque import input_torque
 from cardan_joint.physics.response import JointResponse, kernel
 
-RULE = LifeRule(1000.0, 1.5e6, 10.0 / 3.0, math.radians(3.0))
+RULE = life_rule(1000.0, 1.5e6, 10.0 / 3.0, math.radians(3.0))
 
 
 def _yoke_torques(psi0, b0, w, a, rb, ab, inertia, load):
@@ -277,7 +277,7 @@ def test_two_torque_zeros_an_ulp_apart_leave_no_panel_of_zero_length():
     """A speed reversal with the bend crossing A_min at both ends of a long step
     at 1000 rad/s puts two torque zeros an ulp apart: the ulp between them is
     taken as it is (it once divided by its zero length)."""
-    rule = LifeRule(1000.0, 748562516.5098299, 1.6294291263585228, 0.05235987755982989)
+    rule = life_rule(1000.0, 748562516.5098299, 1.6294291263585228, 0.05235987755982989)
     case = (5.0144300866675975 + 4.255872885703014, -0.05235987755982989, 1000.0, -1000.0,
             0.05235987755982989, 0.0, (0.004186995240441173, 0.0036225531104528874,
             4.816940636013518), -50.0)  # fmt: skip

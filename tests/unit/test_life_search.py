@@ -14,9 +14,9 @@ from life_reference import case_of, damage_quadpack, random_fast_step
 
 from cardan_joint.models.universal_joint.model import CardanJoint
 from cardan_joint.physics import life_torque
-from cardan_joint.physics.life import LifeRule
+from cardan_joint.physics.life import life_rule
 
-RULE = LifeRule(1000.0, 1.5e6, 10.0 / 3.0, math.radians(3.0))
+RULE = life_rule(1000.0, 1.5e6, 10.0 / 3.0, math.radians(3.0))
 # Enough steps of seed 3 (`random_fast_step`) that the rule before this issue
 # missed twice (2.8e-8 in step 51, 1.05e-9 in step 46).
 SEED, SEARCHED = 3, 60

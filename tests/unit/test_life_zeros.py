@@ -15,7 +15,7 @@ from life_reference import case_of, damage_quadpack, random_fast_step
 
 from cardan_joint.models.universal_joint.model import CardanJoint
 from cardan_joint.physics import life_torque, life_zeros
-from cardan_joint.physics.life import LifeRule
+from cardan_joint.physics.life import life_rule
 from cardan_joint.physics.life_zeros import SETTLED_ZERO
 from cardan_joint.physics.response import (
     crosspiece_motion,
@@ -24,7 +24,7 @@ from cardan_joint.physics.response import (
     yoke_reactions,
 )
 
-RULE = LifeRule(1000.0, 1.5e6, 10.0 / 3.0, math.radians(3.0))
+RULE = life_rule(1000.0, 1.5e6, 10.0 / 3.0, math.radians(3.0))
 
 
 def _exact_torque(t, step):

@@ -19,9 +19,9 @@ from scipy.optimize import brentq
 
 from cardan_joint.models.compliant_propshaft.model import CompliantPropshaft
 from cardan_joint.models.propshaft import Propshaft
-from cardan_joint.physics.life import LifeRule
+from cardan_joint.physics.life import life_rule
 
-RULE = LifeRule(1000.0, 1.5e6, 10.0 / 3.0, math.radians(3.0))
+RULE = life_rule(1000.0, 1.5e6, 10.0 / 3.0, math.radians(3.0))
 D = math.radians
 
 

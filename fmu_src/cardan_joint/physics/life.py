@@ -25,10 +25,14 @@ _RAD_S_TO_RPM = 30.0 / math.pi
 
 
 class LifeRule(NamedTuple):
+    """A joint's life rule (`life_rule` makes one): its parameters and the
+    scale they give the rate, computed once per rule, not at every step."""
+
     rated_torque: float  # T_r, N.m
     constant: float  # K, h rpm deg
     exponent: float  # p
     min_angle: float  # A_min, rad
+    scale: float  # 1/L_h per (rad x rad/s x (N.m)^p): `rate_scale`'s
 
 
 def bearing_forces(input_torque, input_moment, output_moment, load_torque, radius):
@@ -48,15 +52,26 @@ def magnitude(x, y):
     return math.sqrt(x * x + y * y)
 
 
-def rate_scale(rule: LifeRule) -> float:
+def rate_scale(rated_torque: float, constant: float, exponent: float) -> float:
     """1/L_h per (rad x rad/s x (N.m)^p): the rule's constants and units at once."""
-    return _RAD_TO_DEG * _RAD_S_TO_RPM / (rule.constant * rule.rated_torque**rule.exponent)
+    return _RAD_TO_DEG * _RAD_S_TO_RPM / (constant * rated_torque**exponent)
+
+
+def life_rule(rated_torque: float, constant: float, exponent: float, min_angle: float) -> LifeRule:
+    """The rule of these parameters, with its `rate_scale`."""
+    scale = rate_scale(rated_torque, constant, exponent)
+    return LifeRule(rated_torque, constant, exponent, min_angle, scale)
+
+
+# The rule of a model whose life is off or whose parameters cannot run: a
+# number for its state, never read.
+NO_RULE = life_rule(1.0, 1.0, 1.0, 0.0)
 
 
 def life_rate(torque: float, speed: float, bend: float, rule: LifeRule) -> float:
     """1 / L_h (1/h) at one instant; 0 at rest or without torque."""
     angle = max(abs(bend), rule.min_angle)
-    return rate_scale(rule) * angle * abs(speed) * abs(torque) ** rule.exponent
+    return rule.scale * angle * abs(speed) * abs(torque) ** rule.exponent
 
 
 def compensated_add(total: float, error: float, term: float) -> tuple[float, float]:
@@ -72,7 +87,7 @@ def compensated_add(total: float, error: float, term: float) -> tuple[float, flo
 
 def rule_of(model) -> LifeRule:
     """The rule from a joint model's parameters (`rated_torque`, `life_*`)."""
-    return LifeRule(
+    return life_rule(
         model.rated_torque, model.life_constant, model.life_exponent, model.life_min_angle
     )
 
@@ -140,7 +155,7 @@ def _damage(rule: LifeRule, torque_at, step, h, b, w1, a1, rb, ab) -> float:
         torque_at, step, h, w1, a1, b, rb, ab, rule.min_angle, rule.exponent,
         step_reach(h, w1, a1, b, rb, ab),
     )  # fmt: skip
-    return total * rate_scale(rule) / 3600.0
+    return total * rule.scale / 3600.0
 
 
 def step_damage_loaded(

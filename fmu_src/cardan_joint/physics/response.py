@@ -132,9 +132,16 @@ def kernel(
 ):
     """`joint_response`'s fields, in its order, as a plain tuple; `xp` is `math`
     for floats (the FMU, once per step), numpy for arrays."""
-    w1, a1 = input_speed, input_acceleration
-    rb, ab = bend_angle_rate, bend_angle_acceleration
-    sh, ch, s, c, sb, cb, D, rD = pose(xp, psi, bend_angle)
+    return kernel_at(
+        xp, psi, xp.sin(bend_angle), xp.cos(bend_angle), input_speed, input_acceleration,
+        bend_angle_rate, bend_angle_acceleration, I1, I2, I3, load_torque, quaternion_sign,
+    )  # fmt: skip
+
+
+def kernel_at(xp, psi, sb, cb, w1, a1, rb, ab, I1, I2, I3, load_torque, quaternion_sign):
+    """`kernel` from the bend's sine `sb` and cosine `cb`: where the bend is
+    fixed (a propshaft's), they are computed once, not at every step."""
+    sh, ch, s, c, sb, cb, D, rD = pose_of(xp, psi, sb, cb)
     sc = s * c
     sbc = sb * c  # p1 . z2
     sbs = sb * s
@@ -184,14 +191,10 @@ def kernel(
     )
 
 
-def pose(xp, psi, bend_angle):
-    """(sin psi/2, cos psi/2, sin psi, cos psi, sin b, cos b, D, sqrt D)."""
-    return pose_of(xp, psi, xp.sin(bend_angle), xp.cos(bend_angle))
-
-
 def pose_of(xp, psi, sb, cb):
-    """`pose` from the bend's sine `sb` and cosine `cb`. Half angles first: the
-    quaternion needs them, and sin/cos psi follow from them without two more
+    """(sin psi/2, cos psi/2, sin psi, cos psi, sin b, cos b, D, sqrt D) from
+    the bend's sine `sb` and cosine `cb`. Half angles first: the quaternion
+    needs them, and sin/cos psi follow from them without two more
     trigonometric calls."""
     sh = xp.sin(0.5 * psi)
     ch = xp.cos(0.5 * psi)
@@ -199,7 +202,7 @@ def pose_of(xp, psi, sb, cb):
 
 
 def pose_at(xp, s, c, sb, cb):
-    """`pose`'s (sin psi, cos psi, sin b, cos b, D, sqrt D) from psi's sine `s`
+    """`pose_of`'s (sin psi, cos psi, sin b, cos b, D, sqrt D) from psi's sine `s`
     and cosine `c`."""
     sbs = sb * s
     # D = 1 - (sin b cos psi)^2, written as a sum of squares: no cancellation
@@ -210,7 +213,7 @@ def pose_at(xp, s, c, sb, cb):
 
 def crosspiece_motion(s, c, sb, cb, D, rD, w1, a1, rb, ab):
     """(omega2, its rate, the crosspiece's angular velocity Omega and its rate
-    dOmega/dt, components in C) at the pose `pose` gives."""
+    dOmega/dt, components in C) at the pose `pose_of` gives."""
     sc = s * c
     sbc = sb * c
     sbs = sb * s
@@ -275,13 +278,13 @@ def yoke_reactions(M1, M2, M3, s, c, sb, cb, rD, load_torque):
 
 
 def cardan_error_at(xp, s, c, sb, cb):
-    """The cardan error (output angle - input angle) at the pose `pose` gives:
+    """The cardan error (output angle - input angle) at the pose `pose_of` gives:
     the atan of `cardan_tangent`."""
     return xp.atan(cardan_tangent(s, c, sb, cb))
 
 
 def cardan_tangent(s, c, sb, cb):
-    """The cardan error's tangent at the pose `pose` gives. 1 - cos b is
+    """The cardan error's tangent at the pose `pose_of` gives. 1 - cos b is
     written sin^2 b / (1 + cos b) for full relative precision at small bend;
     the denominator stays positive below 90 deg, so the cardan error never
     jumps branch."""

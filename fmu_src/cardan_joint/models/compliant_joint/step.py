@@ -177,6 +177,7 @@ def compliant_joint_advanced(
     phase: tuple[int, float, float],
     parameters_valid: bool,
     miner,
+    life_rate_scale: float,
     lag: float,
     input_speed: float,
     input_acceleration: float,
@@ -210,7 +211,7 @@ def compliant_joint_advanced(
     stiffness, damping = spring
     free = joint_advanced(h, *angle, *phase, parameters_valid, *joint_inputs, *inertia)
     bearing_radius, rated_torque, life_constant, life_exponent, life_min_angle = life
-    rule = LifeRule(rated_torque, life_constant, life_exponent, life_min_angle)
+    rule = LifeRule(rated_torque, life_constant, life_exponent, life_min_angle, life_rate_scale)
     psi = angle[1] + (phase[1] + (angle[2] + phase[2]))  # as `response`'s
     loading = (lag, output_speed, output_acceleration, stiffness, damping)
     damage = step_damage_loaded(
@@ -234,8 +235,8 @@ def compliant_joint_advanced(
     life_values = life_of(rule, bearing_radius, consumed, outputs, load, end_speed, end_beta)
     moved = (end_speed, input_acceleration, end_output_speed, output_acceleration, end_beta,
              end_rate, bend_angle_acceleration)  # fmt: skip
-    return (*free[:_JOINT], *consumed, end_lag, *moved, *spring_values, *outputs[_PASSED:],
-            *life_values)  # fmt: skip
+    return (*free[:_JOINT], *consumed, life_rate_scale, end_lag, *moved, *spring_values,
+            *outputs[_PASSED:], *life_values)  # fmt: skip
 
 
 # The entry (the spec's `step`): the runtime's flat arguments, grouped.

@@ -17,9 +17,9 @@ from .variables import compliant_propshaft_table
 
 
 def compliant_propshaft_step(time, h, angle: tuple[int, float, float], parameters_valid: bool,
-                             layout, shifts, critical_speeds, fixed, crosspiece, life, sums,
-                             spring, input_speed, input_acceleration, output_speed,
-                             output_acceleration) -> tuple | None:  # fmt: skip
+                             layout, trig, shifts, critical_speeds, fixed, crosspiece, life,
+                             singularity_reach, sums, spring, input_speed, input_acceleration,
+                             output_speed, output_acceleration) -> tuple | None:  # fmt: skip
     """The CompliantPropshaft's step (`compliant_state_names`, then the inputs,
     grouped): `compliant_propshaft_advanced`, or None when the step is not
     taken here (the model's checks then name the refusal)."""
@@ -27,8 +27,9 @@ def compliant_propshaft_step(time, h, angle: tuple[int, float, float], parameter
                                 output_speed, output_acceleration):  # fmt: skip
         return None
     return compliant_propshaft_advanced(
-        h, angle, parameters_valid, layout, shifts, critical_speeds, fixed, crosspiece, life,
-        sums, spring, input_speed, input_acceleration, output_speed, output_acceleration,
+        h, angle, parameters_valid, layout, trig, shifts, critical_speeds, fixed, crosspiece, life,
+        singularity_reach, sums, spring, input_speed, input_acceleration, output_speed,
+        output_acceleration,
     )  # fmt: skip
 
 

@@ -73,9 +73,10 @@ def compliant_takes_step(h: float, parameters_valid: bool, speed: float, acceler
     )
 
 
-def compliant_propshaft_advanced(h, angle, parameters_valid: bool, layout, shifts, critical_speeds,
-                                 fixed, crosspiece, life, sums, spring, speed, acceleration,
-                                 output_speed, output_acceleration):  # fmt: skip
+def compliant_propshaft_advanced(h, angle, parameters_valid: bool, layout, trig, shifts,
+                                 critical_speeds, fixed, crosspiece, life, reach, sums, spring,
+                                 speed, acceleration, output_speed,
+                                 output_acceleration):  # fmt: skip
     """A step `compliant_takes_step` takes, of `h` s: the state
     (`compliant_state_names`), the inputs after the step and the outputs. The
     spring's torque at the step's end is the chain's load for the outputs;
@@ -84,17 +85,18 @@ def compliant_propshaft_advanced(h, angle, parameters_valid: bool, layout, shift
     lag, stiffness, damping = spring
     change = twist_change(h, speed, acceleration, output_speed, output_acceleration)
     I1, I2, I3 = crosspiece
-    radius, rated_torque, life_constant, life_exponent, min_angle = life
-    rule = LifeRule(rated_torque, life_constant, life_exponent, min_angle)
+    radius, rated_torque, life_constant, life_exponent, min_angle, scale = life
+    rule = LifeRule(rated_torque, life_constant, life_exponent, min_angle, scale)
     load = (shifts[len(shifts) - 1], lag, output_speed, output_acceleration, stiffness, damping)
     damages = chain_damages(rule, h, spring_chain_torque, angle[1], angle[2], speed, acceleration,
-                            crosspiece, load, layout)  # fmt: skip
+                            crosspiece, load, layout, trig, reach)  # fmt: skip
     added = sums_added(sums, damages)
     end_speed = speed + acceleration * h
     end = advanced(angle, h * (speed + 0.5 * acceleration * h))
     end_lag = lag + change
     end_output_speed = output_speed + output_acceleration * h
-    free = chain_values(math, end[1], end[2], end_speed, acceleration, layout, I1, I2, I3, 0.0)
+    free = chain_values(math, end[1], end[2], end_speed, acceleration, layout, trig, I1, I2, I3,
+                        0.0)  # fmt: skip
     # The last joint's values in the chain's: its output shaft's offset and speed.
     offset = free[CHAIN_FIELDS * (len(shifts) - 1) + OFFSET] - shifts[len(shifts) - 1]
     spring_values = spring_outputs(
@@ -102,11 +104,12 @@ def compliant_propshaft_advanced(h, angle, parameters_valid: bool, layout, shift
         end_output_speed, stiffness, damping,
     )  # fmt: skip
     rigid = propshaft_outputs(
-        end, end_speed, acceleration, spring_values[3], layout, shifts, critical_speeds, fixed,
-        I1, I2, I3, rule, radius, added,
+        end, end_speed, acceleration, spring_values[3], layout, trig, shifts, critical_speeds,
+        fixed, I1, I2, I3, rule, radius, added,
     )  # fmt: skip
     # The rigid outputs but the input angle and the last shaft's (the spring's own).
     passed = rigid[1 : 3 * len(shifts) - 2] + rigid[3 * len(shifts) + 1 :]
-    state = end + (parameters_valid,) + layout + shifts + critical_speeds + fixed + crosspiece
+    state = end + (parameters_valid,) + layout + trig + shifts + critical_speeds + fixed
+    state = state + crosspiece + life + (reach,) + added + (end_lag, stiffness, damping)
     moved = (end_speed, acceleration, end_output_speed, output_acceleration)
-    return state + life + added + (end_lag, stiffness, damping) + moved + spring_values + passed
+    return state + moved + spring_values + passed

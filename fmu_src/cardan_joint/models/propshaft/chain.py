@@ -81,20 +81,21 @@ def bend_trig(xp, layout):
 
 
 def node_trig(layout):
-    """What a life node's chain (`node_forward`) takes from the layout, once a
-    step: each joint's (sin beta_k, cos beta_k, sin Delta_k, cos Delta_k),
-    Delta_k = c_k + pi/2 + phi_k + b_k - b_(k+1) the turn from its pin angle to
-    the next joint's, psi_(k+1) - psi_k, less its cardan error e_k; the last
-    joint turns to no pin: Delta = 0."""
-    trig = bend_trig(math, layout)
-    nodes = ()
+    """What the chain takes from the layout alone, computed once when the model
+    starts (the step state's `trig`): `bend_trig`'s (sin beta_k, cos beta_k),
+    then each joint's (sin Delta_k, cos Delta_k) for a life node's chain
+    (`node_forward`), Delta_k = c_k + pi/2 + phi_k + b_k - b_(k+1) the turn
+    from its pin angle to the next joint's, psi_(k+1) - psi_k, less its cardan
+    error e_k; the last joint turns to no pin: Delta = 0. Its head is
+    `bend_trig`'s, so `chain_values` takes it too."""
+    turns = ()
     for k in range(1, len(layout) // LAYOUT_FIELDS):
         joint = layout[LAYOUT_FIELDS * (k - 1) : LAYOUT_FIELDS * k]
         following = layout[LAYOUT_FIELDS * k : LAYOUT_FIELDS * (k + 1)]
         pins = joint[PIN_OFFSET] - following[PIN_OFFSET]
         turn = joint[TWIST] + HALF_PI + following[PHASE] + pins
-        nodes = nodes + trig[2 * k - 2 : 2 * k] + (math.sin(turn), math.cos(turn))
-    return nodes + trig[len(trig) - 2 :] + (0.0, 1.0)
+        turns = turns + (math.sin(turn), math.cos(turn))
+    return bend_trig(math, layout) + turns + (0.0, 1.0)
 
 
 def pin_turned(s, c, sine, cosine, tangent):
@@ -127,7 +128,7 @@ def chain_forward(xp, angle, angle_error, speed, acceleration, layout, trig, I1,
     low part of a double-double angle), input speed and acceleration: per joint
     (`CHAIN_FIELDS`) o_k, omega_k, alpha_k, psi_k, T0_k (at no load) and the
     ratio s_k, then the kinetic energy; `layout` from `layout_values`, `trig`
-    from `bend_trig`."""
+    from `bend_trig` (or `node_trig`, whose head it is)."""
     offset, w, a, energy = 0.0, speed, acceleration, 0.0
     forward = ()
     for k in range(len(layout) // LAYOUT_FIELDS):
@@ -146,7 +147,7 @@ def node_forward(angle, angle_error, speed, acceleration, layout, trig, I1, I2, 
     """`chain_forward`'s values at a life node (floats) with one sine and
     cosine for the whole chain: joint 1's pin angle as there, each next one's
     psi_(k+1) = psi_k + Delta_k + e_k by the addition formulas (`pin_turned`)
-    from psi_k's, Delta_k's (`node_trig`'s, once a step) and the cardan error
+    from psi_k's, Delta_k's (`node_trig`'s, once a model) and the cardan error
     e_k's tangent. Each offset o_k adds its joint's error e_k = atan(tan e_k)
     as `chain_forward` does (one sum of tangents would leave atan's branch
     once the errors pass 90 deg together, at working angles the model
@@ -159,7 +160,7 @@ def node_forward(angle, angle_error, speed, acceleration, layout, trig, I1, I2, 
     for k in range(len(layout) // LAYOUT_FIELDS):
         joint = layout[LAYOUT_FIELDS * k : LAYOUT_FIELDS * (k + 1)]
         psi = pin_angle(angle, angle_error, offset, k, joint)
-        sb, cb = trig[4 * k], trig[4 * k + 1]
+        sb, cb = trig[2 * k], trig[2 * k + 1]
         if k == 0:
             s, c = pose_of(math, psi, sb, cb)[2:4]
         error, w, a, crosspiece, torque, ratio = joint_forward(math, s, c, sb, cb, w, a, I1, I2, I3)
@@ -167,7 +168,9 @@ def node_forward(angle, angle_error, speed, acceleration, layout, trig, I1, I2, 
         energy = energy + crosspiece
         forward = forward + (offset, w, a, psi, torque, ratio)
         if LAYOUT_FIELDS * (k + 1) < len(layout):
-            s, c = pin_turned(s, c, trig[4 * k + 2], trig[4 * k + 3], error)
+            # `node_trig`'s turns follow its bends.
+            turn = trig[len(trig) // 2 + 2 * k : len(trig) // 2 + 2 * k + 2]
+            s, c = pin_turned(s, c, turn[0], turn[1], error)
     return forward + (shafts_energy(forward, layout, energy),)
 
 
@@ -203,13 +206,14 @@ def chain_backward(forward, layout, load_torque):
     return backward
 
 
-def chain_values(xp, angle, angle_error, speed, acceleration, layout, I1, I2, I3, load_torque):
+def chain_values(xp, angle, angle_error, speed, acceleration, layout, trig, I1, I2, I3,
+                 load_torque):  # fmt: skip
     """The chain at input angle `angle` (+ `angle_error`), input speed and
     acceleration under `load_torque`, as one flat tuple (`CHAIN_FIELDS` per
     joint, then the input torque and the energy): `chain_forward`, then
-    `chain_backward`. Written in the generator's subset: the propshaft's step
-    (`step.py`) runs it in C; `xp` is numpy for arrays."""
-    trig = bend_trig(xp, layout)
+    `chain_backward`; `trig` is `bend_trig`'s (or `node_trig`'s). Written in
+    the generator's subset: the propshaft's step (`step.py`) runs it in C; `xp`
+    is numpy for arrays."""
     forward = chain_forward(xp, angle, angle_error, speed, acceleration, layout, trig, I1, I2, I3)
     backward = chain_backward(forward, layout, load_torque)
     values = ()
@@ -234,9 +238,11 @@ def chain(
     joints = len(geometry.joints)
     inertias = shaft_inertias or (0.0,) * (joints - 1)
     I1, I2, I3 = crosspiece_inertia
+    xp = namespace(angle, angle_error)
+    layout = layout_values(geometry, inertias)
     values = chain_values(
-        namespace(angle, angle_error), angle, angle_error, speed, acceleration,
-        layout_values(geometry, inertias), I1, I2, I3, load_torque,
+        xp, angle, angle_error, speed, acceleration, layout, bend_trig(xp, layout), I1, I2, I3,
+        load_torque,
     )  # fmt: skip
 
     def each(field):

@@ -18,26 +18,39 @@ PROPSHAFT_GROUPS = {
         "joint_*_phase",
         "joint_*_inertia",
     ),
+    "trig": (
+        "joint_*_bend_sine",
+        "joint_*_bend_cosine",
+        "joint_*_turn_sine",
+        "joint_*_turn_cosine",
+    ),
     "shifts": ("shaft_*_shift",),
     "critical_speeds": ("shaft_*_critical_speed",),
     "fixed": ("speed_ratio_fluctuation", "equivalent_angle"),
     "crosspiece": ("crosspiece_inertia_*",),
-    "life": ("bearing_radius", "rated_torque", "life_constant", "life_exponent", "life_min_angle"),
+    "life": (
+        "bearing_radius",
+        "rated_torque",
+        "life_constant",
+        "life_exponent",
+        "life_min_angle",
+        "life_rate_scale",
+    ),
     "sums": ("joint_*_life_consumed", "joint_*_life_consumed_error"),
 }
 
 
-def propshaft_step(time, h, angle: tuple[int, float, float], parameters_valid: bool, layout,
-                   shifts, critical_speeds, fixed, crosspiece, life, sums, input_speed,
-                   input_acceleration, load_torque) -> tuple | None:  # fmt: skip
+def propshaft_step(time, h, angle: tuple[int, float, float], parameters_valid: bool, layout, trig,
+                   shifts, critical_speeds, fixed, crosspiece, life, singularity_reach, sums,
+                   input_speed, input_acceleration, load_torque) -> tuple | None:  # fmt: skip
     """The Propshaft's step (`state_names`, then the inputs, grouped):
     `propshaft_advanced`, or None when the step is not taken here (the model's
     checks then name the refusal)."""
     if not takes_step(h, parameters_valid, input_speed, input_acceleration, load_torque):
         return None
-    return propshaft_advanced(h, angle, parameters_valid, layout, shifts, critical_speeds, fixed,
-                              crosspiece, life, sums, input_speed, input_acceleration,
-                              load_torque)  # fmt: skip
+    return propshaft_advanced(h, angle, parameters_valid, layout, trig, shifts, critical_speeds,
+                              fixed, crosspiece, life, singularity_reach, sums, input_speed,
+                              input_acceleration, load_torque)  # fmt: skip
 
 
 # The entry for each number of joints (the spec's `step`).

@@ -33,6 +33,8 @@ class PropshaftLife:
     load_torque: float
     _shifts: tuple
     _layout_values: tuple
+    _trig: tuple
+    _reach: float
     # Set over a step by a layer whose load follows the motion (the compliant
     # propshaft's spring): (torque_at, load), `step.chain_damages`'s.
     load_over_step: Any = None
@@ -49,7 +51,7 @@ class PropshaftLife:
         torque_at, load = self.load_over_step or (chain_torque, (self.load_torque,))
         damages = chain_damages(
             self._life_rule, h, torque_at, fraction, error, speed, acceleration,
-            self._crosspiece, load, self._layout_values,
+            self._crosspiece, load, self._layout_values, self._trig, self._reach,
         )  # fmt: skip
         sums = sums_added(tuple(v for pair in self._life for v in pair), damages)
         self._life = [(sums[2 * k], sums[2 * k + 1]) for k in range(self.joints)]

@@ -12,7 +12,7 @@ import math
 from ...framework.refusal import Refusal
 from ...framework.stepped import ShaftModel
 from ...framework.values import angle_limit_problem, set_start_values, value_ranges
-from ...physics.life import LifeRule, rule_of
+from ...physics.life import NO_RULE, rule_of
 from ...physics.revolutions import split_turns
 from .chain import chain, layout_values
 from .checks import angle_warnings
@@ -22,11 +22,11 @@ from .fluctuation import equivalent_angle, speed_ratio_fluctuation
 from .geometry import HALF_PI, TWO_PI, Layout, layout
 from .life import PropshaftLife
 from .refusals import PropshaftReason
-from .step import propshaft_outputs, state_names
+from .step import fixed_by_layout, propshaft_outputs, state_names
 from .variables import propshaft_table
 
 # Without life the outputs are computed with a rule whose values they leave out.
-_NO_LIFE = (1.0, LifeRule(1.0, 1.0, 1.0, 0.0))
+_NO_LIFE = (1.0, NO_RULE)
 _TUBE_PARTS = ("outer_diameter", "inner_diameter", "length", "youngs_modulus", "density")
 
 
@@ -101,6 +101,7 @@ class Propshaft(PropshaftLife, ShaftModel):
         offsets = chain(self.layout, fraction, 0.0, 0.0, angle_error=error).offsets
         self._shifts = tuple(TWO_PI * round(o / TWO_PI) for o in offsets)
         self._layout_values = layout_values(self.layout, self._inertia)
+        self._trig, self._reach = fixed_by_layout(self._layout_values)
 
     def _angle_problem(self):
         problem = self._value_problem(self.table.PARAMETERS, self._parameter_ranges)
@@ -209,8 +210,8 @@ class Propshaft(PropshaftLife, ShaftModel):
         """The step state's values `start` fixes, in `state_names`' order."""
         rule = self._life_rule
         return (
-            *self._layout_values, *self._shifts, *self._critical_speeds,
-            *self._geometry_outputs()[-2:], *self._crosspiece, self._radius, *rule,
+            *self._layout_values, *self._trig, *self._shifts, *self._critical_speeds,
+            *self._geometry_outputs()[-2:], *self._crosspiece, self._radius, *rule, self._reach,
         )  # fmt: skip
 
     def set_step_state(self, state) -> None:
@@ -262,7 +263,7 @@ class Propshaft(PropshaftLife, ShaftModel):
         I1, I2, I3 = self._crosspiece
         values = propshaft_outputs(
             self._angle, self.input_speed, self.input_acceleration, self.load_torque,
-            self._layout_values, self._shifts, self._critical_speeds,
+            self._layout_values, self._trig, self._shifts, self._critical_speeds,
             self._geometry_outputs()[-2:], I1, I2, I3, self._life_rule, self._radius,
             tuple(v for total_and_error in self._life for v in total_and_error),
         )  # fmt: skip

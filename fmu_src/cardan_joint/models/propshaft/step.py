@@ -6,6 +6,11 @@ branch shifts, the tubes' critical speeds, the fluctuation) and each joint's
 Miner's sum travel in the state (`state_names`); a loop over the joints is a
 loop over a tuple's positions, which the generator unrolls.
 
+What follows from the parameters alone is computed once, when the model
+starts, and travels in the state too (`fixed_by_layout`: the bends' and the
+pins' turns' sines and cosines, the singularities' reach; the life rule's
+scale, `physics.life.life_rule`), so no step computes it again.
+
 The life of a step: each joint's damage is the integral of its rate, from
 its torque T_k and its input shaft's speed, both the chain at that instant
 (`chain_torque`); `step_integrals` takes every joint's on the same nodes, so
@@ -16,9 +21,9 @@ import math
 
 from ...framework.values import bounds, shaft_moves
 from ...framework.written_step import sound_step
-from ...physics.life import LifeRule, compensated_add, life_outputs, rate_scale, singularity_reach
+from ...physics.life import LifeRule, compensated_add, life_outputs, singularity_reach
 from ...physics.life_integral import step_integrals
-from ...physics.response import JointResponse, kernel
+from ...physics.response import JointResponse, kernel_at
 from ...physics.revolutions import advanced, angle_value
 from .chain import (
     ACCELERATION,
@@ -48,6 +53,9 @@ _INPUT_MOMENT, _OUTPUT_MOMENT = (
 # then the layout and `node_trig`'s sines and cosines (`chain_damages`): nine
 # numbers a joint.
 _STEP_HEAD = 8
+# `node_trig`'s values of a joint, as the step state names them: its bend's,
+# then (after every joint's bend) its turn's to the next joint's pin.
+_TRIG = (("bend_sine", "bend_cosine"), ("turn_sine", "turn_cosine"))
 _JOINT_FIELDS = LAYOUT_FIELDS + 4
 
 
@@ -58,11 +66,13 @@ def state_names(joints: int) -> tuple[str, ...]:
     return (
         "turns", "fraction", "fraction_error", "parameters_valid",
         *(f"joint_{k}_{name}" for k in range(1, joints + 1) for name in layout),
+        *(f"joint_{k}_{name}" for part in _TRIG for k in range(1, joints + 1) for name in part),
         *(f"shaft_{k}_shift" for k in range(1, joints + 1)),
         *(f"shaft_{k}_critical_speed" for k in range(1, joints)),
         "speed_ratio_fluctuation", "equivalent_angle",
         "crosspiece_inertia_1", "crosspiece_inertia_2", "crosspiece_inertia_3",
         "bearing_radius", "rated_torque", "life_constant", "life_exponent", "life_min_angle",
+        "life_rate_scale", "singularity_reach",
         *(f"joint_{k}_life_consumed{part}" for k in range(1, joints + 1)
           for part in ("", "_error")),
     )  # fmt: skip
@@ -121,29 +131,34 @@ def step_layout(tail):
     return tail[: LAYOUT_FIELDS * (len(tail) // _JOINT_FIELDS)]
 
 
+def fixed_by_layout(layout) -> tuple:
+    """What the step takes from the layout alone: `node_trig`'s sines and
+    cosines and the singularities' reach at the largest bend (`chain_damages`),
+    computed when the model starts."""
+    peak = max(layout[k] for k in range(WORKING_ANGLE, len(layout), LAYOUT_FIELDS))
+    return node_trig(layout), singularity_reach(peak)
+
+
 def chain_damages(rule, h, torques_at, fraction, error, speed, acceleration, crosspiece, load,
-                  layout):  # fmt: skip
+                  layout, trig, reach):  # fmt: skip
     """Each joint's Miner damage over a step of `h` s from the input angle's
     `fraction` (+ `error`), the input shaft at `speed` and constant
     `acceleration`: `torques_at(t, step)` gives every joint's (T_k, input
     shaft speed), step = (fraction, error, speed, acceleration, the cross's
-    inertias, *`load`) + layout + its sines and cosines (`node_trig`);
+    inertias, *`load`) + layout + `trig`, its sines and cosines (`node_trig`);
     `load` the held load (`chain_torque`) or the
     parameters of a load that follows the motion. The joints share the nodes
-    (`step_integrals`) and the singularities of the largest working angle."""
+    (`step_integrals`) and `reach`, the singularities' at the largest working
+    angle (`fixed_by_layout`)."""
     bends = ()
     for k in range(len(layout) // LAYOUT_FIELDS):
         bends = bends + (layout[LAYOUT_FIELDS * k + WORKING_ANGLE],)
-    peak = bends[0]
-    for k in range(1, len(bends)):
-        peak = max(peak, bends[k])
-    step = (fraction, error, speed, acceleration, *crosspiece, *load) + layout
-    step = step + node_trig(layout)
+    step = (fraction, error, speed, acceleration, *crosspiece, *load) + layout + trig
     integrals = step_integrals(
         torques_at, step, h, speed, acceleration, bends, 0.0, 0.0, rule.min_angle, rule.exponent,
-        singularity_reach(peak),
+        reach,
     )  # fmt: skip
-    scale = rate_scale(rule) / 3600.0
+    scale = rule.scale / 3600.0
     damages = ()
     for k in range(len(integrals)):
         damages = damages + (scale * integrals[k],)
@@ -162,15 +177,17 @@ def sums_added(sums, damages):
     return added
 
 
-def propshaft_outputs(angle, speed, acceleration, load, layout, shifts, critical_speeds, fixed, I1,
-                      I2, I3, rule, radius, sums):  # fmt: skip
-    """The outputs at input angle `angle` (`Turns`), in the table's order: every shaft's
+def propshaft_outputs(angle, speed, acceleration, load, layout, trig, shifts, critical_speeds,
+                      fixed, I1, I2, I3, rule, radius, sums):  # fmt: skip
+    """The outputs at input angle `angle` (`Turns`), in the table's order (`trig`
+    the layout's `node_trig`): every shaft's
     angle (`shifts` put it on its branch), speed and acceleration, the input
     torque and energy, the `fixed` geometry outputs, each tube's speed over its
     critical speed, each joint's bearing forces, life rate and Miner's sum
     (`sums`: total and error per joint)."""
     fraction, error = angle[1], angle[2]
-    values = chain_values(math, fraction, error, speed, acceleration, layout, I1, I2, I3, load)
+    values = chain_values(math, fraction, error, speed, acceleration, layout, trig, I1, I2, I3,
+                          load)  # fmt: skip
     start = angle_value(angle)
     outputs = (start,)
     for k in range(len(shifts)):
@@ -187,7 +204,8 @@ def propshaft_outputs(angle, speed, acceleration, load, layout, shifts, critical
     for k in range(len(shifts)):
         joint = values[CHAIN_FIELDS * k : CHAIN_FIELDS * (k + 1)]
         beta = layout[LAYOUT_FIELDS * k + WORKING_ANGLE]
-        r = kernel(math, joint[PIN], beta, w, a, 0.0, 0.0, I1, I2, I3, joint[LOAD], 1.0)
+        sb, cb = trig[2 * k], trig[2 * k + 1]
+        r = kernel_at(math, joint[PIN], sb, cb, w, a, 0.0, 0.0, I1, I2, I3, joint[LOAD], 1.0)
         outputs = outputs + life_outputs(
             rule, radius, sums[2 * k] + sums[2 * k + 1], joint[TORQUE], r[_INPUT_MOMENT],
             r[_OUTPUT_MOMENT], joint[LOAD], w, beta,
@@ -196,24 +214,25 @@ def propshaft_outputs(angle, speed, acceleration, load, layout, shifts, critical
     return outputs
 
 
-def propshaft_advanced(h, angle, parameters_valid, layout, shifts, critical_speeds, fixed,
-                       crosspiece, life, sums, speed, acceleration, load):  # fmt: skip
+def propshaft_advanced(h, angle, parameters_valid, layout, trig, shifts, critical_speeds, fixed,
+                       crosspiece, life, reach, sums, speed, acceleration, load):  # fmt: skip
     """A step `takes_step` takes, of `h` s with the input shaft at constant
     acceleration and the load held: the state (`state_names`), the inputs
     after the step and the outputs. Each joint's Miner's sum gains its damage
     (from the values before the step), compensated."""
     fraction, error = angle[1], angle[2]
     I1, I2, I3 = crosspiece
-    radius, rated_torque, life_constant, life_exponent, min_angle = life
-    rule = LifeRule(rated_torque, life_constant, life_exponent, min_angle)
+    radius, rated_torque, life_constant, life_exponent, min_angle, scale = life
+    rule = LifeRule(rated_torque, life_constant, life_exponent, min_angle, scale)
     end_speed = speed + acceleration * h
     end = advanced(angle, h * (speed + 0.5 * acceleration * h))
     damages = chain_damages(rule, h, chain_torque, fraction, error, speed, acceleration,
-                            crosspiece, (load,), layout)  # fmt: skip
+                            crosspiece, (load,), layout, trig, reach)  # fmt: skip
     added = sums_added(sums, damages)
     outputs = propshaft_outputs(
-        end, end_speed, acceleration, load, layout, shifts, critical_speeds, fixed, I1, I2, I3,
-        rule, radius, added,
+        end, end_speed, acceleration, load, layout, trig, shifts, critical_speeds, fixed, I1, I2,
+        I3, rule, radius, added,
     )  # fmt: skip
-    state = end + (parameters_valid,) + layout + shifts + critical_speeds + fixed + crosspiece
-    return state + life + added + (end_speed, acceleration, load) + outputs
+    state = end + (parameters_valid,) + layout + trig + shifts + critical_speeds + fixed
+    state = state + crosspiece + life + (reach,) + added
+    return state + (end_speed, acceleration, load) + outputs

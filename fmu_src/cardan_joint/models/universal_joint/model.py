@@ -182,7 +182,9 @@ class CardanJoint(WrittenStep, JointLife, ShaftModel):
         """What the step advances beside the inputs: `step.STATE`'s values
         (`LIFE_STATE`'s with life on)."""
         angle = (*self._angle, *self._phase, self.parameter_fault is None)
-        return (*angle, self.life_consumed, self.life_consumed_error) if self.life else angle
+        if not self.life:
+            return angle
+        return (*angle, self.life_consumed, self.life_consumed_error, self._life_rule.scale)
 
     def set_step_state(self, state) -> None:
         """Take a state a generated step advanced (`step_state`'s values); only the
@@ -190,7 +192,7 @@ class CardanJoint(WrittenStep, JointLife, ShaftModel):
         turns, fraction, fraction_error = state[:ANGLE]
         self._angle = (int(turns), float(fraction), float(fraction_error))
         if self.life:
-            consumed, error = state[len(STATE) :]
+            consumed, error = state[len(STATE) : len(STATE) + 2]
             self.life_consumed, self.life_consumed_error = float(consumed), float(error)
 
     # --- outputs -----------------------------------------------------------

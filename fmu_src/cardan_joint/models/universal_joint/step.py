@@ -33,8 +33,9 @@ STATE = (
 )  # fmt: skip
 ANGLE = STATE.index("phase_turns")  # the input angle's values lead the state
 MOVED = len(STATE) + len(table.INPUTS)
-# With life on, Miner's sum and its compensation follow (`JointLife`).
-LIFE_STATE = (*STATE, "life_consumed", "life_consumed_error")
+# With life on, Miner's sum and its compensation follow (`JointLife`), then
+# the life rule's scale (`life_rule`), fixed at `start` as the rule is.
+LIFE_STATE = (*STATE, "life_consumed", "life_consumed_error", "life_rate_scale")
 _KINEMATIC_STATE = len(STATE)
 # The kernel's fields the bearing loads take, among the outputs after the angles.
 _TORQUE, _INPUT_MOMENT, _OUTPUT_MOMENT = (
@@ -162,7 +163,7 @@ def joint_without_life(time, h, angle: Turns, phase: Turns, parameters_valid: bo
 
 
 def joint_with_life(time, h, angle: Turns, phase: Turns, parameters_valid: bool, miner,
-                    inputs: Inputs, starts, inertia, max_bend_angle,
+                    life_rate_scale, inputs: Inputs, starts, inertia, max_bend_angle,
                     life) -> tuple | None:  # fmt: skip
     """`joint_without_life` with life on (`LIFE_STATE`, grouped as
     `LIFE_GROUPS` says): the state, the inputs after the step, the outputs and
@@ -173,7 +174,7 @@ def joint_with_life(time, h, angle: Turns, phase: Turns, parameters_valid: bool,
     taken = joint_advanced(h, *angle, *phase, parameters_valid, *inputs, *inertia)
     speed, acceleration, beta, rate, bend_acceleration, load = inputs
     bearing_radius, rated_torque, life_constant, life_exponent, life_min_angle = life
-    rule = LifeRule(rated_torque, life_constant, life_exponent, life_min_angle)
+    rule = LifeRule(rated_torque, life_constant, life_exponent, life_min_angle, life_rate_scale)
     psi = angle[1] + (phase[1] + (angle[2] + phase[2]))  # as `response`'s
     damage = step_damage(
         rule, h, psi, beta, speed, acceleration, rate, bend_acceleration, inertia, load
@@ -183,7 +184,7 @@ def joint_with_life(time, h, angle: Turns, phase: Turns, parameters_valid: bool,
     outputs = taken[MOVED:]
     life_values = life_of(rule, bearing_radius, consumed, outputs, moved[_LOAD], moved[_SPEED],
                           moved[_BEND])  # fmt: skip
-    return taken[:_KINEMATIC_STATE] + consumed + moved + outputs + life_values
+    return taken[:_KINEMATIC_STATE] + consumed + (life_rate_scale,) + moved + outputs + life_values
 
 
 # The entries (the spec's `step`): the runtime's flat arguments, grouped.
