@@ -96,7 +96,10 @@ _VARIATION = 4.0
 _LOW_TERMS = 0.8
 _TOP_TERM = 0.1
 _GROWTH = 1.0 + _LOW_TERMS + _TOP_TERM
-_NEWTON_STEPS = 8
+# `zero_free_log_rho`'s Newton steps at most: they stop on the root, which far
+# above it each step divides x by at least 3/2 (a cubic's), so this many reach
+# it from a start 1e6 times too high (one with |a_3| 1e-36 of |a_0|).
+_NEWTON_STEPS = 40
 # How far (in log rho) a panel's ellipse reaches towards the D = 0 singularities.
 _TOWARDS_SINGULARITY = 0.75
 # The substituted power at a torque zero: gamma = q (p + 1) - 1 at least this.
@@ -222,13 +225,24 @@ def zero_free_on(log_rho, coefficients, points, substituted: bool) -> bool:
     return substituted or abs(a_last) * whole_power(rho, points - 1.0) <= _TOP_TERM * size
 
 
+def _spread_bound(c1, c2, c3, limit):
+    """An x >= 1 at or above the root of `_low_spread` = `limit` (x >= 1, the
+    coefficients' spread at x = 1 below it): P_3(x) >= P_2(x) there, so the
+    spread is at least c1 x + (c2 + c3) P_2(x), whose root, in the form
+    that does not cancel, lies at or above the cubic's."""
+    high = c2 + c3
+    free = limit + 0.5 * high
+    return 2.0 * free / (c1 + math.sqrt(c1 * c1 + 6.0 * high * free))
+
+
 def zero_free_log_rho(coefficients, points, substituted: bool):
     """(the largest log rho on which a_1..a_3 keep to `zero_free_on`'s share,
     the largest on which a_(n-1) does); 0.0 where there is none. The first is
     T's own (its zeros'), the second grows with the points (how well they
-    resolve T). The cubic in x = cosh(log rho) is solved by Newton's method,
-    which from x = 1 approaches its root from above (the cubic is convex and
-    increasing there) and ends on it."""
+    resolve T). The cubic in x = cosh(log rho) is solved by Newton's method
+    from the quadratic's root above it (`_spread_bound`): the cubic is convex
+    and increasing for x >= 1, so the steps fall towards the root and stop
+    where they no longer fall (on the root, to its rounding)."""
     a0, a1, a2, a3, a_last = coefficients
     size = abs(a0)
     c1, c2, c3 = abs(a1), abs(a2), abs(a3)
@@ -236,10 +250,14 @@ def zero_free_log_rho(coefficients, points, substituted: bool):
         return 0.0, 0.0
     low = math.inf
     if c1 != 0.0 or c2 != 0.0 or c3 != 0.0:
-        x = 1.0
+        limit = _LOW_TERMS * size
+        x = _spread_bound(c1, c2, c3, limit)
         for _ in range(_NEWTON_STEPS):
             slope = c1 + 3.0 * c2 * x + c3 * (7.5 * x * x - 1.5)
-            x -= (_low_spread(x, c1, c2, c3) - _LOW_TERMS * size) / slope
+            lower = x - (_low_spread(x, c1, c2, c3) - limit) / slope
+            if not lower < x:
+                break
+            x = lower
         low = math.acosh(x)
     if substituted or a_last == 0.0:
         return low, math.inf
