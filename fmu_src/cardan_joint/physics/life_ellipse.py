@@ -39,13 +39,18 @@ def bound_excess(log_rho, gamma):
     """(X(s), X'(s)) at s = `log_rho`: the module's X, the tail's bound and,
     for a power gamma (0 if none), log(max |u^gamma| (gamma + 1)), with
     cosh(s / 2)^2 = (1 + rho)^2 / (4 rho)."""
+    return _excess(log_rho, gamma, math.log(gamma + 1.0) if gamma != 0.0 else 0.0)
+
+
+def _excess(log_rho, gamma, log_mean):
+    """`bound_excess` with log(gamma + 1) given (a solve's steps share it)."""
     below = 2.0 * log_rho * (1.0 + log_rho * (1.0 + log_rho / 1.5))
     excess = 1.0 / below
     slope = -(2.0 + 4.0 * log_rho * (1.0 + log_rho)) / (below * below)
     if gamma != 0.0:
         rho = math.exp(log_rho)
         excess += gamma * (2.0 * math.log(1.0 + rho) - log_rho - 2.0 * _LOG_TWO)
-        excess += math.log(gamma + 1.0)
+        excess += log_mean
         slope += gamma * (1.0 - 2.0 / (1.0 + rho))
     return excess, slope
 
@@ -60,21 +65,22 @@ def log_rho_above(points, budget, gamma, steps: int):
     s = budget / least_slope
     if gamma == 0.0 and s > 0.0:  # on the left, X' < 0: the last step alone
         return s + bound_excess(s, 0.0)[0] / least_slope
+    log_mean = math.log(gamma + 1.0) if gamma != 0.0 else 0.0
     if gamma != 0.0:
         # G(s) <= (2n - gamma) s + 2 gamma log 2 - log(gamma + 1).
-        s += (math.log(gamma + 1.0) - 2.0 * gamma * _LOG_TWO) / least_slope
+        s += (log_mean - 2.0 * gamma * _LOG_TWO) / least_slope
     if not s > 0.0:
         s = 1.0
-    excess, slope = bound_excess(s, gamma)
+    excess, slope = _excess(s, gamma, log_mean)
     for _ in range(_HALVINGS):
         if 2.0 * points * s - excess <= budget:
             break
         s *= 0.5
-        excess, slope = bound_excess(s, gamma)
+        excess, slope = _excess(s, gamma, log_mean)
     if 2.0 * points * s - excess > budget:  # a budget below any rho's: s is right of the root
         return s
     if gamma != 0.0:  # else the start is the root's to a few 1e-3
         for _ in range(steps):
             s += (budget - 2.0 * points * s + excess) / (2.0 * points - slope)
-            excess, slope = bound_excess(s, gamma)
+            excess, slope = _excess(s, gamma, log_mean)
     return s + max(budget - 2.0 * points * s + excess, 0.0) / least_slope
