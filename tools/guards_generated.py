@@ -12,7 +12,7 @@ FAST_PATH = "fmu_src/cardan_joint/fmi/native/fast_path.c"
 FAST_VALUES = "fmu_src/cardan_joint/fmi/native/fast_values.c"
 LIFE_INTEGRAL = "fmu_src/cardan_joint/physics/life_integral.py"
 LIFE_ZEROS = "fmu_src/cardan_joint/physics/life_zeros.py"
-LIFE_PANEL = "fmu_src/cardan_joint/physics/life_panel.py"
+LIFE_ELLIPSE = "fmu_src/cardan_joint/physics/life_ellipse.py"
 REACH_TESTS = ("tests/unit/test_life_bound.py", "-k", "zeros_reach or cubics_root")
 ZEROS_TESTS = ("tests/unit/test_life_zeros.py",)
 STEADY_CHAIN_TESTS = (
@@ -213,15 +213,15 @@ GENERATED_MUTATIONS = (
         STEADY_CHAIN_TESTS,
     ),
     Mutation(
-        "life panel: the zeros' reach solved from above its root",
-        LIFE_PANEL,
+        "life ellipse: the zeros' reach solved from above its root",
+        LIFE_ELLIPSE,
         "x = _spread_bound(c1, c2, c3, limit)",
         "x = 1.0",
         REACH_TESTS,
     ),
     Mutation(
-        "life panel: the zeros' reach stops where Newton's steps no longer fall",
-        LIFE_PANEL,
+        "life ellipse: the zeros' reach stops where Newton's steps no longer fall",
+        LIFE_ELLIPSE,
         "if not lower < x:",
         "if False:",
         REACH_TESTS,

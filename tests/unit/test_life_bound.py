@@ -12,7 +12,7 @@ import math
 import mpmath
 import pytest
 
-from cardan_joint.physics import life_panel
+from cardan_joint.physics import life_ellipse, life_panel
 from cardan_joint.physics.life_ellipse import bound_excess
 from cardan_joint.physics.life_panel import (
     error_budget,
@@ -231,16 +231,16 @@ _SPREADS = (
 )  # fmt: skip
 
 
+@pytest.mark.parametrize("size", [1.7, 1e-200, 1e200])
 @pytest.mark.parametrize("spread", _SPREADS)
-def test_the_torques_zeros_reach_is_its_cubics_root(spread):
-    # Newton's steps start above the root (life_panel._spread_bound) and end on
-    # it: log rho = acosh(x) within the rounding of x (magnified by acosh's
-    # slope 1 / sinh near x = 1).
-    size = 1.7
+def test_the_torques_zeros_reach_is_its_cubics_root(spread, size):
+    # Newton's steps start above the root (life_ellipse._spread_bound) and end
+    # on it: log rho = acosh(x) within the rounding of x (magnified by acosh's
+    # slope 1 / sinh near x = 1), at any scale of the torque.
     c1, c2, c3 = (size * c for c in spread)
     limit = 0.8 * size
     root = _spread_root(c1, c2, c3, limit)
-    assert life_panel._spread_bound(c1, c2, c3, limit) >= float(root) * (1.0 - 1e-15)
+    assert life_ellipse._spread_bound(c1, c2, c3, limit) >= float(root) * (1.0 - 1e-15)
     low = zero_free_log_rho((-size, c1, -c2, c3, 0.0), 6, True)[0]
     with mpmath.workdps(40):
         exact = mpmath.acosh(root)
@@ -250,8 +250,8 @@ def test_the_torques_zeros_reach_is_its_cubics_root(spread):
 def test_the_zeros_reach_takes_a_few_newton_steps_for_the_benchmarks_panels(monkeypatch):
     # They stop where x no longer falls: 6 spread evaluations at most, not 40.
     calls = []
-    spread = life_panel._low_spread
-    monkeypatch.setattr(life_panel, "_low_spread", lambda *a: calls.append(a) or spread(*a))
+    spread = life_ellipse.low_spread
+    monkeypatch.setattr(life_ellipse, "low_spread", lambda *a: calls.append(a) or spread(*a))
     for c1, c2, c3 in _SPREADS[:4]:
         calls.clear()
         zero_free_log_rho((1.0, c1, c2, c3, 0.0), 6, True)
