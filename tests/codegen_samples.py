@@ -59,6 +59,8 @@ def quadrature(a: float, b: float) -> float:
 
 # Rules of several sizes, indexed by their size (a tuple of tables of any lengths).
 RULES = ((), (0.5,), (0.2113248654051871, 0.7886751345948129))
+# Their weights: rows of the same sizes, whose C shares RULES' row starts.
+RULE_WEIGHTS = ((), (1.0,), (0.5, 0.5))
 
 
 class Rule(NamedTuple):
@@ -83,7 +85,7 @@ def shapes(x: float, y: float) -> tuple:
     total = 0.0
     for n in range(1, len(RULES)):
         for k in range(n):
-            total += RULES[n][k] * x
+            total += RULE_WEIGHTS[n][k] * RULES[n][k] * x
     rule = Rule(0.5, 1.5, 2)
     pair = (x, y)
     spread = (*_pair(*pair), math.log(abs(y) + 1.0))

@@ -12,6 +12,8 @@ FAST_PATH = "fmu_src/cardan_joint/fmi/native/fast_path.c"
 FAST_VALUES = "fmu_src/cardan_joint/fmi/native/fast_values.c"
 LIFE_INTEGRAL = "fmu_src/cardan_joint/physics/life_integral.py"
 LIFE_ZEROS = "fmu_src/cardan_joint/physics/life_zeros.py"
+LIFE_ELLIPSE = "fmu_src/cardan_joint/physics/life_ellipse.py"
+REACH_TESTS = ("tests/unit/test_life_bound.py", "-k", "zeros_reach or cubics_root")
 ZEROS_TESTS = ("tests/unit/test_life_zeros.py",)
 STEADY_CHAIN_TESTS = (
     "tests/unit/test_chain_life_search.py::test_a_steady_chain_from_a_dead_centre_takes_its_zeros_at_once_and_exactly",
@@ -209,6 +211,20 @@ GENERATED_MUTATIONS = (
         "if (zero_lo | starting) != zero_lo:",
         "if False:",
         STEADY_CHAIN_TESTS,
+    ),
+    Mutation(
+        "life ellipse: the zeros' reach solved from above its root",
+        LIFE_ELLIPSE,
+        "x = _spread_bound(c1, c2, c3, limit)",
+        "x = 1.0",
+        REACH_TESTS,
+    ),
+    Mutation(
+        "life ellipse: the zeros' reach stops where Newton's steps no longer fall",
+        LIFE_ELLIPSE,
+        "if not lower < x:",
+        "if False:",
+        REACH_TESTS,
     ),
     Mutation(
         "written step: the step size checked",

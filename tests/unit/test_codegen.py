@@ -5,6 +5,7 @@ refused by a message quoting it with its file:line."""
 import inspect
 import math
 import random
+import re
 
 import codegen_samples as samples
 import pytest
@@ -50,3 +51,12 @@ def test_an_untranslatable_construct_is_named_with_its_line(function):
 def test_hypot_is_refused_with_the_formula_to_write_instead():
     with pytest.raises(Untranslatable, match="sqrt"):
         generate(samples.with_hypot, "refused")
+
+
+def test_tables_of_rows_of_the_same_sizes_share_their_row_starts():
+    # One load indexes both tables: the compiler sees the same start array.
+    source = generate(samples.shapes, "shapes").source
+    starts = re.findall(r"static const int64_t (K_\w+)\[", source)
+    assert len(starts) == 1, starts
+    for table in ("K_RULES", "K_RULE_WEIGHTS"):
+        assert f"{table}[{starts[0]}[" in source

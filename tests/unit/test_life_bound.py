@@ -3,21 +3,23 @@ and `life_ellipse`'s docstrings), each factor against an independent
 derivation: the largest |u|^gamma on the Bernstein ellipse by a brute-force
 maximum over its boundary (mpmath), the tail's sum by mpmath, Gauss-Legendre's
 error on a function with a known pole against the bound, the solve for log rho
-against mpmath's bisection of the same equation, and the per-panel targets
-against the step's 1e-9."""
+against mpmath's bisection of the same equation, the torque's zeros' reach
+against mpmath's root of its cubic, and the per-panel targets against the
+step's 1e-9."""
 
 import math
 
 import mpmath
 import pytest
 
-from cardan_joint.physics import life_panel
+from cardan_joint.physics import life_ellipse, life_panel
 from cardan_joint.physics.life_ellipse import bound_excess
 from cardan_joint.physics.life_panel import (
     error_budget,
     log_rho_required,
     points_for,
     target_share,
+    zero_free_log_rho,
 )
 from cardan_joint.physics.quadrature import MAX_POINTS, MIN_POINTS, gauss_rule
 
@@ -199,3 +201,58 @@ def test_a_budget_below_any_rhos_gives_a_log_rho_above_its_root(gamma):
         got = log_rho_required(10, budget, gamma)
         assert got > 0.0
         assert got >= _root(10, budget, gamma) * (1.0 - 1e-14)
+
+
+def _spread_root(c1, c2, c3, limit):
+    """The x >= 1 where |a_1| P_1(x) + |a_2| P_2(x) + |a_3| P_3(x) = limit, by
+    mpmath's bisection (the spread at x = 1 below the limit)."""
+    with mpmath.workdps(40):
+        c1, c2, c3, limit = map(mpmath.mpf, (c1, c2, c3, limit))
+
+        def excess(x):
+            return c1 * x + c2 * (1.5 * x * x - 0.5) + c3 * (2.5 * x**3 - 1.5 * x) - limit
+
+        low, high = mpmath.mpf(1), mpmath.mpf(2)
+        while excess(high) < 0:
+            low, high = high, 2 * high
+        for _ in range(200):
+            middle = (low + high) / 2
+            low, high = (middle, high) if excess(middle) < 0 else (low, middle)
+        return low
+
+
+# |a_1|, |a_2|, |a_3| over |a_0|: the benchmarks' panels (a_1 leads), each alone,
+# a_3 leading (8 Newton steps from x = 1 ended 113 times above the root), near
+# the 0.8 that leaves no ellipse, and spreads down to 1e-12.
+_SPREADS = (
+    (0.32, 1.1e-3, 2e-4), (0.0942, 6.2e-3, 1e-4), (0.0117, 5.7e-3, 3e-5), (0.64, 0.018, 4e-4),
+    (1e-3, 1e-5, 1e-9), (1e-4, 0.0, 0.0), (0.0, 1e-4, 0.0), (0.0, 0.0, 1e-6), (0.0, 0.3, 0.4),
+    (0.2, 0.3, 0.29), (1e-12, 1e-12, 1e-12), (0.0, 1e-3, 1e-12),
+)  # fmt: skip
+
+
+@pytest.mark.parametrize("size", [1.7, 1e-200, 1e200])
+@pytest.mark.parametrize("spread", _SPREADS)
+def test_the_torques_zeros_reach_is_its_cubics_root(spread, size):
+    # Newton's steps start above the root (life_ellipse._spread_bound) and end
+    # on it: log rho = acosh(x) within the rounding of x (magnified by acosh's
+    # slope 1 / sinh near x = 1), at any scale of the torque.
+    c1, c2, c3 = (size * c for c in spread)
+    limit = 0.8 * size
+    root = _spread_root(c1, c2, c3, limit)
+    assert life_ellipse._spread_bound(c1, c2, c3, limit) >= float(root) * (1.0 - 1e-15)
+    low = zero_free_log_rho((-size, c1, -c2, c3, 0.0), 6, True)[0]
+    with mpmath.workdps(40):
+        exact = mpmath.acosh(root)
+        assert abs(low - exact) <= 1e-14 * exact + 4e-16 / mpmath.sinh(exact), (low, exact)
+
+
+def test_the_zeros_reach_takes_a_few_newton_steps_for_the_benchmarks_panels(monkeypatch):
+    # They stop where x no longer falls: 6 spread evaluations at most, not 40.
+    calls = []
+    spread = life_ellipse.low_spread
+    monkeypatch.setattr(life_ellipse, "low_spread", lambda *a: calls.append(a) or spread(*a))
+    for c1, c2, c3 in _SPREADS[:4]:
+        calls.clear()
+        zero_free_log_rho((1.0, c1, c2, c3, 0.0), 6, True)
+        assert len(calls) <= 6, (c1, c2, c3, len(calls))

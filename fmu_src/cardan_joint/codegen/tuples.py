@@ -74,7 +74,7 @@ class Subscripts(Expressions):
         item, item_kind = self.scalar(node.slice)
         if row_kind is not INT or item_kind is not INT or isinstance(node.slice, ast.Slice):
             raise self.refuse(node, "a table of rows is indexed by two ints")
-        return f"{name}[{name}_start[{row}] + {item}]", rows.item
+        return f"{name}[{self.unit.starts[name]}[{row}] + {item}]", rows.item
 
     def index(self, node: ast.expr, whole: ast.AST) -> int:
         """A constant index (C's struct fields are named, not computed): see

@@ -50,6 +50,9 @@ class Unit:
         self.constants: dict[str, str] = {}  # C name -> its definition
         self.by_value: dict[tuple, str] = {}
         self.structs: dict[str, Tuple] = {}
+        # Each table of rows' start array: tables of the same row sizes share one,
+        # so the compiler indexes them all with one load (`rows`).
+        self.starts: dict[str, str] = {}
 
     def constant(self, name: str, value: object, where: str) -> str:
         """The C name of a module constant (one per name and value)."""
@@ -79,19 +82,32 @@ class Unit:
 
     def rows(self, name: str, texts: list[str], kind: Rows) -> str:
         """The C name of a module constant tuple of tables: its items row after row
-        in one static array, beside `<name>_start`, each row's first index."""
+        in one static array; each row's first index in a start array (`starts`)
+        that the tables of the same row sizes share: the gauss tables, read at one
+        point's row and node together, then share the index too."""
         key = (name, kind, tuple(texts))
         if key not in self.by_value:
             c_name = f"K_{name.lstrip('_')}"
-            while c_name in self.constants or f"{c_name}_start" in self.constants:
+            while c_name in self.constants:
                 c_name += "_"
-            starts = [sum(kind.sizes[:k]) for k in range(len(kind.sizes))]
             self.constants[c_name] = (
                 f"static const {kind.item.c} {c_name}[{max(len(texts), 1)}] = "
                 f"{{{', '.join(texts) or '0'}}};"
             )
-            self.constants[f"{c_name}_start"] = (
-                f"static const int64_t {c_name}_start[{len(starts)}] = "
+            self.starts[c_name] = self.row_starts(kind.sizes)
+            self.by_value[key] = c_name
+        return self.by_value[key]
+
+    def row_starts(self, sizes: tuple[int, ...]) -> str:
+        """The C name of the start array of rows of these sizes (one per sizes)."""
+        key = ("row starts", sizes)
+        if key not in self.by_value:
+            c_name = f"K_ROWS_{len(sizes)}_START"
+            while c_name in self.constants:
+                c_name += "_"
+            starts = [sum(sizes[:k]) for k in range(len(sizes))]
+            self.constants[c_name] = (
+                f"static const int64_t {c_name}[{len(starts)}] = "
                 f"{{{', '.join(f'INT64_C({k})' for k in starts)}}};"
             )
             self.by_value[key] = c_name

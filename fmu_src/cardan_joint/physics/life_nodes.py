@@ -103,6 +103,21 @@ def _node_added(sums, i: int, values, t, u, power, zero: int, divides: int, q, p
     Gauss-Jacobi panel q A_k |w_k| |T_k / u^q|^p, u^gamma being the rule's
     weight), its torque (divided by u^q where the joint's zero is the panel's
     end) and the torques a zero's search starts from (`PANEL_FIELDS`)."""
+    # Every joint's rate first: the tables' values and the sums need not be
+    # kept across the library's log and exp (callee-clobbered registers).
+    rates = ()  # type: tuple
+    values_divided = ()  # type: tuple
+    for k in range(len(bends)):
+        torque, speed = values[2 * k], values[2 * k + 1]
+        angle = max(abs(bends[k] + t * (rb + 0.5 * ab * t)), min_angle)
+        value = torque
+        if zero != 0 and divides_at(divides, k):
+            value = torque / (power * u)
+        rate = angle * abs(speed) * power_of(abs(value if weighted else torque), p)
+        if zero != 0:
+            rate *= q if weighted else q * power
+        rates = rates + (rate,)
+        values_divided = values_divided + (value,)
     if weighted:
         weight, mean, zeroth = (
             JACOBI_WEIGHTS[points][i],
@@ -120,24 +135,17 @@ def _node_added(sums, i: int, values, t, u, power, zero: int, divides: int, q, p
     for k in range(len(bends)):
         joint = sums[_SUM_FIELDS * k : _SUM_FIELDS * (k + 1)]
         total, change, before, kept_lo, kept_hi, a0, a1, a2, a3, a_last, b0 = joint
-        torque, speed = values[2 * k], values[2 * k + 1]
+        torque, value = values[2 * k], values_divided[k]
         if i == 0:
             kept_lo = torque
         if change == 0:
             kept_hi = torque
-            if before != 0.0 and torque != 0.0 and (before < 0.0) != (torque < 0.0):
+            if (before < 0.0 and torque > 0.0) or (before > 0.0 and torque < 0.0):
                 change, kept_lo = i, before
-        angle = max(abs(bends[k] + t * (rb + 0.5 * ab * t)), min_angle)
-        value = torque
-        if zero != 0 and divides_at(divides, k):
-            value = torque / (power * u)
-        rate = angle * abs(speed) * power_of(abs(value if weighted else torque), p)
-        if zero != 0:
-            rate *= q if weighted else q * power
         if weighted:  # `panel` reads the weighted mean there only
             b0 = b0 + mean * value
         added = added + (
-            total + weight * rate, change, torque, kept_lo, kept_hi,
+            total + weight * rates[k], change, torque, kept_lo, kept_hi,
             a0 + zeroth * value, a1 + first * value, a2 + second * value, a3 + third * value,
             a_last + last * value, b0,
         )  # fmt: skip

@@ -77,7 +77,7 @@ makes the ratio 1.9^p. The residue u^(gamma - 12) of a gamma rounded off 12
 
 import math
 
-from .life_ellipse import bound_excess, log_rho_above
+from .life_ellipse import bound_excess, log_rho_above, low_spread, spread_reach
 from .quadrature import (
     JACOBI_POWER,
     MAX_POINTS,
@@ -96,7 +96,6 @@ _VARIATION = 4.0
 _LOW_TERMS = 0.8
 _TOP_TERM = 0.1
 _GROWTH = 1.0 + _LOW_TERMS + _TOP_TERM
-_NEWTON_STEPS = 8
 # How far (in log rho) a panel's ellipse reaches towards the D = 0 singularities.
 _TOWARDS_SINGULARITY = 0.75
 # The substituted power at a torque zero: gamma = q (p + 1) - 1 at least this.
@@ -198,11 +197,6 @@ def longest_panel(tau, budget, gamma, stretch):
     return tau / whole_power(0.5 * (1.0 + math.cosh(per_point / _TOWARDS_SINGULARITY)), stretch)
 
 
-def _low_spread(x, c1, c2, c3):
-    """|a_1| P_1(x) + |a_2| P_2(x) + |a_3| P_3(x), given the |a_k|."""
-    return c1 * x + c2 * (1.5 * x * x - 0.5) + c3 * (2.5 * x * x - 1.5) * x
-
-
 def zero_free_on(log_rho, coefficients, points, substituted: bool) -> bool:
     """Whether T, with these Legendre coefficients (a_0..a_3, a_(n-1)) on the
     panel, keeps |T - a_0| <= 0.9 |a_0| on E_rho (rho = exp(`log_rho`)): there
@@ -217,7 +211,7 @@ def zero_free_on(log_rho, coefficients, points, substituted: bool) -> bool:
     if size == 0.0:
         return False
     rho = math.exp(log_rho)
-    if _low_spread(0.5 * (rho + 1.0 / rho), abs(a1), abs(a2), abs(a3)) > _LOW_TERMS * size:
+    if low_spread(0.5 * (rho + 1.0 / rho), abs(a1), abs(a2), abs(a3)) > _LOW_TERMS * size:
         return False
     return substituted or abs(a_last) * whole_power(rho, points - 1.0) <= _TOP_TERM * size
 
@@ -226,9 +220,7 @@ def zero_free_log_rho(coefficients, points, substituted: bool):
     """(the largest log rho on which a_1..a_3 keep to `zero_free_on`'s share,
     the largest on which a_(n-1) does); 0.0 where there is none. The first is
     T's own (its zeros'), the second grows with the points (how well they
-    resolve T). The cubic in x = cosh(log rho) is solved by Newton's method,
-    which from x = 1 approaches its root from above (the cubic is convex and
-    increasing there) and ends on it."""
+    resolve T). The first's cosh is the root of a cubic (`spread_reach`)."""
     a0, a1, a2, a3, a_last = coefficients
     size = abs(a0)
     c1, c2, c3 = abs(a1), abs(a2), abs(a3)
@@ -236,16 +228,12 @@ def zero_free_log_rho(coefficients, points, substituted: bool):
         return 0.0, 0.0
     low = math.inf
     if c1 != 0.0 or c2 != 0.0 or c3 != 0.0:
-        x = 1.0
-        for _ in range(_NEWTON_STEPS):
-            slope = c1 + 3.0 * c2 * x + c3 * (7.5 * x * x - 1.5)
-            x -= (_low_spread(x, c1, c2, c3) - _LOW_TERMS * size) / slope
-        low = math.acosh(x)
+        low = math.acosh(spread_reach(c1, c2, c3, _LOW_TERMS * size))
     if substituted or a_last == 0.0:
         return low, math.inf
     if _TOP_TERM * size <= abs(a_last):
         return low, 0.0
-    return low, (math.log(_TOP_TERM * size) - math.log(abs(a_last))) / (points - 1.0)
+    return low, math.log(_TOP_TERM * size / abs(a_last)) / (points - 1.0)
 
 
 def may_vanish(coefficients):
