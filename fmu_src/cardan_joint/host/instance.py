@@ -203,17 +203,15 @@ class FmuInstance:
 
     def set(self, **values: float) -> None:
         setter = self.fmu.setFloat64 if self.fmi3 else self.fmu.setReal
-        references = self._refs(values)
         with self._calling():
-            setter(references, list(values.values()))
+            setter(self._refs(values), list(values.values()))
 
     def values(self, *names: str) -> list:
         """The variables' values, in the order named; an FMI 3 array comes as a list."""
-        references = self._refs(names)
         with self._calling():
             if not self.fmi3:
-                return self.fmu.getReal(references)
-            read = self.fmu.getFloat64(references, sum(self.sizes[n] for n in names))
+                return self.fmu.getReal(self._refs(names))
+            read = self.fmu.getFloat64(self._refs(names), sum(self.sizes[n] for n in names))
         flat = iter(read)
         return [
             [next(flat) for _ in range(self.sizes[n])] if self.sizes[n] > 1 else next(flat)
@@ -239,9 +237,7 @@ class FmuInstance:
         from fmpy.fmi1 import FMICallException
 
         self.recent.clear()
-        # A second Ctrl-C, raised inside the step, fails it: the interrupt is
-        # raised in place of the refusal.
-        with self._calling():
+        with self._calling():  # a second Ctrl-C fails the step: it is raised, not the refusal
             try:
                 self.fmu.doStep(
                     currentCommunicationPoint=self.time, communicationStepSize=step_size
@@ -265,27 +261,25 @@ class FmuInstance:
         """Set; return the FMI status (fmi2Error for a call FMI does not allow)."""
         return status_of(self.set, **values)
 
-    def get_state(self) -> FMUState:
+    def _state_call(self, fmi2: str, fmi3: str, *args: Any) -> Any:
+        """An FMU-state call by its FMI 2 or FMI 3 name."""
         with self._calling():
-            return self.fmu.getFMUState() if self.fmi3 else self.fmu.getFMUstate()
+            return getattr(self.fmu, fmi3 if self.fmi3 else fmi2)(*args)
+
+    def get_state(self) -> FMUState:
+        return self._state_call("getFMUstate", "getFMUState")
 
     def set_state(self, state: FMUState) -> None:
-        with self._calling():
-            (self.fmu.setFMUState if self.fmi3 else self.fmu.setFMUstate)(state)
+        self._state_call("setFMUstate", "setFMUState", state)
 
     def free_state(self, state: FMUState) -> None:
-        with self._calling():
-            (self.fmu.freeFMUState if self.fmi3 else self.fmu.freeFMUstate)(state)
+        self._state_call("freeFMUstate", "freeFMUState", state)
 
     def serialize_state(self, state: FMUState) -> bytes:
-        serialize = self.fmu.serializeFMUState if self.fmi3 else self.fmu.serializeFMUstate
-        with self._calling():
-            return bytes(serialize(state))
+        return bytes(self._state_call("serializeFMUstate", "serializeFMUState", state))
 
     def deserialize_state(self, serialized: bytes) -> FMUState:
-        deserialize = self.fmu.deserializeFMUState if self.fmi3 else self.fmu.deSerializeFMUstate
-        with self._calling():
-            return deserialize(serialized)
+        return self._state_call("deSerializeFMUstate", "deserializeFMUState", serialized)
 
     def close(self) -> None:
         """Terminate and free the instance (and remove what `open` unzipped); once."""
