@@ -86,7 +86,9 @@ def test_a_panel_is_foreseen_from_the_plain_panel_about_it():
     for lo, hi, zero, divides in ((0.3, 0.6, 1, 1), (0.3, 0.6, -1, 2), (0.1, 0.45, 0, 0)):
         taken = panel(_linear_joints, zeros, lo, hi, zero, divides, q, 12, False, (0.3, 0.3), 0.0,
                       0.0, 0.05, P)  # fmt: skip
-        foreseen = life_foresight.cubics_foreseen(guide, 0.0, 1.0, lo, hi, zero, q, divides)
+        foreseen = life_foresight.cubics_foreseen(
+            life_foresight.cubics_of(guide), 0.0, 1.0, lo, hi, zero, q, divides
+        )
         for k in range(2):
             own = taken[PANEL_FIELDS * k + COEFFICIENTS : PANEL_FIELDS * k + COEFFICIENTS + 4]
             for a, b in zip(foreseen[4 * k : 4 * k + 4], own):
@@ -107,7 +109,7 @@ def test_a_joint_zero_free_where_the_panels_points_need_asks_no_more():
             spread = tuple(
                 rng.uniform(-1.0, 1.0) * abs(a0) * rng.choice((0.01, 0.2, 0.6)) for _ in range(3)
             )
-            guide = guide + (0.0, 0, 0.0, 0.0, a0) + spread + (0.0,)
+            guide = guide + (a0,) + spread
         lo = rng.uniform(0.0, 0.5)
         hi = rng.uniform(lo + 0.01, 1.0)
         zero, divides = rng.choice(((0, 0), (1, 1), (-1, 2)))
@@ -185,11 +187,13 @@ def test_each_zero_a_panel_shows_is_located_once_and_the_integral_is_exact(monke
 
     monkeypatch.setattr(life_zeros, "_root", counted)
     zeros = (0.3, 0.8)
+    bends = (0.3, 0.3)
     totals = life_integral.step_integrals(
-        _linear_joints, zeros, 1.0, 1.0, 0.0, (0.3, 0.3), 0.0, 0.0, 0.05, P, 1e6
-    )
+        _linear_joints, zeros, 1.0, 1.0, 0.0, bends, 0.0, 0.0, 0.05, P, 1e6,
+        life_integral.unseen_ahead(bends),
+    )  # fmt: skip
     assert sorted(located) == [0, 1]
-    for total, zero in zip(totals, zeros):
+    for total, zero in zip(totals[:2], zeros):
         exact = 0.3 * (zero ** (P + 1.0) + (1.0 - zero) ** (P + 1.0)) / (P + 1.0)
         assert math.isclose(total, exact, rel_tol=1e-12)
 

@@ -79,11 +79,23 @@ def _composed(cubic, origin, stretch, power, divided: bool):
     )
 
 
+def cubics_of(values):
+    """Each joint's a_0..a_3 in a panel's values (`life_nodes.panel`): what a
+    plain panel about others foresees them from."""
+    cubics = ()  # type: tuple
+    for k in range(len(values) // PANEL_FIELDS):
+        cubics = (
+            cubics + values[PANEL_FIELDS * k + COEFFICIENTS : PANEL_FIELDS * k + COEFFICIENTS + 4]
+        )
+    return cubics
+
+
 def cubics_foreseen(guide, guide_lo, guide_hi, lo, hi, zero: int, q, divides: int):
     """Each joint's a_0..a_3 on the panel [lo, hi] (substituted at its `zero`
     end as `life_panel.node_time`; its torque over u^q where its bit is set
     in `divides`, 0 on a plain panel), foreseen from the plain panel
-    [guide_lo, guide_hi] about it whose values are `guide`."""
+    [guide_lo, guide_hi] whose cubics (`cubics_of`) are `guide`: about the
+    panel, or before it (the last step's, `life_integral.step_integrals`)."""
     at = hi if zero < 0 else lo
     origin = (2.0 * at - guide_lo - guide_hi) / (guide_hi - guide_lo)
     stretch = 2.0 * (hi - lo) / (guide_hi - guide_lo)
@@ -91,16 +103,17 @@ def cubics_foreseen(guide, guide_lo, guide_hi, lo, hi, zero: int, q, divides: in
         stretch = -stretch
     power = q if zero != 0 else 1.0
     cubics = ()  # type: tuple
-    for k in range(len(guide) // PANEL_FIELDS):
-        cubic = guide[PANEL_FIELDS * k + COEFFICIENTS : PANEL_FIELDS * k + COEFFICIENTS + 4]
-        cubics = cubics + _composed(cubic, origin, stretch, power, divides_at(divides, k))
+    for k in range(len(guide) // 4):
+        cubics = cubics + _composed(guide[4 * k : 4 * k + 4], origin, stretch, power,
+                                    divides_at(divides, k))  # fmt: skip
     return cubics
 
 
 def points_foreseen(guide, guide_lo, guide_hi, lo, hi, zero: int, q, divides: int, points: int,
                     singular, budget, degree, carried):  # fmt: skip
     """The points the panel [lo, hi] inside the plain panel [guide_lo,
-    guide_hi] that failed (its values `guide`) is likely to ask for
+    guide_hi] that failed (its cubics `guide`), or after the last step's last
+    plain panel, is likely to ask for
     (`cubics_foreseen`), at least its `points` (which `singular`, the
     panel's singularities' log rho, allows): the most that any joint's zeros
     ask for, by `points_for` with the power `verdict` gives the joint

@@ -27,13 +27,12 @@ torque and input speed t s into the step.
 
 import math
 
-from .life_foresight import points_foreseen
+from .life_foresight import cubics_of, points_foreseen
 from .life_nodes import (
     filled,
     panel,
     scales_raised,
     totals_added,
-    unseen_panel,
     verdict,
 )
 from .life_panel import (
@@ -105,16 +104,28 @@ def singularity_time(w1, a1, h, reach):
     return math.inf
 
 
-def step_integrals(torques_at, step, h, w1, a1, bends, rb, ab, min_angle, p, reach):
+def unseen_ahead(bends):
+    """`step_integrals`' `ahead` before any step: no panel to foresee from."""
+    ahead = (0.0, 0.0)
+    for _ in range(len(bends)):
+        ahead = ahead + (0.0, 0.0, 0.0, 0.0)
+    return ahead
+
+
+def step_integrals(torques_at, step, h, w1, a1, bends, rb, ab, min_angle, p, reach, ahead):
     """Each joint's integral over a step of `h` s of A_k(t) |w_k(t)|
     |T_k(t)|^p, A_k = max(|b_k(t)|, `min_angle`): the life rate's variable
-    part (`life.step_damage` scales it), for the joints of a chain at once.
+    part (`life.step_damage` scales it), for the joints of a chain at once;
+    then the `ahead` the next step takes.
 
     `torques_at(t, step)`: (T_1, w_1, ..., T_N, w_N) t s into the step; joint
     k's bend `bends[k]` + rb t + ab t^2 / 2 as the joints step it; w1 + a1 t
     the input speed, which places the speed's zero and, with `reach` (the
     torques' singularities' imaginary input angle, `life.singularity_reach`),
-    sizes the panels."""
+    sizes the panels. `ahead`: (lo, hi, each joint's a_0..a_3) of the last
+    plain panel the step before took, in this step's time (`unseen_ahead`
+    if none): the first panel's points are foreseen from its cubics, which
+    saves taking it twice (a guess: the verdict judges it all the same)."""
     tau = singularity_time(w1, a1, h, reach)
     q = substitution_power(p)
     gamma = q * (p + 1.0) - 1.0
@@ -130,12 +141,16 @@ def step_integrals(torques_at, step, h, w1, a1, bends, rb, ab, min_angle, p, rea
     later, zero_later = math.inf, 0
     # The last plain panel that failed, on [guide_lo, guide_hi]: it foresees
     # the points of the plain panels within it.
-    guide = unseen_panel(bends)
+    guide = ahead[2:]
     guide_lo, guide_hi = 0.0, -1.0
+    # The last plain panel taken, [last_lo, last_hi] (none while equal): the
+    # next step's `ahead`.
+    last = ahead[2:]
+    last_lo, last_hi = 0.0, 0.0
     length, points, substituted = h, 0, False
     for _ in range(_MAX_ATTEMPTS):
         if t >= h:
-            return totals
+            return totals + (last_lo - h, last_hi - h) + last
         hi = t + length
         if hi >= end or end - hi < 0.25 * length:
             hi = end
@@ -174,6 +189,11 @@ def step_integrals(torques_at, step, h, w1, a1, bends, rb, ab, min_angle, p, rea
                 continue
             if foreseen <= MAX_POINTS:
                 n = max(n, foreseen)
+        elif t == 0.0 and zero == 0 and ahead[0] < ahead[1]:
+            foreseen = points_foreseen(ahead[2:], ahead[0], ahead[1], t, hi, zero, q, divides, n,
+                                       singular, sized, degree, carried)  # fmt: skip
+            if foreseen <= MAX_POINTS:
+                n = max(n, foreseen)
         n = min(n, MAX_POINTS)
         values = panel(torques_at, step, t, hi, zero, divides, q, n, weighted, bends, rb, ab,
                        min_angle, p)  # fmt: skip
@@ -181,6 +201,9 @@ def step_integrals(torques_at, step, h, w1, a1, bends, rb, ab, min_angle, p, rea
         failing, wanted = verdict(values, scales, n, sized, degree, carried, singular, divides)
         if failing == 0 or hi - t <= _SHORTEST * h:
             totals = totals_added(totals, values)
+            if zero == 0:
+                last = cubics_of(values)
+                last_lo, last_hi = t, hi
             # The next panel starts from this one's points and twice its
             # length: a piece's panels are alike.
             length = 2.0 * (hi - t)
@@ -192,7 +215,7 @@ def step_integrals(torques_at, step, h, w1, a1, bends, rb, ab, min_angle, p, rea
                 length, points = h, 0
             continue
         if zero == 0:
-            guide = values
+            guide = cubics_of(values)
             guide_lo, guide_hi = t, hi
         if wanted != 0:
             length, points, substituted = hi - t, wanted, zero != 0
@@ -217,11 +240,12 @@ def step_integrals(torques_at, step, h, w1, a1, bends, rb, ab, min_angle, p, rea
             totals,
             panel(torques_at, step, t, h, 0, 0, q, MAX_POINTS, False, bends, rb, ab, min_angle, p),
         )
-    return totals
+    return totals + (last_lo - h, last_hi - h) + last
 
 
 def step_integral(torque_at, step, h, w1, a1, b, rb, ab, min_angle, p, reach):
     """The integral over a step of `h` s of A(t) |w(t)| |T(t)|^p, A = max(|b(t)|,
     `min_angle`) for one joint: `step_integrals` with N = 1, `torque_at(t,
     step)` giving (T, w) t s into the step; the bend b + rb t + ab t^2 / 2."""
-    return step_integrals(torque_at, step, h, w1, a1, (b,), rb, ab, min_angle, p, reach)[0]
+    ahead = unseen_ahead((b,))
+    return step_integrals(torque_at, step, h, w1, a1, (b,), rb, ab, min_angle, p, reach, ahead)[0]

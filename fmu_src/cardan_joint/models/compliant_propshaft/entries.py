@@ -18,7 +18,7 @@ from .variables import compliant_propshaft_table
 
 def compliant_propshaft_step(time, h, angle: tuple[int, float, float], parameters_valid: bool,
                              layout, shifts, critical_speeds, fixed, crosspiece, life, sums,
-                             spring, input_speed, input_acceleration, output_speed,
+                             ahead, spring, input_speed, input_acceleration, output_speed,
                              output_acceleration) -> tuple | None:  # fmt: skip
     """The CompliantPropshaft's step (`compliant_state_names`, then the inputs,
     grouped): `compliant_propshaft_advanced`, or None when the step is not
@@ -28,7 +28,7 @@ def compliant_propshaft_step(time, h, angle: tuple[int, float, float], parameter
         return None
     return compliant_propshaft_advanced(
         h, angle, parameters_valid, layout, shifts, critical_speeds, fixed, crosspiece, life,
-        sums, spring, input_speed, input_acceleration, output_speed, output_acceleration,
+        sums, ahead, spring, input_speed, input_acceleration, output_speed, output_acceleration,
     )  # fmt: skip
 
 

@@ -74,7 +74,7 @@ def compliant_takes_step(h: float, parameters_valid: bool, speed: float, acceler
 
 
 def compliant_propshaft_advanced(h, angle, parameters_valid: bool, layout, shifts, critical_speeds,
-                                 fixed, crosspiece, life, sums, spring, speed, acceleration,
+                                 fixed, crosspiece, life, sums, ahead, spring, speed, acceleration,
                                  output_speed, output_acceleration):  # fmt: skip
     """A step `compliant_takes_step` takes, of `h` s: the state
     (`compliant_state_names`), the inputs after the step and the outputs. The
@@ -88,8 +88,8 @@ def compliant_propshaft_advanced(h, angle, parameters_valid: bool, layout, shift
     rule = LifeRule(rated_torque, life_constant, life_exponent, min_angle)
     load = (shifts[len(shifts) - 1], lag, output_speed, output_acceleration, stiffness, damping)
     damages = chain_damages(rule, h, spring_chain_torque, angle[1], angle[2], speed, acceleration,
-                            crosspiece, load, layout)  # fmt: skip
-    added = sums_added(sums, damages)
+                            crosspiece, load, layout, ahead)  # fmt: skip
+    added = sums_added(sums, damages[: len(shifts)])
     end_speed = speed + acceleration * h
     end = advanced(angle, h * (speed + 0.5 * acceleration * h))
     end_lag = lag + change
@@ -109,4 +109,14 @@ def compliant_propshaft_advanced(h, angle, parameters_valid: bool, layout, shift
     passed = rigid[1 : 3 * len(shifts) - 2] + rigid[3 * len(shifts) + 1 :]
     state = end + (parameters_valid,) + layout + shifts + critical_speeds + fixed + crosspiece
     moved = (end_speed, acceleration, end_output_speed, output_acceleration)
-    return state + life + added + (end_lag, stiffness, damping) + moved + spring_values + passed
+    spring_state = (end_lag, stiffness, damping)
+    return (
+        state
+        + life
+        + added
+        + damages[len(shifts) :]
+        + spring_state
+        + moved
+        + spring_values
+        + passed
+    )

@@ -24,11 +24,12 @@ PROPSHAFT_GROUPS = {
     "crosspiece": ("crosspiece_inertia_*",),
     "life": ("bearing_radius", "rated_torque", "life_constant", "life_exponent", "life_min_angle"),
     "sums": ("joint_*_life_consumed", "joint_*_life_consumed_error"),
+    "ahead": ("life_ahead_*", "joint_*_life_ahead_*"),
 }
 
 
 def propshaft_step(time, h, angle: tuple[int, float, float], parameters_valid: bool, layout,
-                   shifts, critical_speeds, fixed, crosspiece, life, sums, input_speed,
+                   shifts, critical_speeds, fixed, crosspiece, life, sums, ahead, input_speed,
                    input_acceleration, load_torque) -> tuple | None:  # fmt: skip
     """The Propshaft's step (`state_names`, then the inputs, grouped):
     `propshaft_advanced`, or None when the step is not taken here (the model's
@@ -36,7 +37,7 @@ def propshaft_step(time, h, angle: tuple[int, float, float], parameters_valid: b
     if not takes_step(h, parameters_valid, input_speed, input_acceleration, load_torque):
         return None
     return propshaft_advanced(h, angle, parameters_valid, layout, shifts, critical_speeds, fixed,
-                              crosspiece, life, sums, input_speed, input_acceleration,
+                              crosspiece, life, sums, ahead, input_speed, input_acceleration,
                               load_torque)  # fmt: skip
 
 

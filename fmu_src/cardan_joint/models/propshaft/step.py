@@ -65,6 +65,17 @@ def state_names(joints: int) -> tuple[str, ...]:
         "bearing_radius", "rated_torque", "life_constant", "life_exponent", "life_min_angle",
         *(f"joint_{k}_life_consumed{part}" for k in range(1, joints + 1)
           for part in ("", "_error")),
+        *ahead_names(joints),
+    )  # fmt: skip
+
+
+def ahead_names(joints: int) -> tuple[str, ...]:
+    """The step state's names of what life carries to the next step
+    (`life_integral.step_integrals`' `ahead`): the last plain panel's start
+    and end, then each joint's cubic on it."""
+    return (
+        "life_ahead_start", "life_ahead_end",
+        *(f"joint_{k}_life_ahead_a{i}" for k in range(1, joints + 1) for i in range(4)),
     )  # fmt: skip
 
 
@@ -122,7 +133,7 @@ def step_layout(tail):
 
 
 def chain_damages(rule, h, torques_at, fraction, error, speed, acceleration, crosspiece, load,
-                  layout):  # fmt: skip
+                  layout, ahead):  # fmt: skip
     """Each joint's Miner damage over a step of `h` s from the input angle's
     `fraction` (+ `error`), the input shaft at `speed` and constant
     `acceleration`: `torques_at(t, step)` gives every joint's (T_k, input
@@ -130,7 +141,9 @@ def chain_damages(rule, h, torques_at, fraction, error, speed, acceleration, cro
     inertias, *`load`) + layout + its sines and cosines (`node_trig`);
     `load` the held load (`chain_torque`) or the
     parameters of a load that follows the motion. The joints share the nodes
-    (`step_integrals`) and the singularities of the largest working angle."""
+    (`step_integrals`) and the singularities of the largest working angle;
+    the damages are followed by the `ahead` the next step takes (`ahead`
+    this one's)."""
     bends = ()
     for k in range(len(layout) // LAYOUT_FIELDS):
         bends = bends + (layout[LAYOUT_FIELDS * k + WORKING_ANGLE],)
@@ -141,13 +154,13 @@ def chain_damages(rule, h, torques_at, fraction, error, speed, acceleration, cro
     step = step + node_trig(layout)
     integrals = step_integrals(
         torques_at, step, h, speed, acceleration, bends, 0.0, 0.0, rule.min_angle, rule.exponent,
-        singularity_reach(peak),
+        singularity_reach(peak), ahead,
     )  # fmt: skip
     scale = rate_scale(rule) / 3600.0
     damages = ()
-    for k in range(len(integrals)):
+    for k in range(len(bends)):
         damages = damages + (scale * integrals[k],)
-    return damages
+    return damages + integrals[len(bends) :]
 
 
 def sums_added(sums, damages):
@@ -197,7 +210,7 @@ def propshaft_outputs(angle, speed, acceleration, load, layout, shifts, critical
 
 
 def propshaft_advanced(h, angle, parameters_valid, layout, shifts, critical_speeds, fixed,
-                       crosspiece, life, sums, speed, acceleration, load):  # fmt: skip
+                       crosspiece, life, sums, ahead, speed, acceleration, load):  # fmt: skip
     """A step `takes_step` takes, of `h` s with the input shaft at constant
     acceleration and the load held: the state (`state_names`), the inputs
     after the step and the outputs. Each joint's Miner's sum gains its damage
@@ -209,11 +222,11 @@ def propshaft_advanced(h, angle, parameters_valid, layout, shifts, critical_spee
     end_speed = speed + acceleration * h
     end = advanced(angle, h * (speed + 0.5 * acceleration * h))
     damages = chain_damages(rule, h, chain_torque, fraction, error, speed, acceleration,
-                            crosspiece, (load,), layout)  # fmt: skip
-    added = sums_added(sums, damages)
+                            crosspiece, (load,), layout, ahead)  # fmt: skip
+    added = sums_added(sums, damages[: len(shifts)])
     outputs = propshaft_outputs(
         end, end_speed, acceleration, load, layout, shifts, critical_speeds, fixed, I1, I2, I3,
         rule, radius, added,
     )  # fmt: skip
     state = end + (parameters_valid,) + layout + shifts + critical_speeds + fixed + crosspiece
-    return state + life + added + (end_speed, acceleration, load) + outputs
+    return state + life + added + damages[len(shifts) :] + (end_speed, acceleration, load) + outputs
