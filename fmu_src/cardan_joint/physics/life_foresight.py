@@ -14,6 +14,8 @@ Legendre coefficients a_0..a_3 follow exactly from those of u^(q i), a
 table of rationals (`_MOMENTS`). A joint whose zero is t0 is divided by u^q
 on the panel: its cubic, divided by x - x0 (the zero's factor, up to the
 cubic's remainder there, c_0), stands for it: the same terms from c_1 on.
+The last step's last plain panel foresees the step's first panel alike:
+that panel's x runs on beyond 1 into the step, an interval of the same x.
 `life_nodes.verdict` reads the same coefficients with `life_panel`'s bound;
 a joint whose cubic keeps to it on the ellipse the panel's points need asks
 for no more, which spares solving for its reach.

@@ -10,7 +10,9 @@ more points than it has is taken again with them, or cut at the torque's
 sign change it shows (`life_zeros`, which keeps the next zero it shows for
 later), or halved; a panel inside a plain one that failed, plain or
 substituted at a zero, takes the points that one's cubic foresees
-(`life_foresight`). So a piece costs one panel unless it is longer
+(`life_foresight`), as a step's first panel takes the points that the
+last step's last plain panel foresees (`ahead`, carried in the step state).
+So a piece costs one panel unless it is longer
 than the torque's singularities' reach, and each event costs its location
 and a few panels more.
 

@@ -8,6 +8,7 @@ that instant): each joint's damage is `life_integral.step_integral` of them,
 `step.chain_damages` (the step's own), under a held load or one that follows
 the motion (the compliant propshaft's spring: `load_over_step`)."""
 
+import math
 from typing import Any
 
 from ...framework.stepped import ShaftModel
@@ -79,10 +80,12 @@ class PropshaftLife:
             )
         # What life foresees the next step from: a state saved before it was
         # kept foresees nothing (`unseen_ahead`).
-        ahead = tuple(float(x) for x in state.get("life_ahead", unseen_ahead(range(self.joints))))
-        if len(ahead) != len(unseen_ahead(range(self.joints))):
-            raise ValueError(f"life_ahead: {len(ahead)} values in the state, "
-                             f"{len(unseen_ahead(range(self.joints)))} here")  # fmt: skip
+        unseen = unseen_ahead(range(self.joints))
+        ahead = tuple(float(x) for x in state.get("life_ahead", unseen))
+        if len(ahead) != len(unseen):
+            raise ValueError(f"life_ahead: {len(ahead)} values in the state, {len(unseen)} here")
+        if not all(math.isfinite(x) for x in ahead):
+            raise ValueError(f"life_ahead: {list(ahead)} in the state, finite values only")
 
         def put() -> None:
             put_angle()

@@ -1,0 +1,49 @@
+"""The mutation table's guards of what life carries from one step to the next
+(tools/guards.py, docs/life.md "Exact over each step"): the step's first
+panel foreseen from the last step's last plain panel only when there is one,
+and a restored state's `life_ahead` checked before it is taken."""
+
+from guards_base import Mutation
+
+LIFE_INTEGRAL = "fmu_src/cardan_joint/physics/life_integral.py"
+PROPSHAFT_LIFE = "fmu_src/cardan_joint/models/propshaft/life.py"
+COUNT = ("tests/unit/test_life_march.py", "-k", "without_a_mean_torque")
+RESTORED = ("tests/unit/test_propshaft_life.py", "-k", "restored or malformed")
+
+AHEAD_MUTATIONS = (
+    Mutation(
+        "life ahead: the first panel foreseen from the last step's",
+        LIFE_INTEGRAL,
+        "elif t == 0.0 and zero == 0 and ahead[0] < ahead[1]:",
+        "elif False:",
+        COUNT,
+    ),
+    Mutation(
+        "life ahead: nothing foreseen before any step",
+        LIFE_INTEGRAL,
+        "elif t == 0.0 and zero == 0 and ahead[0] < ahead[1]:",
+        "elif t == 0.0 and zero == 0:",
+        RESTORED,
+    ),
+    Mutation(
+        "life ahead: a restored state carries it",
+        PROPSHAFT_LIFE,
+        "            self._ahead = ahead\n",
+        "            pass\n",
+        RESTORED,
+    ),
+    Mutation(
+        "life ahead: a restored state's count checked",
+        PROPSHAFT_LIFE,
+        "if len(ahead) != len(unseen):",
+        "if False:",
+        RESTORED,
+    ),
+    Mutation(
+        "life ahead: a restored state's values finite",
+        PROPSHAFT_LIFE,
+        "if not all(math.isfinite(x) for x in ahead):",
+        "if False:",
+        RESTORED,
+    ),
+)
