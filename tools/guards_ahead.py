@@ -1,7 +1,8 @@
 """The mutation table's guards of what life carries from one step to the next
 (tools/guards.py, docs/life.md "Exact over each step"): the step's first
-panel foreseen from the last step's last plain panel only when there is one,
-and a restored state's `life_ahead` checked before it is taken."""
+panel foreseen from the last step's last plain panel only when there is one
+and its zeros asked for more points than the singularities, and a restored
+state's `life_ahead` checked before it is taken."""
 
 from guards_base import Mutation
 
@@ -9,6 +10,7 @@ LIFE_INTEGRAL = "fmu_src/cardan_joint/physics/life_integral.py"
 PROPSHAFT_LIFE = "fmu_src/cardan_joint/models/propshaft/life.py"
 COUNT = ("tests/unit/test_life_march.py", "-k", "without_a_mean_torque")
 RESTORED = ("tests/unit/test_propshaft_life.py", "-k", "restored or malformed")
+FEWEST = ("tests/unit/test_propshaft_life.py", "-k", "fewest_points")
 
 AHEAD_MUTATIONS = (
     Mutation(
@@ -24,6 +26,13 @@ AHEAD_MUTATIONS = (
         "elif t == 0.0 and zero == 0 and ahead[0] < ahead[1]:",
         "elif t == 0.0 and zero == 0:",
         RESTORED,
+    ),
+    Mutation(
+        "life ahead: a panel of the fewest points carries nothing",
+        LIFE_INTEGRAL,
+        "if zero == 0 and n > least:",
+        "if zero == 0:",
+        FEWEST,
     ),
     Mutation(
         "life ahead: a restored state carries it",

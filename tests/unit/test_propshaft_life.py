@@ -224,3 +224,23 @@ def test_a_state_whose_life_ahead_is_malformed_is_refused_and_changes_nothing(ah
     with pytest.raises(ValueError, match=f"life_ahead: .*{re.escape(why)}"):
         shaft.restore({**saved, "life_ahead": ahead})
     assert json.dumps(shaft.state()) == before
+
+
+def test_a_step_whose_panels_took_the_fewest_points_carries_nothing_ahead(monkeypatch):
+    # A held load at the benchmarks' point: one 4-point panel a step, the
+    # fewest the singularities ask for, so its zeros asked for nothing and
+    # the next step spares the foresight (it cost the Propshaft's step 0.5 k
+    # instructions a step). Under the spring, whose torque's zeros ask for
+    # more, most steps carry their last plain panel.
+    calls = chain_evaluations(monkeypatch)
+    shaft, drive, carried = Propshaft(2), CompliantPropshaft(2), 0
+    for _ in range(20):
+        calls.clear()
+        shaft.run(shaft.time, 1e-3, (100.0, 5.0, 50.0))
+        assert len(calls) == 4
+        start, end = shaft._ahead[:2]
+        assert start == end
+        drive.run(drive.time, 1e-3, (100.0, 5.0, 100.0, 5.0))
+        start, end = drive.rigid._ahead[:2]
+        carried += start < end
+    assert carried > 15

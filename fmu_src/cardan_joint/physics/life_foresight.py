@@ -123,6 +123,9 @@ def points_foreseen(guide, guide_lo, guide_hi, lo, hi, zero: int, q, divides: in
     + 1 if they allow no rule (a cut)."""
     cubics = cubics_foreseen(guide, guide_lo, guide_hi, lo, hi, zero, q, divides)
     wanted = points
+    # The ellipse `points` need for each power (on a plain panel both are 0).
+    required = log_rho_required(points, budget, degree)
+    carried_required = required if carried == degree else log_rho_required(points, budget, carried)
     for k in range(len(cubics) // 4):
         divided = divides_at(divides, k)
         power = degree if divided else carried
@@ -130,7 +133,8 @@ def points_foreseen(guide, guide_lo, guide_hi, lo, hi, zero: int, q, divides: in
         cubic = cubics[4 * k : 4 * k + 4] + (0.0,)
         # Zero-free on the ellipse `points` need, the joint asks no more (its
         # cubic has no a_(n-1) to check).
-        if not zero_free_on(log_rho_required(points, budget, power) / reach, cubic, points, True):
+        if not zero_free_on((required if divided else carried_required) / reach, cubic, points,
+                            True):  # fmt: skip
             low = reach * zero_free_log_rho(cubic, MAX_POINTS, False)[0]
             wanted = max(wanted, points_for(min(singular, low), budget, power))
     return wanted

@@ -145,8 +145,8 @@ def step_integrals(torques_at, step, h, w1, a1, bends, rb, ab, min_angle, p, rea
     # the points of the plain panels within it.
     guide = ahead[2:]
     guide_lo, guide_hi = 0.0, -1.0
-    # The last plain panel taken, [last_lo, last_hi] (none while equal): the
-    # next step's `ahead`.
+    # The last plain panel taken, [last_lo, last_hi] (none while equal, or
+    # if it took the fewest points): the next step's `ahead`.
     last = ahead[2:]
     last_lo, last_hi = 0.0, 0.0
     length, points, substituted = h, 0, False
@@ -178,7 +178,8 @@ def step_integrals(torques_at, step, h, w1, a1, bends, rb, ab, min_angle, p, rea
         singular = singular_log_rho(hi - t, tau, stretch)
         # A substituted panel's points carry the substitution's: a plain one's
         # are not like them, nor the other way round.
-        n = max(points if (zero != 0) == substituted else 0, points_for(singular, sized, degree))
+        least = points_for(singular, sized, degree)
+        n = max(points if (zero != 0) == substituted else 0, least)
         # A panel inside the last plain panel that failed is foreseen from it,
         # plain or substituted at a zero: next to a zero, another joint's zero
         # near it asks a substituted panel for more points or a halving.
@@ -203,9 +204,14 @@ def step_integrals(torques_at, step, h, w1, a1, bends, rb, ab, min_angle, p, rea
         failing, wanted = verdict(values, scales, n, sized, degree, carried, singular, divides)
         if failing == 0 or hi - t <= _SHORTEST * h:
             totals = totals_added(totals, values)
-            if zero == 0:
+            if zero == 0 and n > least:
                 last = cubics_of(values)
                 last_lo, last_hi = t, hi
+            elif zero == 0:
+                # Its torque's zeros asked for no more points than the
+                # singularities: the next step foresees nothing, and spares
+                # the foresight's cost.
+                last_lo, last_hi = 0.0, 0.0
             # The next panel starts from this one's points and twice its
             # length: a piece's panels are alike.
             length = 2.0 * (hi - t)
