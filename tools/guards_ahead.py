@@ -16,15 +16,15 @@ AHEAD_MUTATIONS = (
     Mutation(
         "life ahead: the first panel foreseen from the last step's",
         LIFE_INTEGRAL,
-        "elif t == 0.0 and zero == 0 and ahead[0] < ahead[1]:",
-        "elif False:",
+        "if inside or (t == 0.0 and zero == 0 and guide_lo < guide_hi <= 0.0):",
+        "if inside:",
         COUNT,
     ),
     Mutation(
         "life ahead: nothing foreseen before any step",
         LIFE_INTEGRAL,
-        "elif t == 0.0 and zero == 0 and ahead[0] < ahead[1]:",
-        "elif t == 0.0 and zero == 0:",
+        "if inside or (t == 0.0 and zero == 0 and guide_lo < guide_hi <= 0.0):",
+        "if inside or (t == 0.0 and zero == 0 and guide_hi <= 0.0):",
         RESTORED,
     ),
     Mutation(

@@ -255,7 +255,7 @@ def test_the_compliant_propshaft_without_a_mean_torque_spends_few_evaluations(mo
     # up to 157): the other joint's zero, near, asked them for more points
     # or a halving once taken; 16.7, up to 141, with the bound exact where
     # it was loose and zeros located as exactly as their panels need; 13.9
-    # (13.3 over 2,000 steps), up to 141, with each step's first panel
+    # (13.4 over 2,000 steps), up to 141, with each step's first panel
     # foreseen from the last step's last plain panel (before, a 4-point
     # probe failed on most steps and was taken again with 5 to 9 points).
     calls = chain_evaluations(monkeypatch)

@@ -123,18 +123,19 @@ def points_foreseen(guide, guide_lo, guide_hi, lo, hi, zero: int, q, divides: in
     + 1 if they allow no rule (a cut)."""
     cubics = cubics_foreseen(guide, guide_lo, guide_hi, lo, hi, zero, q, divides)
     wanted = points
-    # The ellipse `points` need for each power (on a plain panel both are 0).
-    required = log_rho_required(points, budget, degree)
-    carried_required = required if carried == degree else log_rho_required(points, budget, carried)
+    # The ellipse `points` need, solved once for joints of the same power
+    # (on a plain panel all are 0).
+    required, solved = 0.0, -1.0
     for k in range(len(cubics) // 4):
         divided = divides_at(divides, k)
         power = degree if divided else carried
         reach = _DIVIDED_REACH if divided else 1.0
         cubic = cubics[4 * k : 4 * k + 4] + (0.0,)
+        if power != solved:
+            required, solved = log_rho_required(points, budget, power), power
         # Zero-free on the ellipse `points` need, the joint asks no more (its
         # cubic has no a_(n-1) to check).
-        if not zero_free_on((required if divided else carried_required) / reach, cubic, points,
-                            True):  # fmt: skip
+        if not zero_free_on(required / reach, cubic, points, True):
             low = reach * zero_free_log_rho(cubic, MAX_POINTS, False)[0]
             wanted = max(wanted, points_for(min(singular, low), budget, power))
     return wanted

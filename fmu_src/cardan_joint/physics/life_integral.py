@@ -142,9 +142,10 @@ def step_integrals(torques_at, step, h, w1, a1, bends, rb, ab, min_angle, p, rea
     end, zero_end = next_kink(0.0, h, w1, a1, bends, rb, ab, min_angle), 0
     later, zero_later = math.inf, 0
     # The last plain panel that failed, on [guide_lo, guide_hi]: it foresees
-    # the points of the plain panels within it.
+    # the points of the plain panels within it; before one fails, the last
+    # step's last plain panel (`ahead`, before the step) foresees the first.
     guide = ahead[2:]
-    guide_lo, guide_hi = 0.0, -1.0
+    guide_lo, guide_hi = ahead[0], ahead[1]
     # The last plain panel taken, [last_lo, last_hi] (none while equal, or
     # if it took the fewest points): the next step's `ahead`.
     last = ahead[2:]
@@ -184,17 +185,19 @@ def step_integrals(torques_at, step, h, w1, a1, bends, rb, ab, min_angle, p, rea
         # plain or substituted at a zero: next to a zero, another joint's zero
         # near it asks a substituted panel for more points or a halving.
         carried = q - 1.0 if zero != 0 else 0.0
-        if guide_lo <= t and hi <= guide_hi:
+        inside = guide_lo <= t and hi <= guide_hi
+        if inside or (t == 0.0 and zero == 0 and guide_lo < guide_hi <= 0.0):
             foreseen = points_foreseen(guide, guide_lo, guide_hi, t, hi, zero, q, divides, n,
                                        singular, sized, degree, carried)  # fmt: skip
-            if foreseen > MAX_POINTS and hi - t >= _UNSEEN_HALVING * (guide_hi - guide_lo):
+            # Halved unseen only inside: the last step's cubic, extrapolated,
+            # foresees a cut less well than a halving costs.
+            if (
+                inside
+                and foreseen > MAX_POINTS
+                and hi - t >= _UNSEEN_HALVING * (guide_hi - guide_lo)
+            ):
                 length = 0.5 * (hi - t)
                 continue
-            if foreseen <= MAX_POINTS:
-                n = max(n, foreseen)
-        elif t == 0.0 and zero == 0 and ahead[0] < ahead[1]:
-            foreseen = points_foreseen(ahead[2:], ahead[0], ahead[1], t, hi, zero, q, divides, n,
-                                       singular, sized, degree, carried)  # fmt: skip
             if foreseen <= MAX_POINTS:
                 n = max(n, foreseen)
         n = min(n, MAX_POINTS)
