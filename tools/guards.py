@@ -5,6 +5,7 @@ once, so a refactor cannot orphan a guard."""
 
 # The parts are top-level modules of tools/, as this one is (tools/mutation.py
 # puts tools/ on the path).
+from guards_ahead import AHEAD_MUTATIONS
 from guards_base import ROOT, Mutation
 from guards_generated import GENERATED_MUTATIONS
 from guards_plumbing import PLUMBING_MUTATIONS
@@ -19,6 +20,7 @@ MUTATIONS = (
     *PLUMBING_MUTATIONS,
     *GENERATED_MUTATIONS,
     *RUNTIME_MUTATIONS,
+    *AHEAD_MUTATIONS,
 )
 
 __all__ = ["COPIED", "MUTATIONS", "ROOT", "Mutation"]

@@ -17,8 +17,9 @@ from cardan_joint.codegen import expressions, generate
 from cardan_joint.models.propshaft import model
 from cardan_joint.models.propshaft.entries import STEPS
 from cardan_joint.models.propshaft.model import Propshaft
-from cardan_joint.models.propshaft.step import state_names
+from cardan_joint.models.propshaft.step import ahead_names, state_names
 from cardan_joint.models.propshaft.variables import propshaft_table
+from cardan_joint.physics.life_integral import unseen_ahead
 
 JOINTS = (2, 3, 4)
 CASES = {2: 300, 3: 150, 4: 150}  # the Python step integrates N chains of N joints a node
@@ -58,8 +59,22 @@ def operating_point(rng: random.Random, state: tuple, joints: int) -> list:
     sums = tuple(rng.choice([0.0, rng.uniform(0.0, 2.0)]) if k % 2 == 0 else
                  rng.uniform(-1e-17, 1e-17) for k in range(2 * joints))  # fmt: skip
     valid = state[3] and rng.random() > 0.03
-    middle = state[4 : len(state) - 2 * joints]
-    return [rng.uniform(0.0, 100.0), h, *angle, valid, *middle, *sums, speed, acceleration, load]
+    middle = state[4 : len(state) - 2 * joints - len(ahead_names(joints))]
+    return [rng.uniform(0.0, 100.0), h, *angle, valid, *middle, *sums, *random_ahead(rng, joints),
+            speed, acceleration, load]  # fmt: skip
+
+
+def random_ahead(rng: random.Random, joints: int) -> tuple:
+    """What life carries ahead (`ahead_names`): none, or a last plain panel
+    before the step, at its start or short of it, with any cubic."""
+    if rng.random() < 0.3:
+        return unseen_ahead(range(joints))
+    hi = rng.choice([0.0, -rng.uniform(0.0, 1e-2)])
+    ahead: tuple = (hi - rng.uniform(1e-6, 0.1), hi)
+    for _ in range(joints):
+        a0 = rng.uniform(-2000.0, 2000.0)
+        ahead += (a0, *(a0 * rng.uniform(-1.0, 1.0) * rng.choice([0.01, 0.3]) for _ in range(3)))
+    return ahead
 
 
 def refusable(rng: random.Random, point: list) -> list:

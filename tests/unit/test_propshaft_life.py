@@ -10,11 +10,12 @@ tests/unit/test_propshaft_physics.py checks against independent constructions.
 
 import json
 import math
+import re
 
 import mpmath
 import numpy as np
 import pytest
-from life_reference import chain_over_step
+from life_reference import chain_evaluations, chain_over_step
 from scipy.optimize import brentq
 
 from cardan_joint.models.compliant_propshaft.model import CompliantPropshaft
@@ -177,3 +178,69 @@ def test_under_a_spring_each_joints_life_consumed_equals_an_adaptive_quadrature(
             got = out[f"joint_{j}_life_consumed"]
             assert abs(got - expected[j - 1]) <= 1e-9 * expected[j - 1], j
     assert min(expected) > 0.0
+
+
+def _benchmark_steps(drive, steps, calls):
+    """(outputs, chain evaluations) of each of `steps` 1 ms steps at the
+    benchmarks' point, as a host steps it."""
+    seen = []
+    for _ in range(steps):
+        calls.clear()
+        drive.run(drive.time, 1e-3, (100.0, 5.0, 100.0, 5.0))
+        seen.append((drive.outputs(), len(calls)))
+    return seen
+
+
+def test_a_restored_drive_foresees_its_next_steps_as_the_saved_one_does(monkeypatch):
+    # Life carries what it foresees the next step's first panel from (the
+    # last plain panel's place and cubic) in the state: restored, the drive
+    # takes the same panels, so the same evaluations and bits; without it
+    # the first step would take its probe again.
+    calls = chain_evaluations(monkeypatch)
+    drive = CompliantPropshaft(2)
+    _benchmark_steps(drive, 30, calls)
+    saved = json.loads(json.dumps(drive.state()))
+    assert len(saved["rigid"]["life_ahead"]) == 2 + 4 * 2
+    tail = _benchmark_steps(drive, 10, calls)
+    other = CompliantPropshaft(2)
+    other.restore(saved)
+    assert _benchmark_steps(other, 10, calls) == tail
+    forgotten = {**saved, "rigid": {**saved["rigid"]}}
+    del forgotten["rigid"]["life_ahead"]  # a state saved before life kept it
+    other.restore(forgotten)
+    first = _benchmark_steps(other, 1, calls)[0]
+    assert first[1] > tail[0][1]
+
+
+@pytest.mark.parametrize(
+    "ahead, why",
+    [([0.0] * 9, "9 values in the state, 10 here"), ([math.nan] + [0.0] * 9, "finite values only")],
+)
+def test_a_state_whose_life_ahead_is_malformed_is_refused_and_changes_nothing(ahead, why):
+    shaft = Propshaft(2, load_torque=120.0, input_speed=80.0)
+    shaft.step(0.01)
+    saved = json.loads(json.dumps(shaft.state()))
+    before = json.dumps(shaft.state())
+    with pytest.raises(ValueError, match=f"life_ahead: .*{re.escape(why)}"):
+        shaft.restore({**saved, "life_ahead": ahead})
+    assert json.dumps(shaft.state()) == before
+
+
+def test_a_step_whose_panels_took_the_fewest_points_carries_nothing_ahead(monkeypatch):
+    # A held load at the benchmarks' point: one 4-point panel a step, the
+    # fewest the singularities ask for, so its zeros asked for nothing and
+    # the next step spares the foresight (it cost the Propshaft's step 0.5 k
+    # instructions a step). Under the spring, whose torque's zeros ask for
+    # more, most steps carry their last plain panel.
+    calls = chain_evaluations(monkeypatch)
+    shaft, drive, carried = Propshaft(2), CompliantPropshaft(2), 0
+    for _ in range(20):
+        calls.clear()
+        shaft.run(shaft.time, 1e-3, (100.0, 5.0, 50.0))
+        assert len(calls) == 4
+        start, end = shaft._ahead[:2]
+        assert start == end
+        drive.run(drive.time, 1e-3, (100.0, 5.0, 100.0, 5.0))
+        start, end = drive.rigid._ahead[:2]
+        carried += start < end
+    assert carried > 15

@@ -14,6 +14,8 @@ Legendre coefficients a_0..a_3 follow exactly from those of u^(q i), a
 table of rationals (`_MOMENTS`). A joint whose zero is t0 is divided by u^q
 on the panel: its cubic, divided by x - x0 (the zero's factor, up to the
 cubic's remainder there, c_0), stands for it: the same terms from c_1 on.
+The last step's last plain panel foresees the step's first panel alike:
+that panel's x runs on beyond 1 into the step, an interval of the same x.
 `life_nodes.verdict` reads the same coefficients with `life_panel`'s bound;
 a joint whose cubic keeps to it on the ellipse the panel's points need asks
 for no more, which spares solving for its reach.
@@ -79,11 +81,23 @@ def _composed(cubic, origin, stretch, power, divided: bool):
     )
 
 
+def cubics_of(values):
+    """Each joint's a_0..a_3 in a panel's values (`life_nodes.panel`): what a
+    plain panel about others foresees them from."""
+    cubics = ()  # type: tuple
+    for k in range(len(values) // PANEL_FIELDS):
+        cubics = (
+            cubics + values[PANEL_FIELDS * k + COEFFICIENTS : PANEL_FIELDS * k + COEFFICIENTS + 4]
+        )
+    return cubics
+
+
 def cubics_foreseen(guide, guide_lo, guide_hi, lo, hi, zero: int, q, divides: int):
     """Each joint's a_0..a_3 on the panel [lo, hi] (substituted at its `zero`
     end as `life_panel.node_time`; its torque over u^q where its bit is set
     in `divides`, 0 on a plain panel), foreseen from the plain panel
-    [guide_lo, guide_hi] about it whose values are `guide`."""
+    [guide_lo, guide_hi] whose cubics (`cubics_of`) are `guide`: about the
+    panel, or before it (the last step's, `life_integral.step_integrals`)."""
     at = hi if zero < 0 else lo
     origin = (2.0 * at - guide_lo - guide_hi) / (guide_hi - guide_lo)
     stretch = 2.0 * (hi - lo) / (guide_hi - guide_lo)
@@ -91,16 +105,17 @@ def cubics_foreseen(guide, guide_lo, guide_hi, lo, hi, zero: int, q, divides: in
         stretch = -stretch
     power = q if zero != 0 else 1.0
     cubics = ()  # type: tuple
-    for k in range(len(guide) // PANEL_FIELDS):
-        cubic = guide[PANEL_FIELDS * k + COEFFICIENTS : PANEL_FIELDS * k + COEFFICIENTS + 4]
-        cubics = cubics + _composed(cubic, origin, stretch, power, divides_at(divides, k))
+    for k in range(len(guide) // 4):
+        cubics = cubics + _composed(guide[4 * k : 4 * k + 4], origin, stretch, power,
+                                    divides_at(divides, k))  # fmt: skip
     return cubics
 
 
 def points_foreseen(guide, guide_lo, guide_hi, lo, hi, zero: int, q, divides: int, points: int,
                     singular, budget, degree, carried):  # fmt: skip
     """The points the panel [lo, hi] inside the plain panel [guide_lo,
-    guide_hi] that failed (its values `guide`) is likely to ask for
+    guide_hi] that failed (its cubics `guide`), or after the last step's last
+    plain panel, is likely to ask for
     (`cubics_foreseen`), at least its `points` (which `singular`, the
     panel's singularities' log rho, allows): the most that any joint's zeros
     ask for, by `points_for` with the power `verdict` gives the joint
@@ -108,14 +123,19 @@ def points_foreseen(guide, guide_lo, guide_hi, lo, hi, zero: int, q, divides: in
     + 1 if they allow no rule (a cut)."""
     cubics = cubics_foreseen(guide, guide_lo, guide_hi, lo, hi, zero, q, divides)
     wanted = points
+    # The ellipse `points` need, solved once for joints of the same power
+    # (on a plain panel all are 0).
+    required, solved = 0.0, -1.0
     for k in range(len(cubics) // 4):
         divided = divides_at(divides, k)
         power = degree if divided else carried
         reach = _DIVIDED_REACH if divided else 1.0
         cubic = cubics[4 * k : 4 * k + 4] + (0.0,)
+        if power != solved:
+            required, solved = log_rho_required(points, budget, power), power
         # Zero-free on the ellipse `points` need, the joint asks no more (its
         # cubic has no a_(n-1) to check).
-        if not zero_free_on(log_rho_required(points, budget, power) / reach, cubic, points, True):
+        if not zero_free_on(required / reach, cubic, points, True):
             low = reach * zero_free_log_rho(cubic, MAX_POINTS, False)[0]
             wanted = max(wanted, points_for(min(singular, low), budget, power))
     return wanted

@@ -10,7 +10,9 @@ more points than it has is taken again with them, or cut at the torque's
 sign change it shows (`life_zeros`, which keeps the next zero it shows for
 later), or halved; a panel inside a plain one that failed, plain or
 substituted at a zero, takes the points that one's cubic foresees
-(`life_foresight`). So a piece costs one panel unless it is longer
+(`life_foresight`), as a step's first panel takes the points that the
+last step's last plain panel foresees (`ahead`, carried in the step state).
+So a piece costs one panel unless it is longer
 than the torque's singularities' reach, and each event costs its location
 and a few panels more.
 
@@ -27,13 +29,12 @@ torque and input speed t s into the step.
 
 import math
 
-from .life_foresight import points_foreseen
+from .life_foresight import cubics_of, points_foreseen
 from .life_nodes import (
     filled,
     panel,
     scales_raised,
     totals_added,
-    unseen_panel,
     verdict,
 )
 from .life_panel import (
@@ -105,16 +106,28 @@ def singularity_time(w1, a1, h, reach):
     return math.inf
 
 
-def step_integrals(torques_at, step, h, w1, a1, bends, rb, ab, min_angle, p, reach):
+def unseen_ahead(bends):
+    """`step_integrals`' `ahead` before any step: no panel to foresee from."""
+    ahead = (0.0, 0.0)
+    for _ in range(len(bends)):
+        ahead = ahead + (0.0, 0.0, 0.0, 0.0)
+    return ahead
+
+
+def step_integrals(torques_at, step, h, w1, a1, bends, rb, ab, min_angle, p, reach, ahead):
     """Each joint's integral over a step of `h` s of A_k(t) |w_k(t)|
     |T_k(t)|^p, A_k = max(|b_k(t)|, `min_angle`): the life rate's variable
-    part (`life.step_damage` scales it), for the joints of a chain at once.
+    part (`life.step_damage` scales it), for the joints of a chain at once;
+    then the `ahead` the next step takes.
 
     `torques_at(t, step)`: (T_1, w_1, ..., T_N, w_N) t s into the step; joint
     k's bend `bends[k]` + rb t + ab t^2 / 2 as the joints step it; w1 + a1 t
     the input speed, which places the speed's zero and, with `reach` (the
     torques' singularities' imaginary input angle, `life.singularity_reach`),
-    sizes the panels."""
+    sizes the panels. `ahead`: (lo, hi, each joint's a_0..a_3) of the last
+    plain panel the step before took, in this step's time (`unseen_ahead`
+    if none): the first panel's points are foreseen from its cubics, which
+    saves taking it twice (a guess: the verdict judges it all the same)."""
     tau = singularity_time(w1, a1, h, reach)
     q = substitution_power(p)
     gamma = q * (p + 1.0) - 1.0
@@ -129,13 +142,18 @@ def step_integrals(torques_at, step, h, w1, a1, bends, rb, ab, min_angle, p, rea
     end, zero_end = next_kink(0.0, h, w1, a1, bends, rb, ab, min_angle), 0
     later, zero_later = math.inf, 0
     # The last plain panel that failed, on [guide_lo, guide_hi]: it foresees
-    # the points of the plain panels within it.
-    guide = unseen_panel(bends)
-    guide_lo, guide_hi = 0.0, -1.0
+    # the points of the plain panels within it; before one fails, the last
+    # step's last plain panel (`ahead`, before the step) foresees the first.
+    guide = ahead[2:]
+    guide_lo, guide_hi = ahead[0], ahead[1]
+    # The last plain panel taken, [last_lo, last_hi] (none while equal, or
+    # if it took the fewest points): the next step's `ahead`.
+    last = ahead[2:]
+    last_lo, last_hi = 0.0, 0.0
     length, points, substituted = h, 0, False
     for _ in range(_MAX_ATTEMPTS):
         if t >= h:
-            return totals
+            return totals + (last_lo - h, last_hi - h) + last
         hi = t + length
         if hi >= end or end - hi < 0.25 * length:
             hi = end
@@ -161,15 +179,23 @@ def step_integrals(torques_at, step, h, w1, a1, bends, rb, ab, min_angle, p, rea
         singular = singular_log_rho(hi - t, tau, stretch)
         # A substituted panel's points carry the substitution's: a plain one's
         # are not like them, nor the other way round.
-        n = max(points if (zero != 0) == substituted else 0, points_for(singular, sized, degree))
+        least = points_for(singular, sized, degree)
+        n = max(points if (zero != 0) == substituted else 0, least)
         # A panel inside the last plain panel that failed is foreseen from it,
         # plain or substituted at a zero: next to a zero, another joint's zero
         # near it asks a substituted panel for more points or a halving.
         carried = q - 1.0 if zero != 0 else 0.0
-        if guide_lo <= t and hi <= guide_hi:
+        inside = guide_lo <= t and hi <= guide_hi
+        if inside or (t == 0.0 and zero == 0 and guide_lo < guide_hi <= 0.0):
             foreseen = points_foreseen(guide, guide_lo, guide_hi, t, hi, zero, q, divides, n,
                                        singular, sized, degree, carried)  # fmt: skip
-            if foreseen > MAX_POINTS and hi - t >= _UNSEEN_HALVING * (guide_hi - guide_lo):
+            # Halved unseen only inside: the last step's cubic, extrapolated,
+            # foresees a cut less well than a halving costs.
+            if (
+                inside
+                and foreseen > MAX_POINTS
+                and hi - t >= _UNSEEN_HALVING * (guide_hi - guide_lo)
+            ):
                 length = 0.5 * (hi - t)
                 continue
             if foreseen <= MAX_POINTS:
@@ -181,6 +207,14 @@ def step_integrals(torques_at, step, h, w1, a1, bends, rb, ab, min_angle, p, rea
         failing, wanted = verdict(values, scales, n, sized, degree, carried, singular, divides)
         if failing == 0 or hi - t <= _SHORTEST * h:
             totals = totals_added(totals, values)
+            if zero == 0 and n > least:
+                last = cubics_of(values)
+                last_lo, last_hi = t, hi
+            elif zero == 0:
+                # Its torque's zeros asked for no more points than the
+                # singularities: the next step foresees nothing, and spares
+                # the foresight's cost.
+                last_lo, last_hi = 0.0, 0.0
             # The next panel starts from this one's points and twice its
             # length: a piece's panels are alike.
             length = 2.0 * (hi - t)
@@ -192,7 +226,7 @@ def step_integrals(torques_at, step, h, w1, a1, bends, rb, ab, min_angle, p, rea
                 length, points = h, 0
             continue
         if zero == 0:
-            guide = values
+            guide = cubics_of(values)
             guide_lo, guide_hi = t, hi
         if wanted != 0:
             length, points, substituted = hi - t, wanted, zero != 0
@@ -217,11 +251,12 @@ def step_integrals(torques_at, step, h, w1, a1, bends, rb, ab, min_angle, p, rea
             totals,
             panel(torques_at, step, t, h, 0, 0, q, MAX_POINTS, False, bends, rb, ab, min_angle, p),
         )
-    return totals
+    return totals + (last_lo - h, last_hi - h) + last
 
 
 def step_integral(torque_at, step, h, w1, a1, b, rb, ab, min_angle, p, reach):
     """The integral over a step of `h` s of A(t) |w(t)| |T(t)|^p, A = max(|b(t)|,
     `min_angle`) for one joint: `step_integrals` with N = 1, `torque_at(t,
     step)` giving (T, w) t s into the step; the bend b + rb t + ab t^2 / 2."""
-    return step_integrals(torque_at, step, h, w1, a1, (b,), rb, ab, min_angle, p, reach)[0]
+    ahead = unseen_ahead((b,))
+    return step_integrals(torque_at, step, h, w1, a1, (b,), rb, ab, min_angle, p, reach, ahead)[0]

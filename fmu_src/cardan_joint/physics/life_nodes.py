@@ -81,14 +81,6 @@ def torque_of(values, joint: int):
     return torque
 
 
-def unseen_panel(bends):
-    """`panel`'s values before any panel: zeros of their shape."""
-    values = ()
-    for _ in range(len(bends)):
-        values = values + (0.0, 0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0)
-    return values
-
-
 def _started(bends):
     sums = ()
     for _ in range(len(bends)):

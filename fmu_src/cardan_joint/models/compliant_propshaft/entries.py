@@ -18,8 +18,9 @@ from .variables import compliant_propshaft_table
 
 def compliant_propshaft_step(time, h, angle: tuple[int, float, float], parameters_valid: bool,
                              layout, trig, shifts, critical_speeds, fixed, crosspiece, life,
-                             singularity_reach, sums, spring, input_speed, input_acceleration,
-                             output_speed, output_acceleration) -> tuple | None:  # fmt: skip
+                             singularity_reach, sums, ahead, spring, input_speed,
+                             input_acceleration, output_speed,
+                             output_acceleration) -> tuple | None:  # fmt: skip
     """The CompliantPropshaft's step (`compliant_state_names`, then the inputs,
     grouped): `compliant_propshaft_advanced`, or None when the step is not
     taken here (the model's checks then name the refusal)."""
@@ -28,7 +29,7 @@ def compliant_propshaft_step(time, h, angle: tuple[int, float, float], parameter
         return None
     return compliant_propshaft_advanced(
         h, angle, parameters_valid, layout, trig, shifts, critical_speeds, fixed, crosspiece, life,
-        singularity_reach, sums, spring, input_speed, input_acceleration, output_speed,
+        singularity_reach, sums, ahead, spring, input_speed, input_acceleration, output_speed,
         output_acceleration,
     )  # fmt: skip
 

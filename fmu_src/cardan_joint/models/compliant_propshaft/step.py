@@ -74,8 +74,8 @@ def compliant_takes_step(h: float, parameters_valid: bool, speed: float, acceler
 
 
 def compliant_propshaft_advanced(h, angle, parameters_valid: bool, layout, trig, shifts,
-                                 critical_speeds, fixed, crosspiece, life, reach, sums, spring,
-                                 speed, acceleration, output_speed,
+                                 critical_speeds, fixed, crosspiece, life, reach, sums, ahead,
+                                 spring, speed, acceleration, output_speed,
                                  output_acceleration):  # fmt: skip
     """A step `compliant_takes_step` takes, of `h` s: the state
     (`compliant_state_names`), the inputs after the step and the outputs. The
@@ -89,8 +89,8 @@ def compliant_propshaft_advanced(h, angle, parameters_valid: bool, layout, trig,
     rule = LifeRule(rated_torque, life_constant, life_exponent, min_angle, scale)
     load = (shifts[len(shifts) - 1], lag, output_speed, output_acceleration, stiffness, damping)
     damages = chain_damages(rule, h, spring_chain_torque, angle[1], angle[2], speed, acceleration,
-                            crosspiece, load, layout, trig, reach)  # fmt: skip
-    added = sums_added(sums, damages)
+                            crosspiece, load, layout, trig, reach, ahead)  # fmt: skip
+    added = sums_added(sums, damages[: len(shifts)])
     end_speed = speed + acceleration * h
     end = advanced(angle, h * (speed + 0.5 * acceleration * h))
     end_lag = lag + change
@@ -110,6 +110,7 @@ def compliant_propshaft_advanced(h, angle, parameters_valid: bool, layout, trig,
     # The rigid outputs but the input angle and the last shaft's (the spring's own).
     passed = rigid[1 : 3 * len(shifts) - 2] + rigid[3 * len(shifts) + 1 :]
     state = end + (parameters_valid,) + layout + trig + shifts + critical_speeds + fixed
-    state = state + crosspiece + life + (reach,) + added + (end_lag, stiffness, damping)
+    state = state + crosspiece + life + (reach,) + added + damages[len(shifts) :]
+    state = state + (end_lag, stiffness, damping)
     moved = (end_speed, acceleration, end_output_speed, output_acceleration)
     return state + moved + spring_values + passed

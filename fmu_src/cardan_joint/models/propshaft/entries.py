@@ -37,19 +37,21 @@ PROPSHAFT_GROUPS = {
         "life_rate_scale",
     ),
     "sums": ("joint_*_life_consumed", "joint_*_life_consumed_error"),
+    "ahead": ("life_ahead_*", "joint_*_life_ahead_*"),
 }
 
 
 def propshaft_step(time, h, angle: tuple[int, float, float], parameters_valid: bool, layout, trig,
                    shifts, critical_speeds, fixed, crosspiece, life, singularity_reach, sums,
-                   input_speed, input_acceleration, load_torque) -> tuple | None:  # fmt: skip
+                   ahead, input_speed, input_acceleration,
+                   load_torque) -> tuple | None:  # fmt: skip
     """The Propshaft's step (`state_names`, then the inputs, grouped):
     `propshaft_advanced`, or None when the step is not taken here (the model's
     checks then name the refusal)."""
     if not takes_step(h, parameters_valid, input_speed, input_acceleration, load_torque):
         return None
     return propshaft_advanced(h, angle, parameters_valid, layout, trig, shifts, critical_speeds,
-                              fixed, crosspiece, life, singularity_reach, sums, input_speed,
+                              fixed, crosspiece, life, singularity_reach, sums, ahead, input_speed,
                               input_acceleration, load_torque)  # fmt: skip
 
 

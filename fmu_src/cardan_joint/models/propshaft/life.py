@@ -8,9 +8,11 @@ that instant): each joint's damage is `life_integral.step_integral` of them,
 `step.chain_damages` (the step's own), under a held load or one that follows
 the motion (the compliant propshaft's spring: `load_over_step`)."""
 
+import math
 from typing import Any
 
 from ...framework.stepped import ShaftModel
+from ...physics.life_integral import unseen_ahead
 from .step import chain_damages, chain_torque, sums_added
 
 
@@ -21,6 +23,7 @@ class PropshaftLife:
     life: bool
     joints: int
     _life: list
+    _ahead: tuple
     _life_rule: Any
     _crosspiece: tuple
     _inertia: tuple
@@ -51,10 +54,11 @@ class PropshaftLife:
         torque_at, load = self.load_over_step or (chain_torque, (self.load_torque,))
         damages = chain_damages(
             self._life_rule, h, torque_at, fraction, error, speed, acceleration,
-            self._crosspiece, load, self._layout_values, self._trig, self._reach,
+            self._crosspiece, load, self._layout_values, self._trig, self._reach, self._ahead,
         )  # fmt: skip
-        sums = sums_added(tuple(v for pair in self._life for v in pair), damages)
+        sums = sums_added(tuple(v for pair in self._life for v in pair), damages[: self.joints])
         self._life = [(sums[2 * k], sums[2 * k + 1]) for k in range(self.joints)]
+        self._ahead = damages[self.joints :]
         return None
 
     def own_state(self) -> dict:
@@ -63,6 +67,7 @@ class PropshaftLife:
             return state
         state["life_consumed"] = [total for total, _ in self._life]
         state["life_consumed_error"] = [error for _, error in self._life]
+        state["life_ahead"] = list(self._ahead)
         return state
 
     def own_state_from(self, state: dict):
@@ -75,9 +80,18 @@ class PropshaftLife:
             raise ValueError(
                 f"life_consumed: {len(totals)} joints in the state, {self.joints} here"
             )
+        # What life foresees the next step from: a state saved before it was
+        # kept foresees nothing (`unseen_ahead`).
+        unseen = unseen_ahead(range(self.joints))
+        ahead = tuple(float(x) for x in state.get("life_ahead", unseen))
+        if len(ahead) != len(unseen):
+            raise ValueError(f"life_ahead: {len(ahead)} values in the state, {len(unseen)} here")
+        if not all(math.isfinite(x) for x in ahead):
+            raise ValueError(f"life_ahead: {list(ahead)} in the state, finite values only")
 
         def put() -> None:
             put_angle()
             self._life = list(zip(totals, errors))
+            self._ahead = ahead
 
         return put

@@ -13,6 +13,7 @@ from ...framework.refusal import Refusal
 from ...framework.stepped import ShaftModel
 from ...framework.values import angle_limit_problem, set_start_values, value_ranges
 from ...physics.life import NO_RULE, rule_of
+from ...physics.life_integral import unseen_ahead
 from ...physics.revolutions import split_turns
 from .chain import chain, layout_values
 from .checks import angle_warnings
@@ -22,7 +23,7 @@ from .fluctuation import equivalent_angle, speed_ratio_fluctuation
 from .geometry import HALF_PI, TWO_PI, Layout, layout
 from .life import PropshaftLife
 from .refusals import PropshaftReason
-from .step import fixed_by_layout, propshaft_outputs, state_names
+from .step import ahead_names, fixed_by_layout, propshaft_outputs, state_names
 from .variables import propshaft_table
 
 # Without life the outputs are computed with a rule whose values they leave out.
@@ -78,6 +79,7 @@ class Propshaft(PropshaftLife, ShaftModel):
         valid = not self.parameter_fault
         self._angle = split_turns(self.input_angle_start if valid else 0.0)
         self._life = [(0.0, 0.0)] * self.joints  # each joint's Miner's sum (total, error)
+        self._ahead = unseen_ahead(range(self.joints))  # what life foresees the next step from
         if not valid:
             return
         self._inertia = tuple(getattr(self, n) for n in self._inertias)
@@ -201,10 +203,14 @@ class Propshaft(PropshaftLife, ShaftModel):
         fixed = (
             self._fixed()
             if valid
-            else (0.0,) * (len(state_names(self.joints)) - 4 - 2 * self.joints)
+            else (0.0,) * (len(state_names(self.joints)) - 4 - len(self._sums_and_ahead()))
         )
-        sums = tuple(v for total_and_error in self._life for v in total_and_error)
-        return (*self._angle, valid, *fixed, *sums)
+        return (*self._angle, valid, *fixed, *self._sums_and_ahead())
+
+    def _sums_and_ahead(self) -> tuple:
+        """The step state's values that a step moves after the angle: each
+        joint's Miner's sum (total, error), then life's `ahead`."""
+        return (*(v for total_and_error in self._life for v in total_and_error), *self._ahead)
 
     def _fixed(self) -> tuple:
         """The step state's values `start` fixes, in `state_names`' order."""
@@ -216,11 +222,14 @@ class Propshaft(PropshaftLife, ShaftModel):
 
     def set_step_state(self, state) -> None:
         """Take a state a generated step advanced (`step_state`'s values): only the
-        angle and the Miner's sums move over a step, the rest follows the parameters."""
+        angle, the Miner's sums and life's `ahead` move over a step, the rest
+        follows the parameters."""
         turns, fraction, fraction_error = state[:3]
         self._angle = (int(turns), float(fraction), float(fraction_error))
-        sums = state[len(state) - 2 * self.joints :]
+        ahead = len(ahead_names(self.joints))
+        sums = state[len(state) - ahead - 2 * self.joints : len(state) - ahead]
         self._life = [(float(sums[k]), float(sums[k + 1])) for k in range(0, len(sums), 2)]
+        self._ahead = tuple(float(v) for v in state[len(state) - ahead :])
 
     def input_problem(self, step_size: float = 0.0):
         """Why the inputs cannot be used over the next step, or None."""

@@ -75,6 +75,17 @@ def state_names(joints: int) -> tuple[str, ...]:
         "life_rate_scale", "singularity_reach",
         *(f"joint_{k}_life_consumed{part}" for k in range(1, joints + 1)
           for part in ("", "_error")),
+        *ahead_names(joints),
+    )  # fmt: skip
+
+
+def ahead_names(joints: int) -> tuple[str, ...]:
+    """The step state's names of what life carries to the next step
+    (`life_integral.step_integrals`' `ahead`): the last plain panel's start
+    and end, then each joint's cubic on it."""
+    return (
+        "life_ahead_start", "life_ahead_end",
+        *(f"joint_{k}_life_ahead_a{i}" for k in range(1, joints + 1) for i in range(4)),
     )  # fmt: skip
 
 
@@ -140,7 +151,7 @@ def fixed_by_layout(layout) -> tuple:
 
 
 def chain_damages(rule, h, torques_at, fraction, error, speed, acceleration, crosspiece, load,
-                  layout, trig, reach):  # fmt: skip
+                  layout, trig, reach, ahead):  # fmt: skip
     """Each joint's Miner damage over a step of `h` s from the input angle's
     `fraction` (+ `error`), the input shaft at `speed` and constant
     `acceleration`: `torques_at(t, step)` gives every joint's (T_k, input
@@ -149,20 +160,21 @@ def chain_damages(rule, h, torques_at, fraction, error, speed, acceleration, cro
     `load` the held load (`chain_torque`) or the
     parameters of a load that follows the motion. The joints share the nodes
     (`step_integrals`) and `reach`, the singularities' at the largest working
-    angle (`fixed_by_layout`)."""
+    angle (`fixed_by_layout`); the damages are followed by the `ahead` the
+    next step takes (`ahead` this one's)."""
     bends = ()
     for k in range(len(layout) // LAYOUT_FIELDS):
         bends = bends + (layout[LAYOUT_FIELDS * k + WORKING_ANGLE],)
     step = (fraction, error, speed, acceleration, *crosspiece, *load) + layout + trig
     integrals = step_integrals(
         torques_at, step, h, speed, acceleration, bends, 0.0, 0.0, rule.min_angle, rule.exponent,
-        reach,
+        reach, ahead,
     )  # fmt: skip
     scale = rule.scale / 3600.0
     damages = ()
-    for k in range(len(integrals)):
+    for k in range(len(bends)):
         damages = damages + (scale * integrals[k],)
-    return damages
+    return damages + integrals[len(bends) :]
 
 
 def sums_added(sums, damages):
@@ -215,7 +227,8 @@ def propshaft_outputs(angle, speed, acceleration, load, layout, trig, shifts, cr
 
 
 def propshaft_advanced(h, angle, parameters_valid, layout, trig, shifts, critical_speeds, fixed,
-                       crosspiece, life, reach, sums, speed, acceleration, load):  # fmt: skip
+                       crosspiece, life, reach, sums, ahead, speed, acceleration,
+                       load):  # fmt: skip
     """A step `takes_step` takes, of `h` s with the input shaft at constant
     acceleration and the load held: the state (`state_names`), the inputs
     after the step and the outputs. Each joint's Miner's sum gains its damage
@@ -227,12 +240,12 @@ def propshaft_advanced(h, angle, parameters_valid, layout, trig, shifts, critica
     end_speed = speed + acceleration * h
     end = advanced(angle, h * (speed + 0.5 * acceleration * h))
     damages = chain_damages(rule, h, chain_torque, fraction, error, speed, acceleration,
-                            crosspiece, (load,), layout, trig, reach)  # fmt: skip
-    added = sums_added(sums, damages)
+                            crosspiece, (load,), layout, trig, reach, ahead)  # fmt: skip
+    added = sums_added(sums, damages[: len(shifts)])
     outputs = propshaft_outputs(
         end, end_speed, acceleration, load, layout, trig, shifts, critical_speeds, fixed, I1, I2,
         I3, rule, radius, added,
     )  # fmt: skip
     state = end + (parameters_valid,) + layout + trig + shifts + critical_speeds + fixed
-    state = state + crosspiece + life + (reach,) + added
+    state = state + crosspiece + life + (reach,) + added + damages[len(shifts) :]
     return state + (end_speed, acceleration, load) + outputs
