@@ -14,6 +14,13 @@ FEWEST = ("tests/unit/test_propshaft_life.py", "-k", "fewest_points")
 
 AHEAD_MUTATIONS = (
     Mutation(
+        "life ahead: a last plain panel of the fewest points drops an earlier one",
+        LIFE_INTEGRAL,
+        "            elif zero == 0:\n",
+        "            elif False:\n",
+        ("tests/unit/test_life_march.py", "-k", "last_plain_panel_took_the_fewest"),
+    ),
+    Mutation(
         "life ahead: the first panel foreseen from the last step's",
         LIFE_INTEGRAL,
         "if inside or (t == 0.0 and zero == 0 and guide_lo < guide_hi <= 0.0):",

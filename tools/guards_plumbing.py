@@ -28,8 +28,8 @@ PLUMBING_MUTATIONS = (
     Mutation(
         "instance: a stop signal during any call into the FMU is raised after it",
         "fmu_src/cardan_joint/host/instance.py",
-        "outer, held.holding = held.holding, True",
-        "outer, held.holding = held.holding, held.holding",
+        "        held.holding = True\n        try:\n            yield\n",
+        "        held.holding = False\n        try:\n            yield\n",
         ("tests/fmu/test_no_debris.py", "-k", "any_call"),
     ),
     Mutation(

@@ -166,8 +166,9 @@ def test_ctrl_c_in_an_instance_loop_raises_keyboard_interrupt(fmu_path, signum, 
 
 # Calls into an FmuInstance's FMU other than a step, with a Ctrl-C sent from
 # where Python runs during the call: the slave's own Python (a get enters it to
-# take the inputs and give the outputs) or the logger's callback (the FMU says
-# why a fixed parameter is not set), where ctypes would drop the interrupt.
+# take the inputs and give the outputs; so does the end of initialization) or
+# the logger's callback (the FMU says why a fixed parameter is not set), where
+# ctypes would drop the interrupt.
 CALLING = textwrap.dedent(
     """
     import os, signal, sys
@@ -178,21 +179,28 @@ CALLING = textwrap.dedent(
             super().append(message)
             os.kill(os.getpid(), signal.SIGINT)
 
+    def signalling(method):
+        def call(*args):
+            os.kill(os.getpid(), signal.SIGINT)
+            return method(*args)
+        return call
+
     where = sys.argv[2]
     messages = Signalling() if where == "logger" else None
-    with FmuInstance.open(sys.argv[1], messages=messages) as joint:
+    with FmuInstance.open(sys.argv[1], messages=messages,
+                          exit_initialization=where != "exit") as joint:
         core = next(m for n, m in sys.modules.items() if n.endswith(".fmi.core"))
-        giving = core.SlaveCore._current_outputs
-
-        def signalling(*args):
-            os.kill(os.getpid(), signal.SIGINT)
-            return giving(*args)
-
+        giving, ending = core.SlaveCore._current_outputs, core.SlaveCore.exit_initialization_mode
         if where == "slave":
-            core.SlaveCore._current_outputs = signalling
+            core.SlaveCore._current_outputs = signalling(giving)
+        terminate = joint.fmu.terminate
+        joint.fmu.terminate = lambda: print("terminated", flush=True) or terminate()
         try:
             if where == "slave":
                 joint.values("output_speed")
+            elif where == "exit":
+                core.SlaveCore.exit_initialization_mode = signalling(ending)
+                joint.exit_initialization_mode()
             else:
                 joint.set(max_bend_angle=1.0)
             print("no interrupt", flush=True)
@@ -206,10 +214,11 @@ CALLING = textwrap.dedent(
 )
 
 
-@pytest.mark.parametrize("where", ["slave", "logger"])
+@pytest.mark.parametrize("where", ["slave", "logger", "exit"])
 def test_ctrl_c_during_any_call_is_raised_after_it(fmu_path, where):
     """Held as a step's: the call completes, the interrupt is raised when it
-    returns, and nothing is dropped or printed on the way."""
+    returns, and nothing is dropped or printed on the way; an instance whose
+    initialization ended so is terminated when it closes."""
     process = _child([sys.executable, "-c", CALLING, str(fmu_path), where])
     try:
         out, err = process.communicate(timeout=30)
@@ -217,7 +226,9 @@ def test_ctrl_c_during_any_call_is_raised_after_it(fmu_path, where):
         process.kill()
     said = out.decode() + err.decode()
     assert process.returncode == 0, said
-    assert said.split() == ["KeyboardInterrupt", "5.0"], said
+    # Only the end of initialization registers terminate after the patch.
+    closed = ["terminated"] if where == "exit" else []
+    assert said.split() == ["KeyboardInterrupt", "5.0", *closed], said
 
 
 def _catches(pid: int, signum: int) -> bool:

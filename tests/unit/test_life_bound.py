@@ -256,3 +256,11 @@ def test_the_zeros_reach_takes_a_few_newton_steps_for_the_benchmarks_panels(monk
         calls.clear()
         zero_free_log_rho((1.0, c1, c2, c3, 0.0), 6, True)
         assert len(calls) <= 6, (c1, c2, c3, len(calls))
+
+
+@pytest.mark.parametrize(
+    "coefficients", [(1e200, 1e-200, 0.0, 0.0, 0.0), (5.0, 5e-324, 0.0, 0.0, 0.0)]
+)
+def test_coefficients_whose_shares_of_the_limit_underflow_put_the_zeros_out_of_reach(coefficients):
+    # Python would divide 0 by 0 where the generated C gives inf.
+    assert zero_free_log_rho(coefficients, 8, False) == (math.inf, math.inf)

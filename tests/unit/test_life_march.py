@@ -217,6 +217,23 @@ def test_a_step_carries_its_last_plain_panel_to_foresee_the_next_step():
             assert math.isclose(a, b, abs_tol=1e-12)
 
 
+def _bump_first(t, step):
+    """A torque whose zeros lie near t = 0.1 only, speed 1 - t / 0.9."""
+    return (1.0 + 0.5 * math.exp(-(((t - 0.1) / 0.03) ** 2)), 1.0 - t / 0.9)
+
+
+def test_a_step_whose_last_plain_panel_took_the_fewest_points_carries_nothing():
+    # The first piece (to the speed's zero at 0.9) needs many points about the
+    # bump; the second takes the fewest: an earlier panel carried ahead would
+    # make the next step pay for foresight that foresees nothing.
+    bends = (0.3,)
+    found = life_integral.step_integrals(
+        _bump_first, (), 1.0, 1.0, -1.0 / 0.9, bends, 0.0, 0.0, 0.05, P, 1e6,
+        life_integral.unseen_ahead(bends),
+    )  # fmt: skip
+    assert found[1] == found[2]
+
+
 def _evaluations(steps):
     """Torque evaluations per 1 ms step at 1000 rad/s (the benchmarks' point)."""
     calls = []

@@ -151,13 +151,12 @@ class FmuInstance:
         runtime then fails the call, and the instance with it) or in the
         logger's callback (ctypes prints the exception and drops it)."""
         held = STEP_INTERRUPTS.request
-        outer, held.holding = held.holding, True
+        held.holding = True
         try:
             yield
         finally:
-            held.holding = outer
-            if not outer:
-                held.raise_requested()
+            held.holding = False
+            held.raise_requested()
 
     def exit_initialization_mode(self) -> int:
         """Leave initialization; the FMI status is kept as `init_status` (fmi2Error
@@ -165,7 +164,7 @@ class FmuInstance:
         refused until they are fixed)."""
         with self._calling():
             self.init_status = status_of(self.fmu.exitInitializationMode)
-        self._cleanup.append(self.fmu.terminate)
+            self._cleanup.append(self.fmu.terminate)  # before a held Ctrl-C is raised
         return self.init_status
 
     @classmethod

@@ -105,14 +105,21 @@ def _spread_bound(c1, c2, c3, limit):
     share below 1: no square overflows), lies at or above the cubic's."""
     linear, high = c1 / limit, (c2 + c3) / limit
     free = 1.0 + 0.5 * high
-    return 2.0 * free / (linear + math.sqrt(linear * linear + 6.0 * high * free))
+    below = linear + math.sqrt(linear * linear + 6.0 * high * free)
+    if below == 0.0:  # every share under the smallest double: the root is beyond reach
+        return math.inf
+    return 2.0 * free / below
 
 
 def spread_reach(c1, c2, c3, limit):
     """The x >= 1 where `low_spread` reaches `limit` (below it at x = 1, some
     |a_k| not 0), by Newton's method from `_spread_bound`: the cubic is convex
     and increasing for x >= 1, so the steps fall towards the root and stop
-    where they no longer fall (on the root, to its rounding)."""
+    where they no longer fall (on the root, to its rounding), or after
+    `_SPREAD_STEPS`: still above the root where a_3 alone is under some 1e-36
+    of the limit (a root past log rho 28, where every rule takes its fewest
+    points). Above the root is the side of fewer points: the reach only
+    sizes a failing panel's retake, the bound judges it (`zero_free_on`)."""
     x = _spread_bound(c1, c2, c3, limit)
     for _ in range(_SPREAD_STEPS):
         slope = c1 + 3.0 * c2 * x + c3 * (7.5 * x * x - 1.5)
