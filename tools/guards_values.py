@@ -121,7 +121,7 @@ VALUE_MUTATIONS = (
     Mutation(
         "bad life parameters not made into the rule the state carries",
         "fmu_src/cardan_joint/models/universal_joint/life.py",
-        "self._life_rule = NO_RULE if self.parameter_fault else rule_of(self)",
+        "self._life_rule = NO_RULE if fault else rule_of(self)",
         "self._life_rule = rule_of(self)",
         ("tests/unit/test_step_constants.py", "-k", "out_of_its_ranges"),
     ),

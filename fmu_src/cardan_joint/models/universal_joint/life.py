@@ -35,14 +35,14 @@ class JointLife:
     # Set over a step by a layer whose load follows the motion (the compliant
     # joint's spring): (torque_at, load), `life.step_damage_loaded`'s.
     load_over_step: tuple[Callable, tuple] | None = None
-    parameter_fault: Any  # the joint's (`CardanJoint.start`), set before `_start_life`
 
     def _start_life(self) -> None:
         """The rule from the parameters (fixed until the next start), no damage yet."""
         if self.life:
             # Out of their ranges, the parameters may give the rule's scale no
             # number (a rated torque of 0 divides by 0): no step runs then.
-            self._life_rule = NO_RULE if self.parameter_fault else rule_of(self)
+            fault = self.parameter_fault  # type: ignore[attr-defined] # the joint's, set first
+            self._life_rule = NO_RULE if fault else rule_of(self)
             self.life_consumed = self.life_consumed_error = 0.0
 
     # The hooks below run with life on only: the joint checks `life` at each call
@@ -85,7 +85,7 @@ class JointLife:
     def _with_life(self, values: tuple, r: tuple, load, speed, beta) -> tuple:
         """`values` (the joint's outputs) and the four life outputs from the
         kernel's tuple `r`."""
-        if self.parameter_fault:  # no load or life then
+        if self.parameter_fault:  # type: ignore[attr-defined] # no load or life then
             return values + (math.nan, math.nan, math.nan, self.life_consumed)
         torque, input_moment, output_moment = (r[i] for i in _TORQUES)
         return values + life_outputs(
