@@ -79,6 +79,17 @@ def _child(args, **options):
     )
 
 
+def _said(args, **options) -> tuple[int, str]:
+    """(the return code, what it wrote on either stream) of a `_child` that
+    runs to its end."""
+    process = _child(args, **options)
+    try:
+        out, err = process.communicate(timeout=30)
+    finally:
+        process.kill()
+    return process.returncode, out.decode() + err.decode()
+
+
 def _wait_for(stream, text: bytes) -> None:
     seen = b""
     while text not in seen:
@@ -150,16 +161,11 @@ STEPPING = textwrap.dedent(
 @pytest.mark.parametrize("signum", [signal.SIGINT, signal.SIGTERM])
 def test_ctrl_c_in_an_instance_loop_raises_keyboard_interrupt(fmu_path, signum, step):
     python_step = {"CARDAN_JOINT_FMU_PYTHON_STEP": "1"} if step == "python" else {}
-    process = _child(
+    code, said = _said(
         [sys.executable, "-c", STEPPING, str(fmu_path), str(int(signum)), step],
         env={**os.environ, **python_step},
     )
-    try:
-        out, err = process.communicate(timeout=30)
-    finally:
-        process.kill()
-    said = out.decode() + err.decode()
-    assert process.returncode == 3, said
+    assert code == 3, said
     expected = "KeyboardInterrupt" if signum == signal.SIGINT else "Stopped"
     assert said.strip() == expected
 
@@ -219,13 +225,8 @@ def test_ctrl_c_during_any_call_is_raised_after_it(fmu_path, where):
     """Held as a step's: the call completes, the interrupt is raised when it
     returns, and nothing is dropped or printed on the way; an instance whose
     initialization ended so is terminated when it closes."""
-    process = _child([sys.executable, "-c", CALLING, str(fmu_path), where])
-    try:
-        out, err = process.communicate(timeout=30)
-    finally:
-        process.kill()
-    said = out.decode() + err.decode()
-    assert process.returncode == 0, said
+    code, said = _said([sys.executable, "-c", CALLING, str(fmu_path), where])
+    assert code == 0, said
     # Only the end of initialization registers terminate after the patch.
     closed = ["terminated"] if where == "exit" else []
     assert said.split() == ["KeyboardInterrupt", "5.0", *closed], said
