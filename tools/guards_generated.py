@@ -13,6 +13,7 @@ FAST_VALUES = "fmu_src/cardan_joint/fmi/native/fast_values.c"
 LIFE_INTEGRAL = "fmu_src/cardan_joint/physics/life_integral.py"
 LIFE_ZEROS = "fmu_src/cardan_joint/physics/life_zeros.py"
 LIFE_ELLIPSE = "fmu_src/cardan_joint/physics/life_ellipse.py"
+LIFE_PANEL = "fmu_src/cardan_joint/physics/life_panel.py"
 REACH_TESTS = ("tests/unit/test_life_bound.py", "-k", "zeros_reach or cubics_root")
 ZEROS_TESTS = ("tests/unit/test_life_zeros.py",)
 STEADY_CHAIN_TESTS = (
@@ -225,6 +226,13 @@ GENERATED_MUTATIONS = (
         "if not lower < x:",
         "if False:",
         REACH_TESTS,
+    ),
+    Mutation(
+        "life panel: the longest panel passes the check it was sized for",
+        LIFE_PANEL,
+        "_ROUND_TRIP = 1.0 - 1e-12",
+        "_ROUND_TRIP = 1.0",
+        ("tests/unit/test_life_singularities.py", "-k", "longest_length"),
     ),
     Mutation(
         "written step: the step size checked",

@@ -19,11 +19,13 @@ from cardan_joint.physics.life import step_reach
 from cardan_joint.physics.life_integral import singularity_time
 from cardan_joint.physics.life_panel import (
     error_budget,
+    log_rho_required,
     longest_panel,
     rule_sizing,
     singular_log_rho,
     substitution_power,
 )
+from cardan_joint.physics.quadrature import MAX_POINTS
 
 # How far towards its singularity-free ellipse `singular_log_rho` reaches.
 _TOWARDS = 0.75
@@ -152,6 +154,25 @@ def test_the_panels_ellipses_keep_clear_of_the_singularities(slow):
     assert worst >= 1.0
     if not slow:  # Not vacuous: some panels' ellipses come close to a singularity.
         assert met > 100 and worst < 1.6
+
+
+@pytest.mark.parametrize("p", [_P, 3.0])
+def test_a_panel_of_the_longest_length_passes_the_check_it_was_sized_for(p):
+    """The march sizes a panel at `longest_panel` for the largest rule; the
+    verdict then asks its `singular_log_rho` to be at least the log rho that
+    rule needs. Sized at the inverse's closed form, that came back an ulp
+    short for some reaches, and such a panel failed and was taken again."""
+    q = substitution_power(p)
+    budget = error_budget(p)
+    rng = random.Random(7)
+    for zero, divides in ((0, 0), (1, 0b1), (-1, 0b1), (1, 0b10)):
+        # plain; substituted, Gauss-Jacobi's where it applies; in a chain, Gauss-Legendre's
+        _, stretch, gamma, sized = rule_sizing(zero, divides, 1, q, q * (p + 1.0) - 1.0, budget)
+        needed = log_rho_required(MAX_POINTS, sized, gamma)
+        for _ in range(2000):
+            tau = 10.0 ** rng.uniform(-6.0, 2.0)
+            length = longest_panel(tau, sized, gamma, stretch)
+            assert singular_log_rho(length, tau, stretch) >= needed, (zero, divides, tau)
 
 
 @pytest.mark.parametrize("bend", [0.1, 0.3, 0.9])
