@@ -39,6 +39,10 @@ def turned(b, sb, cb, turn):
     for a small turn (a node of a step whose bend changes little costs no
     trigonometric call, and a tiny turn two terms fewer; none turns the bits
     of sb, cb), else directly."""
+    if turn == 0.0:
+        # A held bend: the formulas would add only zeros (4.7 % of the step at
+        # the 10^6-revolution run's point, callgrind, the step alone).
+        return sb, cb
     if abs(turn) > _SMALL_TURN:
         return math.sin(b + turn), math.cos(b + turn)
     t2 = turn * turn
