@@ -68,11 +68,8 @@ class Command(NamedTuple):
 
 
 COMMANDS = {
-    "build": Command("build and validate the FMU (options: cardan-joint build --help)", _build),
-    "sweep": Command(
-        "design sweep on Dask or serially, in deg and rpm (options: cardan-joint sweep --help)",
-        _sweep,
-    ),
+    "build": Command("build and validate the FMU", _build),
+    "sweep": Command("design sweep on Dask or serially, in deg and rpm", _sweep),
     "simulate": Command(
         "co-simulate any FMU of this project with FMPy",
         lambda args, rest: simulate_command(args),
@@ -94,10 +91,12 @@ COMMANDS = {
 def _parser() -> argparse.ArgumentParser:
     parser = argparse.ArgumentParser(
         prog=PROG,
-        description="Build the FMUs of this project, simulate any of them, and sweep the "
-        "UniversalJoint's design. Units: simulate's values and CSVs are SI (rad, rad/s, "
-        "N.m) unless a unit follows a value (20deg, 1500rpm); sweep's options are in the "
-        "units their help names (deg, rpm); figures use display units.",
+        description="Build the FMUs of this project, simulate any of them, sweep the "
+        "UniversalJoint's design and run duty cycles for the joints' life. Units: "
+        "simulate's values and CSVs are SI (rad, rad/s, N.m) unless a unit follows a value "
+        "(20deg, 1500rpm); sweep's options are in the units their help names (deg, rpm); "
+        "figures use display units.",
+        epilog=f"Each command's options: {PROG} COMMAND --help.",
     )
     parser.add_argument("--version", action="version", version=f"%(prog)s {__version__}")
     commands = parser.add_subparsers(dest="command", required=True, metavar="COMMAND")
