@@ -156,12 +156,13 @@ def test_the_panels_ellipses_keep_clear_of_the_singularities(slow):
         assert met > 100 and worst < 1.6
 
 
-@pytest.mark.parametrize("p", [_P, 3.0])
-def test_a_panel_of_the_longest_length_passes_the_check_it_was_sized_for(p):
+def test_a_panel_of_the_longest_length_passes_the_check_it_was_sized_for():
     """The march sizes a panel at `longest_panel` for the largest rule; the
     verdict then asks its `singular_log_rho` to be at least the log rho that
-    rule needs. Sized at the inverse's closed form, that came back an ulp
-    short for some reaches, and such a panel failed and was taken again."""
+    rule needs. Sized at the inverse's closed form, that came back an ulp or
+    two short at the catalogue exponent for almost every reach, and such a
+    panel failed and was taken again."""
+    p = _P
     q = substitution_power(p)
     budget = error_budget(p)
     rng = random.Random(7)

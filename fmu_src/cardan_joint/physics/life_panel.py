@@ -111,11 +111,11 @@ _SOLVE_STEPS = 1
 # The largest log rho `points_for` reads (exp(700) is finite).
 _FAREST = 700.0
 # `longest_panel` a shade short of its closed form: `singular_log_rho` of the
-# closed form's length may come back an ulp below the log rho it was solved
-# from, and the verdict then fails the panel at the largest rule it was sized
-# for (a 0.5 s step at 10 rad/s and bend 0.5 took 15 % more evaluations so,
-# half again as many under load). 1e-12 moves that log rho by some 1e-13, a
-# thousand ulps.
+# closed form's length came back an ulp or two below the log rho it was solved
+# from (at p = 10/3 for almost every reach), and the verdict failed the panel
+# at the largest rule it was sized for (a 0.5 s step at 10 rad/s and bend 0.5
+# took 18 % more evaluations so, twice as many under load). 1e-12 moves that
+# log rho by some 5e-13, thousands of ulps.
 _ROUND_TRIP = 1.0 - 1e-12
 
 
