@@ -8,6 +8,7 @@ once, so a refactor cannot orphan a guard."""
 from guards_ahead import AHEAD_MUTATIONS
 from guards_base import ROOT, Mutation
 from guards_generated import GENERATED_MUTATIONS
+from guards_life import LIFE_MUTATIONS
 from guards_plumbing import PLUMBING_MUTATIONS
 from guards_runtime import RUNTIME_MUTATIONS
 from guards_step import STEP_MUTATIONS
@@ -19,6 +20,7 @@ MUTATIONS = (
     *STEP_MUTATIONS,
     *PLUMBING_MUTATIONS,
     *GENERATED_MUTATIONS,
+    *LIFE_MUTATIONS,
     *RUNTIME_MUTATIONS,
     *AHEAD_MUTATIONS,
 )
