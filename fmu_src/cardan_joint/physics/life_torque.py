@@ -41,7 +41,8 @@ def turned(b, sb, cb, turn):
     of sb, cb), else directly."""
     if turn == 0.0:
         # A held bend: the formulas would add only zeros (4.7 % of the step at
-        # the 10^6-revolution run's point, callgrind, the step alone).
+        # the 10^6-revolution run's point; the test costs a moving bend's step
+        # 0.5 % at 1000 rad/s: callgrind, the step alone).
         return sb, cb
     if abs(turn) > _SMALL_TURN:
         return math.sin(b + turn), math.cos(b + turn)
